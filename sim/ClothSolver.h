@@ -1,0 +1,68 @@
+#pragma once
+// Drapes one garment: the FIGMENT physical model (paper §2) integrated with improved
+// Euler (Heun), collisions against a Collider, until the cloth is at rest or maxTime.
+
+#include "ClothParameters.h"
+#include "Collider.h"
+#include "TriangleMesh.h"
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace figment {
+
+class ClothModel;
+
+struct DrapeProgress {
+  int iterations;
+  double simulatedTime;  // s
+  double maxSpeed;       // m/s, fastest node now
+};
+
+struct DrapeResult {
+  int iterations = 0;
+  double simulatedTime = 0.0;  // s
+  double wallSeconds = 0.0;
+  bool atRest = false;
+};
+
+// Thrown when the simulation blows up (non-finite values): names step, dt and method.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ClothSolver {
+ public:
+  // `garment` is the rest (unstressed) shape and also the starting placement, in the
+  // same frame as the collider (the scene's world frame). `body` may be null.
+  ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
+              std::shared_ptr<const Collider> body);
+  ~ClothSolver();
+
+  // Advances one time step.
+  void step();
+  // Runs until at rest or maxTime; `progress` (optional) is called about every
+  // `progressInterval` seconds of wall time.
+  DrapeResult run(const std::function<void(const DrapeProgress&)>& progress = {},
+                  double progressInterval = 1.0);
+
+  const std::vector<Vec3>& positions() const;
+  const std::vector<Vec3>& velocities() const;
+  double time() const;
+  int iterations() const;
+  double maxSpeed() const;
+
+ private:
+  std::unique_ptr<ClothModel> model_;
+  ClothParameters parameters_;
+  std::shared_ptr<const Collider> body_;
+  std::vector<Vec3> x_, v_;
+  double time_ = 0.0;
+  int iterations_ = 0;
+  double restSince_ = 0.0;
+};
+
+}  // namespace figment

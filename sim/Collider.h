@@ -1,0 +1,25 @@
+#pragma once
+// What cloth collides with (paper §3): anything that can tell whether a point has
+// penetrated its surface (or come closer than a clearance), where the nearest surface
+// point is, and the outward normal there.
+
+#include "TriangleMesh.h"
+
+namespace figment {
+
+struct Contact {
+  Vec3 surfacePoint;  // nearest point on the collider's surface, m
+  Vec3 normal;        // unit outward normal at surfacePoint
+  double distance;    // signed distance of the query point, m (negative = inside)
+};
+
+class Collider {
+ public:
+  virtual ~Collider() = default;
+  // True when `p` is inside or within `clearance` of the surface; `searchRadius` bounds
+  // how far outside the surface the query looks (a hint for speed; a point inside is
+  // always found when it lies within `searchRadius` of the surface).
+  virtual bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const = 0;
+};
+
+}  // namespace figment
