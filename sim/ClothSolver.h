@@ -2,6 +2,7 @@
 // Drapes one garment: the FIGMENT physical model (paper §2) integrated with improved
 // Euler (Heun), collisions against a Collider, until the cloth is at rest or maxTime.
 
+#include "ClothModel.h"
 #include "ClothParameters.h"
 #include "Collider.h"
 #include "TriangleMesh.h"
@@ -12,8 +13,6 @@
 #include <vector>
 
 namespace figment {
-
-class ClothModel;
 
 struct DrapeProgress {
   int iterations;
@@ -42,13 +41,23 @@ class ClothSolver {
               std::shared_ptr<const Collider> body);
   ~ClothSolver();
 
-  // Advances one time step.
+  // Holds a node where it is (a pin): it keeps its position and never moves.
+  void pin(int node);
+
+  // Advances one time step: improved Euler (Heun) on the model's forces, then the
+  // contact response (push-out to the collider's surface + clearance, inelastic normal
+  // velocity, Coulomb friction on the tangential velocity), then the at-rest check.
+  // Throws SimulationError when a position or velocity stops being finite or a node
+  // exceeds kBlowUpSpeed.
   void step();
+  static constexpr double kBlowUpSpeed = 100.0;  // m/s: far beyond any draping motion
   // Runs until at rest or maxTime; `progress` (optional) is called about every
   // `progressInterval` seconds of wall time.
   DrapeResult run(const std::function<void(const DrapeProgress&)>& progress = {},
                   double progressInterval = 1.0);
 
+  bool atRest() const;
+  const ClothModel& model() const { return *model_; }
   const std::vector<Vec3>& positions() const;
   const std::vector<Vec3>& velocities() const;
   double time() const;
@@ -62,7 +71,9 @@ class ClothSolver {
   std::vector<Vec3> x_, v_;
   double time_ = 0.0;
   int iterations_ = 0;
-  double restSince_ = 0.0;
+  double restSince_ = -1.0;  // time the cloth became slower than the threshold; -1: moving
+  std::vector<char> pinned_;
+  std::vector<Vec3> a0_, a1_, xPredicted_, vPredicted_;  // Heun's scratch
 };
 
 }  // namespace figment

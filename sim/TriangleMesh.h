@@ -3,6 +3,7 @@
 // the importer (io/), the simulation (sim/) and the node kit (nodes/).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products everywhere in sim/
 #include <array>
 #include <limits>
 #include <vector>

@@ -1,0 +1,45 @@
+#pragma once
+// The FIGMENT physical model of one garment (paper §2): triangular sections with
+// stretch/shear stresses, bending joints on shared edges, gravity and air resistance,
+// acting on nodes whose masses are lumped from the sections (rho h A / 3 per corner).
+// Collisions and friction are contact events, handled by the solver after each step.
+
+#include "BendingJoint.h"
+#include "ClothParameters.h"
+#include "MembraneElement.h"
+#include "TriangleMesh.h"
+
+#include <vector>
+
+namespace figment {
+
+class ClothModel {
+ public:
+  // Throws std::invalid_argument for an empty garment, an index out of range or a
+  // garment whose sections are all degenerate.
+  ClothModel(const TriangleMesh& rest, const ClothParameters& parameters);
+
+  // a = F(x, v) / m for every node (m/s^2).
+  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) const;
+
+  const std::vector<double>& masses() const { return masses_; }  // kg
+  const std::vector<MembraneElement>& sections() const { return sections_; }
+  const std::vector<BendingJoint>& joints() const { return joints_; }
+  size_t nodeCount() const { return masses_.size(); }
+
+ private:
+  ClothParameters parameters_;
+  std::vector<MembraneElement> sections_;
+  std::vector<BendingJoint> joints_;
+  std::vector<double> masses_;
+  std::vector<double> inverseMasses_;
+  std::vector<double> areas_;  // lumped node area, m^2 (air resistance acts on it)
+  double bendingStiffness_ = 0.0;
+  mutable std::vector<Vec3> force_;
+};
+
+// The joints of a mesh: one per edge shared by exactly two sections. Edges of more
+// than two sections (non-manifold) get none.
+std::vector<BendingJoint> findBendingJoints(const TriangleMesh& mesh);
+
+}  // namespace figment

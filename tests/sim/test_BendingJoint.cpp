@@ -1,0 +1,67 @@
+// The dihedral angle, its gradient against finite differences, and bending forces
+// that vanish at the rest angle and push a fold back.
+#include "sim/BendingJoint.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace figment;
+
+namespace {
+// Hinge on the x axis; x2 on the +y side (z = 0), x3 folded by `fold` radians.
+std::vector<Vec3> hinge(double fold) {
+  return {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.4, 1, 0), Vec3(0.6, -std::cos(fold), std::sin(fold))};
+}
+}  // namespace
+
+TEST(BendingJoint, FlatHingeHasZeroAngleAndFoldsAreSigned) {
+  auto flat = hinge(0.0);
+  EXPECT_NEAR(BendingJoint::angle(flat[0], flat[1], flat[2], flat[3]), 0.0, 1e-12);
+  auto up = hinge(0.3), down = hinge(-0.3);
+  const double a = BendingJoint::angle(up[0], up[1], up[2], up[3]);
+  const double b = BendingJoint::angle(down[0], down[1], down[2], down[3]);
+  EXPECT_NEAR(std::abs(a), 0.3, 1e-12);
+  EXPECT_NEAR(a, -b, 1e-12);
+}
+
+TEST(BendingJoint, AngleGradientMatchesFiniteDifferences) {
+  std::vector<Vec3> x = {Vec3(0.01, 0.02, -0.01), Vec3(1.0, 0.1, 0.05), Vec3(0.3, 0.9, 0.2), Vec3(0.7, -0.8, 0.4)};
+  const auto g = BendingJoint::angleGradient(x[0], x[1], x[2], x[3]);
+  const double h = 1e-7;
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) {
+      auto plus = x, minus = x;
+      plus[i][k] += h;
+      minus[i][k] -= h;
+      const double fd = (BendingJoint::angle(plus[0], plus[1], plus[2], plus[3]) -
+                         BendingJoint::angle(minus[0], minus[1], minus[2], minus[3])) / (2 * h);
+      EXPECT_NEAR(g[i][k], fd, 1e-6) << "corner " << i << " axis " << k;
+    }
+}
+
+TEST(BendingJoint, ForcesAreMinusTheEnergyGradientAndVanishAtRest) {
+  const auto rest = hinge(0.2);
+  BendingJoint joint(0, 1, 2, 3, rest);
+  ASSERT_TRUE(joint.valid());
+  std::vector<Vec3> force(4, Vec3::Zero());
+  joint.addForces(rest, 1e-5, force);
+  for (const Vec3& f : force) EXPECT_LT(f.norm(), 1e-15);
+
+  auto x = hinge(0.7);
+  std::fill(force.begin(), force.end(), Vec3::Zero());
+  joint.addForces(x, 1e-5, force);
+  const double h = 1e-7;
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) {
+      auto plus = x, minus = x;
+      plus[i][k] += h;
+      minus[i][k] -= h;
+      const double fd = (joint.energy(plus, 1e-5) - joint.energy(minus, 1e-5)) / (2 * h);
+      EXPECT_NEAR(force[i][k], -fd, 1e-9);
+    }
+  // Restoring: moving x3 along its force reduces the fold towards the rest angle.
+  auto relaxed = x;
+  relaxed[3] += 1e-3 * force[3].normalized();
+  EXPECT_LT(joint.energy(relaxed, 1e-5), joint.energy(x, 1e-5));
+}
