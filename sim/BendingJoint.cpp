@@ -14,32 +14,34 @@ BendingJoint::BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec
   weight_ = 3.0 * (x1 - x0).squaredNorm() / (areaA + areaB);
 }
 
-// Section A = (x0, x1, x2) has normal nA = (x1-x0) x (x2-x0); section B = (x1, x0, x3)
-// (the same orientation across the shared edge) has nB = (x0-x1) x (x3-x1)... written
-// below with edge vector e = x1 - x0. theta > 0 when the sections fold towards nA.
+namespace {
+// What the angle and its gradient share: the edge and the two (unnormalised) section
+// normals, nA = e x (x2 - x0) for section A = (x0, x1, x2) and nB = (x3 - x0) x e for B.
+// theta > 0 when the sections fold towards nA.
+struct Hinge {
+  Vec3 e, nA, nB;
+  double length;
+  Hinge(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3)
+      : e(x1 - x0), nA(e.cross(x2 - x0)), nB((x3 - x0).cross(e)), length(e.norm()) {}
+  double angle() const { return std::atan2(nA.cross(nB).dot(e) / length, nA.dot(nB)); }
+  std::array<Vec3, 4> gradient(const Vec3& x0, const Vec3& x2, const Vec3& x3) const {
+    // Opposite corners move the angle along their section's normal, by 1/height.
+    const Vec3 g2 = -length * nA / nA.squaredNorm();
+    const Vec3 g3 = -length * nB / nB.squaredNorm();
+    // Edge corners: each opposite corner's lever, its projection along the edge.
+    const double squared = length * length;
+    const Vec3 g1 = -((x2 - x0).dot(e) / squared * g2 + (x3 - x0).dot(e) / squared * g3);
+    return {-(g1 + g2 + g3), g1, g2, g3};
+  }
+};
+}  // namespace
+
 double BendingJoint::angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
-  const Vec3 e = x1 - x0;
-  const Vec3 nA = e.cross(x2 - x0);
-  const Vec3 nB = (x3 - x0).cross(e);
-  const double sine = nA.cross(nB).dot(e) / e.norm();
-  return std::atan2(sine, nA.dot(nB));
+  return Hinge(x0, x1, x2, x3).angle();
 }
 
 std::array<Vec3, 4> BendingJoint::angleGradient(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
-  const Vec3 e = x1 - x0;
-  const double length = e.norm();
-  const Vec3 nA = e.cross(x2 - x0);
-  const Vec3 nB = (x3 - x0).cross(e);
-  const Vec3 uA = nA / nA.squaredNorm();
-  const Vec3 uB = nB / nB.squaredNorm();
-  // Opposite corners move the angle along their section's normal, scaled by 1/height.
-  const Vec3 g2 = -length * uA;
-  const Vec3 g3 = -length * uB;
-  // Edge corners: the lever of each opposite corner's projection along the edge.
-  const double sA0 = (x2 - x0).dot(e) / (length * length), sB0 = (x3 - x0).dot(e) / (length * length);
-  const Vec3 g1 = -(sA0 * g2 + sB0 * g3);
-  const Vec3 g0 = -(g1 + g2 + g3);
-  return {g0, g1, g2, g3};
+  return Hinge(x0, x1, x2, x3).gradient(x0, x2, x3);
 }
 
 double BendingJoint::energy(const std::vector<Vec3>& x, double bendingStiffness) const {
@@ -49,9 +51,11 @@ double BendingJoint::energy(const std::vector<Vec3>& x, double bendingStiffness)
 
 void BendingJoint::addForces(const std::vector<Vec3>& x, double bendingStiffness, std::vector<Vec3>& force) const {
   const Vec3 &x0 = x[corners_[0]], &x1 = x[corners_[1]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
-  double d = angle(x0, x1, x2, x3) - restAngle_;
-  d = std::remainder(d, 2.0 * M_PI);  // the shortest way back across +-pi
-  const auto gradient = angleGradient(x0, x1, x2, x3);
+  const Hinge hinge(x0, x1, x2, x3);
+  double d = hinge.angle() - restAngle_;
+  if (d > M_PI) d -= 2.0 * M_PI;  // the shortest way back across +-pi
+  if (d < -M_PI) d += 2.0 * M_PI;
+  const auto gradient = hinge.gradient(x0, x2, x3);
   const double scale = -bendingStiffness * weight_ * d;
   for (int k = 0; k < 4; ++k) force[corners_[k]] += scale * gradient[k];
 }
