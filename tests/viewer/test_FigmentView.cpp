@@ -1,0 +1,169 @@
+// figment-view as a user meets it: a good scene gives a PNG and statistics; every bad
+// input gives one line on stderr naming the file, node, field and value, a non-zero
+// exit status and no image.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// `text` as one shell word.
+std::string quote(const std::string& text) { return std::string("'").append(text).append("'"); }
+
+struct ProcessResult {
+  int status = -1;
+  std::string err;
+};
+
+class FigmentView : public ::testing::Test {
+ protected:
+  FigmentView() {
+    std::string pattern = (fs::temp_directory_path() / "figment-view-test-XXXXXX").string();
+    dir_ = ::mkdtemp(pattern.data());
+  }
+  ~FigmentView() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const {
+    std::ofstream(path(name)) << text;
+    return path(name);
+  }
+  // Runs figment-view with `arguments` (shell words), capturing stderr.
+  ProcessResult run(const std::string& arguments) const {
+    const std::string command =
+        quote(FIGMENT_VIEW_EXECUTABLE) + " " + arguments + " 2> " + quote(path("stderr.txt")) + " > /dev/null";
+    const int raw = std::system(command.c_str());
+    std::ifstream in(path("stderr.txt"));
+    std::stringstream err;
+    err << in.rdbuf();
+    return ProcessResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, err.str()};
+  }
+  // Nothing but stderr.txt and the inputs: no image, no temporary left behind.
+  bool noImageWritten() const {
+    for (const auto& entry : fs::directory_iterator(dir_))
+      if (entry.path().extension() == ".png") return false;
+    return true;
+  }
+
+  fs::path dir_;
+};
+
+// A falling square of cloth; `fields` go into its ClothEngine, `before` before it.
+std::string clothScene(const std::string& fields, const std::string& before = "") {
+  return "#Inventor V2.1 ascii\nSeparator {\n" + before +
+         "  Material { diffuseColor 0.1 0.3 0.8 }\n"
+         "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+         "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+         "    coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01\n"
+         "    " + fields + "\n"
+         "  } . positions }\n"
+         "  ClothingLayer { coordIndex [ 0 3 2 1 -1 ] }\n"
+         "}\n";
+}
+
+}  // namespace
+
+TEST_F(FigmentView, RendersAPngAndWritesStatistics) {
+  const std::string scene = write("cloth.iv", clothScene(""));
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 160x120 --view 30,20 --stats " +
+                              quote(path("stats.json")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  ASSERT_TRUE(fs::exists(path("out.png")));
+  std::ifstream png(path("out.png"), std::ios::binary);
+  char magic[4] = {};
+  png.read(magic, 4);
+  EXPECT_EQ(std::string(magic + 1, 3), "PNG");
+
+  const nlohmann::json stats = nlohmann::json::parse(std::ifstream(path("stats.json")));
+  EXPECT_EQ(stats["scene"], scene);
+  EXPECT_EQ(stats["size"], nlohmann::json({160, 120}));
+  ASSERT_EQ(stats["garments"].size(), 1u);
+  const auto& garment = stats["garments"][0];
+  EXPECT_EQ(garment["name"], "Drape");
+  EXPECT_EQ(garment["triangles"], 2);
+  EXPECT_GT(garment["iterations"].get<int>(), 0);
+  EXPECT_NEAR(garment["simulated_s"].get<double>(), 0.01, 1e-3);
+  EXPECT_GE(garment["wall_s"].get<double>(), 0.0);
+  EXPECT_TRUE(garment["at_rest"].is_boolean());
+  EXPECT_GE(stats["render_wall_s"].get<double>(), 0.0);
+}
+
+TEST_F(FigmentView, RendersEveryExampleScene) {
+  int count = 0;
+  for (const auto& entry : fs::directory_iterator(FIGMENT_SOURCE_DIR "/scenes/examples")) {
+    if (entry.path().extension() != ".iv") continue;
+    ++count;
+    const std::string image = path(entry.path().filename().replace_extension(".png").string());
+    const ProcessResult r = run(quote(entry.path().string()) + " -o " + quote(image) + " --size 160x120");
+    EXPECT_EQ(r.status, 0) << entry.path() << ": " << r.err;
+    EXPECT_TRUE(fs::exists(image)) << entry.path();
+  }
+  EXPECT_GE(count, 3) << "one example per node class";
+}
+
+struct BadInput {
+  std::string name;
+  std::string scene;      // scene file contents; empty: no scene file is written
+  std::string arguments;  // after the scene and -o
+  std::vector<std::string> mentions;  // what the one line must name
+  friend void PrintTo(const BadInput& bad, std::ostream* out) { *out << bad.name; }
+};
+
+class FigmentViewBadInput : public FigmentView, public ::testing::WithParamInterface<BadInput> {};
+
+TEST_P(FigmentViewBadInput, FailsWithOneLineAndNoImage) {
+  const BadInput& bad = GetParam();
+  const std::string scene = bad.scene.empty() ? path("missing.iv") : write("scene.iv", bad.scene);
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " " + bad.arguments);
+  EXPECT_NE(r.status, 0);
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_EQ(r.err.rfind("figment-view: ", 0), 0u) << r.err;
+  for (const auto& word : bad.mentions) EXPECT_NE(r.err.find(word), std::string::npos) << word << " in: " << r.err;
+  EXPECT_TRUE(noImageWritten());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, FigmentViewBadInput,
+    ::testing::Values(
+        BadInput{"MissingScene", "", "", {"missing.iv", "no such file"}},
+        BadInput{"SyntaxError", "#Inventor V2.1 ascii\nSeparator {\n  Cube { width }\n", "", {"scene.iv", "line"}},
+        BadInput{"NotInventor", "hello\n", "", {"scene.iv"}},
+        BadInput{"UnknownNodeType", "#Inventor V2.1 ascii\nSeparator { Frobnicator { } }\n", "",
+                 {"scene.iv", "line 2", "Frobnicator"}},
+        BadInput{"MissingMeshFile",
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Body MeshFile { fileName \"nothere.obj\" }\n}\n",
+                 "",
+                 {"scene.iv", "line 3", "MeshFile 'Body'", "fileName \"nothere.obj\""}},
+        BadInput{"MissingBodyFile",
+                 clothScene("body USE Body", "  DEF Body MeshFile { fileName \"nobody.zae\" }\n"),
+                 "",
+                 {"scene.iv", "line 3", "MeshFile 'Body'", "fileName \"nobody.zae\""}},
+        BadInput{"NegativeThickness", clothScene("thickness -0.001"), "",
+                 {"scene.iv", "ClothEngine 'Drape'", "thickness = -0.001 must be > 0"}},
+        BadInput{"ZeroDensity", clothScene("density 0"), "", {"scene.iv", "ClothEngine 'Drape'", "density = 0"}},
+        BadInput{"ZeroYoungsModulus", clothScene("youngsModulus 0"), "",
+                 {"ClothEngine 'Drape'", "youngsModulus = 0"}},
+        BadInput{"PoissonRatioHalf", clothScene("poissonRatio 0.5"), "", {"ClothEngine 'Drape'", "poissonRatio = 0.5"}},
+        BadInput{"PoissonRatioMinusOne", clothScene("poissonRatio -1"), "",
+                 {"ClothEngine 'Drape'", "poissonRatio = -1"}},
+        BadInput{"ZeroTimeStep", clothScene("timeStep 0"), "", {"ClothEngine 'Drape'", "timeStep = 0"}},
+        BadInput{"BadSize", clothScene(""), "--size 800by600", {"--size", "800by600"}},
+        BadInput{"ZeroSize", clothScene(""), "--size 0x600", {"--size", "0x600"}},
+        BadInput{"BadViewName", clothScene(""), "--view up", {"--view", "up"}},
+        BadInput{"ViewStraightDown", clothScene(""), "--view 0,-90", {"--view", "0,-90"}}),
+    [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });

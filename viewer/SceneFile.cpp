@@ -1,0 +1,40 @@
+#include "viewer/SceneFile.h"
+
+#include "viewer/CoinMessages.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <filesystem>
+
+namespace figment::viewer {
+
+SoSeparator* readSceneFile(const std::string& path, std::string& error) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    error = "no such file";
+    return nullptr;
+  }
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    error = "not a file";
+    return nullptr;
+  }
+  CoinMessages::takeReadErrors(path);  // only this file's errors count
+  SoInput in;
+  if (!in.openFile(path.c_str(), TRUE)) {
+    error = "cannot open file";
+    return nullptr;
+  }
+  SoSeparator* root = SoDB::readAll(&in);
+  const std::vector<std::string> errors = CoinMessages::takeReadErrors(path);
+  if (!root) {
+    // The first error is the cause; later ones are Coin unwinding the parse.
+    error = errors.empty() ? "not an Inventor scene file" : errors.front();
+    return nullptr;
+  }
+  root->ref();
+  return root;
+}
+
+}  // namespace figment::viewer

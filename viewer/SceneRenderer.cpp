@@ -1,0 +1,36 @@
+#include "viewer/SceneRenderer.h"
+
+#include "viewer/AtomicFile.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoOffscreenRenderer.h>
+
+namespace figment::viewer {
+
+SceneRenderer::SceneRenderer(const ImageSize& size)
+    : size_(size),
+      renderer_(std::make_unique<SoOffscreenRenderer>(SbViewportRegion(short(size.width), short(size.height)))) {
+  renderer_->setComponents(SoOffscreenRenderer::RGB);
+  renderer_->setBackgroundColor(background());
+}
+
+SceneRenderer::~SceneRenderer() = default;
+
+SbColor SceneRenderer::background() { return SbColor(0.8f, 0.8f, 0.8f); }
+
+std::string SceneRenderer::render(SoNode* root) {
+  rendered_ = renderer_->render(root) == TRUE;
+  return rendered_ ? "" : "could not render: no off-screen OpenGL context";
+}
+
+const unsigned char* SceneRenderer::pixels() const { return rendered_ ? renderer_->getBuffer() : nullptr; }
+
+std::string SceneRenderer::writePng(const std::string& path) const {
+  if (!rendered_) return "nothing rendered";
+  if (!renderer_->isWriteSupported("png")) return "cannot write PNG: Coin has no simage library";
+  return writeAtomically(path, [this](const std::string& temporary) -> std::string {
+    return renderer_->writeToFile(SbString(temporary.c_str()), "png") ? "" : "cannot write the image";
+  });
+}
+
+}  // namespace figment::viewer

@@ -1,0 +1,40 @@
+#pragma once
+// Renders a staged scene off-screen and writes it as a PNG image.
+
+#include "viewer/ViewOptions.h"
+
+#include <Inventor/SbColor.h>
+
+#include <memory>
+#include <string>
+
+class SoNode;
+class SoOffscreenRenderer;
+
+namespace figment::viewer {
+
+class SceneRenderer {
+ public:
+  explicit SceneRenderer(const ImageSize& size);
+  ~SceneRenderer();
+
+  // The neutral grey behind the scene.
+  static SbColor background();
+
+  // Renders `root` (holding its camera and lights, see stageScene) through the OSMesa
+  // context initHeadless() registered. Returns "" on success, else the error.
+  std::string render(SoNode* root);
+  // The last image: RGB, 3 bytes per pixel, bottom row first (OpenGL's order).
+  const unsigned char* pixels() const;
+  const ImageSize& size() const { return size_; }
+  // Writes the last image as PNG (through Coin and simage), atomically: `path` exists
+  // only when the whole image was written. Returns "" on success, else the error.
+  std::string writePng(const std::string& path) const;
+
+ private:
+  ImageSize size_;
+  std::unique_ptr<SoOffscreenRenderer> renderer_;
+  bool rendered_ = false;
+};
+
+}  // namespace figment::viewer

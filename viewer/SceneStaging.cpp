@@ -1,0 +1,129 @@
+#include "viewer/SceneStaging.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoFullPath.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/lists/SoPathList.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoLight.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace figment::viewer {
+
+namespace {
+
+constexpr float kFieldOfView = 45.0f * std::numbers::pi_v<float> / 180.0f;  // vertical, radians
+
+float radians(double degrees) { return float(degrees * std::numbers::pi / 180.0); }
+
+// Paths to the nodes of `type` under `root` (which the caller holds a reference to);
+// `all` includes inactive Switch children.
+void findAll(SoNode* root, SoType type, bool all, SoPathList& out) {
+  SoSearchAction search;
+  search.setType(type, TRUE);
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(all ? TRUE : FALSE);
+  search.apply(root);
+  out = search.getPaths();
+}
+
+// Takes every camera out of `scene`, so the framing camera decides the view.
+void removeCameras(SoNode* scene) {
+  SoPathList paths;
+  findAll(scene, SoCamera::getClassTypeId(), true, paths);
+  for (int i = 0; i < paths.getLength(); ++i) {
+    auto* path = static_cast<SoFullPath*>(paths[i]);
+    if (path->getLength() < 2) continue;
+    SoNode* parent = path->getNodeFromTail(1);
+    if (parent->isOfType(SoGroup::getClassTypeId()))
+      static_cast<SoGroup*>(parent)->replaceChild(path->getTail(), new SoGroup);
+  }
+}
+
+}  // namespace
+
+SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view, float aspect) {
+  SbVec3f low(-1.0f, -1.0f, -1.0f), high(1.0f, 1.0f, 1.0f);  // an empty scene: the unit box
+  if (!box.isEmpty()) box.getBounds(low, high);
+  if ((high - low).length() < 1e-6f) {  // a single point still needs a size to frame
+    low -= SbVec3f(0.5f, 0.5f, 0.5f);
+    high += SbVec3f(0.5f, 0.5f, 0.5f);
+  }
+  const SbVec3f centre = 0.5f * (low + high);
+  const float radius = 0.5f * (high - low).length();
+
+  const float az = radians(view.azimuth), el = radians(view.elevation);
+  const SbVec3f toCamera(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  SbVec3f right = SbVec3f(0.0f, 1.0f, 0.0f).cross(toCamera);
+  right.normalize();
+  const SbVec3f up = toCamera.cross(right);
+
+  // The nearest distance at which every corner of the box lies inside both fields of
+  // view: a corner at (x, y) across and z towards the camera from the centre needs
+  // d - z >= |x| / tan(horizontal / 2) and d - z >= |y| / tan(vertical / 2).
+  constexpr float kMargin = 1.05f;
+  const float tanVertical = std::tan(kFieldOfView / 2.0f) / kMargin;
+  const float tanHorizontal = tanVertical * aspect;
+  float distance = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const SbVec3f p((corner & 1) ? high[0] : low[0], (corner & 2) ? high[1] : low[1], (corner & 4) ? high[2] : low[2]);
+    const SbVec3f v = p - centre;
+    const float needed = v.dot(toCamera) + std::max(std::abs(v.dot(right)) / tanHorizontal,
+                                                    std::abs(v.dot(up)) / tanVertical);
+    distance = std::max(distance, needed);
+  }
+
+  auto* camera = new SoPerspectiveCamera;
+  camera->position = centre + distance * toCamera;
+  camera->pointAt(centre, SbVec3f(0.0f, 1.0f, 0.0f));
+  camera->heightAngle = kFieldOfView;
+  // The field of view is exactly as computed: Coin must not widen it for the viewport.
+  camera->viewportMapping = SoCamera::LEAVE_ALONE;
+  camera->aspectRatio = aspect;
+  camera->focalDistance = distance;
+  camera->nearDistance = std::max(distance - 1.05f * radius, 1e-3f * distance);
+  camera->farDistance = distance + 1.05f * radius;
+  return camera;
+}
+
+SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view) {
+  const SbViewportRegion viewport(short(size.width), short(size.height));
+  SoGetBoundingBoxAction boxAction(viewport);
+  boxAction.apply(scene);  // evaluates the engines that feed shapes
+  const SbBox3f box = boxAction.getBoundingBox();
+
+  auto* root = new SoSeparator;
+  SbVec3f lookDirection(0.0f, 0.0f, -1.0f);
+  SoPathList cameras;
+  findAll(scene, SoCamera::getClassTypeId(), false, cameras);
+  if (cameras.getLength() > 0 && !view) {
+    const auto* own = static_cast<SoCamera*>(static_cast<SoFullPath*>(cameras[0])->getTail());
+    own->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), lookDirection);
+  } else {
+    removeCameras(scene);
+    SoPerspectiveCamera* camera =
+        framingCamera(box, view.value_or(ViewDirection{}), float(size.width) / float(size.height));
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), lookDirection);
+    root->addChild(camera);
+  }
+
+  SoPathList lights;
+  findAll(scene, SoLight::getClassTypeId(), false, lights);
+  if (lights.getLength() == 0) {
+    auto* headlight = new SoDirectionalLight;
+    headlight->direction = lookDirection;
+    root->addChild(headlight);
+  }
+  root->addChild(scene);
+  return root;
+}
+
+}  // namespace figment::viewer

@@ -1,0 +1,33 @@
+#pragma once
+// What figment-view adds around a scene so it can be seen: a camera and a light.
+
+#include "viewer/ViewOptions.h"
+
+#include <Inventor/SbBox3f.h>
+#include <Inventor/SbVec3f.h>
+
+#include <optional>
+
+class SoNode;
+class SoPerspectiveCamera;
+class SoSeparator;
+
+namespace figment::viewer {
+
+// A perspective camera with a 45 degree vertical field of view looking at the centre of
+// `box` from direction `view` (camera at centre + d * (sin AZ cos EL, sin EL,
+// cos AZ cos EL), y up), at the nearest distance d where all eight corners of the box
+// lie inside both fields of view (horizontal from `aspect` = width/height), with a 5%
+// margin. An empty box frames the unit cube around the origin.
+SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view, float aspect);
+
+// A new root holding `scene` and what it lacks, ready for SoOffscreenRenderer:
+//  - the scene's own camera when it has one and `view` is not given; otherwise a
+//    framingCamera() (the scene's cameras are then taken out of the scene);
+//  - a directional light shining along the view direction (a headlight) when the
+//    scene has no light of its own.
+// Its bounding-box pass reads every shape's coordinates, so the ClothEngines feeding
+// them are evaluated here, before anything is drawn. The root is not referenced.
+SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view);
+
+}  // namespace figment::viewer

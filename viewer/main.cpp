@@ -1,0 +1,129 @@
+// figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless.
+//
+//   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]
+//                [--stats OUT.json]
+//
+// Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
+// exit status (2: bad command line, 1: anything else); no image is written then.
+
+#include "nodes/ClothEngine.h"
+#include "viewer/CoinMessages.h"
+#include "viewer/OffscreenContext.h"
+#include "viewer/SceneFile.h"
+#include "viewer/SceneRenderer.h"
+#include "viewer/SceneStaging.h"
+#include "viewer/StatsJson.h"
+#include "viewer/ViewOptions.h"
+
+#include <CLI/CLI.hpp>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace {
+
+struct Options {
+  std::string scene;
+  std::string output;
+  std::string size = "800x600";
+  std::string view;
+  std::string stats;
+};
+
+int fail(const std::string& where, const std::string& message, int status = 1) {
+  std::cerr << "figment-view: " << where << ": " << message << "\n";
+  return status;
+}
+
+// Long simulations say how far they are, about once a second.
+void reportProgress(const ClothEngine& engine, const ClothEngine::Progress& p) {
+  std::fprintf(stderr, "figment-view: %s: simulated %.3g of %.3g s (%d steps, %.1f s, fastest node %.3g m/s)\n",
+               engine.label().c_str(), p.simulatedSeconds, p.maxTime, p.iterations, p.wallSeconds, p.maxSpeed);
+}
+
+void reportFinished(const ClothEngine& engine) {
+  const ClothEngine::RunStats& run = engine.lastRun();
+  if (run.wallSeconds < 1.0) return;  // short runs stay quiet
+  std::fprintf(stderr, "figment-view: %s: %s after %.3g s simulated (%d steps, %.1f s)\n", engine.label().c_str(),
+               run.atRest ? "at rest" : "stopped at maxTime", run.simulatedSeconds, run.iterations,
+               run.wallSeconds);
+}
+
+int render(const Options& options, const figment::viewer::ImageSize& size,
+           const std::optional<figment::viewer::ViewDirection>& view) {
+  using namespace figment::viewer;
+  initHeadless();
+  std::string error;
+  SoSeparator* scene = readSceneFile(options.scene, error);
+  if (!scene) return fail(options.scene, error);
+
+  const std::vector<ClothEngine*> engines = figment::findClothEngines(scene);
+  ClothEngine::setProgressCallback(reportProgress);
+  SoSeparator* root = stageScene(scene, size, view);  // simulates, through the bounding box
+  root->ref();
+  scene->unref();  // the staged root holds the scene, and with it the engines
+  const std::unique_ptr<SoSeparator, void (*)(SoSeparator*)> holder(root, [](SoSeparator* r) { r->unref(); });
+  for (ClothEngine* engine : engines) {
+    // An engine no bounding box reads (one feeding a colour, say) simulates now, so
+    // its errors too come before any image.
+    if (engine->evaluationCount() == 0 && engine->positions.getNumConnections() > 0)
+      engine->positions[0]->evaluate();
+    if (!engine->lastError().empty()) return fail(options.scene, engine->lastError());
+    reportFinished(*engine);
+  }
+
+  SceneRenderer renderer(size);
+  const auto start = std::chrono::steady_clock::now();
+  error = renderer.render(root);
+  const std::chrono::duration<double> renderWall = std::chrono::steady_clock::now() - start;
+  if (!error.empty()) return fail(options.scene, error);
+  error = renderer.writePng(options.output);
+  if (!error.empty()) return fail(options.output, error);
+  if (!options.stats.empty()) {
+    error = writeStatsJson(options.stats, options.scene, engines, renderWall.count(), size);
+    if (!error.empty()) {
+      std::filesystem::remove(options.output);  // an error leaves no image behind
+      return fail(options.stats, error);
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless."};
+  app.add_option("scene", options.scene, "Scene file (.iv)")->required();
+  app.add_option("-o,--output", options.output, "PNG image to write")->required();
+  app.add_option("--size", options.size, "Image size in pixels, WxH")->capture_default_str();
+  app.add_option("--view", options.view,
+                 "Camera direction: front, back, left, right or AZ,EL in degrees "
+                 "(default: the scene's camera, else front)");
+  app.add_option("--stats", options.stats, "Write simulation and render statistics (JSON) here");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    return fail("usage", std::string(e.what()) + " (see --help)", 2);
+  }
+
+  const auto size = figment::viewer::parseImageSize(options.size);
+  if (!size) return fail("--size", "'" + options.size + "' is not WxH with 1 to 16384 pixels each (e.g. 800x600)", 2);
+  std::optional<figment::viewer::ViewDirection> view;
+  if (!options.view.empty()) {
+    view = figment::viewer::parseViewDirection(options.view);
+    if (!view)
+      return fail("--view",
+                  "'" + options.view + "' is not front, back, left, right or AZ,EL in degrees with -90 < EL < 90",
+                  2);
+  }
+  return render(options, *size, view);
+}
