@@ -60,7 +60,7 @@ class SoNode;
         density 300
         youngsModulus 1000000
         poissonRatio 0.3
-        timeStep 0.0002
+        timeStep 0.00015
         maxTime 5
         restSpeed 0.01
         restWindow 0.25
@@ -98,7 +98,7 @@ class ClothEngine : public SoEngine {
   SoSFDouble youngsModulus;
   // Poisson's ratio nu, dimensionless. Default 0.3. Must lie in (-1, 0.5).
   SoSFDouble poissonRatio;
-  // Integration time step dt, s. Default 2e-4. Must be > 0.
+  // Integration time step dt, s. Default 1.5e-4. Must be > 0.
   SoSFDouble timeStep;
   // Upper bound of simulated time, s. Default 5.
   SoSFDouble maxTime;

@@ -38,17 +38,28 @@ bool ClothSolver::atRest() const {
 }
 
 namespace {
-// Contact response on one node: place it on the surface (plus clearance), remove the
-// velocity into the body, and let friction remove tangential velocity in proportion to
-// the normal velocity removed (Coulomb: static while |v_t| <= mu |dv_n|).
-void respondToContact(const Contact& contact, double clearance, double friction, Vec3& x, Vec3& v) {
-  x = contact.surfacePoint + clearance * contact.normal;
+// Contact response on one node that ended the step inside the body or within the
+// clearance: place it on the surface plus clearance, and make its velocity the motion
+// it actually made this step ((x - xPrevious) / dt), so that a node the body holds in
+// place is at rest instead of carrying a velocity the projection keeps undoing. Any
+// velocity left into the body is removed; friction then removes tangential velocity in
+// proportion to the normal velocity the contact took away (Coulomb: static while
+// |v_t| <= mu dv_n, sliding and slowed otherwise).
+void respondToContact(const Contact& contact, double clearance, double friction, double dt, const Vec3& xPrevious,
+                      Vec3& x, Vec3& v) {
+  const Vec3 target = contact.surfacePoint + clearance * contact.normal;
+  const double removedNormalSpeed = std::max(0.0, (target - x).dot(contact.normal)) / dt;
+  x = target;
+  v = (x - xPrevious) / dt;
   const double normalSpeed = v.dot(contact.normal);
-  if (normalSpeed >= 0.0) return;
-  const Vec3 tangential = v - normalSpeed * contact.normal;
+  if (normalSpeed < 0.0) v -= normalSpeed * contact.normal;
+  const Vec3 tangential = v - std::max(0.0, normalSpeed) * contact.normal;
   const double tangentialSpeed = tangential.norm();
-  const double frictionLimit = -friction * normalSpeed;
-  v = tangentialSpeed <= frictionLimit ? Vec3::Zero() : Vec3(tangential * (1.0 - frictionLimit / tangentialSpeed));
+  const double frictionLimit = friction * removedNormalSpeed;
+  if (tangentialSpeed <= frictionLimit)
+    v -= tangential;
+  else
+    v -= tangential * (frictionLimit / tangentialSpeed);
 }
 }  // namespace
 
@@ -83,7 +94,7 @@ void ClothSolver::step() {
                                                    : parameters_.clearance + 2.0 * moved + 0.005;
       Contact contact;
       if (body_->contact(x_[i], parameters_.clearance, searchRadius, contact))
-        respondToContact(contact, parameters_.clearance, parameters_.friction, x_[i], v_[i]);
+        respondToContact(contact, parameters_.clearance, parameters_.friction, dt, previous, x_[i], v_[i]);
     }
     const double speed = v_[i].norm();
     if (!std::isfinite(speed) || !x_[i].allFinite() || speed > kBlowUpSpeed)
