@@ -1,0 +1,133 @@
+// The default scene end to end: scenes/dress.iv is read, the dress is draped on the
+// default body by the simulation and comes to rest outside the body, held up at the
+// shoulders, and the front view shows both dress and skin.
+#include "nodes/ClothEngine.h"
+#include "nodes/MeshFile.h"
+#include "sim/MeshCollider.h"
+#include "viewer/OffscreenContext.h"
+#include "viewer/SceneFile.h"
+#include "viewer/SceneRenderer.h"
+#include "viewer/SceneStaging.h"
+
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/engines/SoEngineOutput.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace figment::viewer;
+
+namespace {
+
+// One drape for the whole suite: it is the slow part (seconds).
+class DefaultScene : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    initHeadless();
+    std::string error;
+    scene_ = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
+    ASSERT_NE(scene_, nullptr) << error;
+    scene_->ref();
+    engines_ = figment::findClothEngines(scene_);
+    ASSERT_EQ(engines_.size(), 1u);
+    staged_ = stageScene(scene_, {400, 300}, ViewDirection{0.0, 0.0});  // evaluates the engine
+    staged_->ref();
+  }
+  static void TearDownTestSuite() {
+    if (staged_) staged_->unref();
+    if (scene_) scene_->unref();
+    staged_ = scene_ = nullptr;
+  }
+  static MeshFile* node(const char* name) { return dynamic_cast<MeshFile*>(SoNode::getByName(name)); }
+  // The garment's coordinates as the renderer sees them: the Coordinate3 the engine feeds.
+  static std::vector<figment::Vec3> drapedPositions() {
+    SoSearchAction search;
+    search.setType(SoCoordinate3::getClassTypeId());
+    search.setInterest(SoSearchAction::ALL);
+    search.apply(scene_);
+    for (int p = 0; p < search.getPaths().getLength(); ++p) {
+      auto* coordinates = static_cast<SoCoordinate3*>(search.getPaths()[p]->getTail());
+      SoEngineOutput* source = nullptr;
+      if (!coordinates->point.getConnectedEngine(source) || source != &engines_.front()->positions) continue;
+      std::vector<figment::Vec3> out;
+      for (int i = 0; i < coordinates->point.getNum(); ++i)
+        out.emplace_back(coordinates->point[i][0], coordinates->point[i][1], coordinates->point[i][2]);
+      return out;
+    }
+    ADD_FAILURE() << "no Coordinate3 fed by the dress's ClothEngine";
+    return {};
+  }
+
+  static SoSeparator* scene_;
+  static SoSeparator* staged_;
+  static std::vector<ClothEngine*> engines_;
+};
+SoSeparator* DefaultScene::scene_ = nullptr;
+SoSeparator* DefaultScene::staged_ = nullptr;
+std::vector<ClothEngine*> DefaultScene::engines_;
+
+}  // namespace
+
+TEST_F(DefaultScene, DressComesToRestWithoutError) {
+  const ClothEngine* engine = engines_.front();
+  EXPECT_EQ(engine->lastError(), "");
+  EXPECT_EQ(engine->evaluationCount(), 1);
+  const ClothEngine::RunStats& run = engine->lastRun();
+  EXPECT_TRUE(run.atRest) << "simulated " << run.simulatedSeconds << " s";
+  EXPECT_GT(run.triangles, 1300);
+  EXPECT_LT(run.triangles, 1700);
+  EXPECT_LT(run.simulatedSeconds, engine->maxTime.getValue());
+}
+
+TEST_F(DefaultScene, NoGarmentVertexInsideTheBody) {
+  const MeshFile* body = node("Body");
+  ASSERT_NE(body, nullptr);
+  const auto collider = body->collider();
+  ASSERT_NE(collider, nullptr);
+  const double inf = std::numeric_limits<double>::infinity();
+  int inside = 0;
+  double deepest = 0.0;
+  for (const figment::Vec3& p : drapedPositions()) {
+    figment::Contact contact;
+    collider->contact(p, 0.0, inf, contact);
+    if (contact.distance < 0.0) ++inside;
+    deepest = std::min(deepest, contact.distance);
+  }
+  EXPECT_EQ(inside, 0) << "deepest " << deepest * 1000 << " mm inside";
+}
+
+TEST_F(DefaultScene, ShouldersHoldTheDressUp) {
+  // Where the body holds a strap dress: the top of the shoulders (beside the neck,
+  // inside the arms), from the body's own surface.
+  const MeshFile* body = node("Body");
+  ASSERT_NE(body, nullptr);
+  double shoulderTop = -std::numeric_limits<double>::infinity();
+  for (const figment::Vec3& v : body->collisionSurface().vertices)
+    if (std::abs(v.x()) > 0.08 && std::abs(v.x()) < 0.20 && v.y() < 1.45) shoulderTop = std::max(shoulderTop, v.y());
+  double dressTop = -std::numeric_limits<double>::infinity();
+  for (const figment::Vec3& p : drapedPositions()) dressTop = std::max(dressTop, p.y());
+  EXPECT_NEAR(dressTop, shoulderTop, 0.10) << "the dress slid off the shoulders";
+}
+
+TEST_F(DefaultScene, FrontViewShowsDressAndSkin) {
+  SceneRenderer renderer({400, 300});
+  ASSERT_EQ(renderer.render(staged_), "");
+  const unsigned char* rgb = renderer.pixels();
+  int dress = 0, skin = 0;
+  const int pixels = 400 * 300;
+  for (int i = 0; i < pixels; ++i) {
+    const int r = rgb[3 * i], g = rgb[3 * i + 1], b = rgb[3 * i + 2];
+    if (b > r + 30 && b > g + 15) ++dress;       // the blue dress, lit or in shade
+    else if (r > b + 25 && r >= g) ++skin;       // the orange-brown skin
+  }
+  // The dress covers the torso and thighs; skin shows at the head, arms and legs.
+  EXPECT_GT(dress, pixels / 50) << "dress pixels " << dress;
+  EXPECT_GT(skin, pixels / 50) << "skin pixels " << skin;
+  EXPECT_GT(dress, skin / 4) << "dress " << dress << " skin " << skin;
+  EXPECT_GT(skin, dress / 4) << "dress " << dress << " skin " << skin;
+}
