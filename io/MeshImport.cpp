@@ -1,6 +1,22 @@
+// Mesh files into the scene frame through assimp (https://assimp-docs.readthedocs.io,
+// "Post processing" and "Importer properties"). Order of work:
+//   1. assimp: Triangulate, JoinIdenticalVertices, PreTransformVertices (node transforms
+//      applied, hierarchy kept), SortByPType (points and lines removed), ValidateDataStructure.
+//      Format-level conversions the importer itself makes (Collada's <unit> and <up_axis>)
+//      happen here, before ours.
+//   2. per mesh reached from the node tree: skip it when `exclude` matches its name, keep its
+//      triangles, scale by metresPerUnit, rotate the given up axis onto +y.
+//   3. optionally weld vertices split along texture seams (mergeByPosition).
+//
+// Why PreTransformVertices keeps the hierarchy: without AI_CONFIG_PP_PTV_KEEP_HIERARCHY it
+// joins every mesh that shares a material into one, named after one of them, so `exclude`
+// would drop or keep the wrong geometry (two OBJ groups without materials become one mesh).
+// With it the meshes stay apart, in world space, each with its own name.
+
 #include "MeshImport.h"
 
 #include <assimp/Importer.hpp>
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -14,74 +30,64 @@ namespace figment {
 namespace fs = std::filesystem;
 
 namespace {
-// Right-handed rotations that take the file's up axis onto +y.
+
+// Proper rotations (determinant +1, so windings and handedness survive) that take the
+// file's up axis onto +y.
 Vec3 toYUp(const Vec3& p, UpAxis up) {
   switch (up) {
     case UpAxis::Y: return p;
-    case UpAxis::Z: return {p.x(), p.z(), -p.y()};     // -90 degrees about x
-    case UpAxis::X: return {-p.y(), p.x(), p.z()};     // +90 degrees about z
-    case UpAxis::NegY: return {p.x(), -p.y(), -p.z()}; // 180 degrees about x
-    case UpAxis::NegZ: return {p.x(), -p.z(), p.y()};  // +90 degrees about x
-    case UpAxis::NegX: return {p.y(), -p.x(), p.z()};  // -90 degrees about z
+    case UpAxis::Z: return {p.x(), p.z(), -p.y()};      // -90 degrees about x
+    case UpAxis::X: return {-p.y(), p.x(), p.z()};      // +90 degrees about z
+    case UpAxis::NegY: return {p.x(), -p.y(), -p.z()};  // 180 degrees about x
+    case UpAxis::NegZ: return {p.x(), -p.z(), p.y()};   // +90 degrees about x
+    case UpAxis::NegX: return {p.y(), -p.x(), p.z()};   // -90 degrees about z
   }
   return p;
 }
 
+// An entry of `exclude` matches a mesh whose name contains it: the exact name
+// ("human-highpolyeyesMesh" in human.zae) or any part of it ("eyes").
 bool excluded(const std::string& meshName, const std::vector<std::string>& exclude) {
-  for (const std::string& pattern : exclude)
-    if (!pattern.empty() && meshName.find(pattern) != std::string::npos) return true;
-  return false;
+  return std::any_of(exclude.begin(), exclude.end(), [&](const std::string& pattern) {
+    return !pattern.empty() && meshName.find(pattern) != std::string::npos;
+  });
 }
-}  // namespace
 
-ImportedMesh importMesh(const std::string& path, const ImportOptions& options) {
-  if (!fs::is_regular_file(path)) throw std::runtime_error(path + ": no such file");
-  if (!(options.metresPerUnit > 0.0))
-    throw std::runtime_error(path + ": metresPerUnit = " + std::to_string(options.metresPerUnit) + " must be > 0");
-  Assimp::Importer importer;
-  // Points and lines are of no use to cloth or bodies: drop them at import.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                                  aiProcess_SortByPType | aiProcess_ValidateDataStructure);
-  if (!scene || !scene->mRootNode) throw std::runtime_error(path + ": " + importer.GetErrorString());
-
-  ImportedMesh result;
-  TriangleMesh& mesh = result.mesh;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* part = scene->mMeshes[m];
-    const std::string name = part->mName.C_Str();
-    if (excluded(name, options.exclude)) continue;
-    result.meshNames.push_back(name);
-    const int offset = static_cast<int>(mesh.vertices.size());
-    for (unsigned i = 0; i < part->mNumVertices; ++i) {
-      const aiVector3D& v = part->mVertices[i];
-      mesh.vertices.push_back(toYUp(options.metresPerUnit * Vec3(v.x, v.y, v.z), options.upAxis));
-    }
-    for (unsigned f = 0; f < part->mNumFaces; ++f) {
-      const aiFace& face = part->mFaces[f];
-      if (face.mNumIndices != 3) continue;
-      mesh.triangles.push_back({offset + static_cast<int>(face.mIndices[0]), offset + static_cast<int>(face.mIndices[1]),
-                                offset + static_cast<int>(face.mIndices[2])});
+// Mesh indices in node-tree order, each once: with the hierarchy kept, a mesh that no
+// node references was never transformed and is not part of the scene.
+void collectMeshes(const aiNode* node, std::vector<unsigned>& order, std::vector<bool>& seen) {
+  for (unsigned i = 0; i < node->mNumMeshes; ++i) {
+    const unsigned index = node->mMeshes[i];
+    if (index < seen.size() && !seen[index]) {
+      seen[index] = true;
+      order.push_back(index);
     }
   }
-  if (mesh.triangles.empty()) throw std::runtime_error(path + ": no triangles (after exclusions)");
-  if (options.mergeByPosition) mesh = figment::mergeByPosition(mesh, 1e-6);
-  return result;
+  for (unsigned c = 0; c < node->mNumChildren; ++c) collectMeshes(node->mChildren[c], order, seen);
 }
 
-std::string findModelFile(const std::string& name, const std::string& sceneDir) {
-  if (name.empty()) return {};
-  const fs::path given(name);
-  if (fs::is_regular_file(given)) return given.string();
-  if (given.is_absolute()) return {};
+void appendTriangles(const aiMesh& part, const ImportOptions& options, TriangleMesh& mesh) {
+  const int offset = static_cast<int>(mesh.vertices.size());
+  for (unsigned i = 0; i < part.mNumVertices; ++i) {
+    const aiVector3D& v = part.mVertices[i];
+    mesh.vertices.push_back(toYUp(options.metresPerUnit * Vec3(v.x, v.y, v.z), options.upAxis));
+  }
+  for (unsigned f = 0; f < part.mNumFaces; ++f) {
+    const aiFace& face = part.mFaces[f];
+    if (face.mNumIndices != 3) continue;
+    mesh.triangles.push_back({offset + static_cast<int>(face.mIndices[0]), offset + static_cast<int>(face.mIndices[1]),
+                              offset + static_cast<int>(face.mIndices[2])});
+  }
+}
+
+std::vector<fs::path> searchFolders(const std::string& sceneDir) {
   std::vector<fs::path> folders;
-  if (const char* path = std::getenv("FIGMENT_MODEL_PATH")) {
-    std::string list = path;
+  if (const char* list = std::getenv("FIGMENT_MODEL_PATH")) {
+    const std::string text = list;
     size_t start = 0;
-    while (start <= list.size()) {
-      const size_t end = std::min(list.find(':', start), list.size());
-      if (end > start) folders.emplace_back(list.substr(start, end - start));
+    while (start <= text.size()) {
+      const size_t end = std::min(text.find(':', start), text.size());
+      if (end > start) folders.emplace_back(text.substr(start, end - start));
       start = end + 1;
     }
   }
@@ -92,11 +98,55 @@ std::string findModelFile(const std::string& name, const std::string& sceneDir) 
   if (fs::is_directory(debian, error)) {
     std::vector<fs::path> subfolders;
     for (const auto& entry : fs::directory_iterator(debian, error))
-      if (entry.is_directory()) subfolders.push_back(entry.path());
+      if (entry.is_directory(error)) subfolders.push_back(entry.path());
     std::sort(subfolders.begin(), subfolders.end());  // a fixed order: the same file every run
     folders.insert(folders.end(), subfolders.begin(), subfolders.end());
   }
-  for (const fs::path& folder : folders) {
+  return folders;
+}
+
+}  // namespace
+
+ImportedMesh importMesh(const std::string& path, const ImportOptions& options) {
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) throw std::runtime_error(path + ": no such file");
+  if (!(options.metresPerUnit > 0.0))
+    throw std::runtime_error(path + ": metresPerUnit = " + std::to_string(options.metresPerUnit) + " must be > 0");
+
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyBool(AI_CONFIG_PP_PTV_KEEP_HIERARCHY, true);
+  const aiScene* scene =
+      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                                  aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  if (!scene || !scene->mRootNode) throw std::runtime_error(path + ": " + importer.GetErrorString());
+
+  std::vector<unsigned> order;
+  std::vector<bool> seen(scene->mNumMeshes, false);
+  collectMeshes(scene->mRootNode, order, seen);
+
+  ImportedMesh result;
+  for (const unsigned index : order) {
+    const aiMesh& part = *scene->mMeshes[index];
+    const std::string name = part.mName.C_Str();
+    if (excluded(name, options.exclude)) continue;
+    // A mesh placed by several nodes comes once per placement, under one name.
+    if (std::find(result.meshNames.begin(), result.meshNames.end(), name) == result.meshNames.end())
+      result.meshNames.push_back(name);
+    appendTriangles(part, options, result.mesh);
+  }
+  if (result.mesh.triangles.empty()) throw std::runtime_error(path + ": no triangles (after exclusions)");
+  if (options.mergeByPosition) result.mesh = figment::mergeByPosition(result.mesh);
+  return result;
+}
+
+std::string findModelFile(const std::string& name, const std::string& sceneDir) {
+  if (name.empty()) return {};
+  const fs::path given(name);
+  std::error_code error;
+  if (fs::is_regular_file(given, error)) return given.string();
+  if (given.is_absolute()) return {};
+  for (const fs::path& folder : searchFolders(sceneDir)) {
     const fs::path candidate = folder / given;
     if (fs::is_regular_file(candidate, error)) return candidate.string();
   }

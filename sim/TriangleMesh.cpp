@@ -1,10 +1,36 @@
+// Welding by position with a uniform grid (spatial hashing, as in Teschner et al. 2003,
+// "Optimized Spatial Hashing for Collision Detection of Deformable Objects": the hash
+// of a cell is the xor of its integer coordinates times three large primes).
+
 #include "TriangleMesh.h"
 
+#include "Validation.h"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
 
 namespace figment {
+
+namespace {
+
+using Cell = std::array<int64_t, 3>;
+
+struct CellHash {
+  size_t operator()(const Cell& c) const {
+    // Unsigned arithmetic: wrapping is defined, a signed overflow would not be.
+    const uint64_t h = static_cast<uint64_t>(c[0]) * 73856093u ^ static_cast<uint64_t>(c[1]) * 19349663u ^
+                       static_cast<uint64_t>(c[2]) * 83492791u;
+    return static_cast<size_t>(h);
+  }
+};
+
+// Any cell at least as large as the tolerance finds every partner in the 27 cells around
+// a point; a floor on the size keeps integer cell coordinates in range for tiny tolerances.
+constexpr double kSmallestCell = 1e-9;  // m
+
+}  // namespace
 
 Bounds boundsOf(const std::vector<Vec3>& points) {
   Bounds bounds;
@@ -13,37 +39,30 @@ Bounds boundsOf(const std::vector<Vec3>& points) {
 }
 
 TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance) {
-  // Snap to a grid of cell `tolerance` and look in the 27 neighbouring cells, so two
-  // vertices closer than the tolerance meet even across a cell border. The first
-  // occurrence keeps its place: the order is deterministic.
-  struct CellHash {
-    size_t operator()(const std::array<int64_t, 3>& c) const {
-      return std::hash<int64_t>()(c[0] * 73856093 ^ c[1] * 19349663 ^ c[2] * 83492791);
-    }
+  requireNonNegative("tolerance", tolerance);
+  const double cell = std::max(tolerance, kSmallestCell);
+  auto cellOf = [cell](const Vec3& p) {
+    return Cell{static_cast<int64_t>(std::floor(p.x() / cell)), static_cast<int64_t>(std::floor(p.y() / cell)),
+                static_cast<int64_t>(std::floor(p.z() / cell))};
   };
-  const double cell = tolerance > 0.0 ? tolerance : 1e-12;
-  auto cellOf = [&](const Vec3& p) {
-    return std::array<int64_t, 3>{static_cast<int64_t>(std::floor(p.x() / cell)),
-                                  static_cast<int64_t>(std::floor(p.y() / cell)),
-                                  static_cast<int64_t>(std::floor(p.z() / cell))};
-  };
-  std::unordered_map<std::array<int64_t, 3>, std::vector<int>, CellHash> grid;
+
+  // Each vertex joins the earliest kept vertex within the tolerance, or is kept itself:
+  // kept vertices stay in the order of their first occurrence, whatever the hash does.
+  std::unordered_map<Cell, std::vector<int>, CellHash> grid;
   TriangleMesh merged;
   std::vector<int> remap(mesh.vertices.size());
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3& p = mesh.vertices[i];
-    const auto c = cellOf(p);
+    const Cell c = cellOf(p);
     int found = -1;
-    for (int dx = -1; dx <= 1 && found < 0; ++dx)
-      for (int dy = -1; dy <= 1 && found < 0; ++dy)
-        for (int dz = -1; dz <= 1 && found < 0; ++dz) {
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
           const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
           if (it == grid.end()) continue;
-          for (int candidate : it->second)
-            if ((merged.vertices[candidate] - p).norm() <= tolerance) {
+          for (const int candidate : it->second)
+            if ((found < 0 || candidate < found) && (merged.vertices[candidate] - p).norm() <= tolerance)
               found = candidate;
-              break;
-            }
         }
     if (found < 0) {
       found = static_cast<int>(merged.vertices.size());
@@ -52,6 +71,8 @@ TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance) {
     }
     remap[i] = found;
   }
+
+  // A triangle whose corners met has no area left: drop it.
   for (const Triangle& t : mesh.triangles) {
     const Triangle r{remap[t[0]], remap[t[1]], remap[t[2]]};
     if (r[0] != r[1] && r[1] != r[2] && r[2] != r[0]) merged.triangles.push_back(r);
