@@ -1,0 +1,164 @@
+// The default dress on the default body (human.zae): the garment figment-make-dress writes
+// to scenes/dress.obj. It must start outside the body everywhere, be one consistently wound
+// piece, and carry its straps over the shoulders.
+#include "../sim/MeshChecks.h"
+#include "IoTestSupport.h"
+#include "io/MeshImport.h"
+#include "sim/StrapDress.h"
+#include "sim/TriangleBvh.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace figment;
+
+namespace {
+
+class DressOnBody : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    const std::string path = test::defaultBodyPath();
+    if (path.empty()) return;
+    ImportOptions options;
+    options.exclude = {"eyes"};
+    body_ = new TriangleMesh(importMesh(path, options).mesh);
+    dress_ = new StrapDress(makeStrapDress(*body_));
+  }
+  static void TearDownTestSuite() {
+    delete dress_;
+    delete body_;
+    dress_ = nullptr;
+    body_ = nullptr;
+  }
+  void SetUp() override {
+    if (!body_) GTEST_SKIP() << "human.zae (assimp-testmodels) is not installed";
+  }
+  static const TriangleMesh& body() { return *body_; }
+  static const StrapDress& dress() { return *dress_; }
+
+  // Ray parity: a point is inside a closed surface when a ray from it crosses the surface an
+  // odd number of times (Moeller-Trumbore ray/triangle test; a skew direction misses edges).
+  static bool insideBody(const Vec3& p) {
+    const Vec3 direction = Vec3(0.1234, 0.9876, 0.0567).normalized();
+    int crossings = 0;
+    for (const Triangle& t : body().triangles) {
+      const Vec3 &a = body().vertices[t[0]], &b = body().vertices[t[1]], &c = body().vertices[t[2]];
+      const Vec3 e1 = b - a, e2 = c - a, q = direction.cross(e2);
+      const double det = e1.dot(q);
+      if (std::abs(det) < 1e-15) continue;
+      const Vec3 s = p - a;
+      const double u = s.dot(q) / det;
+      if (u < 0 || u > 1) continue;
+      const Vec3 r = s.cross(e1);
+      const double v = direction.dot(r) / det;
+      if (v < 0 || u + v > 1) continue;
+      if (e2.dot(r) / det > 0) ++crossings;
+    }
+    return crossings % 2 == 1;
+  }
+
+ private:
+  static inline TriangleMesh* body_ = nullptr;
+  static inline StrapDress* dress_ = nullptr;
+};
+
+}  // namespace
+
+// Measured on the body: armpits at ~1.22 m, the neck at ~1.46 m; the top 3 cm under the
+// armpits, the hem at 0.3 of 1.66 m.
+TEST_F(DressOnBody, EdgesFollowTheLandmarks) {
+  EXPECT_NEAR(dress().armpitHeight, 1.22, 0.02);
+  EXPECT_NEAR(dress().neckHeight, 1.46, 0.03);
+  EXPECT_NEAR(dress().topHeight, dress().armpitHeight - 0.03, 1e-12);
+  EXPECT_NEAR(dress().hemHeight, 0.498, 0.01);
+}
+
+TEST_F(DressOnBody, AboutFifteenHundredTriangles) {
+  EXPECT_GE(dress().mesh.triangles.size(), 1400u);
+  EXPECT_LE(dress().mesh.triangles.size(), 1650u);
+}
+
+TEST_F(DressOnBody, OneConsistentlyWoundPieceWithABoundary) {
+  EXPECT_EQ(checks::connectedComponents(dress().mesh), 1);
+  EXPECT_EQ(checks::mostTrianglesOnAnEdge(dress().mesh), 2);
+  EXPECT_TRUE(checks::consistentlyOriented(dress().mesh));
+}
+
+// Normals point away from the body: from the body's vertical axis for the tube, from the top
+// edge's height on that axis (inside the shoulders) for the straps.
+TEST_F(DressOnBody, NormalsPointAwayFromTheBody) {
+  double axisZ = 0;
+  int counted = 0;
+  for (const Vec3& v : body().vertices)
+    if (v.y() > dress().hemHeight && v.y() < dress().topHeight && std::abs(v.x()) < 0.2) axisZ += v.z(), ++counted;
+  axisZ /= counted;
+  int tube = 0, tubeOutward = 0, strap = 0, strapOutward = 0;
+  for (const Triangle& t : dress().mesh.triangles) {
+    const Vec3 c = checks::centroidOf(dress().mesh, t);
+    const bool onStrap = c.y() > dress().topHeight + 1e-9;
+    const Vec3 inside(onStrap ? c.x() : 0.0, onStrap ? dress().topHeight : c.y(), axisZ);
+    const bool outward = checks::normalOf(dress().mesh, t).dot(c - inside) > 0;
+    (onStrap ? strap : tube) += 1;
+    (onStrap ? strapOutward : tubeOutward) += outward;
+  }
+  EXPECT_GE(tubeOutward, 0.98 * tube);
+  EXPECT_GE(strapOutward, 0.98 * strap);
+}
+
+// Outside the body everywhere, by the clearance (1 cm) less the sampling between the body's
+// sections (a few hundredths of a millimetre here).
+TEST_F(DressOnBody, EveryVertexStartsOutsideWithClearance) {
+  const TriangleBvh bvh(body());
+  const double clearance = StrapDressOptions{}.clearance;
+  double nearest = 1e9;
+  for (const Vec3& v : dress().mesh.vertices) {
+    EXPECT_FALSE(insideBody(v)) << v.transpose();
+    nearest = std::min(nearest, std::sqrt(bvh.closest(v).distanceSquared));
+  }
+  EXPECT_GE(nearest, 0.9 * clearance);
+}
+
+// The straps rise over the shoulder tops (y ~1.39 m at |x| 0.1) at the strap offsets.
+TEST_F(DressOnBody, StrapsGoOverTheShoulders) {
+  int high[2] = {0, 0};
+  for (const Vec3& v : dress().mesh.vertices)
+    if (v.y() >= 1.35) {
+      EXPECT_NEAR(std::abs(v.x()), 0.10, 0.015 + 1e-9) << v.transpose();
+      ++high[v.x() > 0];
+    }
+  EXPECT_GE(high[0], 6);
+  EXPECT_GE(high[1], 6);
+  EXPECT_GE(boundsOf(dress().mesh.vertices).max.y(), 1.4);
+}
+
+TEST_F(DressOnBody, SymmetricInX) {
+  const std::vector<Vec3>& vertices = dress().mesh.vertices;
+  for (const Vec3& v : vertices) {
+    const Vec3 mirrored(-v.x(), v.y(), v.z());
+    double nearest = 1e9;
+    for (const Vec3& w : vertices) nearest = std::min(nearest, (w - mirrored).norm());
+    EXPECT_LT(nearest, 0.01) << v.transpose();
+  }
+}
+
+TEST_F(DressOnBody, Deterministic) {
+  const StrapDress again = makeStrapDress(body());
+  EXPECT_EQ(again.mesh.vertices, dress().mesh.vertices);
+  EXPECT_EQ(again.mesh.triangles, dress().mesh.triangles);
+}
+
+// scenes/dress.obj is figment-make-dress's output for the default body: regenerate it
+// (cmake --build <dir> --target figment-dress-obj) when the generator changes.
+TEST_F(DressOnBody, CommittedSceneFileIsUpToDate) {
+  const std::string path = std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.obj";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  const TriangleMesh committed = importMesh(path).mesh;
+  ASSERT_EQ(committed.vertices.size(), dress().mesh.vertices.size());
+  EXPECT_EQ(committed.triangles, dress().mesh.triangles);
+  double largest = 0;
+  for (size_t i = 0; i < committed.vertices.size(); ++i)
+    largest = std::max(largest, (committed.vertices[i] - dress().mesh.vertices[i]).norm());
+  EXPECT_LT(largest, 1e-6);
+}
