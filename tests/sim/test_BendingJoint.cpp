@@ -1,5 +1,6 @@
 // The dihedral angle, its gradient against finite differences, and bending forces
 // that vanish at the rest angle and push a fold back.
+#include "FiniteDifferences.h"
 #include "sim/BendingJoint.h"
 
 #include <gtest/gtest.h>
@@ -28,16 +29,10 @@ TEST(BendingJoint, FlatHingeHasZeroAngleAndFoldsAreSigned) {
 TEST(BendingJoint, AngleGradientMatchesFiniteDifferences) {
   std::vector<Vec3> x = {Vec3(0.01, 0.02, -0.01), Vec3(1.0, 0.1, 0.05), Vec3(0.3, 0.9, 0.2), Vec3(0.7, -0.8, 0.4)};
   const auto g = BendingJoint::angleGradient(x[0], x[1], x[2], x[3]);
-  const double h = 1e-7;
+  const auto fd = meshes::numericalGradient(
+      [](const std::vector<Vec3>& p) { return BendingJoint::angle(p[0], p[1], p[2], p[3]); }, x, 1e-7);
   for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) {
-      auto plus = x, minus = x;
-      plus[i][k] += h;
-      minus[i][k] -= h;
-      const double fd = (BendingJoint::angle(plus[0], plus[1], plus[2], plus[3]) -
-                         BendingJoint::angle(minus[0], minus[1], minus[2], minus[3])) / (2 * h);
-      EXPECT_NEAR(g[i][k], fd, 1e-6) << "corner " << i << " axis " << k;
-    }
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(g[i][k], fd[i][k], 1e-6) << "corner " << i << " axis " << k;
 }
 
 TEST(BendingJoint, ForcesAreMinusTheEnergyGradientAndVanishAtRest) {
@@ -51,15 +46,9 @@ TEST(BendingJoint, ForcesAreMinusTheEnergyGradientAndVanishAtRest) {
   auto x = hinge(0.7);
   std::fill(force.begin(), force.end(), Vec3::Zero());
   joint.addForces(x, 1e-5, force);
-  const double h = 1e-7;
+  const auto fd = meshes::numericalGradient([&](const std::vector<Vec3>& p) { return joint.energy(p, 1e-5); }, x, 1e-7);
   for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) {
-      auto plus = x, minus = x;
-      plus[i][k] += h;
-      minus[i][k] -= h;
-      const double fd = (joint.energy(plus, 1e-5) - joint.energy(minus, 1e-5)) / (2 * h);
-      EXPECT_NEAR(force[i][k], -fd, 1e-9);
-    }
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(force[i][k], -fd[i][k], 1e-9) << "corner " << i << " axis " << k;
   // Restoring: moving x3 along its force reduces the fold towards the rest angle.
   auto relaxed = x;
   relaxed[3] += 1e-3 * force[3].normalized();
