@@ -16,6 +16,7 @@ ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& par
   x_ = garment.vertices;
   v_.assign(x_.size(), Vec3::Zero());
   pinned_.assign(x_.size(), 0);
+  bodyDistanceBound_.assign(x_.size(), 0.0);
 }
 
 ClothSolver::~ClothSolver() = default;
@@ -38,6 +39,8 @@ bool ClothSolver::atRest() const {
 }
 
 namespace {
+constexpr double kContactSearchMargin = 0.02;  // m beyond clearance and motion a query looks
+
 // Contact response on one node that ended the step inside the body or within the
 // clearance: place it on the surface plus clearance, and make its velocity the motion
 // it actually made this step ((x - xPrevious) / dt), so that a node the body holds in
@@ -86,15 +89,23 @@ void ClothSolver::step() {
     x_[i] += 0.5 * dt * (v_[i] + vPredicted_[i]);
     v_[i] += 0.5 * dt * (a0_[i] + a1_[i]);
     if (body_) {
-      // Look as far as the node moved (plus a margin) so that a node cannot pass the
-      // surface unseen; on the first step look everywhere, since a garment may start
-      // roughly placed with nodes inside the body (paper §3.3).
       const double moved = (x_[i] - previous).norm();
-      const double searchRadius = iterations_ == 0 ? std::numeric_limits<double>::infinity()
-                                                   : parameters_.clearance + 2.0 * moved + 0.005;
-      Contact contact;
-      if (body_->contact(x_[i], parameters_.clearance, searchRadius, contact))
-        respondToContact(contact, parameters_.clearance, parameters_.friction, dt, previous, x_[i], v_[i]);
+      double& bound = bodyDistanceBound_[i];
+      bound -= moved;
+      if (bound <= parameters_.clearance) {
+        // Look well beyond this step's motion so that the bound then lets the next
+        // steps skip the query; on the first step look everywhere, since a garment may
+        // start roughly placed with nodes inside the body (paper §3.3).
+        const double searchRadius = iterations_ == 0 ? std::numeric_limits<double>::infinity()
+                                                     : parameters_.clearance + 2.0 * moved + kContactSearchMargin;
+        Contact contact;
+        if (body_->contact(x_[i], parameters_.clearance, searchRadius, contact)) {
+          respondToContact(contact, parameters_.clearance, parameters_.friction, dt, previous, x_[i], v_[i]);
+          bound = parameters_.clearance;
+        } else {
+          bound = contact.distance;
+        }
+      }
     }
     const double speed = v_[i].norm();
     if (!std::isfinite(speed) || !x_[i].allFinite() || speed > kBlowUpSpeed)

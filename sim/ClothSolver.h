@@ -73,6 +73,10 @@ class ClothSolver {
   int iterations_ = 0;
   double restSince_ = -1.0;  // time the cloth became slower than the threshold; -1: moving
   std::vector<char> pinned_;
+  // Per node, a lower bound of its distance to the body, kept down to date by the
+  // distance it moved since the last query: while it exceeds the clearance the node
+  // cannot touch the body and needs no query (exact, since the body does not move).
+  std::vector<double> bodyDistanceBound_;
   std::vector<Vec3> a0_, a1_, xPredicted_, vPredicted_;  // Heun's scratch
 };
 

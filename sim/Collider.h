@@ -17,8 +17,10 @@ class Collider {
  public:
   virtual ~Collider() = default;
   // True when `p` is inside or within `clearance` of the surface; `searchRadius` bounds
-  // how far outside the surface the query looks (a hint for speed; a point inside is
-  // always found when it lies within `searchRadius` of the surface).
+  // how far from the surface the query looks (a point inside is found when it lies
+  // within `searchRadius` of the surface). When it returns false, out.distance is a lower
+  // bound of p's distance to the surface: the distance found, or searchRadius when
+  // nothing lies within it; a caller may skip queries while p has not moved that far.
   virtual bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const = 0;
 };
 

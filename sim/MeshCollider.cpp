@@ -39,7 +39,10 @@ MeshCollider::MeshCollider(TriangleMesh surface) : surface_(std::move(surface)),
 
 bool MeshCollider::contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const {
   const ClosestPoint closest = bvh_.closest(p, searchRadius);
-  if (closest.triangle < 0) return false;
+  if (closest.triangle < 0) {
+    out.distance = searchRadius;
+    return false;
+  }
   const Triangle& tri = surface_.triangles[closest.triangle];
   Vec3 pseudoNormal = faceNormals_[closest.triangle];
   switch (closest.feature) {

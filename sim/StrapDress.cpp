@@ -3,13 +3,9 @@
 //    the torso) give the top edge, armpits - 3 cm; the hem defaults to 0.30 of stature, just
 //    above the knee (knee height ~0.285 H: Drillis & Contini 1966, Winter's "Biomechanics and
 //    Motor Control of Human Movement", fig. 4.1).
-// 2. The tube's shape: rows at fixed heights around one vertical axis (the mean centroid of the
-//    rows' torso sections). Along the ray at angle theta from the axis, a row's radius is where
-//    the ray leaves the torso's convex section offset by the clearance, the widest of several
-//    sections within half a row above and below (nothing between two rows pokes through).
-//    Convex sections span the gap between the legs and the cleavage as a tube of cloth does.
-//    Below the hips (the widest row under the waist) no row is narrower than those above it,
-//    plus a flare growing linearly to the hem: an A-line skirt that falls free of the thighs.
+// 2. The tube's shape (StrapDressTube): rows around one vertical axis, clear of the torso's
+//    convex sections, an A-line skirt below the hips, and the top edge raised between the
+//    straps, front and back, fading out beyond the straps and over the first rows.
 // 3. Columns: on the top edge, three per strap end sit exactly at the strap's lane x, so a
 //    strap is two quads (strapWidth) wide where it joins the tube; the other columns share the
 //    arcs between straps in proportion to their length (equal spacing on each arc, the left and
@@ -17,9 +13,9 @@
 //    spacing by arc length, so the straps' close columns do not run down the dress as short
 //    edges (an explicit solver's stable time step scales with the shortest edge).
 // 4. Each strap follows the body's profile in the sagittal plane under it: rays from a centre
-//    at the top edge (midway between the strap's front and back ends) sweep from the front over
-//    the shoulder to the back; on each the outermost crossing of the body's sections across the
-//    strap's band (|x - strap| <= width/2 + 1 cm) below the neck, pushed out until the clearance
+//    on the top edge's height under the strap (midway between its front and back ends) sweep
+//    from the front over the shoulder to the back; on each the outermost crossing of the body's
+//    sections across the strap's band (|x - strap| <= width/2 + 1 cm) below the neck, pushed out until the clearance
 //    holds, is a profile point. The profile is resampled by arc length; near the ends it is
 //    blended onto the tube's top-edge vertices, which the strap shares.
 // 5. Windings: counter-clockwise seen from outside by construction (tube: theta grows from +x
@@ -28,6 +24,7 @@
 #include "StrapDress.h"
 
 #include "BodySlices.h"
+#include "StrapDressTube.h"
 #include "Validation.h"
 
 #include <algorithm>
@@ -43,9 +40,7 @@ namespace figment {
 namespace {
 
 constexpr double kTwoPi = 2.0 * M_PI;
-constexpr double kFrontCentre = 0.5 * M_PI;  // the angle pointing +z, where arc lengths start
-constexpr int kSectionsPerRow = 5;         // sections sampled within each row's band
-constexpr int kAngleSamples = 720;         // around each row, for arc lengths and anchors
+constexpr int kAnchorSteps = 360;          // over half the top edge, when looking for a strap's lane
 constexpr int kSettleRows = 4;             // rows over which columns go from the straps' layout to even
 constexpr double kStrapBandMargin = 0.01;  // m beside the strap still looked at under it
 constexpr double kStrapCutSpacing = 0.005; // m between the sagittal sections under a strap
@@ -59,137 +54,13 @@ void requireAtLeast(const char* field, int value, int least) {
 }
 
 double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
-
-// The tube's shape: rows at fixed heights around one vertical axis, each row's radius a
-// function of the angle theta around the axis ((cos theta, sin theta) in (x, z)).
-class TubeShape {
- public:
-  // Rows from `top` down to `hem`; a row's band of sections reaches half a row up and down,
-  // but not above `ceiling` (where the arms join the torso: their sections would count).
-  TubeShape(const TriangleMesh& body, double top, double hem, double ceiling, int rows, double clearance,
-            double hemFlare, const SliceOptions& slicing)
-      : clearance_(clearance) {
-    sliceRows(body, top, hem, ceiling, rows, slicing);
-    shapeSkirt(hemFlare);
-    for (int i = 0; i <= rows; ++i) {
-      std::vector<double> arc = {0.0};
-      for (int k = 1; k <= kAngleSamples; ++k) {
-        const Vec2 previous = point(sampleAngle(k - 1), sampledRadius(i, k - 1));
-        const Vec2 next = point(sampleAngle(k), sampledRadius(i, k % kAngleSamples));
-        arc.push_back(arc.back() + (next - previous).norm());
-      }
-      arcs_.push_back(std::move(arc));
-    }
-  }
-
-  int rowCount() const { return static_cast<int>(heights_.size()); }
-  double height(int row) const { return heights_[row]; }
-
-  // Distance from the axis of row `row` at `angle`: clear of every section of its band and,
-  // below the hips, of the rows above it, plus the flare.
-  double radius(int row, double angle) const {
-    double r = bodyRadius(row, angle);
-    for (int above = hips_; above < row; ++above) r = std::max(r, bodyRadius(above, angle));
-    return r + flare_[row];
-  }
-  Vec2 point(double angle, double r) const { return axis_ + r * direction(angle); }
-  Vec2 point(int row, double angle) const { return point(angle, radius(row, angle)); }
-
-  // Arc length along a row, counter-clockwise from the front centre to `angle`, and back; both
-  // interpolate the same table (sampled every 0.5 degree), so they are each other's inverse.
-  double perimeter(int row) const { return arcs_[row].back(); }
-  double arcTo(int row, double angle) const {
-    const double turns = (angle - kFrontCentre) / kTwoPi;
-    const double k = (turns - std::floor(turns)) * kAngleSamples;
-    const int i = std::min(static_cast<int>(k), kAngleSamples - 1);
-    return arcs_[row][i] + (k - i) * (arcs_[row][i + 1] - arcs_[row][i]);
-  }
-  double angleAtArc(int row, double length) const {
-    const std::vector<double>& arc = arcs_[row];
-    length -= perimeter(row) * std::floor(length / perimeter(row));
-    const int i = std::clamp(static_cast<int>(std::upper_bound(arc.begin(), arc.end(), length) - arc.begin()) - 1, 0,
-                             kAngleSamples - 1);
-    return sampleAngle(i) + (sampleAngle(i + 1) - sampleAngle(i)) * (length - arc[i]) / (arc[i + 1] - arc[i]);
-  }
-
- private:
-  static double sampleAngle(int k) { return kFrontCentre + kTwoPi * k / kAngleSamples; }
-
-  void sliceRows(const TriangleMesh& body, double top, double hem, double ceiling, int rows,
-                 const SliceOptions& slicing) {
-    const double spacing = (top - hem) / rows;
-    Vec2 centroidSum = Vec2::Zero();
-    for (int i = 0; i <= rows; ++i) {
-      const double y = top - i * spacing;
-      heights_.push_back(y);
-      const TorsoSlice own = sliceTorso(body, y, slicing);
-      if (own.empty()) throw std::invalid_argument("body: no torso section at y = " + formatNumber(y));
-      centroidSum += own.centroid();
-      const double low = y - 0.5 * spacing, high = std::max(y, std::min(ceiling, y + 0.5 * spacing));
-      std::vector<TorsoSlice> band;
-      for (int s = 0; s < kSectionsPerRow; ++s) {
-        TorsoSlice slice = sliceTorso(body, low + (high - low) * s / (kSectionsPerRow - 1), slicing);
-        if (!slice.empty()) band.push_back(std::move(slice));
-      }
-      sections_.push_back(std::move(band));
-    }
-    axis_ = centroidSum / (rows + 1);
-    for (const auto& band : sections_)
-      for (const TorsoSlice& slice : band)
-        if (!slice.contains(axis_))
-          throw std::invalid_argument("body: the section at y = " + formatNumber(slice.height) +
-                                      " does not surround the dress's axis (x = " + formatNumber(axis_.x()) +
-                                      ", z = " + formatNumber(axis_.y()) + ")");
-  }
-
-  double bodyRadius(int row, double angle) const {
-    double r = 0;
-    for (const TorsoSlice& slice : sections_[row]) r = std::max(r, slice.reach(axis_, direction(angle), clearance_));
-    return r;
-  }
-
-  // Finds the hips (the widest row below the waist, the first row from the top narrower than
-  // the next: the knees may be narrower still) and the flare, growing linearly from 0 there to
-  // hemFlare at the hem. Samples bodyRadius around every row for this and for the arc tables.
-  void shapeSkirt(double hemFlare) {
-    const int rows = rowCount();
-    std::vector<double> mean(rows, 0.0);
-    bodySamples_.assign(rows, std::vector<double>(kAngleSamples));
-    for (int i = 0; i < rows; ++i)
-      for (int k = 0; k < kAngleSamples; ++k) {
-        bodySamples_[i][k] = bodyRadius(i, sampleAngle(k));
-        mean[i] += bodySamples_[i][k] / kAngleSamples;
-      }
-    int waist = 0;
-    while (waist + 1 < rows && mean[waist + 1] < mean[waist]) ++waist;
-    hips_ = static_cast<int>(std::max_element(mean.begin() + waist, mean.end()) - mean.begin());
-    flare_.assign(rows, 0.0);
-    for (int i = hips_ + 1; i < rows; ++i)
-      flare_[i] = hemFlare * (heights_[hips_] - heights_[i]) / (heights_[hips_] - heights_[rows - 1]);
-  }
-
-  double sampledRadius(int row, int k) const {
-    double r = bodySamples_[row][k];
-    for (int above = hips_; above < row; ++above) r = std::max(r, bodySamples_[above][k]);
-    return r + flare_[row];
-  }
-
-  double clearance_;
-  std::vector<double> heights_;
-  std::vector<std::vector<TorsoSlice>> sections_;
-  Vec2 axis_ = Vec2::Zero();
-  int hips_ = 0;
-  std::vector<double> flare_;                     // m, per row
-  std::vector<std::vector<double>> bodySamples_;  // bodyRadius per row at sampleAngle(k)
-  std::vector<std::vector<double>> arcs_;         // per row, arc length at sampleAngle(k), k = 0..kAngleSamples
-};
+Vec2 direction(double angle) { return StrapDressTube::direction(angle); }
 
 // The angle on the front (z > axis) or back half of the top edge where its x equals `x`.
-double angleWhereXIs(const TubeShape& shape, double x, bool front) {
+double angleWhereXIs(const StrapDressTube& shape, double x, bool front) {
   const double start = front ? 0.0 : M_PI;
-  auto offset = [&](double angle) { return shape.point(0, angle).x() - x; };
-  const int steps = kAngleSamples / 2;
+  auto offset = [&](double angle) { return shape.vertex(0, angle).x() - x; };
+  const int steps = kAnchorSteps;
   double a = start, fa = offset(a);
   for (int s = 1; s <= steps; ++s) {
     double b = start + M_PI * s / steps, fb = offset(b);
@@ -218,7 +89,7 @@ struct StrapLanes {
 
 // Column angles around the tube: the straps' anchors, and between them columns spaced evenly
 // along the top edge. Fills in the lanes' column indices.
-std::vector<double> placeColumns(const TubeShape& shape, int columns, std::array<StrapLanes, 2>& straps) {
+std::vector<double> placeColumns(const StrapDressTube& shape, int columns, std::array<StrapLanes, 2>& straps) {
   // Counter-clockwise from +x: right strap front, left strap front, left back, right back.
   const std::array<const std::array<double, 3>*, 4> groups = {&straps[1].frontAngle, &straps[0].frontAngle,
                                                               &straps[0].backAngle, &straps[1].backAngle};
@@ -269,7 +140,7 @@ std::vector<double> placeColumns(const TubeShape& shape, int columns, std::array
 // keep their arc-length fraction around the row, measured from the front centre; the even
 // layout is the one nearest the top's in least squares, which keeps a symmetric layout
 // symmetric.
-std::vector<std::vector<double>> rowAngles(const TubeShape& shape, const std::vector<double>& top) {
+std::vector<std::vector<double>> rowAngles(const StrapDressTube& shape, const std::vector<double>& top) {
   const int columns = static_cast<int>(top.size());
   std::vector<double> fraction(columns);
   for (int j = 0; j < columns; ++j) fraction[j] = shape.arcTo(0, top[j]) / shape.perimeter(0);
@@ -384,13 +255,12 @@ void addQuad(std::vector<Triangle>& triangles, int a, int b, int c, int d, bool 
 
 // Appends the tube to an empty mesh: vertex (row i, column j) is i * columns + j, so the top
 // edge's vertices are the first `columns`.
-void appendTube(const TubeShape& shape, const std::vector<std::vector<double>>& angles, TriangleMesh& mesh) {
+void appendTube(const StrapDressTube& shape, const std::vector<std::vector<double>>& angles, TriangleMesh& mesh) {
   assert(mesh.vertices.empty());
   const int columns = static_cast<int>(angles[0].size()), rows = shape.rowCount();
   for (int i = 0; i < rows; ++i)
     for (int j = 0; j < columns; ++j) {
-      const Vec2 p = shape.point(i, angles[i][j]);
-      mesh.vertices.emplace_back(p.x(), shape.height(i), p.y());
+      mesh.vertices.push_back(shape.vertex(i, angles[i][j]));
     }
   auto vertex = [columns](int i, int j) { return i * columns + (j % columns); };
   for (int i = 0; i + 1 < rows; ++i)
@@ -401,11 +271,13 @@ void appendTube(const TubeShape& shape, const std::vector<std::vector<double>>& 
 // Appends a strap whose lanes start and end at the tube's top-edge vertices (appendTube first).
 void appendStrap(const TriangleMesh& body, const StrapLanes& strap, const StrapDress& dress,
                  const StrapDressOptions& options, TriangleMesh& mesh) {
+  // The profile's rays start at the top edge's height under the strap's centre line: with the
+  // neckline raised there, the strap's ends meet the top edge nearly level.
   auto topEdge = [&](int column) {  // (z, y) of a tube vertex on the top edge
     const Vec3& v = mesh.vertices[column];
     return Vec2(v.z(), v.y());
   };
-  const Vec2 centre(0.5 * (topEdge(strap.frontColumn[1]).x() + topEdge(strap.backColumn[1]).x()), dress.topHeight);
+  const Vec2 centre = 0.5 * (topEdge(strap.frontColumn[1]) + topEdge(strap.backColumn[1]));
   const std::vector<Segment2> band = strapBand(body, 0.5 * (strap.x[0] + strap.x[2]),
                                                0.5 * options.strapWidth + kStrapBandMargin, dress.neckHeight);
   const int n = options.strapSegments;
@@ -469,6 +341,8 @@ void StrapDressOptions::validate() const {
   requireAtLeast("strapSegments", strapSegments, 4);
   requirePositive("clusterGap", clusterGap);
   requirePositive("torsoHalfWidth", torsoHalfWidth);
+  requireNonNegative("necklineRise", necklineRise);
+  requirePositive("necklineFade", necklineFade);
 }
 
 StrapDress makeStrapDress(const TriangleMesh& body, const StrapDressOptions& options) {
@@ -489,8 +363,14 @@ StrapDress makeStrapDress(const TriangleMesh& body, const StrapDressOptions& opt
     throw std::invalid_argument("hemHeight = " + formatNumber(dress.hemHeight) + " must be below topHeight = " +
                                 formatNumber(dress.topHeight));
 
-  const TubeShape shape(body, dress.topHeight, dress.hemHeight, std::max(dress.topHeight, dress.armpitHeight),
-                        options.rows, options.clearance, options.hemFlare, slicing);
+  Neckline neckline;
+  neckline.rise = options.necklineRise;
+  neckline.centreX = slicing.torsoCentreX;
+  neckline.plateau = options.strapOffset;
+  neckline.fade = options.necklineFade;
+  const StrapDressTube shape(body, dress.topHeight, dress.hemHeight, std::max(dress.topHeight, dress.armpitHeight),
+                             options.rows, options.clearance, options.hemFlare, slicing, neckline);
+  dress.necklineHeight = dress.topHeight + options.necklineRise;
   std::array<StrapLanes, 2> straps;  // left (x < centre), right
   for (int side = 0; side < 2; ++side) {
     dress.strapX[side] = slicing.torsoCentreX + (side == 0 ? -1 : 1) * options.strapOffset;

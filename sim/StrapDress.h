@@ -1,8 +1,10 @@
 #pragma once
 // The default garment: a strap dress generated around a body (metres, y up, facing +z),
 // roughly placed but outside the body everywhere by a clearance, for the simulation to
-// drape. A tube (bodice and skirt) from just under the armpits to about the knees and two
-// shoulder straps from the tube's front top edge over each shoulder to its back top edge.
+// drape. A tube (bodice and skirt) from just under the armpits to about the knees, its top
+// edge raised between the straps in front and at the back (a straight-across neckline over
+// the bust), and two shoulder straps from the tube's front top edge over each shoulder to its
+// back top edge.
 // One connected mesh, manifold with a boundary, wound counter-clockwise seen from outside
 // (normals away from the body). Method and sources at the top of StrapDress.cpp.
 
@@ -14,8 +16,10 @@ namespace figment {
 
 struct StrapDressOptions {
   double clearance = 0.01;              // m kept between every cloth vertex and the body
-  std::optional<double> topHeight;      // m; default: armpits - topBelowArmpit
+  std::optional<double> topHeight;      // m, the top edge under the arms; default: armpits - topBelowArmpit
   double topBelowArmpit = 0.03;         // m
+  double necklineRise = 0.07;           // m the top edge rises between the straps' centre lines, front and back
+  double necklineFade = 0.04;           // m in |x| beyond the straps' centre lines over which the rise fades out
   std::optional<double> hemHeight;      // m; default: body bottom + hemHeightRatio * stature
   double hemHeightRatio = 0.30;         // knee height is ~0.285 of stature (Drillis & Contini 1966)
   int rows = 18;                        // rows of quads in the tube, top to hem
@@ -33,7 +37,8 @@ struct StrapDressOptions {
 
 struct StrapDress {
   TriangleMesh mesh;  // vertices numbered in the order the triangles first use them
-  double topHeight = 0;     // m, the tube's top edge
+  double topHeight = 0;       // m, the tube's top edge under the arms
+  double necklineHeight = 0;  // m, the top edge between the straps: topHeight + necklineRise
   double hemHeight = 0;     // m, the tube's bottom edge
   double armpitHeight = 0;  // m, as measured on the body
   double neckHeight = 0;    // m, as measured on the body

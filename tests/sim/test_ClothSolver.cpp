@@ -93,6 +93,42 @@ TEST(ClothSolver, ClothDrapedOverABallStaysOutsideIt) {
   EXPECT_LT(solver.positions()[0].y(), 0.0);
 }
 
+namespace {
+// The same body, but it never tells the solver how far away a node is, so the solver
+// must query every node on every step.
+class AlwaysQueriedBody : public Collider {
+ public:
+  explicit AlwaysQueriedBody(std::shared_ptr<const Collider> body) : body_(std::move(body)) {}
+  bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override {
+    ++queries;
+    const bool touching = body_->contact(p, clearance, searchRadius, out);
+    if (!touching) out.distance = 0.0;
+    return touching;
+  }
+  mutable long queries = 0;
+
+ private:
+  std::shared_ptr<const Collider> body_;
+};
+
+}  // namespace
+
+TEST(ClothSolver, SkippingFarNodesChangesNothing) {
+  // Nodes whose last known distance to the body exceeds what they moved since are not
+  // queried; that must give exactly the result of querying every node every step.
+  ClothParameters p;
+  p.maxTime = 0.4;
+  auto ball = std::make_shared<MeshCollider>(meshes::sphere(0.15, 48, 24));
+  const TriangleMesh sheet = meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, 0.2, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
+  auto everyStep = std::make_shared<AlwaysQueriedBody>(ball);
+  ClothSolver skipping(sheet, p, ball), querying(sheet, p, everyStep);
+  skipping.run();
+  querying.run();
+  EXPECT_EQ(skipping.positions(), querying.positions());
+  EXPECT_EQ(skipping.velocities(), querying.velocities());
+  EXPECT_EQ(everyStep->queries, static_cast<long>(sheet.vertices.size()) * querying.iterations());
+}
+
 TEST(ClothSolver, RejectsBadParametersNamingTheField) {
   const TriangleMesh sheet = meshes::grid(2, 2, 0.1, 0.1);
   ClothParameters p;
