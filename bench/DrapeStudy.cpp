@@ -54,7 +54,8 @@ int runDrapeStudy(const DrapeStudyOptions& options) {
       }
       const ClothEngine::RunStats& stats = engine->lastRun();
       const double perSecond = stats.iterations / stats.wallSeconds;
-      csv << run << ',' << engine->label() << ',' << stats.triangles << ',' << stats.iterations << ','
+      const std::string garment = engine->getName().getLength() ? engine->getName().getString() : "unnamed";
+      csv << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
           << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0) << ',' << perSecond
           << '\n';
       wall.push_back(stats.wallSeconds);
