@@ -384,6 +384,7 @@ StrapDress makeStrapDress(const TriangleMesh& body, const StrapDressOptions& opt
 
   TriangleMesh mesh;
   appendTube(shape, angles, mesh);
+  dress.tubeTriangles = static_cast<int>(mesh.triangles.size());
   for (const StrapLanes& strap : straps) appendStrap(body, strap, dress, options, mesh);
   dress.mesh = numberedByFirstUse(mesh);
   return dress;

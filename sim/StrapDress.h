@@ -18,7 +18,7 @@ struct StrapDressOptions {
   double clearance = 0.01;              // m kept between every cloth vertex and the body
   std::optional<double> topHeight;      // m, the top edge under the arms; default: armpits - topBelowArmpit
   double topBelowArmpit = 0.03;         // m
-  double necklineRise = 0.07;           // m the top edge rises between the straps' centre lines, front and back
+  double necklineRise = 0.08;           // m the top edge rises between the straps' centre lines, front and back
   double necklineFade = 0.04;           // m in |x| beyond the straps' centre lines over which the rise fades out
   std::optional<double> hemHeight;      // m; default: body bottom + hemHeightRatio * stature
   double hemHeightRatio = 0.30;         // knee height is ~0.285 of stature (Drillis & Contini 1966)
@@ -37,6 +37,7 @@ struct StrapDressOptions {
 
 struct StrapDress {
   TriangleMesh mesh;  // vertices numbered in the order the triangles first use them
+  int tubeTriangles = 0;  // the mesh's first triangles are the tube's (2 x columns x rows), the straps' follow
   double topHeight = 0;       // m, the tube's top edge under the arms
   double necklineHeight = 0;  // m, the top edge between the straps: topHeight + necklineRise
   double hemHeight = 0;     // m, the tube's bottom edge

@@ -9,7 +9,9 @@
 // 3. The neckline: in A-pose the arms join the torso at the armpits, so the top edge stays
 //    under them at the sides, but between the straps, front and back, it rises to cover the
 //    bust. The rise is a function of the unraised top edge's x (a smoothstep fade, C1, beyond
-//    the straps' centre lines) and fades out linearly over the first rows. A raised vertex
+//    the straps' centre lines); the row below the top edge is raised as much, so that the bust
+//    lies between the two even after the drape lowers the dress a few centimetres, then the
+//    rise fades out linearly over the next rows. A raised vertex
 //    keeps its row's angle; its radius comes from the sections around its own height, sampled
 //    on a 1 mm stack (floored, so a band capped at the armpits stays under them).
 
@@ -41,6 +43,7 @@ StrapDressTube::StrapDressTube(const TriangleMesh& body, double top, double hem,
                                const Neckline& neckline)
     : clearance_(clearance), ceiling_(ceiling), neckline_(neckline) {
   neckline_.rows = std::clamp(neckline_.rows, 1, rows);
+  neckline_.fullRows = std::clamp(neckline_.fullRows, 0, neckline_.rows - 1);
   sliceRows(body, top, hem, rows, slicing);
   shapeSkirt(hemFlare);
   for (int i = 0; i <= rows; ++i) {
@@ -81,7 +84,8 @@ double StrapDressTube::rise(int row, double angle) const {
   const double beyond = std::abs(point(0, angle).x() - neckline_.centreX) - neckline_.plateau;
   const double t = std::clamp(beyond / neckline_.fade, 0.0, 1.0);
   if (t == 1) return 0;
-  return neckline_.rise * (1 - smoothstep(t)) * (1 - static_cast<double>(row) / neckline_.rows);
+  const double down = std::min(1.0, static_cast<double>(neckline_.rows - row) / (neckline_.rows - neckline_.fullRows));
+  return neckline_.rise * (1 - smoothstep(t)) * down;
 }
 
 Vec3 StrapDressTube::vertex(int row, double angle) const {

@@ -12,14 +12,16 @@ namespace figment {
 
 // Where the top edge rises: by `rise` (m) where the unraised top edge has
 // |x - centreX| <= plateau (between the straps' centre lines), front and back, fading to no
-// rise at plateau + fade by a smoothstep in |x|; down the tube the rise shrinks linearly to
-// none at row `rows`.
+// rise at plateau + fade by a smoothstep in |x|. Down the tube the rows above `fullRows` are
+// raised as much as the top edge (the bust lies between them), then the rise shrinks linearly
+// to none at row `rows`.
 struct Neckline {
   double rise = 0;     // m
   double centreX = 0;  // m, the torso's centre
   double plateau = 0;  // m
   double fade = 0.04;  // m
-  int rows = 4;        // rows over which the rise fades out downwards (at most the tube's)
+  int fullRows = 2;    // rows raised by the whole rise, from the top edge down
+  int rows = 6;        // rows raised at all (at most the tube's; more than fullRows)
 };
 
 class StrapDressTube {

@@ -38,6 +38,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--clearance", options.clearance, "gap between body and dress at the start, m")
       ->capture_default_str();
+  app.add_option("--neckline-rise", options.necklineRise, "rise of the top edge between the straps, m")
+      ->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& help) {
@@ -65,8 +67,10 @@ int main(int argc, char** argv) {
   } catch (const std::exception& error) {
     return fail(error.what());
   }
-  std::printf("%s: %s: %zu vertices, %zu triangles, top %.3f m, hem %.3f m, straps at x = %.3f, %.3f m\n", kProgram,
-              output.c_str(), dress.mesh.vertices.size(), dress.mesh.triangles.size(), dress.topHeight, dress.hemHeight,
+  std::printf("%s: %s: %zu vertices, %zu triangles, top %.3f m (%.3f m between the straps), hem %.3f m, "
+              "straps at x = %.3f, %.3f m\n",
+              kProgram, output.c_str(), dress.mesh.vertices.size(), dress.mesh.triangles.size(), dress.topHeight,
+              dress.necklineHeight, dress.hemHeight,
               dress.strapX[0], dress.strapX[1]);
   return 0;
 }

@@ -1,6 +1,7 @@
 // The default dress on the default body (human.zae): the garment figment-make-dress writes
 // to scenes/dress.obj. It must start outside the body everywhere, be one consistently wound
 // piece, and carry its straps over the shoulders.
+#include "../sim/DressChecks.h"
 #include "../sim/MeshChecks.h"
 #include "IoTestSupport.h"
 #include "io/MeshImport.h"
@@ -75,6 +76,41 @@ TEST_F(DressOnBody, EdgesFollowTheLandmarks) {
   EXPECT_NEAR(dress().hemHeight, 0.498, 0.01);
 }
 
+// The neckline: the top edge between the straps, front and back, is necklineRise (8 cm) above
+// its height under the arms, over the bust (apex ~1.21 m) by enough to stay above it after the
+// drape lowers the dress (~3 cm); beyond the straps' centre lines plus the fade it is not raised.
+TEST_F(DressOnBody, NecklineRisesOverTheBust) {
+  const StrapDressOptions defaults;
+  EXPECT_NEAR(dress().necklineHeight, dress().topHeight + defaults.necklineRise, 1e-12);
+  EXPECT_GE(dress().necklineHeight, 1.26);
+  int raised[2] = {0, 0}, underArms = 0;
+  for (const Vec3& v : checks::tubeTopEdge(dress())) {
+    EXPECT_GE(v.y(), dress().topHeight - 1e-12) << v.transpose();
+    EXPECT_LE(v.y(), dress().necklineHeight + 1e-12) << v.transpose();
+    if (std::abs(v.x()) < 0.09) {
+      EXPECT_NEAR(v.y(), dress().necklineHeight, 1e-12) << v.transpose();
+      ++raised[v.z() > 0];
+    }
+    if (std::abs(v.x()) >= defaults.strapOffset + defaults.necklineFade) {
+      EXPECT_EQ(v.y(), dress().topHeight) << v.transpose();
+      ++underArms;
+    }
+  }
+  EXPECT_GE(raised[0], 5);
+  EXPECT_GE(raised[1], 5);
+  EXPECT_GE(underArms, 10);
+}
+
+// The solver's stable time step scales with the shortest edge: none under 1.5 cm (half the
+// strap's width), less a rounding margin.
+TEST_F(DressOnBody, NoShortEdges) {
+  double shortest = 1e9;
+  for (const Triangle& t : dress().mesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      shortest = std::min(shortest, (dress().mesh.vertices[t[k]] - dress().mesh.vertices[t[(k + 1) % 3]]).norm());
+  EXPECT_GE(shortest, 0.0149);
+}
+
 TEST_F(DressOnBody, AboutFifteenHundredTriangles) {
   EXPECT_GE(dress().mesh.triangles.size(), 1400u);
   EXPECT_LE(dress().mesh.triangles.size(), 1650u);
@@ -95,9 +131,10 @@ TEST_F(DressOnBody, NormalsPointAwayFromTheBody) {
     if (v.y() > dress().hemHeight && v.y() < dress().topHeight && std::abs(v.x()) < 0.2) axisZ += v.z(), ++counted;
   axisZ /= counted;
   int tube = 0, tubeOutward = 0, strap = 0, strapOutward = 0;
-  for (const Triangle& t : dress().mesh.triangles) {
+  for (size_t i = 0; i < dress().mesh.triangles.size(); ++i) {
+    const Triangle& t = dress().mesh.triangles[i];
     const Vec3 c = checks::centroidOf(dress().mesh, t);
-    const bool onStrap = c.y() > dress().topHeight + 1e-9;
+    const bool onStrap = checks::onStrap(dress(), static_cast<int>(i));
     const Vec3 inside(onStrap ? c.x() : 0.0, onStrap ? dress().topHeight : c.y(), axisZ);
     const bool outward = checks::normalOf(dress().mesh, t).dot(c - inside) > 0;
     (onStrap ? strap : tube) += 1;

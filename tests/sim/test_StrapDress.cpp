@@ -3,6 +3,7 @@
 // the clearance, its straps over the shoulders. The same dress on the default body is tested
 // in tests/io/test_DressOnBody.cpp.
 #include "Mannequin.h"
+#include "DressChecks.h"
 #include "MeshChecks.h"
 #include "sim/StrapDress.h"
 
@@ -25,6 +26,7 @@ TEST(StrapDress, LandmarksAndEdgesFollowTheBody) {
   const StrapDress& dress = dressOnFigure();
   EXPECT_NEAR(dress.armpitHeight, 1.3, 0.002);  // the shoulder bar's underside
   EXPECT_NEAR(dress.topHeight, dress.armpitHeight - 0.03, 1e-12);
+  EXPECT_NEAR(dress.necklineHeight, dress.topHeight + StrapDressOptions{}.necklineRise, 1e-12);
   EXPECT_NEAR(dress.hemHeight, 0.30 * 1.75, 1e-12);
   EXPECT_DOUBLE_EQ(dress.strapX[0], -0.10);
   EXPECT_DOUBLE_EQ(dress.strapX[1], 0.10);
@@ -37,6 +39,43 @@ TEST(StrapDress, TriangleCount) {
   const StrapDress& dress = dressOnFigure();
   EXPECT_EQ(dress.mesh.triangles.size(), 2u * (40 * 18 + 2 * 2 * 14));
   EXPECT_EQ(dress.mesh.vertices.size(), 40u * 19 + 2 * 3 * 13);
+  EXPECT_EQ(dress.tubeTriangles, 2 * 40 * 18);
+}
+
+// The top edge is raised by necklineRise between the straps' centre lines (|x| <= 0.10 on the
+// figure's front and back faces), front and back, and not at all beyond them by more than the
+// fade (4 cm): under the arms it stays 3 cm below the armpits.
+TEST(StrapDress, NecklineRisesBetweenTheStraps) {
+  const StrapDress& dress = dressOnFigure();
+  const StrapDressOptions defaults;
+  const std::vector<Vec3> top = checks::tubeTopEdge(dress);
+  ASSERT_EQ(top.size(), 40u);
+  int raised[2] = {0, 0};
+  for (const Vec3& v : top) {
+    EXPECT_GE(v.y(), dress.topHeight - 1e-12) << v.transpose();
+    EXPECT_LE(v.y(), dress.necklineHeight + 1e-12) << v.transpose();
+    if (std::abs(v.x()) < 0.09) {
+      EXPECT_NEAR(v.y(), dress.necklineHeight, 1e-12) << v.transpose();
+      ++raised[v.z() > 0];
+    }
+    if (std::abs(v.x()) >= defaults.strapOffset + defaults.necklineFade) {
+      EXPECT_EQ(v.y(), dress.topHeight) << v.transpose();
+    }
+  }
+  EXPECT_GE(raised[0], 3);  // back
+  EXPECT_GE(raised[1], 3);  // front
+}
+
+// No rise: a flat top edge, and the straps start on it.
+TEST(StrapDress, FlatTopWithoutNeckline) {
+  StrapDressOptions options;
+  options.necklineRise = 0;
+  const StrapDress dress = makeStrapDress(mannequin::figure(), options);
+  EXPECT_DOUBLE_EQ(dress.necklineHeight, dress.topHeight);
+  for (const Vec3& v : checks::tubeTopEdge(dress)) EXPECT_EQ(v.y(), dress.topHeight) << v.transpose();
+  double lowest = 1e9;
+  for (const Vec3& v : dress.mesh.vertices) lowest = std::min(lowest, v.y());
+  EXPECT_NEAR(lowest, dress.hemHeight, 1e-12);
 }
 
 TEST(StrapDress, OneConnectedManifoldWithABoundary) {
@@ -53,10 +92,11 @@ TEST(StrapDress, NormalsPointAwayFromTheBody) {
   const StrapDress& dress = dressOnFigure();
   const TriangleMesh& mesh = dress.mesh;
   int outward = 0;
-  for (const Triangle& t : mesh.triangles) {
+  for (size_t i = 0; i < mesh.triangles.size(); ++i) {
+    const Triangle& t = mesh.triangles[i];
     const Vec3 c = checks::centroidOf(mesh, t);
-    const bool onStrap = c.y() > dress.topHeight + 1e-9;
-    const Vec3 inside = onStrap ? Vec3(c.x(), dress.topHeight, 0.0) : Vec3(0.0, c.y(), 0.0);
+    const Vec3 inside = checks::onStrap(dress, static_cast<int>(i)) ? Vec3(c.x(), dress.topHeight, 0.0)
+                                                                    : Vec3(0.0, c.y(), 0.0);
     if (checks::normalOf(mesh, t).dot(c - inside) > 0) ++outward;
   }
   EXPECT_EQ(outward, static_cast<int>(mesh.triangles.size()));
@@ -137,6 +177,8 @@ TEST(StrapDress, RejectsBadOptions) {
   EXPECT_THROW(makeStrapDress(figure, withOption([](auto& o) { o.strapOffset = 0.01; })), std::invalid_argument);
   EXPECT_THROW(makeStrapDress(figure, withOption([](auto& o) { o.strapOffset = 0.4; })), std::invalid_argument);
   EXPECT_THROW(makeStrapDress(figure, withOption([](auto& o) { o.hemHeight = 1.5; })), std::invalid_argument);
+  EXPECT_THROW(makeStrapDress(figure, withOption([](auto& o) { o.necklineRise = -0.01; })), std::invalid_argument);
+  EXPECT_THROW(makeStrapDress(figure, withOption([](auto& o) { o.necklineFade = 0; })), std::invalid_argument);
   try {
     makeStrapDress(figure, withOption([](auto& o) { o.clearance = -0.01; }));
     FAIL() << "no exception";
