@@ -3,6 +3,7 @@
 // small mesh files in a temporary folder.
 
 #include "nodes/Init.h"
+#include "support/TempDir.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -106,29 +107,6 @@ T* find(SoNode* root, const char* name = nullptr) {
   return search.getPath() ? static_cast<T*>(search.getPath()->getTail()) : nullptr;
 }
 
-// A fresh folder under the system's temporary folder, removed with the object.
-class TempDir {
- public:
-  TempDir() {
-    std::string pattern = (std::filesystem::temp_directory_path() / "figment-test-XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::string file(const std::string& name, const std::string& contents) const {
-    const auto p = path_ / name;
-    std::ofstream(p) << contents;
-    return p.string();
-  }
-
- private:
-  std::filesystem::path path_;
-};
 
 // A closed unit cube, [0,1]^3, 8 vertices and 12 triangles, faces counter-clockwise
 // from outside; in centimetres when `scale` is 100.

@@ -2,6 +2,8 @@
 // input gives one line on stderr naming the file, node, field and value, a non-zero
 // exit status and no image.
 
+#include "support/TempDir.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -27,20 +29,8 @@ struct ProcessResult {
 
 class FigmentView : public ::testing::Test {
  protected:
-  FigmentView() {
-    std::string pattern = (fs::temp_directory_path() / "figment-view-test-XXXXXX").string();
-    dir_ = ::mkdtemp(pattern.data());
-  }
-  ~FigmentView() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::string write(const std::string& name, const std::string& text) const {
-    std::ofstream(path(name)) << text;
-    return path(name);
-  }
+  std::string path(const std::string& name) const { return (dir_.path() / name).string(); }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.file(name, text); }
   // Runs figment-view with `arguments` (shell words), capturing stderr.
   ProcessResult run(const std::string& arguments) const {
     const std::string command =
@@ -53,12 +43,12 @@ class FigmentView : public ::testing::Test {
   }
   // Nothing but stderr.txt and the inputs: no image, no temporary left behind.
   bool noImageWritten() const {
-    for (const auto& entry : fs::directory_iterator(dir_))
+    for (const auto& entry : fs::directory_iterator(dir_.path()))
       if (entry.path().extension() == ".png") return false;
     return true;
   }
 
-  fs::path dir_;
+  figment::test::TempDir dir_;
 };
 
 // A falling square of cloth; `fields` go into its ClothEngine, `before` before it.
