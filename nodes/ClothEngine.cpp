@@ -73,6 +73,18 @@ ClothEngine::~ClothEngine() = default;
 SbBool ClothEngine::readInstance(SoInput* in, unsigned short readFlags) {
   if (!inherited::readInstance(in, readFlags)) return FALSE;
   figment::snapReadDoubles(*this);  // "0.0005" means 0.0005 (FieldValues.h)
+  // A written input carries both a value and its connection ("restPoints [ ... ] =
+  // USE Pattern.point"); Coin keeps the value as read, and floats written with 8
+  // digits do not always read back exactly. Take the master's value instead, so a
+  // scene written and read again drapes exactly as the original.
+  SoFieldList inputs;
+  getFields(inputs);
+  for (int i = 0; i < inputs.getLength(); ++i) {
+    SoField* master = nullptr;
+    if (!inputs[i]->getConnectedField(master) || !master) continue;
+    inputs[i]->setDirty(TRUE);
+    inputs[i]->evaluate();
+  }
   return TRUE;
 }
 

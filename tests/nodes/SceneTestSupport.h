@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,24 @@ inline std::string writeString(SoNode* root) {
   std::free(buffer);
   return text;
 }
+
+// Sets $FIGMENT_MODEL_PATH for the scope, then restores what was there.
+class ScopedModelPath {
+ public:
+  explicit ScopedModelPath(const std::string& folders) {
+    if (const char* old = std::getenv("FIGMENT_MODEL_PATH")) previous_ = old;
+    ::setenv("FIGMENT_MODEL_PATH", folders.c_str(), 1);
+  }
+  ~ScopedModelPath() {
+    if (previous_) ::setenv("FIGMENT_MODEL_PATH", previous_->c_str(), 1);
+    else ::unsetenv("FIGMENT_MODEL_PATH");
+  }
+  ScopedModelPath(const ScopedModelPath&) = delete;
+  ScopedModelPath& operator=(const ScopedModelPath&) = delete;
+
+ private:
+  std::optional<std::string> previous_;
+};
 
 // The first node of `type` under `root` (inactive Switch children included).
 template <class T>
