@@ -60,6 +60,18 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(friction, (defaults.friction));
   SO_ENGINE_ADD_INPUT(clearance, (defaults.clearance));
   SO_ENGINE_ADD_INPUT(strainRateDamping, (defaults.strainRateDamping));
+  SO_ENGINE_ADD_INPUT(integrator, (HEUN));
+  SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, EULER);
+  SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, SYMPLECTIC);
+  SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, HEUN);
+  SO_ENGINE_SET_SF_ENUM_TYPE(integrator, Integrator);
+  SO_ENGINE_ADD_INPUT(strainLimit, (defaults.strainLimit));
+  SO_ENGINE_ADD_INPUT(accelerationLimiter, (NONE));
+  SO_ENGINE_DEFINE_ENUM_VALUE(AccelerationLimiter, NONE);
+  SO_ENGINE_DEFINE_ENUM_VALUE(AccelerationLimiter, CLAMP);
+  SO_ENGINE_DEFINE_ENUM_VALUE(AccelerationLimiter, TANH);
+  SO_ENGINE_SET_SF_ENUM_TYPE(accelerationLimiter, AccelerationLimiter);
+  SO_ENGINE_ADD_INPUT(accelerationLimit, (defaults.accelerationLimit));
   // The multiple-value inputs start empty ([ ]), not with the one value set above.
   restPoints.setNum(0);
   restPoints.setDefault(TRUE);

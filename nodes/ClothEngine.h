@@ -5,6 +5,7 @@
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFDouble.h>
+#include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFNode.h>
 #include <Inventor/fields/SoSFVec3f.h>
 
@@ -69,6 +70,10 @@ class SoNode;
         friction 0.4
         clearance 0.003
         strainRateDamping 0.0001
+        integrator HEUN
+        strainLimit 0
+        accelerationLimiter NONE
+        accelerationLimit 20
     }
   \endcode
 */
@@ -116,6 +121,21 @@ class ClothEngine : public SoEngine {
   SoSFDouble clearance;
   // Kelvin-Voigt relaxation time of the membrane (strain-rate damping), s. Default 1e-4.
   SoSFDouble strainRateDamping;
+  // How a step advances the cloth: EULER (explicit), SYMPLECTIC (semi-implicit Euler)
+  // or HEUN (improved Euler, the paper's). Default HEUN.
+  SoSFEnum integrator;
+  // Strain clamping (paper §2): each section's strain components are held within
+  // [-strainLimit, strainLimit] when its forces are computed, dimensionless; 0 = off.
+  // Default 0.
+  SoSFDouble strainLimit;
+  // Acceleration limiting (paper §2, Fig. 2.3) of each node's net acceleration: NONE,
+  // CLAMP (hard) or TANH (smooth). Default NONE.
+  SoSFEnum accelerationLimiter;
+  // The acceleration cap, in multiples of |gravity|. Default 20. Must be > 0.
+  SoSFDouble accelerationLimit;
+
+  enum Integrator { EULER, SYMPLECTIC, HEUN };
+  enum AccelerationLimiter { NONE, CLAMP, TANH };
 
   // --- output ---
   // The draped positions, one per rest point, world frame, m (SoMFVec3f).

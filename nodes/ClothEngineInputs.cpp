@@ -72,6 +72,18 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
   p.friction = engine.friction.getValue();
   p.clearance = engine.clearance.getValue();
   p.strainRateDamping = engine.strainRateDamping.getValue();
+  switch (engine.integrator.getValue()) {
+    case ClothEngine::EULER: p.integrator = Integrator::ExplicitEuler; break;
+    case ClothEngine::SYMPLECTIC: p.integrator = Integrator::SymplecticEuler; break;
+    default: p.integrator = Integrator::Heun; break;
+  }
+  p.strainLimit = engine.strainLimit.getValue();
+  switch (engine.accelerationLimiter.getValue()) {
+    case ClothEngine::CLAMP: p.accelerationLimiter = AccelerationLimiter::Clamp; break;
+    case ClothEngine::TANH: p.accelerationLimiter = AccelerationLimiter::Tanh; break;
+    default: p.accelerationLimiter = AccelerationLimiter::None; break;
+  }
+  p.accelerationLimit = engine.accelerationLimit.getValue();
   p.validate();  // the material's fields too; names the field and value it rejects
   return p;
 }

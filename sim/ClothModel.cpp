@@ -1,6 +1,7 @@
 #include "ClothModel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -63,7 +64,7 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   const size_t n = masses_.size();
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
   for (const MembraneElement& section : sections_)
-    section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, force_);
+    section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, parameters_.strainLimit, force_);
   for (const BendingJoint& joint : joints_) joint.addForces(x, bendingStiffness_, force_);
   a.resize(n);
   for (size_t i = 0; i < n; ++i) {
@@ -74,6 +75,21 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     // Air resistance opposes the node's velocity, in proportion to its share of cloth area.
     force_[i] -= parameters_.airResistance * areas_[i] * v[i];
     a[i] = force_[i] * inverseMasses_[i] + parameters_.gravity;
+  }
+  limitAccelerations(a);
+}
+
+void ClothModel::limitAccelerations(std::vector<Vec3>& a) const {
+  if (parameters_.accelerationLimiter == AccelerationLimiter::None) return;
+  const double limit = parameters_.accelerationLimitSI();
+  for (Vec3& ai : a) {
+    const double magnitude = ai.norm();
+    if (magnitude == 0.0) continue;
+    if (parameters_.accelerationLimiter == AccelerationLimiter::Clamp) {
+      if (magnitude > limit) ai *= limit / magnitude;
+    } else {
+      ai *= limit * std::tanh(magnitude / limit) / magnitude;
+    }
   }
 }
 

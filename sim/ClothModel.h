@@ -19,7 +19,7 @@ class ClothModel {
   // garment whose sections are all degenerate.
   ClothModel(const TriangleMesh& rest, const ClothParameters& parameters);
 
-  // a = F(x, v) / m for every node (m/s^2).
+  // a = F(x, v) / m for every node (m/s^2), each then limited as the parameters say.
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) const;
 
   const std::vector<double>& masses() const { return masses_; }  // kg
@@ -28,6 +28,8 @@ class ClothModel {
   size_t nodeCount() const { return masses_.size(); }
 
  private:
+  void limitAccelerations(std::vector<Vec3>& a) const;
+
   ClothParameters parameters_;
   std::vector<MembraneElement> sections_;
   std::vector<BendingJoint> joints_;

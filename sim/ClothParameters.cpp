@@ -7,6 +7,20 @@
 
 namespace figment {
 
+const char* integratorName(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::ExplicitEuler: return "explicit Euler";
+    case Integrator::SymplecticEuler: return "symplectic Euler";
+    case Integrator::Heun: return "improved Euler (Heun)";
+  }
+  return "unknown";
+}
+
+double ClothParameters::accelerationLimitSI() const {
+  const double g = gravity.norm();
+  return accelerationLimit * (g > 0.0 ? g : 9.81);
+}
+
 void ClothParameters::validate() const {
   material.validate();
   requirePositive("timeStep", timeStep);
@@ -18,6 +32,8 @@ void ClothParameters::validate() const {
   requireNonNegative("friction", friction);
   requireNonNegative("clearance", clearance);
   requireNonNegative("strainRateDamping", strainRateDamping);
+  requireNonNegative("strainLimit", strainLimit);
+  requirePositive("accelerationLimit", accelerationLimit);
   if (timeStep > maxTime)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
                                 formatNumber(maxTime));

@@ -11,6 +11,23 @@ struct RestRule {
   double window = 0.25;          // s: ...for this long without interruption
 };
 
+// How a step advances positions and velocities from the accelerations (paper §2).
+enum class Integrator {
+  ExplicitEuler,    // x += dt v(t);  v += dt a(t)                         first order
+  SymplecticEuler,  // v += dt a(t);  x += dt v(t+dt)                      first order
+  Heun,             // improved Euler: mean of the slopes at t and at the
+                    // explicit Euler prediction                            second order
+};
+const char* integratorName(Integrator integrator);  // "explicit Euler", ...
+
+// The paper's second stability measure (§2, Fig. 2.3): a limit on each node's net
+// acceleration, applied when the accelerations of a force evaluation are complete.
+enum class AccelerationLimiter {
+  None,
+  Clamp,  // |a| > a_max  ->  a_max a/|a|           (the paper's choice)
+  Tanh,   // a -> a_max tanh(|a|/a_max) a/|a|       (smooth, a little dearer)
+};
+
 struct ClothParameters {
   Material material;
   double timeStep = 1.5e-4;              // dt, s: stable for ~1.5 cm sections of 1 MPa cloth
@@ -21,6 +38,14 @@ struct ClothParameters {
   double friction = 0.4;                 // Coulomb coefficient against the body
   double clearance = 0.003;              // m kept between cloth nodes and the body surface
   double strainRateDamping = 1.0e-4;     // s: Kelvin-Voigt relaxation time of the membrane
+  Integrator integrator = Integrator::Heun;
+  // The paper's first stability measure: each section's Green strain components are
+  // clamped into [-strainLimit, strainLimit] when its forces are computed; 0 = off.
+  double strainLimit = 0.0;
+  AccelerationLimiter accelerationLimiter = AccelerationLimiter::None;
+  double accelerationLimit = 20.0;       // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
+  // a_max in m/s^2.
+  double accelerationLimitSI() const;
 
   // Throws std::invalid_argument naming the field and value when out of range.
   void validate() const;

@@ -42,52 +42,88 @@ namespace {
 constexpr double kContactSearchMargin = 0.02;  // m beyond clearance and motion a query looks
 
 // Contact response on one node that ended the step inside the body or within the
-// clearance: place it on the surface plus clearance, and make its velocity the motion
-// it actually made this step ((x - xPrevious) / dt), so that a node the body holds in
-// place is at rest instead of carrying a velocity the projection keeps undoing. Any
-// velocity left into the body is removed; friction then removes tangential velocity in
-// proportion to the normal velocity the contact took away (Coulomb: static while
-// |v_t| <= mu dv_n, sliding and slowed otherwise).
+// clearance, at x with the integrator's end-of-step velocity v:
+//  - the velocity takes in the push-out: v + (target - x) / dt, so a node the body
+//    holds in a crease does not keep a velocity that every push-out undoes; its normal
+//    part is then limited to what the node had away from the body (the push-out never
+//    launches a node, and velocity into the body is removed);
+//  - friction (Coulomb) acts on the tangential part, limited by mu times the normal
+//    velocity into the body that the contact removed. Static (|v_t| <= mu dv_n): the
+//    node stops and keeps its tangential place from the start of the step. Sliding:
+//    v_t shrinks by mu dv_n.
+//  - the node ends on the surface + clearance.
 void respondToContact(const Contact& contact, double clearance, double friction, double dt, const Vec3& xPrevious,
                       Vec3& x, Vec3& v) {
-  const Vec3 target = contact.surfacePoint + clearance * contact.normal;
-  const double removedNormalSpeed = std::max(0.0, (target - x).dot(contact.normal)) / dt;
-  x = target;
-  v = (x - xPrevious) / dt;
-  const double normalSpeed = v.dot(contact.normal);
-  if (normalSpeed < 0.0) v -= normalSpeed * contact.normal;
-  const Vec3 tangential = v - std::max(0.0, normalSpeed) * contact.normal;
+  const Vec3& n = contact.normal;
+  const Vec3 target = contact.surfacePoint + clearance * n;
+  const double normalSpeedBefore = v.dot(n);
+  const double removedNormalSpeed = std::max(0.0, -normalSpeedBefore);
+  v += (target - x) / dt;
+  const double normalSpeed = std::clamp(v.dot(n), 0.0, std::max(0.0, normalSpeedBefore));
+  const Vec3 tangential = v - v.dot(n) * n;
   const double tangentialSpeed = tangential.norm();
   const double frictionLimit = friction * removedNormalSpeed;
-  if (tangentialSpeed <= frictionLimit)
-    v -= tangential;
-  else
-    v -= tangential * (frictionLimit / tangentialSpeed);
+  if (tangentialSpeed <= frictionLimit) {
+    v = normalSpeed * n;
+    x = xPrevious + (target - xPrevious).dot(n) * n;
+  } else {
+    v = normalSpeed * n + tangential * (1.0 - frictionLimit / tangentialSpeed);
+    x = target;
+  }
 }
 }  // namespace
+
+void ClothSolver::integrate(double dt) {
+  const size_t n = x_.size();
+  xStart_ = x_;
+  // Pinned nodes do not accelerate: zero at every evaluation, so a predicted state
+  // (Heun) does not give them a velocity their neighbours would feel.
+  auto holdPins = [&](std::vector<Vec3>& a) {
+    for (size_t i = 0; i < n; ++i)
+      if (pinned_[i]) a[i].setZero();
+  };
+  model_->accelerations(x_, v_, a0_);
+  holdPins(a0_);
+  switch (parameters_.integrator) {
+    case Integrator::ExplicitEuler:
+      for (size_t i = 0; i < n; ++i) {
+        x_[i] += dt * v_[i];
+        v_[i] += dt * a0_[i];
+      }
+      break;
+    case Integrator::SymplecticEuler:
+      for (size_t i = 0; i < n; ++i) {
+        v_[i] += dt * a0_[i];
+        x_[i] += dt * v_[i];
+      }
+      break;
+    case Integrator::Heun:
+      // Predictor: explicit Euler; corrector: the mean of the slopes at t and at the
+      // predicted state.
+      xPredicted_.resize(n);
+      vPredicted_.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        xPredicted_[i] = x_[i] + dt * v_[i];
+        vPredicted_[i] = v_[i] + dt * a0_[i];
+      }
+      model_->accelerations(xPredicted_, vPredicted_, a1_);
+      holdPins(a1_);
+      for (size_t i = 0; i < n; ++i) {
+        x_[i] += 0.5 * dt * (v_[i] + vPredicted_[i]);
+        v_[i] += 0.5 * dt * (a0_[i] + a1_[i]);
+      }
+      break;
+  }
+}
 
 void ClothSolver::step() {
   const double dt = parameters_.timeStep;
   const size_t n = x_.size();
-  // Improved Euler (Heun): predictor with the slopes at t, corrector with their mean
-  // and the slopes at the predicted state.
-  model_->accelerations(x_, v_, a0_);
-  xPredicted_.resize(n);
-  vPredicted_.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    xPredicted_[i] = x_[i] + dt * v_[i];
-    vPredicted_[i] = v_[i] + dt * a0_[i];
-  }
-  model_->accelerations(xPredicted_, vPredicted_, a1_);
+  integrate(dt);
   double fastest = 0.0;
   for (size_t i = 0; i < n; ++i) {
-    if (pinned_[i]) {
-      v_[i].setZero();
-      continue;
-    }
-    const Vec3 previous = x_[i];
-    x_[i] += 0.5 * dt * (v_[i] + vPredicted_[i]);
-    v_[i] += 0.5 * dt * (a0_[i] + a1_[i]);
+    if (pinned_[i]) continue;  // held: no acceleration, no velocity
+    const Vec3& previous = xStart_[i];
     if (body_) {
       const double moved = (x_[i] - previous).norm();
       double& bound = bodyDistanceBound_[i];
@@ -112,7 +148,7 @@ void ClothSolver::step() {
       throw SimulationError("simulation blew up at step " + std::to_string(iterations_ + 1) + " (t = " +
                             formatNumber(time_ + dt) + " s): node " + std::to_string(i) + " speed " +
                             formatNumber(speed) + " m/s; timeStep = " + formatNumber(dt) +
-                            " s, method improved Euler (Heun)");
+                            " s, method " + integratorName(parameters_.integrator));
     fastest = std::max(fastest, speed);
   }
   time_ += dt;

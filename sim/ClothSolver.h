@@ -1,6 +1,17 @@
 #pragma once
 // Drapes one garment: the FIGMENT physical model (paper §2) integrated with improved
-// Euler (Heun), collisions against a Collider, until the cloth is at rest or maxTime.
+// Euler (Heun) or, for comparison, explicit or symplectic Euler; collisions against a
+// Collider; until the cloth is at rest or maxTime.
+//
+// One step, in order:
+//  1. forces -> accelerations (ClothModel): strain clamping acts inside each section's
+//     force, the acceleration limiter on each node's net acceleration; with Heun both
+//     happen at each of its two evaluations;
+//  2. the integrator advances positions and velocities (pinned nodes stay);
+//  3. contact response: nodes inside the body or within the clearance are put on the
+//     surface + clearance, their velocity becomes the motion they made, the velocity
+//     into the body is removed and friction acts on the tangential velocity;
+//  4. blow-up check (non-finite values, speed > kBlowUpSpeed), then the at-rest rule.
 
 #include "ClothModel.h"
 #include "ClothParameters.h"
@@ -44,11 +55,8 @@ class ClothSolver {
   // Holds a node where it is (a pin): it keeps its position and never moves.
   void pin(int node);
 
-  // Advances one time step: improved Euler (Heun) on the model's forces, then the
-  // contact response (push-out to the collider's surface + clearance, inelastic normal
-  // velocity, Coulomb friction on the tangential velocity), then the at-rest check.
-  // Throws SimulationError when a position or velocity stops being finite or a node
-  // exceeds kBlowUpSpeed.
+  // Advances one time step (see the steps above). Throws SimulationError when a
+  // position or velocity stops being finite or a node exceeds kBlowUpSpeed.
   void step();
   static constexpr double kBlowUpSpeed = 100.0;  // m/s: far beyond any draping motion
   // Runs until at rest or maxTime; `progress` (optional) is called about every
@@ -77,7 +85,9 @@ class ClothSolver {
   // distance it moved since the last query: while it exceeds the clearance the node
   // cannot touch the body and needs no query (exact, since the body does not move).
   std::vector<double> bodyDistanceBound_;
-  std::vector<Vec3> a0_, a1_, xPredicted_, vPredicted_;  // Heun's scratch
+  void integrate(double dt);
+
+  std::vector<Vec3> xStart_, a0_, a1_, xPredicted_, vPredicted_;  // a step's scratch
 };
 
 }  // namespace figment

@@ -50,10 +50,11 @@ double MembraneElement::energy(const std::vector<Vec3>& x, const Material& m) co
 }
 
 void MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
-                                double tauDamping, std::vector<Vec3>& force) const {
+                                double tauDamping, double strainLimit, std::vector<Vec3>& force) const {
   const Matrix32 F = edgeMatrix(corners_, x) * restInverse_;
   const Eigen::Matrix2d FtF = F.transpose() * F;
   Eigen::Vector3d e(0.5 * (FtF(0, 0) - 1.0), 0.5 * (FtF(1, 1) - 1.0), 0.5 * FtF(0, 1));
+  if (strainLimit > 0.0) e = e.cwiseMax(-strainLimit).cwiseMin(strainLimit);
   if (tauDamping > 0.0) {
     const Matrix32 Fdot = edgeMatrix(corners_, v) * restInverse_;
     const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);

@@ -45,9 +45,12 @@ class MembraneElement {
   //                     + E/(1+nu) eps_uv^2]  (J); its negative gradient is the force.
   double energy(const std::vector<Vec3>& x, const Material& material) const;
 
-  // Adds the elastic (and strain-rate damping) forces of this section to `force`.
+  // Adds the elastic (and strain-rate damping) forces of this section to `force`. With
+  // strainLimit > 0 each strain component is first clamped into [-limit, limit] (the
+  // paper's strain clamping: a section distorted beyond a realistic range pulls no
+  // harder than at the range's edge).
   void addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
-                 double tauDamping, std::vector<Vec3>& force) const;
+                 double tauDamping, double strainLimit, std::vector<Vec3>& force) const;
 
  private:
   Triangle corners_;

@@ -187,6 +187,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"poissonRatio 0.5", "ClothEngine 'Drape': poissonRatio = 0.5 must be in (-1, 0.5)"},
         BadField{"poissonRatio -1", "ClothEngine 'Drape': poissonRatio = -1 must be in (-1, 0.5)"},
         BadField{"timeStep 0", "ClothEngine 'Drape': timeStep = 0 must be > 0"},
+        BadField{"strainLimit -0.1", "ClothEngine 'Drape': strainLimit = -0.1 must be >= 0"},
+        BadField{"accelerationLimiter CLAMP accelerationLimit 0",
+                 "ClothEngine 'Drape': accelerationLimit = 0 must be > 0"},
         BadField{"", "ClothEngine 'Drape': coordIndex[2] = 100 is not a vertex: restPoints has 100 points", "",
                  "[ 0 1 100 -1 ]"},
         BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "",
@@ -211,4 +214,27 @@ TEST_F(ClothEngineTest, FindsEachEngineFeedingTheSceneOnceInSceneOrder) {
   for (const ClothEngine* e : engines) names.emplace_back(e->getName().getString());
   EXPECT_EQ(names, (std::vector<std::string>{"A", "B", "C"}));
   for (const ClothEngine* e : engines) EXPECT_EQ(e->evaluationCount(), 0) << "finding evaluates nothing";
+}
+
+TEST(ClothEngineStability, FieldsReachTheSimulation) {
+  // Stiff cloth at a step far too large: without limiters each integrator blows up and
+  // says which it was; strain clamping and a clamped acceleration keep the run finite.
+  initCoin();
+  const std::string tooLarge = "youngsModulus 1e9 strainRateDamping 0 timeStep 0.004 maxTime 0.4\n";
+  for (const auto& [field, method] : {std::pair{"integrator EULER", "explicit Euler"},
+                                      std::pair{"integrator SYMPLECTIC", "symplectic Euler"},
+                                      std::pair{"integrator HEUN", "improved Euler (Heun)"}}) {
+    SceneRoot root = readString(clothScene(tooLarge + field + "\n"));
+    ASSERT_TRUE(root);
+    auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
+    CapturedErrors quiet;
+    find<SoCoordinate3>(root.get(), "Cloth")->point.getNum();  // evaluates
+    EXPECT_NE(engine->lastError().find(std::string("method ") + method), std::string::npos) << engine->lastError();
+  }
+  SceneRoot root = readString(clothScene(tooLarge + "strainLimit 0.05 accelerationLimiter CLAMP accelerationLimit 5\n"));
+  ASSERT_TRUE(root);
+  auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
+  find<SoCoordinate3>(root.get(), "Cloth")->point.getNum();
+  EXPECT_EQ(engine->lastError(), "");
+  EXPECT_GT(engine->lastRun().iterations, 0);
 }

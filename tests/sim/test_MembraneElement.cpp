@@ -20,7 +20,7 @@ TEST(MembraneElement, RestShapeHasNoStrainAndNoForce) {
   EXPECT_NEAR(section.restArea(), 0.5 * 0.03 * 0.025, 1e-15);
   EXPECT_LT(section.strain(X).norm(), 1e-14);
   std::vector<Vec3> force(3, Vec3::Zero()), velocity(3, Vec3::Zero());
-  section.addForces(X, velocity, cotton(), 0.0, force);
+  section.addForces(X, velocity, cotton(), 0.0, 0.0, force);
   for (const Vec3& f : force) EXPECT_LT(f.norm(), 1e-12);
 }
 
@@ -30,7 +30,7 @@ TEST(MembraneElement, ForcesAreMinusTheEnergyGradient) {
   // A distorted, rotated, out-of-plane state: stretch, shear and compression together.
   std::vector<Vec3> x = {Vec3(0.001, -0.002, 0.003), Vec3(0.033, 0.004, -0.002), Vec3(0.008, 0.027, 0.006)};
   std::vector<Vec3> force(3, Vec3::Zero()), velocity(3, Vec3::Zero());
-  section.addForces(x, velocity, cotton(), 0.0, force);
+  section.addForces(x, velocity, cotton(), 0.0, 0.0, force);
   const auto gradient =
       meshes::numericalGradient([&](const std::vector<Vec3>& p) { return section.energy(p, cotton()); }, x, 1e-8);
   for (int i = 0; i < 3; ++i)
@@ -60,8 +60,30 @@ TEST(MembraneElement, StrainRateDampingOpposesStretchingVelocity) {
   MembraneElement section({0, 1, 2}, X[0], X[1], X[2]);
   std::vector<Vec3> velocity = {Vec3(-0.1, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0, 0)};  // corners 0, 1 separate
   std::vector<Vec3> force(3, Vec3::Zero());
-  section.addForces(X, velocity, cotton(), 1e-3, force);
+  section.addForces(X, velocity, cotton(), 1e-3, 0.0, force);
   EXPECT_GT(force[0].x(), 0.0);
   EXPECT_LT(force[1].x(), 0.0);
   EXPECT_LT((force[0] + force[1] + force[2]).norm(), 1e-12);  // internal: no net force
+}
+
+TEST(MembraneElement, StrainClampingCapsTheStressAtTheLimit) {
+  // Uniaxial stretch lambda along u: the force along u is proportional to lambda * S_uu.
+  // Clamped at strain L, a section stretched beyond it pulls with the stress of strain L:
+  // f(lambda, clamped) = (lambda / lambda_L) f(lambda_L), lambda_L = sqrt(1 + 2 L).
+  const std::vector<Vec3> X = {Vec3(0, 0, 0), Vec3(0.03, 0, 0), Vec3(0, 0.03, 0)};
+  MembraneElement section({0, 1, 2}, X[0], X[1], X[2]);
+  const double limit = 0.1, lambdaAtLimit = std::sqrt(1 + 2 * limit), lambda = 1.5;
+  auto forceOnCorner1 = [&](double stretch, double strainLimit) {
+    std::vector<Vec3> x = X;
+    for (Vec3& p : x) p.x() *= stretch;
+    std::vector<Vec3> force(3, Vec3::Zero()), velocity(3, Vec3::Zero());
+    section.addForces(x, velocity, cotton(), 0.0, strainLimit, force);
+    return force[1];
+  };
+  const Vec3 clamped = forceOnCorner1(lambda, limit);
+  const Vec3 atLimit = forceOnCorner1(lambdaAtLimit, 0.0);
+  EXPECT_NEAR(clamped.x(), lambda / lambdaAtLimit * atLimit.x(), 1e-9 * std::abs(atLimit.x()));
+  EXPECT_LT(std::abs(clamped.x()), std::abs(forceOnCorner1(lambda, 0.0).x()) / 3);
+  // Inside the range the clamp changes nothing.
+  EXPECT_EQ(forceOnCorner1(1.05, limit), forceOnCorner1(1.05, 0.0));
 }
