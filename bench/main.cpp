@@ -1,5 +1,6 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
 #include "DrapeStudy.h"
+#include "StabilityStudy.h"
 
 #include <CLI/CLI.hpp>
 
@@ -13,7 +14,19 @@ int main(int argc, char** argv) {
   drapeCommand->add_option("--repeat", drape.repeat, "runs per garment")->capture_default_str()->check(CLI::PositiveNumber);
   drapeCommand->add_option("--out", drape.outDir, "folder for drape.csv")->capture_default_str();
 
+  figment::bench::StabilityStudyOptions stability;
+  stability.plotScript = FIGMENT_PLOT_STABILITY;
+  CLI::App* stabilityCommand =
+      app.add_subcommand("stability", "integrators x strain clamping x limiters over time steps: stability and accuracy");
+  stabilityCommand->add_option("--scene", stability.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
+  stabilityCommand->add_option("--out", stability.outDir, "folder for stability.csv and stability.png")->capture_default_str();
+  stabilityCommand->add_flag("--quick", stability.quick, "a few configurations and steps, 0.3 s runs (under a minute)");
+  stabilityCommand->add_option("--strain-limit", stability.strainLimit, "strain clamping range")->capture_default_str();
+  stabilityCommand->add_option("--acceleration-limit", stability.accelerationLimit, "limiter cap, multiples of g")
+      ->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return figment::bench::runDrapeStudy(drape);
+  if (stabilityCommand->parsed()) return figment::bench::runStabilityStudy(stability);
   return 1;
 }

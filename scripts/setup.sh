@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
-  assimp-testmodels)
+  assimp-testmodels python3-matplotlib)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,0 +1,32 @@
+#pragma once
+// The first garment of a scene, for studies that re-run its ClothEngine with other
+// settings: the engine, the Coordinate3 it feeds, and its rest shape.
+
+#include "nodes/ClothEngine.h"
+
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace figment::bench {
+
+struct SceneGarment {
+  SoSeparator* root = nullptr;  // referenced; release() unrefs it
+  ClothEngine* engine = nullptr;
+  SoCoordinate3* coordinates = nullptr;
+  std::vector<SbVec3f> rest;
+  std::vector<std::array<int, 2>> edges;  // each cloth edge once
+
+  // Reads `scene`; on failure returns false and sets `error` to one line.
+  bool load(const std::string& scene, std::string& error);
+  void release();
+  // Simulates with the engine's current fields; the draped positions.
+  std::vector<SbVec3f> drape();
+  // Largest |edge length / rest length - 1| of `positions`.
+  double maxEdgeStrain(const std::vector<SbVec3f>& positions) const;
+};
+
+}  // namespace figment::bench

@@ -1,0 +1,149 @@
+#include "StabilityStudy.h"
+
+#include "SceneGarment.h"
+
+#include <Inventor/errors/SoDebugError.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+
+namespace figment::bench {
+
+namespace {
+
+struct Configuration {
+  int integrator;  // ClothEngine::Integrator
+  bool strainClamp;
+  int limiter;     // ClothEngine::AccelerationLimiter
+};
+
+const char* integratorKey(int integrator) {
+  return integrator == ClothEngine::EULER ? "euler" : integrator == ClothEngine::SYMPLECTIC ? "symplectic" : "heun";
+}
+const char* limiterKey(int limiter) {
+  return limiter == ClothEngine::CLAMP ? "clamp" : limiter == ClothEngine::TANH ? "tanh" : "none";
+}
+
+std::vector<Configuration> configurations(bool quick) {
+  if (quick)
+    return {{ClothEngine::HEUN, false, ClothEngine::NONE},
+            {ClothEngine::HEUN, true, ClothEngine::CLAMP},
+            {ClothEngine::SYMPLECTIC, false, ClothEngine::NONE},
+            {ClothEngine::EULER, false, ClothEngine::NONE}};
+  std::vector<Configuration> all;
+  for (int integrator : {ClothEngine::EULER, ClothEngine::SYMPLECTIC, ClothEngine::HEUN})
+    for (bool clamp : {false, true})
+      for (int limiter : {ClothEngine::NONE, ClothEngine::CLAMP, ClothEngine::TANH})
+        all.push_back({integrator, clamp, limiter});
+  return all;
+}
+
+std::vector<double> timeSteps(bool quick) {
+  if (quick) return {5e-5, 1.5e-4, 5e-4, 2e-3, 2e-2};
+  return {1e-5, 2e-5, 5e-5, 1e-4, 1.5e-4, 2e-4, 3e-4, 5e-4, 1e-3, 2e-3, 5e-3, 1e-2, 2e-2};
+}
+
+void silence(const SoError*, void*) {}  // failures are recorded, not printed
+
+struct Deviation {
+  double mean = 0.0, max = 0.0;
+};
+Deviation deviation(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b) {
+  Deviation d;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const double distance = (a[i] - b[i]).length();
+    d.mean += distance;
+    d.max = std::max(d.max, distance);
+  }
+  d.mean /= static_cast<double>(a.size());
+  return d;
+}
+
+}  // namespace
+
+int runStabilityStudy(const StabilityStudyOptions& options) {
+  SceneGarment garment;
+  std::string error;
+  if (!garment.load(options.scene, error)) {
+    std::cerr << "figment-bench: " << error << "\n";
+    garment.release();
+    return 1;
+  }
+  SoDebugError::setHandlerCallback(silence, nullptr);
+  ClothEngine& engine = *garment.engine;
+  if (options.quick) engine.maxTime.setValue(0.3);
+  float low = std::numeric_limits<float>::max(), high = -low;
+  for (const SbVec3f& p : garment.rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
+  const double height = high - low;
+
+  const std::vector<double> steps = timeSteps(options.quick);
+  auto configure = [&](const Configuration& c, double dt) {
+    engine.integrator.setValue(c.integrator);
+    engine.strainLimit.setValue(c.strainClamp ? options.strainLimit : 0.0);
+    engine.accelerationLimiter.setValue(c.limiter);
+    engine.accelerationLimit.setValue(options.accelerationLimit);
+    engine.timeStep.setValue(dt);
+  };
+  // The converged reference: the paper's method, no stability measures, the smallest step.
+  configure({ClothEngine::HEUN, false, ClothEngine::NONE}, steps.front());
+  const std::vector<SbVec3f> reference = garment.drape();
+  if (!engine.lastError().empty()) {
+    std::cerr << "figment-bench: the reference run failed: " << engine.lastError() << "\n";
+    garment.release();
+    return 1;
+  }
+  std::cout << "reference: Heun at dt " << steps.front() << " s, " << engine.lastRun().simulatedSeconds
+            << " s simulated, " << engine.lastRun().wallSeconds << " s wall\n";
+
+  std::filesystem::create_directories(options.outDir);
+  const std::string csvPath = options.outDir + "/stability.csv";
+  std::ofstream csv(csvPath + ".partial");
+  csv << "integrator,strain_clamp,limiter,dt,stable,at_rest,wall_s,mean_dev_m,max_dev_m,garment_height_m,"
+         "max_edge_strain,iterations,simulated_s,strain_limit,acceleration_limit_g\n";
+  for (const Configuration& c : configurations(options.quick)) {
+    double largestStable = 0.0;
+    Deviation atLargest;
+    for (double dt : steps) {
+      configure(c, dt);
+      const std::vector<SbVec3f> draped = garment.drape();
+      const ClothEngine::RunStats& run = engine.lastRun();
+      const bool failed = !engine.lastError().empty();
+      const double strain = failed ? std::numeric_limits<double>::infinity() : garment.maxEdgeStrain(draped);
+      const bool stable = !failed && strain < 0.2;
+      const Deviation d = failed ? Deviation{NAN, NAN} : deviation(draped, reference);
+      if (stable && dt > largestStable) largestStable = dt, atLargest = d;
+      char line[512];
+      std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g\n",
+                    integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), dt, stable ? 1 : 0,
+                    run.atRest ? 1 : 0, run.wallSeconds, d.mean, d.max, height, strain, run.iterations,
+                    run.simulatedSeconds, c.strainClamp ? options.strainLimit : 0.0,
+                    c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit);
+      csv << line;
+      csv.flush();
+    }
+    std::printf("%-10s clamp %d limiter %-5s  largest stable dt %-7g mean dev %.3g mm (%.3f %% of height)\n",
+                integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), largestStable,
+                1000 * atLargest.mean, 100 * atLargest.mean / height);
+  }
+  csv.close();
+  std::filesystem::rename(csvPath + ".partial", csvPath);
+  std::cout << csvPath << "\n";
+  garment.release();
+
+  if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
+    const std::string png = options.outDir + "/stability.png";
+    const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + csvPath + "' '" + png + "'";
+    if (std::system(command.c_str()) == 0) std::cout << png << "\n";
+    else std::cerr << "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n";
+  }
+  return 0;
+}
+
+}  // namespace figment::bench
