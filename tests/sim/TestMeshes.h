@@ -24,6 +24,32 @@ inline TriangleMesh grid(int nu, int nv, double width, double height, const Vec3
   return mesh;
 }
 
+// A strip of equilateral triangles (edge a): `rows` + 1 straight rows of nodes across the
+// strip, `rows` * a sqrt(3)/2 apart along `along`, each row `across` edges wide along
+// `side`, odd rows shifted by a/2 (so the long edges zigzag and the two ends are straight).
+// Node (i, j) = i + j (across + 1), i across, j along; its edges run at 0, 60 and 120
+// degrees to the rows, so the mesh bends alike in every direction.
+inline TriangleMesh equilateralStrip(int across, int rows, double a, const Vec3& origin = Vec3::Zero(),
+                                     const Vec3& side = Vec3::UnitZ(), const Vec3& along = Vec3::UnitX()) {
+  TriangleMesh mesh;
+  const double spacing = a * std::sqrt(3.0) / 2.0;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= across; ++i)
+      mesh.vertices.push_back(origin + side * (a * (i + 0.5 * (j % 2))) + along * (spacing * j));
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < across; ++i) {
+      const int a0 = i + j * (across + 1), a1 = a0 + 1, b0 = a0 + across + 1, b1 = b0 + 1;
+      if (j % 2 == 0) {  // row j+1 sits half an edge further along `side`
+        mesh.triangles.push_back({a0, b0, a1});
+        mesh.triangles.push_back({a1, b0, b1});
+      } else {
+        mesh.triangles.push_back({a0, b0, b1});
+        mesh.triangles.push_back({a0, b1, a1});
+      }
+    }
+  return mesh;
+}
+
 // A closed UV sphere of radius r, counter-clockwise seen from outside.
 inline TriangleMesh sphere(double r, int slices = 32, int stacks = 16, const Vec3& centre = Vec3::Zero()) {
   TriangleMesh mesh;
