@@ -83,7 +83,8 @@ int runStabilityStudy(const StabilityStudyOptions& options) {
   for (const SbVec3f& p : garment.rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
   const double height = high - low;
 
-  const std::vector<double> steps = timeSteps(options.quick);
+  std::vector<double> steps = options.timeSteps.empty() ? timeSteps(options.quick) : options.timeSteps;
+  std::sort(steps.begin(), steps.end());
   auto configure = [&](const Configuration& c, double dt) {
     engine.integrator.setValue(c.integrator);
     engine.strainLimit.setValue(c.strainClamp ? options.strainLimit : 0.0);

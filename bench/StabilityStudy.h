@@ -15,6 +15,7 @@ struct StabilityStudyOptions {
   bool quick = false;            // a few configurations and steps, short runs: < 1 minute
   double strainLimit = 0.1;      // Green strain, when clamping is on
   double accelerationLimit = 10; // multiples of |g|, when a limiter is on
+  std::vector<double> timeSteps; // s, ascending; empty = the study's own list
   std::string plotScript;        // python script that charts the CSV; "" = no chart
 };
 
