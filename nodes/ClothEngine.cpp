@@ -72,6 +72,13 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_DEFINE_ENUM_VALUE(AccelerationLimiter, TANH);
   SO_ENGINE_SET_SF_ENUM_TYPE(accelerationLimiter, AccelerationLimiter);
   SO_ENGINE_ADD_INPUT(accelerationLimit, (defaults.accelerationLimit));
+  const figment::WindParameters& wind = defaults.wind;
+  SO_ENGINE_ADD_INPUT(windDirection, (float(wind.direction.x()), float(wind.direction.y()),
+                                      float(wind.direction.z())));
+  SO_ENGINE_ADD_INPUT(windAmplitude, (wind.amplitude));
+  SO_ENGINE_ADD_INPUT(windFrequency, (wind.frequency));
+  SO_ENGINE_ADD_INPUT(windPhaseInterval, (wind.meanPhaseInterval));
+  SO_ENGINE_ADD_INPUT(windSeed, (int32_t(wind.seed)));
   // The multiple-value inputs start empty ([ ]), not with the one value set above.
   restPoints.setNum(0);
   restPoints.setDefault(TRUE);

@@ -6,6 +6,7 @@
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFDouble.h>
 #include <Inventor/fields/SoSFEnum.h>
+#include <Inventor/fields/SoSFInt32.h>
 #include <Inventor/fields/SoSFNode.h>
 #include <Inventor/fields/SoSFVec3f.h>
 
@@ -74,6 +75,11 @@ class SoNode;
         strainLimit 0
         accelerationLimiter NONE
         accelerationLimit 20
+        windDirection 1 0 0
+        windAmplitude 0
+        windFrequency 1
+        windPhaseInterval 0.5
+        windSeed 1
     }
   \endcode
 */
@@ -133,6 +139,21 @@ class ClothEngine : public SoEngine {
   SoSFEnum accelerationLimiter;
   // The acceleration cap, in multiples of |gravity|. Default 20. Must be > 0.
   SoSFDouble accelerationLimit;
+  // Wind (paper §2, sim/Wind.h): a pressure p(t) = windAmplitude sin(2 pi windFrequency t
+  // + phi(t)) whose phase phi jumps to a random value at random moments; each section
+  // of area A and normal n is pushed along the wind by p A |n . w| (none when edge-on).
+  // Direction the wind blows to, any length (normalised); 0 0 0 = no wind. Default 1 0 0.
+  SoSFVec3f windDirection;
+  // Pressure amplitude on a section face-on to the wind, Pa; 0 = no wind. Default 0.
+  // Must be >= 0.
+  SoSFDouble windAmplitude;
+  // Frequency of the sinusoid, Hz. Default 1. Must be >= 0.
+  SoSFDouble windFrequency;
+  // Mean time between the random phase changes (a Poisson process), s; 0 = the phase
+  // never changes. Default 0.5. Must be >= 0.
+  SoSFDouble windPhaseInterval;
+  // Seed of the phase changes: equal seeds repeat a run exactly. Default 1. Must be >= 0.
+  SoSFInt32 windSeed;
 
   enum Integrator { EULER, SYMPLECTIC, HEUN };
   enum AccelerationLimiter { NONE, CLAMP, TANH };

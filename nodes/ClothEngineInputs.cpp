@@ -4,6 +4,7 @@
 #include "nodes/FieldValues.h"
 #include "nodes/MeshFile.h"
 #include "sim/MeshCollider.h"
+#include "sim/Validation.h"
 
 #include <sstream>
 #include <stdexcept>
@@ -84,6 +85,14 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
     default: p.accelerationLimiter = AccelerationLimiter::None; break;
   }
   p.accelerationLimit = engine.accelerationLimit.getValue();
+  const SbVec3f& w = engine.windDirection.getValue();
+  p.wind.direction = Vec3(writtenValue(w[0]), writtenValue(w[1]), writtenValue(w[2]));
+  p.wind.amplitude = engine.windAmplitude.getValue();
+  p.wind.frequency = engine.windFrequency.getValue();
+  p.wind.meanPhaseInterval = engine.windPhaseInterval.getValue();
+  const int32_t seed = engine.windSeed.getValue();
+  requireNonNegative("windSeed", seed);
+  p.wind.seed = static_cast<uint64_t>(seed);
   p.validate();  // the material's fields too; names the field and value it rejects
   return p;
 }

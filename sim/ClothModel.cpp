@@ -32,7 +32,8 @@ std::vector<BendingJoint> findBendingJoints(const TriangleMesh& mesh) {
   return joints;
 }
 
-ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& parameters) : parameters_(parameters) {
+ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& parameters)
+    : parameters_(parameters), wind_(parameters.wind) {
   const int n = static_cast<int>(rest.vertices.size());
   if (n == 0 || rest.triangles.empty()) throw std::invalid_argument("the garment has no triangles");
   for (const Triangle& t : rest.triangles)
@@ -60,12 +61,14 @@ ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& paramete
   force_.resize(n);
 }
 
-void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) const {
+void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t,
+                               std::vector<Vec3>& a) const {
   const size_t n = masses_.size();
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
   for (const MembraneElement& section : sections_)
     section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, parameters_.strainLimit, force_);
   for (const BendingJoint& joint : joints_) joint.addForces(x, bendingStiffness_, force_);
+  if (wind_.blows()) addWindForces(x, t);
   a.resize(n);
   for (size_t i = 0; i < n; ++i) {
     if (inverseMasses_[i] == 0.0) {  // a node of degenerate sections only: it floats with gravity
@@ -77,6 +80,21 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     a[i] = force_[i] * inverseMasses_[i] + parameters_.gravity;
   }
   limitAccelerations(a);
+}
+
+void ClothModel::addWindForces(const std::vector<Vec3>& x, double t) const {
+  // F = p(t) A |n . w| w per section, a third to each corner (sim/Wind.h). With
+  // c = (x1 - x0) x (x2 - x0) = 2 A n, A |n . w| = |c . w| / 2: a section edge-on to the
+  // wind (n perpendicular to w) catches none. Every section feels the full wind (no
+  // shadowing).
+  const double pressure = wind_.pressure(t);
+  const Vec3& w = wind_.direction();
+  for (const MembraneElement& section : sections_) {
+    const Triangle& c = section.corners();
+    const Vec3 doubleAreaNormal = (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
+    const Vec3 cornerForce = (pressure * std::abs(doubleAreaNormal.dot(w)) / 6.0) * w;
+    for (int i : c) force_[i] += cornerForce;
+  }
 }
 
 void ClothModel::limitAccelerations(std::vector<Vec3>& a) const {

@@ -1,13 +1,15 @@
 #pragma once
 // The FIGMENT physical model of one garment (paper §2): triangular sections with
-// stretch/shear stresses, bending joints on shared edges, gravity and air resistance,
-// acting on nodes whose masses are lumped from the sections (rho h A / 3 per corner).
+// stretch/shear stresses, bending joints on shared edges, gravity, air resistance and
+// wind (sim/Wind.h), acting on nodes whose masses are lumped from the sections
+// (rho h A / 3 per corner).
 // Collisions and friction are contact events, handled by the solver after each step.
 
 #include "BendingJoint.h"
 #include "ClothParameters.h"
 #include "MembraneElement.h"
 #include "TriangleMesh.h"
+#include "Wind.h"
 
 #include <vector>
 
@@ -19,8 +21,13 @@ class ClothModel {
   // garment whose sections are all degenerate.
   ClothModel(const TriangleMesh& rest, const ClothParameters& parameters);
 
-  // a = F(x, v) / m for every node (m/s^2), each then limited as the parameters say.
-  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) const;
+  // a = F(x, v, t) / m for every node (m/s^2) at simulated time t (s), each then
+  // limited as the parameters say. Only the wind depends on t.
+  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t, std::vector<Vec3>& a) const;
+  // The same at t = 0 (for a model without wind, at any time).
+  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) const {
+    accelerations(x, v, 0.0, a);
+  }
 
   const std::vector<double>& masses() const { return masses_; }  // kg
   const std::vector<MembraneElement>& sections() const { return sections_; }
@@ -28,6 +35,7 @@ class ClothModel {
   size_t nodeCount() const { return masses_.size(); }
 
  private:
+  void addWindForces(const std::vector<Vec3>& x, double t) const;
   void limitAccelerations(std::vector<Vec3>& a) const;
 
   ClothParameters parameters_;
@@ -37,6 +45,7 @@ class ClothModel {
   std::vector<double> inverseMasses_;
   std::vector<double> areas_;  // lumped node area, m^2 (air resistance acts on it)
   double bendingStiffness_ = 0.0;
+  Wind wind_;
   mutable std::vector<Vec3> force_;
 };
 

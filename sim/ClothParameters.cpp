@@ -34,6 +34,7 @@ void ClothParameters::validate() const {
   requireNonNegative("strainRateDamping", strainRateDamping);
   requireNonNegative("strainLimit", strainLimit);
   requirePositive("accelerationLimit", accelerationLimit);
+  wind.validate();
   if (timeStep > maxTime)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
                                 formatNumber(maxTime));

@@ -3,6 +3,7 @@
 
 #include "Material.h"
 #include "TriangleMesh.h"
+#include "Wind.h"
 
 namespace figment {
 
@@ -44,6 +45,7 @@ struct ClothParameters {
   double strainLimit = 0.0;
   AccelerationLimiter accelerationLimiter = AccelerationLimiter::None;
   double accelerationLimit = 20.0;       // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
+  WindParameters wind;                   // paper §2 wind; amplitude 0 (the default) = none
   // a_max in m/s^2.
   double accelerationLimitSI() const;
 

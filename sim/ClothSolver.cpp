@@ -82,7 +82,7 @@ void ClothSolver::integrate(double dt) {
     for (size_t i = 0; i < n; ++i)
       if (pinned_[i]) a[i].setZero();
   };
-  model_->accelerations(x_, v_, a0_);
+  model_->accelerations(x_, v_, time_, a0_);
   holdPins(a0_);
   switch (parameters_.integrator) {
     case Integrator::ExplicitEuler:
@@ -106,7 +106,7 @@ void ClothSolver::integrate(double dt) {
         xPredicted_[i] = x_[i] + dt * v_[i];
         vPredicted_[i] = v_[i] + dt * a0_[i];
       }
-      model_->accelerations(xPredicted_, vPredicted_, a1_);
+      model_->accelerations(xPredicted_, vPredicted_, time_ + dt, a1_);
       holdPins(a1_);
       for (size_t i = 0; i < n; ++i) {
         x_[i] += 0.5 * dt * (v_[i] + vPredicted_[i]);

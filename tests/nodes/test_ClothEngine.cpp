@@ -63,6 +63,12 @@ TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaults) {
   EXPECT_EQ(engine->friction.getValue(), sim.friction);
   EXPECT_EQ(engine->clearance.getValue(), sim.clearance);
   EXPECT_EQ(engine->strainRateDamping.getValue(), sim.strainRateDamping);
+  EXPECT_EQ(engine->windDirection.getValue(), SbVec3f(float(sim.wind.direction.x()), float(sim.wind.direction.y()),
+                                                      float(sim.wind.direction.z())));
+  EXPECT_EQ(engine->windAmplitude.getValue(), sim.wind.amplitude);
+  EXPECT_EQ(engine->windFrequency.getValue(), sim.wind.frequency);
+  EXPECT_EQ(engine->windPhaseInterval.getValue(), sim.wind.meanPhaseInterval);
+  EXPECT_EQ(uint64_t(engine->windSeed.getValue()), sim.wind.seed);
   EXPECT_EQ(engine->restPoints.getNum(), 0);
   EXPECT_EQ(engine->coordIndex.getNum(), 0);
   EXPECT_EQ(engine->body.getValue(), nullptr);
@@ -149,6 +155,26 @@ TEST_F(ClothEngineTest, FacesWithMoreCornersAreFans) {
   EXPECT_EQ(engine->lastRun().triangles, 3) << "a pentagon without a final -1 is 3 triangles";
 }
 
+TEST_F(ClothEngineTest, WindFieldsReachTheSimulation) {
+  // The horizontal sheet falls for 0.02 s, a quarter period of 12.5 Hz: wind blowing up
+  // (face-on) slows its fall; wind along the sheet (edge-on) changes nothing.
+  auto drape = [](const std::string& fields) {
+    SceneRoot root = readString(clothScene(fields));
+    EXPECT_TRUE(root);
+    auto* cloth = find<SoCoordinate3>(root.get(), "Cloth");
+    std::vector<SbVec3f> x(cloth->point.getValues(0), cloth->point.getValues(0) + cloth->point.getNum());
+    auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
+    EXPECT_EQ(engine->lastError(), "");
+    return x;
+  };
+  const std::string gust = "windAmplitude 1 windFrequency 12.5 windPhaseInterval 0 windSeed 4\n";
+  const std::vector<SbVec3f> calm = drape("");
+  const std::vector<SbVec3f> up = drape(gust + "windDirection 0 2 0\n");
+  const std::vector<SbVec3f> along = drape(gust + "windDirection 1 0 0\n");
+  EXPECT_GT(up[0][1], calm[0][1] + 1e-4f) << "face-on wind pushed the sheet up";
+  EXPECT_EQ(along, calm);
+}
+
 // --- bad input: one line naming the engine, the field and the value -----------------
 
 struct BadField {
@@ -190,6 +216,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"strainLimit -0.1", "ClothEngine 'Drape': strainLimit = -0.1 must be >= 0"},
         BadField{"accelerationLimiter CLAMP accelerationLimit 0",
                  "ClothEngine 'Drape': accelerationLimit = 0 must be > 0"},
+        BadField{"windAmplitude -0.1", "ClothEngine 'Drape': windAmplitude = -0.1 must be >= 0"},
+        BadField{"windFrequency -1", "ClothEngine 'Drape': windFrequency = -1 must be >= 0"},
+        BadField{"windPhaseInterval -0.5", "ClothEngine 'Drape': windPhaseInterval = -0.5 must be >= 0"},
+        BadField{"windSeed -3", "ClothEngine 'Drape': windSeed = -3 must be >= 0"},
         BadField{"", "ClothEngine 'Drape': coordIndex[2] = 100 is not a vertex: restPoints has 100 points", "",
                  "[ 0 1 100 -1 ]"},
         BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "",
