@@ -24,10 +24,6 @@ class ClothModel {
   // a = F(x, v, t) / m for every node (m/s^2) at simulated time t (s), each then
   // limited as the parameters say. Only the wind depends on t.
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t, std::vector<Vec3>& a) const;
-  // The same at t = 0 (for a model without wind, at any time).
-  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, std::vector<Vec3>& a) const {
-    accelerations(x, v, 0.0, a);
-  }
 
   const std::vector<double>& masses() const { return masses_; }  // kg
   const std::vector<MembraneElement>& sections() const { return sections_; }

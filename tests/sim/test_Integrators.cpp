@@ -71,11 +71,11 @@ TEST(AccelerationLimiter, ClampAndTanhCapTheNetAcceleration) {
   p.gravity = Vec3::Zero();
   p.accelerationLimit = 2.0;  // 2 x 9.81 m/s^2 (no gravity: g = 9.81 is the unit)
   std::vector<Vec3> free, clamped, smooth;
-  ClothModel(section, p).accelerations(stretched, still, free);
+  ClothModel(section, p).accelerations(stretched, still, 0.0, free);
   p.accelerationLimiter = AccelerationLimiter::Clamp;
-  ClothModel(section, p).accelerations(stretched, still, clamped);
+  ClothModel(section, p).accelerations(stretched, still, 0.0, clamped);
   p.accelerationLimiter = AccelerationLimiter::Tanh;
-  ClothModel(section, p).accelerations(stretched, still, smooth);
+  ClothModel(section, p).accelerations(stretched, still, 0.0, smooth);
   const double limit = 2.0 * 9.81;
   for (int i = 0; i < 3; ++i) {
     ASSERT_GT(free[i].norm(), 10 * limit);
@@ -91,7 +91,7 @@ TEST(AccelerationLimiter, SmallAccelerationsPassTheClampUnchanged) {
   p.accelerationLimiter = AccelerationLimiter::Clamp;
   const TriangleMesh sheet = meshes::grid(2, 2, 0.1, 0.1);
   std::vector<Vec3> a;
-  ClothModel(sheet, p).accelerations(sheet.vertices, std::vector<Vec3>(sheet.vertices.size(), Vec3::Zero()), a);
+  ClothModel(sheet, p).accelerations(sheet.vertices, std::vector<Vec3>(sheet.vertices.size(), Vec3::Zero()), 0.0, a);
   for (const Vec3& ai : a) EXPECT_LT((ai - p.gravity).norm(), 1e-9);
 }
 

@@ -191,7 +191,7 @@ TEST(Wind, FaceOnSectionsCatchThePressureTimesTheirExposure) {
   ClothParameters p;
   p.gravity = Vec3::Zero();
   std::vector<Vec3> calm;
-  ClothModel(sheet, p).accelerations(sheet.vertices, still, calm);
+  ClothModel(sheet, p).accelerations(sheet.vertices, still, 0.0, calm);
   const double t = 0.25;  // a quarter period of 1 Hz: p = amplitude
   for (const Vec3& direction : {Vec3(0, 0, 1), Vec3(0, 1, -1), Vec3(3, 0, 4)}) {
     p.wind = steadyWind(0.1, 1.0);
