@@ -46,6 +46,7 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(restPoints, (0.0f, 0.0f, 0.0f));
   SO_ENGINE_ADD_INPUT(coordIndex, (0));
   SO_ENGINE_ADD_INPUT(body, (nullptr));
+  SO_ENGINE_ADD_INPUT(material, (""));
   SO_ENGINE_ADD_INPUT(thickness, (defaults.material.thickness));
   SO_ENGINE_ADD_INPUT(density, (defaults.material.density));
   SO_ENGINE_ADD_INPUT(youngsModulus, (defaults.material.youngsModulus));

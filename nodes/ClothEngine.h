@@ -8,6 +8,7 @@
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFInt32.h>
 #include <Inventor/fields/SoSFNode.h>
+#include <Inventor/fields/SoSFString.h>
 #include <Inventor/fields/SoSFVec3f.h>
 
 #include <functional>
@@ -58,6 +59,7 @@ class SoNode;
         restPoints [ ]
         coordIndex [ ]
         body NULL
+        material ""
         thickness 0.0005
         density 300
         youngsModulus 1000000
@@ -101,6 +103,10 @@ class ClothEngine : public SoEngine {
   // What the cloth collides with: a MeshFile (its collision surface), or NULL for
   // nothing. Default NULL.
   SoSFNode body;
+  // A named fabric (sim/MaterialPresets.h: cotton, silk, denim, jersey) that gives
+  // thickness, density, youngsModulus and poissonRatio; any of those four written in
+  // the scene overrides the preset's value. Default "" (the four fields as they are).
+  SoSFString material;
   // Cloth thickness h, m. Default 0.0005. Must be > 0.
   SoSFDouble thickness;
   // Density of the cloth rho, kg/m^3 (areal density = rho * h). Default 300. Must be > 0.

@@ -3,9 +3,11 @@
 #include "nodes/ClothEngine.h"
 #include "nodes/FieldValues.h"
 #include "nodes/MeshFile.h"
+#include "sim/MaterialPresets.h"
 #include "sim/MeshCollider.h"
 #include "sim/Validation.h"
 
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -56,13 +58,29 @@ TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coo
   return mesh;
 }
 
+Material materialFromFields(const ClothEngine& engine) {
+  Material m{engine.thickness.getValue(), engine.density.getValue(), engine.youngsModulus.getValue(),
+             engine.poissonRatio.getValue()};
+  const std::string name = engine.material.getValue().getString();
+  if (name.empty()) return m;
+  const std::optional<Material> preset = materialPreset(name);
+  if (!preset) {
+    std::string known;
+    for (const std::string& n : materialPresetNames()) known += (known.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("material = \"" + name + "\" is not a preset (" + known + ")");
+  }
+  // The preset fills what the scene did not write.
+  if (engine.thickness.isDefault()) m.thickness = preset->thickness;
+  if (engine.density.isDefault()) m.density = preset->density;
+  if (engine.youngsModulus.isDefault()) m.youngsModulus = preset->youngsModulus;
+  if (engine.poissonRatio.isDefault()) m.poissonRatio = preset->poissonRatio;
+  return m;
+}
+
 ClothParameters parametersFromFields(const ClothEngine& engine) {
   // The double fields hold what the scene wrote (see FieldValues.h); gravity is float.
   ClothParameters p;
-  p.material.thickness = engine.thickness.getValue();
-  p.material.density = engine.density.getValue();
-  p.material.youngsModulus = engine.youngsModulus.getValue();
-  p.material.poissonRatio = engine.poissonRatio.getValue();
+  p.material = materialFromFields(engine);
   p.timeStep = engine.timeStep.getValue();
   p.maxTime = engine.maxTime.getValue();
   p.rest.speedThreshold = engine.restSpeed.getValue();

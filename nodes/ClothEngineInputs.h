@@ -20,6 +20,10 @@ namespace figment {
 // into triangles as a fan (0 1 2, 0 2 3, ...). Empty faces (-1 -1) are skipped.
 TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex);
 
+// The material: a preset named in `material` with the four material fields the scene
+// wrote over it, or those four fields alone. Throws for an unknown preset.
+Material materialFromFields(const ClothEngine& engine);
+
 // Material and run parameters from the engine's fields, validated.
 ClothParameters parametersFromFields(const ClothEngine& engine);
 

@@ -2,9 +2,11 @@
 // escape; findClothEngines finds the engines that feed a scene.
 
 #include "nodes/ClothEngine.h"
+#include "nodes/ClothEngineInputs.h"
 #include "nodes/MeshFile.h"
 #include "SceneTestSupport.h"
 #include "sim/ClothParameters.h"
+#include "sim/MaterialPresets.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -213,6 +215,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"poissonRatio 0.5", "ClothEngine 'Drape': poissonRatio = 0.5 must be in (-1, 0.5)"},
         BadField{"poissonRatio -1", "ClothEngine 'Drape': poissonRatio = -1 must be in (-1, 0.5)"},
         BadField{"timeStep 0", "ClothEngine 'Drape': timeStep = 0 must be > 0"},
+        BadField{"material \"tweed\"",
+                 "ClothEngine 'Drape': material = \"tweed\" is not a preset (cotton, silk, denim, jersey)"},
         BadField{"strainLimit -0.1", "ClothEngine 'Drape': strainLimit = -0.1 must be >= 0"},
         BadField{"accelerationLimiter CLAMP accelerationLimit 0",
                  "ClothEngine 'Drape': accelerationLimit = 0 must be > 0"},
@@ -267,4 +271,18 @@ TEST(ClothEngineStability, FieldsReachTheSimulation) {
   find<SoCoordinate3>(root.get(), "Cloth")->point.getNum();
   EXPECT_EQ(engine->lastError(), "");
   EXPECT_GT(engine->lastRun().iterations, 0);
+}
+
+TEST(ClothEngineMaterial, APresetFillsWhatTheSceneDidNotWrite) {
+  initCoin();
+  SceneRoot root = readString(clothScene("material \"denim\"  thickness 0.001\n"));
+  ASSERT_TRUE(root);
+  auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
+  const figment::Material denim = *figment::materialPreset("denim");
+  const figment::Material used = figment::materialFromFields(*engine);
+  EXPECT_EQ(used.thickness, 0.001);  // written: overrides the preset
+  EXPECT_NE(denim.thickness, 0.001);
+  EXPECT_EQ(used.density, denim.density);
+  EXPECT_EQ(used.youngsModulus, denim.youngsModulus);
+  EXPECT_EQ(used.poissonRatio, denim.poissonRatio);
 }
