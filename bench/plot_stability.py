@@ -30,12 +30,18 @@ def main(csv_path, png_path):
     stab.set_yticks(range(len(configs)), [label[k] for k in configs])
     stab.set_xlabel("time step dt (s)")
     stab.set_title("stable (green) / failed (red); circle = came to rest")
+    # Colour: the stability measures; line and marker: the integrator.
+    measures = sorted({(k[1], k[2]) for k in configs})
+    colours = dict(zip(measures, plt.cm.tab10.colors))
+    styles = {"euler": ("-", "s"), "symplectic": ("--", "^"), "heun": (":", "o")}
     for k in configs:
         points = [(float(r["dt"]), 100 * float(r["mean_dev_m"]) / float(r["garment_height_m"]))
                   for r in rows if (r["integrator"], r["strain_clamp"], r["limiter"]) == k and r["stable"] == "1"]
         if points:
             xs, ys = zip(*points)
-            dev.plot(xs, [max(y, 1e-6) for y in ys], marker="o", label=label[k])
+            line, marker = styles.get(k[0], ("-", "o"))
+            dev.plot(xs, [max(y, 1e-6) for y in ys], linestyle=line, marker=marker,
+                     color=colours[(k[1], k[2])], label=label[k])
     dev.axhline(0.5, color="grey", linestyle="--", linewidth=1)
     dev.set_xscale("log")
     dev.set_yscale("log")
