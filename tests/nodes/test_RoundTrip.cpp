@@ -81,6 +81,13 @@ void expectSameScene(SoNode* first, SoNode* second, const std::string& text) {
   }
 }
 
+// `scene` written with SoWriteAction into `dir`/`name` and read again; `text` is what
+// was written.
+SceneRoot writtenAndReadAgain(SoNode* scene, const TempDir& dir, const std::string& name, std::string& text) {
+  text = writeString(scene);
+  return readFile(dir.file(name, text));
+}
+
 }  // namespace
 
 TEST(RoundTrip, EveryNodeTypeComesBackWithItsFieldValues) {
@@ -105,9 +112,9 @@ TEST(RoundTrip, EveryNodeTypeComesBackWithItsFieldValues) {
       "}\n");
   SceneRoot first = readFile(path);
   ASSERT_TRUE(first);
-  const std::string text = writeString(first.get());
+  std::string text;
   // Written next to the original, so the MeshFile finds cube.obj the same way.
-  SceneRoot second = readFile(dir.file("written.iv", text));
+  SceneRoot second = writtenAndReadAgain(first.get(), dir, "written.iv", text);
   ASSERT_TRUE(second) << text;
 
   expectSameScene(first.get(), second.get(), text);
@@ -132,11 +139,11 @@ TEST(RoundTrip, EverySceneFileComesBackWithItsFieldValues) {
     ++count;
     SceneRoot first = readFile(entry.path().string());
     ASSERT_TRUE(first) << entry.path();
-    const std::string text = writeString(first.get());
     // The written copy lives elsewhere: it finds the scene's mesh files through the
     // model search path, as any scene moved away from its data would.
     ScopedModelPath modelPath(entry.path().parent_path().string());
-    SceneRoot second = readFile(dir.file("written-" + entry.path().filename().string(), text));
+    std::string text;
+    SceneRoot second = writtenAndReadAgain(first.get(), dir, "written-" + entry.path().filename().string(), text);
     ASSERT_TRUE(second) << entry.path() << "\n" << text;
     expectSameScene(first.get(), second.get(), text);
   }
@@ -161,8 +168,8 @@ TEST(RoundTrip, ConnectedInputTakesItsMastersValueNotTheWrittenCopy) {
       "}\n");
   SceneRoot first = readFile(path);
   ASSERT_TRUE(first);
-  const std::string text = writeString(first.get());
-  SceneRoot second = readFile(dir.file("written.iv", text));
+  std::string text;
+  SceneRoot second = writtenAndReadAgain(first.get(), dir, "written.iv", text);
   ASSERT_TRUE(second) << text;
   const auto* pattern = find<MeshFile>(second.get(), "Pattern");
   ASSERT_NE(pattern, nullptr);
