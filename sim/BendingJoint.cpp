@@ -11,7 +11,7 @@ BendingJoint::BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec
   const double areaB = 0.5 * (x1 - x0).cross(x3 - x0).norm();
   if (!(areaA > 0.0 && areaB > 0.0)) return;
   restAngle_ = angle(x0, x1, x2, x3);
-  weight_ = 3.0 * (x1 - x0).squaredNorm() / (areaA + areaB);
+  valid_ = true;
 }
 
 namespace {
@@ -20,17 +20,18 @@ namespace {
 // theta > 0 when the sections fold towards nA.
 struct Hinge {
   Vec3 e, nA, nB;
-  double length;
+  double length, inverseLength;
   Hinge(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3)
-      : e(x1 - x0), nA(e.cross(x2 - x0)), nB((x3 - x0).cross(e)), length(e.norm()) {}
-  double angle() const { return std::atan2(nA.cross(nB).dot(e) / length, nA.dot(nB)); }
+      : e(x1 - x0), nA(e.cross(x2 - x0)), nB((x3 - x0).cross(e)), length(e.norm()), inverseLength(1.0 / length) {}
+  double angle() const { return std::atan2(nA.cross(nB).dot(e) * inverseLength, nA.dot(nB)); }
+  // Reciprocals taken once: this runs for every joint at every force evaluation.
   std::array<Vec3, 4> gradient(const Vec3& x0, const Vec3& x2, const Vec3& x3) const {
     // Opposite corners move the angle along their section's normal, by 1/height.
-    const Vec3 g2 = -length * nA / nA.squaredNorm();
-    const Vec3 g3 = -length * nB / nB.squaredNorm();
+    const Vec3 g2 = (-length / nA.squaredNorm()) * nA;
+    const Vec3 g3 = (-length / nB.squaredNorm()) * nB;
     // Edge corners: each opposite corner's lever, its projection along the edge.
-    const double squared = length * length;
-    const Vec3 g1 = -((x2 - x0).dot(e) / squared * g2 + (x3 - x0).dot(e) / squared * g3);
+    const double inverseSquared = inverseLength * inverseLength;
+    const Vec3 g1 = -(((x2 - x0).dot(e) * inverseSquared) * g2 + ((x3 - x0).dot(e) * inverseSquared) * g3);
     return {-(g1 + g2 + g3), g1, g2, g3};
   }
 };
@@ -44,20 +45,17 @@ std::array<Vec3, 4> BendingJoint::angleGradient(const Vec3& x0, const Vec3& x1, 
   return Hinge(x0, x1, x2, x3).gradient(x0, x2, x3);
 }
 
-double BendingJoint::energy(const std::vector<Vec3>& x, double bendingStiffness) const {
-  const double d = angle(x[corners_[0]], x[corners_[1]], x[corners_[2]], x[corners_[3]]) - restAngle_;
-  return 0.5 * bendingStiffness * weight_ * d * d;
+double BendingJoint::angleChange(const std::vector<Vec3>& x) const {
+  double d = angle(x[corners_[0]], x[corners_[1]], x[corners_[2]], x[corners_[3]]) - restAngle_;
+  if (d > M_PI) d -= 2.0 * M_PI;
+  if (d < -M_PI) d += 2.0 * M_PI;
+  return d;
 }
 
-void BendingJoint::addForces(const std::vector<Vec3>& x, double bendingStiffness, std::vector<Vec3>& force) const {
-  const Vec3 &x0 = x[corners_[0]], &x1 = x[corners_[1]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
-  const Hinge hinge(x0, x1, x2, x3);
-  double d = hinge.angle() - restAngle_;
-  if (d > M_PI) d -= 2.0 * M_PI;  // the shortest way back across +-pi
-  if (d < -M_PI) d += 2.0 * M_PI;
-  const auto gradient = hinge.gradient(x0, x2, x3);
-  const double scale = -bendingStiffness * weight_ * d;
-  for (int k = 0; k < 4; ++k) force[corners_[k]] += scale * gradient[k];
+void BendingJoint::addMomentForces(const std::vector<Vec3>& x, double moment, std::vector<Vec3>& force) const {
+  const Vec3 &x0 = x[corners_[0]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
+  const auto gradient = Hinge(x0, x[corners_[1]], x2, x3).gradient(x0, x2, x3);
+  for (int k = 0; k < 4; ++k) force[corners_[k]] -= moment * gradient[k];
 }
 
 }  // namespace figment

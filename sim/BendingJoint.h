@@ -1,17 +1,11 @@
 #pragma once
-// Bending at a joint between two cloth sections (paper §2, Fig. 2.1): a hinge on the
-// shared edge (x0, x1) with the opposite corners x2 (section A) and x3 (section B).
+// A joint between two cloth sections (paper §2, Fig. 2.1): the hinge on the shared edge
+// (x0, x1) with the opposite corners x2 (section A = x0 x1 x2) and x3 (section B). Its
+// dihedral angle measures the curvature across the edge; sim/PlateBending.h turns the
+// angles around each section into the section's curvature and the plate's energy.
 //
-// Based on: the discrete-shell hinge energy (Grinspun, Hirani, Desbrun & Schroeder,
-// "Discrete Shells", SCA 2003) with the dihedral-angle gradients of Bridson, Marino &
-// Fedkiw, "Simulation of clothing with folds and wrinkles", SCA 2003.
-//
-//   theta  = signed dihedral angle between the section normals (0 when flat)
-//   W      = (3/2) D (theta - theta0)^2 |e0|^2 / (A0a + A0b)        (J)
-// with D = E h^3 / 12(1 - nu^2) the plate bending stiffness and |e0|, A0 the rest edge
-// length and section areas: the integrated mean curvature theta |e| / 2 over the
-// hinge's third of the two sections gives the plate energy (D/2)(2H)^2 per area.
-// Force on corner i: -dW/dx_i = -3 D (theta - theta0) |e0|^2 / (A0a + A0b) dtheta/dx_i.
+// Angle gradients: Bridson, Marino & Fedkiw, "Simulation of clothing with folds and
+// wrinkles", SCA 2003.
 
 #include "TriangleMesh.h"
 
@@ -25,18 +19,25 @@ class BendingJoint {
   // Corners: shared edge (e0, e1), opposite o2 of section A = (e0, e1, o2), o3 of B.
   BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec3>& rest);
 
-  bool valid() const { return weight_ > 0.0; }
+  bool valid() const { return valid_; }
+  const std::array<int, 4>& corners() const { return corners_; }
+  double restAngle() const { return restAngle_; }
+
+  // theta - theta0 at x, wrapped into (-pi, pi] (the shortest way back to rest).
+  double angleChange(const std::vector<Vec3>& x) const;
+  // The forces of a moment M = dW/dtheta about the joint: force -= M dtheta/dx.
+  void addMomentForces(const std::vector<Vec3>& x, double moment, std::vector<Vec3>& force) const;
+
+  // Signed dihedral angle between the section normals: 0 when flat, > 0 when the sections
+  // fold towards A's normal; the same whichever section is A when the winding agrees.
   static double angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
   // dtheta/dx for the four corners x0..x3.
   static std::array<Vec3, 4> angleGradient(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
 
-  double energy(const std::vector<Vec3>& x, double bendingStiffness) const;
-  void addForces(const std::vector<Vec3>& x, double bendingStiffness, std::vector<Vec3>& force) const;
-
  private:
   std::array<int, 4> corners_;
   double restAngle_ = 0.0;
-  double weight_ = 0.0;  // 3 |e0|^2 / (A0a + A0b), dimensionless
+  bool valid_ = false;
 };
 
 }  // namespace figment

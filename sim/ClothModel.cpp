@@ -2,38 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <string>
 
 namespace figment {
 
-std::vector<BendingJoint> findBendingJoints(const TriangleMesh& mesh) {
-  // Each undirected edge -> the opposite corners of the sections that share it.
-  struct EdgeUse {
-    int from, to, opposite;
-  };
-  std::map<std::pair<int, int>, std::vector<EdgeUse>> uses;
-  for (const Triangle& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      uses[std::minmax(a, b)].push_back({a, b, c});
-    }
-  std::vector<BendingJoint> joints;
-  for (const auto& [edge, list] : uses) {
-    if (list.size() != 2) continue;
-    // Section A is the one that runs the edge as (from -> to); B runs it the other way
-    // when the winding is consistent.
-    const EdgeUse& A = list[0];
-    const EdgeUse& B = list[1];
-    BendingJoint joint(A.from, A.to, A.opposite, B.opposite, mesh.vertices);
-    if (joint.valid()) joints.push_back(joint);
-  }
-  return joints;
-}
-
-ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& parameters)
-    : parameters_(parameters), wind_(parameters.wind) {
+namespace {
+// The garment, once checked: triangles that index its vertices.
+const TriangleMesh& checkedGarment(const TriangleMesh& rest) {
   const int n = static_cast<int>(rest.vertices.size());
   if (n == 0 || rest.triangles.empty()) throw std::invalid_argument("the garment has no triangles");
   for (const Triangle& t : rest.triangles)
@@ -41,6 +17,15 @@ ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& paramete
       if (i < 0 || i >= n)
         throw std::invalid_argument("coordIndex = " + std::to_string(i) + " is out of range [0, " +
                                     std::to_string(n - 1) + "]");
+  return rest;
+}
+}  // namespace
+
+ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& parameters)
+    : parameters_(parameters),
+      bending_(checkedGarment(rest), parameters.material.bendingStiffness(), parameters.material.poissonRatio),
+      wind_(parameters.wind) {
+  const int n = static_cast<int>(rest.vertices.size());
   masses_.assign(n, 0.0);
   areas_.assign(n, 0.0);
   const double arealDensity = parameters.material.arealDensity();
@@ -56,8 +41,6 @@ ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& paramete
   if (sections_.empty()) throw std::invalid_argument("every garment triangle is degenerate (zero area)");
   inverseMasses_.resize(n);
   for (int i = 0; i < n; ++i) inverseMasses_[i] = masses_[i] > 0.0 ? 1.0 / masses_[i] : 0.0;
-  joints_ = findBendingJoints(rest);
-  bendingStiffness_ = parameters.material.bendingStiffness();
   force_.resize(n);
 }
 
@@ -67,7 +50,7 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
   for (const MembraneElement& section : sections_)
     section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, parameters_.strainLimit, force_);
-  for (const BendingJoint& joint : joints_) joint.addForces(x, bendingStiffness_, force_);
+  bending_.addForces(x, force_);
   if (wind_.blows()) addWindForces(x, t);
   a.resize(n);
   for (size_t i = 0; i < n; ++i) {

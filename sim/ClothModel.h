@@ -1,13 +1,13 @@
 #pragma once
 // The FIGMENT physical model of one garment (paper §2): triangular sections with
-// stretch/shear stresses, bending joints on shared edges, gravity, air resistance and
-// wind (sim/Wind.h), acting on nodes whose masses are lumped from the sections
-// (rho h A / 3 per corner).
+// stretch/shear stresses, plate bending from the angles at the joints between them
+// (sim/PlateBending.h), gravity, air resistance and wind (sim/Wind.h), acting on nodes
+// whose masses are lumped from the sections (rho h A / 3 per corner).
 // Collisions and friction are contact events, handled by the solver after each step.
 
-#include "BendingJoint.h"
 #include "ClothParameters.h"
 #include "MembraneElement.h"
+#include "PlateBending.h"
 #include "TriangleMesh.h"
 #include "Wind.h"
 
@@ -25,9 +25,12 @@ class ClothModel {
   // limited as the parameters say. Only the wind depends on t.
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t, std::vector<Vec3>& a) const;
 
+  // Held (pinned) nodes: sections between them are clamps that do not bend.
+  void hold(const std::vector<char>& heldNodes) { bending_.hold(heldNodes); }
+
   const std::vector<double>& masses() const { return masses_; }  // kg
   const std::vector<MembraneElement>& sections() const { return sections_; }
-  const std::vector<BendingJoint>& joints() const { return joints_; }
+  const PlateBending& bending() const { return bending_; }
   size_t nodeCount() const { return masses_.size(); }
 
  private:
@@ -36,17 +39,12 @@ class ClothModel {
 
   ClothParameters parameters_;
   std::vector<MembraneElement> sections_;
-  std::vector<BendingJoint> joints_;
+  PlateBending bending_;
   std::vector<double> masses_;
   std::vector<double> inverseMasses_;
   std::vector<double> areas_;  // lumped node area, m^2 (air resistance acts on it)
-  double bendingStiffness_ = 0.0;
   Wind wind_;
   mutable std::vector<Vec3> force_;
 };
-
-// The joints of a mesh: one per edge shared by exactly two sections. Edges of more
-// than two sections (non-manifold) get none.
-std::vector<BendingJoint> findBendingJoints(const TriangleMesh& mesh);
 
 }  // namespace figment

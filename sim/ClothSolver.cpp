@@ -21,7 +21,10 @@ ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& par
 
 ClothSolver::~ClothSolver() = default;
 
-void ClothSolver::pin(int node) { pinned_.at(node) = 1; }
+void ClothSolver::pin(int node) {
+  pinned_.at(node) = 1;
+  model_->hold(pinned_);
+}
 
 const std::vector<Vec3>& ClothSolver::positions() const { return x_; }
 const std::vector<Vec3>& ClothSolver::velocities() const { return v_; }

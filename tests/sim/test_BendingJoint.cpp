@@ -1,5 +1,4 @@
-// The dihedral angle, its gradient against finite differences, and bending forces
-// that vanish at the rest angle and push a fold back.
+// The dihedral angle at a joint and its gradient against finite differences.
 #include "FiniteDifferences.h"
 #include "sim/BendingJoint.h"
 
@@ -26,6 +25,12 @@ TEST(BendingJoint, FlatHingeHasZeroAngleAndFoldsAreSigned) {
   EXPECT_NEAR(a, -b, 1e-12);
 }
 
+TEST(BendingJoint, AngleIsTheSameWhicheverSectionIsFirst) {
+  // Consistent winding: A = (x0, x1, x2) and B = (x1, x0, x3); swapped, B runs (x1, x0).
+  const auto x = hinge(0.4);
+  EXPECT_NEAR(BendingJoint::angle(x[0], x[1], x[2], x[3]), BendingJoint::angle(x[1], x[0], x[3], x[2]), 1e-12);
+}
+
 TEST(BendingJoint, AngleGradientMatchesFiniteDifferences) {
   std::vector<Vec3> x = {Vec3(0.01, 0.02, -0.01), Vec3(1.0, 0.1, 0.05), Vec3(0.3, 0.9, 0.2), Vec3(0.7, -0.8, 0.4)};
   const auto g = BendingJoint::angleGradient(x[0], x[1], x[2], x[3]);
@@ -35,22 +40,9 @@ TEST(BendingJoint, AngleGradientMatchesFiniteDifferences) {
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(g[i][k], fd[i][k], 1e-6) << "corner " << i << " axis " << k;
 }
 
-TEST(BendingJoint, ForcesAreMinusTheEnergyGradientAndVanishAtRest) {
-  const auto rest = hinge(0.2);
-  BendingJoint joint(0, 1, 2, 3, rest);
-  ASSERT_TRUE(joint.valid());
-  std::vector<Vec3> force(4, Vec3::Zero());
-  joint.addForces(rest, 1e-5, force);
-  for (const Vec3& f : force) EXPECT_LT(f.norm(), 1e-15);
-
-  auto x = hinge(0.7);
-  std::fill(force.begin(), force.end(), Vec3::Zero());
-  joint.addForces(x, 1e-5, force);
-  const auto fd = meshes::numericalGradient([&](const std::vector<Vec3>& p) { return joint.energy(p, 1e-5); }, x, 1e-7);
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(force[i][k], -fd[i][k], 1e-9) << "corner " << i << " axis " << k;
-  // Restoring: moving x3 along its force reduces the fold towards the rest angle.
-  auto relaxed = x;
-  relaxed[3] += 1e-3 * force[3].normalized();
-  EXPECT_LT(joint.energy(relaxed, 1e-5), joint.energy(x, 1e-5));
+TEST(BendingJoint, AngleChangeIsMeasuredFromTheRestFoldTheShortWay) {
+  const BendingJoint joint(0, 1, 2, 3, hinge(3.0));
+  // From a fold of 3 rad to -3 rad is 2 pi - 6 = 0.28 rad the short way, not -6.
+  EXPECT_NEAR(std::abs(joint.angleChange(hinge(-3.0))), 2 * M_PI - 6.0, 1e-9);
+  EXPECT_NEAR(joint.angleChange(hinge(3.0)), 0.0, 1e-12);
 }
