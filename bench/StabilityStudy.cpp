@@ -31,17 +31,23 @@ const char* limiterKey(int limiter) {
   return limiter == ClothEngine::CLAMP ? "clamp" : limiter == ClothEngine::TANH ? "tanh" : "none";
 }
 
-std::vector<Configuration> configurations(bool quick) {
-  if (quick)
-    return {{ClothEngine::HEUN, false, ClothEngine::NONE},
-            {ClothEngine::HEUN, true, ClothEngine::CLAMP},
-            {ClothEngine::SYMPLECTIC, false, ClothEngine::NONE},
-            {ClothEngine::EULER, false, ClothEngine::NONE}};
+std::vector<Configuration> configurations(bool quick, const std::vector<std::string>& integrators) {
   std::vector<Configuration> all;
-  for (int integrator : {ClothEngine::EULER, ClothEngine::SYMPLECTIC, ClothEngine::HEUN})
-    for (bool clamp : {false, true})
-      for (int limiter : {ClothEngine::NONE, ClothEngine::CLAMP, ClothEngine::TANH})
-        all.push_back({integrator, clamp, limiter});
+  if (quick) {
+    all = {{ClothEngine::HEUN, false, ClothEngine::NONE},
+           {ClothEngine::HEUN, true, ClothEngine::CLAMP},
+           {ClothEngine::SYMPLECTIC, false, ClothEngine::NONE},
+           {ClothEngine::EULER, false, ClothEngine::NONE}};
+  } else {
+    for (int integrator : {ClothEngine::EULER, ClothEngine::SYMPLECTIC, ClothEngine::HEUN})
+      for (bool clamp : {false, true})
+        for (int limiter : {ClothEngine::NONE, ClothEngine::CLAMP, ClothEngine::TANH})
+          all.push_back({integrator, clamp, limiter});
+  }
+  if (integrators.empty()) return all;
+  std::erase_if(all, [&](const Configuration& c) {
+    return std::find(integrators.begin(), integrators.end(), integratorKey(c.integrator)) == integrators.end();
+  });
   return all;
 }
 
@@ -107,8 +113,9 @@ int runStabilityStudy(const StabilityStudyOptions& options) {
   const std::string csvPath = options.outDir + "/stability.csv";
   std::ofstream csv(csvPath + ".partial");
   csv << "integrator,strain_clamp,limiter,dt,stable,at_rest,wall_s,mean_dev_m,max_dev_m,garment_height_m,"
-         "max_edge_strain,iterations,simulated_s,strain_limit,acceleration_limit_g\n";
-  for (const Configuration& c : configurations(options.quick)) {
+         "max_edge_strain,iterations,simulated_s,strain_limit,acceleration_limit_g,clamped_section_share,"
+         "limited_node_share\n";
+  for (const Configuration& c : configurations(options.quick, options.integrators)) {
     double largestStable = 0.0;
     Deviation atLargest;
     for (double dt : steps) {
@@ -121,11 +128,12 @@ int runStabilityStudy(const StabilityStudyOptions& options) {
       const Deviation d = failed ? Deviation{NAN, NAN} : deviation(draped, reference);
       if (stable && dt > largestStable) largestStable = dt, atLargest = d;
       char line[512];
-      std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g\n",
+      std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g,%.4g,%.4g\n",
                     integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), dt, stable ? 1 : 0,
                     run.atRest ? 1 : 0, run.wallSeconds, d.mean, d.max, height, strain, run.iterations,
                     run.simulatedSeconds, c.strainClamp ? options.strainLimit : 0.0,
-                    c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit);
+                    c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit, run.clampedSectionShare,
+                    run.limitedNodeShare);
       csv << line;
       csv.flush();
     }

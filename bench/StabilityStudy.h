@@ -16,6 +16,7 @@ struct StabilityStudyOptions {
   double strainLimit = 0.1;      // Green strain, when clamping is on
   double accelerationLimit = 10; // multiples of |g|, when a limiter is on
   std::vector<double> timeSteps; // s, ascending; empty = the study's own list
+  std::vector<std::string> integrators;  // euler, symplectic, heun; empty = all three
   std::string plotScript;        // python script that charts the CSV; "" = no chart
 };
 

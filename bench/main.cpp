@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   stabilityCommand->add_flag("--quick", stability.quick, "a few configurations and steps, 0.3 s runs (under a minute)");
   stabilityCommand->add_option("--dt", stability.timeSteps, "time steps to sweep, s (the smallest is the reference)")
       ->check(CLI::PositiveNumber);
+  stabilityCommand->add_option("--integrator", stability.integrators, "only these integrators (repeat the option)")
+      ->check(CLI::IsMember({"euler", "symplectic", "heun"}));
   stabilityCommand->add_option("--strain-limit", stability.strainLimit, "strain clamping range")->capture_default_str();
   stabilityCommand->add_option("--acceleration-limit", stability.accelerationLimit, "limiter cap, multiples of g")
       ->capture_default_str();

@@ -147,6 +147,8 @@ void ClothEngine::evaluate() {
     impl_->stats.simulatedSeconds = run.simulatedTime;
     impl_->stats.wallSeconds = run.wallSeconds;
     impl_->stats.atRest = run.atRest;
+    impl_->stats.clampedSectionShare = run.clampedSectionShare;
+    impl_->stats.limitedNodeShare = run.limitedNodeShare;
     const std::vector<figment::Vec3>& x = solver.positions();
     for (size_t i = 0; i < x.size() && i < result.size(); ++i)
       result[i].setValue(float(x[i].x()), float(x[i].y()), float(x[i].z()));

@@ -175,6 +175,8 @@ class ClothEngine : public SoEngine {
     double simulatedSeconds = 0.0;
     double wallSeconds = 0.0;
     bool atRest = false;
+    double clampedSectionShare = 0.0;  // of section evaluations whose strain was clamped
+    double limitedNodeShare = 0.0;     // of node accelerations the limiter cut
   };
   // Reported about once per second of wall time while a simulation runs.
   struct Progress {

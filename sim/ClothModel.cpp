@@ -48,8 +48,10 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
                                std::vector<Vec3>& a) const {
   const size_t n = masses_.size();
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
+  ++counts_.evaluations;
   for (const MembraneElement& section : sections_)
-    section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, parameters_.strainLimit, force_);
+    counts_.clampedSections +=
+        section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, parameters_.strainLimit, force_);
   bending_.addForces(x, force_);
   if (wind_.blows()) addWindForces(x, t);
   a.resize(n);
@@ -87,9 +89,12 @@ void ClothModel::limitAccelerations(std::vector<Vec3>& a) const {
     const double magnitude = ai.norm();
     if (magnitude == 0.0) continue;
     if (parameters_.accelerationLimiter == AccelerationLimiter::Clamp) {
-      if (magnitude > limit) ai *= limit / magnitude;
+      if (magnitude > limit) ai *= limit / magnitude, ++counts_.limitedNodes;
     } else {
-      ai *= limit * std::tanh(magnitude / limit) / magnitude;
+      // Smooth: every acceleration shrinks a little; count those cut by over 1 %.
+      const double factor = limit * std::tanh(magnitude / limit) / magnitude;
+      counts_.limitedNodes += factor < 0.99;
+      ai *= factor;
     }
   }
 }

@@ -28,6 +28,13 @@ class ClothModel {
   // Held (pinned) nodes: sections between them are clamps that do not bend.
   void hold(const std::vector<char>& heldNodes) { bending_.hold(heldNodes); }
 
+  // How often the stability measures engaged since construction: sections whose strain
+  // was clamped and nodes whose acceleration was limited, counted per force evaluation.
+  struct LimiterCounts {
+    long long evaluations = 0, clampedSections = 0, limitedNodes = 0;
+  };
+  const LimiterCounts& limiterCounts() const { return counts_; }
+
   const std::vector<double>& masses() const { return masses_; }  // kg
   const std::vector<MembraneElement>& sections() const { return sections_; }
   const PlateBending& bending() const { return bending_; }
@@ -45,6 +52,7 @@ class ClothModel {
   std::vector<double> areas_;  // lumped node area, m^2 (air resistance acts on it)
   Wind wind_;
   mutable std::vector<Vec3> force_;
+  mutable LimiterCounts counts_;
 };
 
 }  // namespace figment

@@ -168,6 +168,7 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   const auto start = Clock::now();
   auto lastReport = start;
   const int firstIteration = iterations_;
+  const ClothModel::LimiterCounts before = model_->limiterCounts();
   // Stop at maxTime, counted in steps so that rounding never adds or drops one.
   const int totalSteps = static_cast<int>(std::ceil(parameters_.maxTime / parameters_.timeStep - 1e-9));
   while (iterations_ < totalSteps && !atRest()) {
@@ -185,6 +186,13 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   result.simulatedTime = time_;
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   result.atRest = atRest();
+  const ClothModel::LimiterCounts& after = model_->limiterCounts();
+  const double evaluations = static_cast<double>(after.evaluations - before.evaluations);
+  if (evaluations > 0.0) {
+    result.clampedSectionShare =
+        (after.clampedSections - before.clampedSections) / (evaluations * model_->sections().size());
+    result.limitedNodeShare = (after.limitedNodes - before.limitedNodes) / (evaluations * model_->nodeCount());
+  }
   return result;
 }
 

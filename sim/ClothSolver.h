@@ -37,6 +37,10 @@ struct DrapeResult {
   double simulatedTime = 0.0;  // s
   double wallSeconds = 0.0;
   bool atRest = false;
+  // Share of section force evaluations whose strain was clamped, and of node
+  // accelerations the limiter cut (sim/ClothModel.h), over this run.
+  double clampedSectionShare = 0.0;
+  double limitedNodeShare = 0.0;
 };
 
 // Thrown when the simulation blows up (non-finite values): names step, dt and method.

@@ -49,12 +49,16 @@ double MembraneElement::energy(const std::vector<Vec3>& x, const Material& m) co
   return restArea_ * m.thickness * density;
 }
 
-void MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
                                 double tauDamping, double strainLimit, std::vector<Vec3>& force) const {
   const Matrix32 F = edgeMatrix(corners_, x) * restInverse_;
   const Eigen::Matrix2d FtF = F.transpose() * F;
   Eigen::Vector3d e(0.5 * (FtF(0, 0) - 1.0), 0.5 * (FtF(1, 1) - 1.0), 0.5 * FtF(0, 1));
-  if (strainLimit > 0.0) e = e.cwiseMax(-strainLimit).cwiseMin(strainLimit);
+  bool clamped = false;
+  if (strainLimit > 0.0) {
+    clamped = e.cwiseAbs().maxCoeff() > strainLimit;
+    if (clamped) e = e.cwiseMax(-strainLimit).cwiseMin(strainLimit);
+  }
   if (tauDamping > 0.0) {
     const Matrix32 Fdot = edgeMatrix(corners_, v) * restInverse_;
     const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);
@@ -67,6 +71,7 @@ void MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Ve
   force[corners_[1]] += H.col(0);
   force[corners_[2]] += H.col(1);
   force[corners_[0]] -= H.col(0) + H.col(1);
+  return clamped;
 }
 
 }  // namespace figment

@@ -48,8 +48,8 @@ class MembraneElement {
   // Adds the elastic (and strain-rate damping) forces of this section to `force`. With
   // strainLimit > 0 each strain component is first clamped into [-limit, limit] (the
   // paper's strain clamping: a section distorted beyond a realistic range pulls no
-  // harder than at the range's edge).
-  void addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+  // harder than at the range's edge). Returns whether the clamp changed a strain.
+  bool addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
                  double tauDamping, double strainLimit, std::vector<Vec3>& force) const;
 
  private:

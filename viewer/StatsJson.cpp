@@ -9,6 +9,27 @@
 
 namespace figment::viewer {
 
+namespace {
+// A field's value as the .iv file spells it (enum names, numbers).
+std::string fieldText(const SoField& field) {
+  SbString text;
+  const_cast<SoField&>(field).get(text);  // Coin's get() is not const; it only reads
+  return text.getString();
+}
+
+// How the drape was integrated and how often the paper's stability measures engaged.
+nlohmann::json method(const ClothEngine& engine, const ClothEngine::RunStats& run) {
+  const bool limited = engine.accelerationLimiter.getValue() != ClothEngine::NONE;
+  return {{"integrator", fieldText(engine.integrator)},
+          {"time_step_s", engine.timeStep.getValue()},
+          {"strain_limit", engine.strainLimit.getValue()},
+          {"clamped_section_share", run.clampedSectionShare},
+          {"acceleration_limiter", fieldText(engine.accelerationLimiter)},
+          {"acceleration_limit_g", limited ? engine.accelerationLimit.getValue() : 0.0},
+          {"limited_node_share", run.limitedNodeShare}};
+}
+}  // namespace
+
 std::string writeStatsJson(const std::string& path, const std::string& scene,
                            const std::vector<ClothEngine*>& engines, double renderWallSeconds,
                            const ImageSize& size) {
@@ -20,7 +41,8 @@ std::string writeStatsJson(const std::string& path, const std::string& scene,
                         {"iterations", run.iterations},
                         {"simulated_s", run.simulatedSeconds},
                         {"wall_s", run.wallSeconds},
-                        {"at_rest", run.atRest}});
+                        {"at_rest", run.atRest},
+                        {"method", method(*engine, run)}});
   }
   const nlohmann::json stats = {{"scene", scene},
                                 {"garments", garments},

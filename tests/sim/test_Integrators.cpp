@@ -95,6 +95,34 @@ TEST(AccelerationLimiter, SmallAccelerationsPassTheClampUnchanged) {
   for (const Vec3& ai : a) EXPECT_LT((ai - p.gravity).norm(), 1e-9);
 }
 
+TEST(AccelerationLimiter, TheRunReportsHowOftenEachMeasureEngaged) {
+  // A sheet falling freely: every acceleration is g. Capped at 0.5 g, all are cut; at
+  // 20 g, none. A soft strip (E = 2 kPa) hanging from its top stretches far beyond 1 %:
+  // strain clamping at 1 % engages, and at 50 % it never does.
+  const TriangleMesh sheet = meshes::grid(2, 2, 0.1, 0.1);
+  ClothParameters p;
+  p.maxTime = 0.01;
+  p.accelerationLimiter = AccelerationLimiter::Clamp;
+  for (const auto& [limit, share] : {std::pair{0.5, 1.0}, std::pair{20.0, 0.0}}) {
+    p.accelerationLimit = limit;
+    ClothSolver solver(sheet, p, nullptr);
+    EXPECT_DOUBLE_EQ(solver.run().limitedNodeShare, share) << "limit " << limit << " g";
+  }
+  ClothParameters soft;
+  soft.material.youngsModulus = 2e3;
+  soft.maxTime = 0.2;
+  soft.timeStep = 1e-3;
+  const TriangleMesh strip = meshes::grid(1, 8, 0.02, 0.2);
+  for (const auto& [limit, engaged] : {std::pair{0.01, true}, std::pair{0.5, false}}) {
+    soft.strainLimit = limit;
+    ClothSolver solver(strip, soft, nullptr);
+    solver.pin(0), solver.pin(1);
+    const DrapeResult result = solver.run();
+    EXPECT_EQ(result.clampedSectionShare > 0.0, engaged) << "limit " << limit;
+    EXPECT_LT(result.clampedSectionShare, 1.0);
+  }
+}
+
 TEST(Integrators, BlowUpNamesTheMethod) {
   ClothParameters p;
   p.material.youngsModulus = 1e9;

@@ -92,6 +92,23 @@ TEST_F(FigmentView, RendersAPngAndWritesStatistics) {
   EXPECT_GE(stats["render_wall_s"].get<double>(), 0.0);
 }
 
+TEST_F(FigmentView, StatisticsReportTheMethodAndHowOftenTheLimitersEngaged) {
+  // The square falls freely (|a| = g), so a cap of 0.5 g cuts every acceleration.
+  const std::string scene = write("limited.iv", clothScene("integrator SYMPLECTIC accelerationLimiter CLAMP "
+                                                           "accelerationLimit 0.5 strainLimit 0.2 timeStep 1e-3"));
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " +
+                              quote(path("stats.json")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json method = nlohmann::json::parse(std::ifstream(path("stats.json")))["garments"][0]["method"];
+  EXPECT_EQ(method["integrator"], "SYMPLECTIC");
+  EXPECT_DOUBLE_EQ(method["time_step_s"].get<double>(), 1e-3);
+  EXPECT_EQ(method["acceleration_limiter"], "CLAMP");
+  EXPECT_DOUBLE_EQ(method["acceleration_limit_g"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(method["limited_node_share"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(method["strain_limit"].get<double>(), 0.2);
+  EXPECT_DOUBLE_EQ(method["clamped_section_share"].get<double>(), 0.0);
+}
+
 TEST_F(FigmentView, RendersEveryExampleScene) {
   int count = 0;
   for (const auto& entry : fs::directory_iterator(FIGMENT_SOURCE_DIR "/scenes/examples")) {
