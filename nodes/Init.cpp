@@ -2,7 +2,9 @@
 
 #include "nodes/ClothEngine.h"
 #include "nodes/ClothingLayer.h"
+#include "nodes/DepthSortedGroup.h"
 #include "nodes/MeshFile.h"
+#include "nodes/StencilSeparator.h"
 
 #include <Inventor/SoDB.h>
 
@@ -15,6 +17,8 @@ void init() {
   MeshFile::initClass();
   ClothingLayer::initClass();
   ClothEngine::initClass();
+  DepthSortedGroup::initClass();
+  StencilSeparator::initClass();
 }
 
 }  // namespace figment

@@ -1,9 +1,13 @@
 #include "viewer/SceneRenderer.h"
 
+#include "nodes/GLStencilElement.h"
+#include "nodes/StencilRule.h"
 #include "viewer/AtomicFile.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoOffscreenRenderer.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
 
 namespace figment::viewer {
 
@@ -12,13 +16,29 @@ SceneRenderer::SceneRenderer(const ImageSize& size)
       renderer_(std::make_unique<SoOffscreenRenderer>(SbViewportRegion(short(size.width), short(size.height)))) {
   renderer_->setComponents(SoOffscreenRenderer::RGB);
   renderer_->setBackgroundColor(background());
+  clearStencilEachFrame(*renderer_->getGLRenderAction());
 }
 
 SceneRenderer::~SceneRenderer() = default;
 
 SbColor SceneRenderer::background() { return SbColor(0.8f, 0.8f, 0.8f); }
 
-std::string SceneRenderer::render(SoNode* root) {
+namespace {
+// The view volume of the first camera under `root`, for this viewport; false if none.
+bool cameraView(SoNode* root, const SbViewportRegion& viewport, SbViewVolume& view) {
+  SoSearchAction search;
+  search.setType(SoCamera::getClassTypeId());
+  search.apply(root);
+  if (!search.getPath()) return false;
+  view = static_cast<SoCamera*>(search.getPath()->getTail())->getViewVolume(viewport.getViewportAspectRatio());
+  return true;
+}
+}  // namespace
+
+std::string SceneRenderer::render(SoNode* root, bool keepStencilFields) {
+  const SbViewportRegion& viewport = renderer_->getViewportRegion();
+  SbViewVolume view;
+  if (!keepStencilFields && cameraView(root, viewport, view)) applyStencilRule(root, viewport, view);
   rendered_ = renderer_->render(root) == TRUE;
   return rendered_ ? "" : "could not render: no off-screen OpenGL context";
 }

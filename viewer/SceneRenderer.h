@@ -22,8 +22,10 @@ class SceneRenderer {
   static SbColor background();
 
   // Renders `root` (holding its camera and lights, see stageScene) through the OSMesa
-  // context initHeadless() registered. Returns "" on success, else the error.
-  std::string render(SoNode* root);
+  // context initHeadless() registered. Unless `keepStencilFields`, first sets which
+  // StencilSeparators write the stencil and which ClothingLayers are masked for the
+  // root's camera (figment::applyStencilRule). Returns "" on success, else the error.
+  std::string render(SoNode* root, bool keepStencilFields = false);
   // The last image: RGB, 3 bytes per pixel, bottom row first (OpenGL's order).
   const unsigned char* pixels() const;
   const ImageSize& size() const { return size_; }

@@ -1,7 +1,7 @@
 // figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless.
 //
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]
-//                [--stats OUT.json]
+//                [--stats OUT.json] [--keep-stencil-fields]
 //
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
 // exit status (2: bad command line, 1: anything else); no image is written then.
@@ -34,6 +34,7 @@ struct Options {
   std::string size = "800x600";
   std::string view;
   std::string stats;
+  bool keepStencilFields = false;
 };
 
 int fail(const std::string& where, const std::string& message, int status = 1) {
@@ -80,7 +81,7 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
 
   SceneRenderer renderer(size);
   const auto start = std::chrono::steady_clock::now();
-  error = renderer.render(root);
+  error = renderer.render(root, options.keepStencilFields);
   const std::chrono::duration<double> renderWall = std::chrono::steady_clock::now() - start;
   if (!error.empty()) return fail(options.scene, error);
   error = renderer.writePng(options.output);
@@ -107,6 +108,9 @@ int main(int argc, char** argv) {
                  "Camera direction: front, back, left, right or AZ,EL in degrees "
                  "(default: the scene's camera, else front)");
   app.add_option("--stats", options.stats, "Write simulation and render statistics (JSON) here");
+  app.add_flag("--keep-stencil-fields", options.keepStencilFields,
+               "Render with the scene's StencilSeparator.writeStencil and ClothingLayer.masked values, "
+               "not those the stencil rule sets for the camera");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

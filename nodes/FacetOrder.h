@@ -1,0 +1,33 @@
+#pragma once
+// The order and depth mode in which a ClothingLayer draws its facets (paper §5): every
+// facet sorted by its centre's depth, far to near, and marked as facing the viewer or
+// away. Geometry only (no GL), so it is tested on its own.
+
+#include <Inventor/SbMatrix.h>
+#include <Inventor/SbVec3f.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace figment {
+
+struct ViewPoint {
+  bool perspective = true;
+  SbVec3f eye;        // perspective: the eye, in the facets' (object) frame
+  SbVec3f direction;  // orthographic: the viewing direction, in the object frame
+  SbMatrix toCamera;  // object frame -> camera frame (camera looks down -z)
+  bool clockwise = false;  // vertex ordering: CLOCKWISE flips which side is the front
+};
+
+struct OrderedFacet {
+  int32_t firstIndex;  // into coordIndex: the facet's first corner
+  int32_t corners;     // how many corners it has (>= 3)
+  bool facesViewer;    // the front faces the eye: drawn over what lies beneath
+};
+
+// Facets of `coordIndex` (polygons ended by -1 or the end) with every index in
+// [0, pointCount) and at least three corners; others are skipped. Far to near.
+std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
+                                      int indexCount, const ViewPoint& view);
+
+}  // namespace figment

@@ -1,0 +1,39 @@
+#include "nodes/StencilSeparator.h"
+
+#include "nodes/GLStencilElement.h"
+
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/misc/SoState.h>
+
+SO_NODE_SOURCE(StencilSeparator);
+
+void StencilSeparator::initClass() {
+  if (classTypeId != SoType::badType()) return;
+  GLStencilElement::initClass();
+  SO_NODE_INIT_CLASS(StencilSeparator, SoSeparator, "Separator");
+}
+
+StencilSeparator::StencilSeparator() {
+  SO_NODE_CONSTRUCTOR(StencilSeparator);
+  SO_NODE_ADD_FIELD(writeStencil, (FALSE));
+}
+
+StencilSeparator::~StencilSeparator() = default;
+
+// The mode is set in a pushed state around the separator's own traversal, so it holds
+// for the children and the pop restores the GL state below.
+void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) {
+  SoState* state = action->getState();
+  state->push();
+  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::WRITE);
+  inherited::GLRenderBelowPath(action);
+  state->pop();
+}
+
+void StencilSeparator::GLRenderInPath(SoGLRenderAction* action) {
+  SoState* state = action->getState();
+  state->push();
+  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::WRITE);
+  inherited::GLRenderInPath(action);
+  state->pop();
+}
