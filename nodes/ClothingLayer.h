@@ -15,7 +15,9 @@
 
   Drawing (the hybrid depth-buffer / depth-sort method of §5): every render, each facet
   is tested against the line from the eye (or the viewing direction of an orthographic
-  camera) to its centre. Facets whose front faces the viewer are taken to enclose
+  camera) to its centre. Facets whose front faces the viewer (or is nearly edge-on to
+  the line of sight: the paper draws as usual only those facing "substantially" away)
+  are taken to enclose
   whatever was drawn before them on that line of sight, the body or an inner layer:
   they are drawn with the depth test ALWAYS and depth writes on, so skin that pokes a
   few millimetres through the cloth stays hidden. Facets facing away (the inside of the

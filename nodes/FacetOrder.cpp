@@ -29,7 +29,8 @@ std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, con
       const SbVec3f towardsEye = view.perspective ? view.eye - centre : -view.direction;
       SbVec3f inCamera;
       view.toCamera.multVecMatrix(centre, inCamera);
-      facets.push_back({start, corners, normal.dot(towardsEye) > 0.0f});
+      const float cosine = normal.dot(towardsEye) / std::max(normal.length() * towardsEye.length(), 1e-30f);
+      facets.push_back({start, corners, cosine > -view.edgeOnCosine});
       depth.push_back(inCamera[2]);
     }
     start = end + 1;

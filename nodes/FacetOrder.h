@@ -17,6 +17,10 @@ struct ViewPoint {
   SbVec3f direction;  // orthographic: the viewing direction, in the object frame
   SbMatrix toCamera;  // object frame -> camera frame (camera looks down -z)
   bool clockwise = false;  // vertex ordering: CLOCKWISE flips which side is the front
+  // A facet counts as facing the viewer unless it faces away "substantially" (paper §5):
+  // by more than this cosine between its normal and the line to the eye. Nearly edge-on
+  // facets at a layer's silhouette then cover what an inner layer puts there.
+  float edgeOnCosine = 0.05f;
 };
 
 struct OrderedFacet {

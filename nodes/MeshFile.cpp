@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -118,6 +119,27 @@ void toFields(const figment::TriangleMesh& mesh, SoMFVec3f& points, SoMFInt32& i
   indices.finishEditing();
 }
 
+std::string text(const SoSFVec3f& field) {
+  const SbVec3f& v = field.getValue();
+  return figment::formatNumber(v[0]) + " " + figment::formatNumber(v[1]) + " " + figment::formatNumber(v[2]);
+}
+
+// The crop box, or nothing when both corners are left at 0 0 0; throws when set but
+// not below cropMax on every axis.
+std::optional<figment::Bounds> cropBox(const MeshFile& node) {
+  const SbVec3f& low = node.cropMin.getValue();
+  const SbVec3f& high = node.cropMax.getValue();
+  if (low == SbVec3f(0, 0, 0) && high == SbVec3f(0, 0, 0)) return std::nullopt;
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(low[axis] < high[axis]))
+      throw std::invalid_argument("cropMin = " + text(node.cropMin) + " must be below cropMax = " +
+                                  text(node.cropMax) + " on every axis");
+  figment::Bounds box;
+  box.min = figment::Vec3(low[0], low[1], low[2]);
+  box.max = figment::Vec3(high[0], high[1], high[2]);
+  return box;
+}
+
 // The meshes `node`'s fields ask for, as drawn and for collisions, looking in `dirs`;
 // throws naming the field and value that cannot be used.
 std::pair<figment::TriangleMesh, figment::TriangleMesh> importMeshes(const MeshFile& node,
@@ -137,6 +159,13 @@ std::pair<figment::TriangleMesh, figment::TriangleMesh> importMeshes(const MeshF
   if (drawn.mesh.triangles.empty())
     throw std::runtime_error("fileName " + quoted(name) + ": " + path + " has no triangles");
 
+  const std::optional<figment::Bounds> crop = cropBox(node);
+  if (crop) {
+    drawn.mesh = figment::croppedToBox(drawn.mesh, *crop);
+    if (drawn.mesh.triangles.empty())
+      throw std::runtime_error("cropMin " + text(node.cropMin) + ", cropMax " + text(node.cropMax) +
+                               ": no triangle of " + path + " has its centre in the box");
+  }
   const std::vector<std::string> unseen = toStrings(node.collisionExclude);
   if (unseen.empty()) return {drawn.mesh, drawn.mesh};
   for (const auto& excluded : unseen) {
@@ -146,7 +175,9 @@ std::pair<figment::TriangleMesh, figment::TriangleMesh> importMeshes(const MeshF
   }
   // The importer gives one merged mesh, so the collision surface is a second import.
   options.exclude.insert(options.exclude.end(), unseen.begin(), unseen.end());
-  return {std::move(drawn.mesh), figment::importMesh(path, options).mesh};
+  figment::TriangleMesh collision = figment::importMesh(path, options).mesh;
+  if (crop) collision = figment::croppedToBox(collision, *crop);
+  return {std::move(drawn.mesh), std::move(collision)};
 }
 
 }  // namespace
@@ -163,6 +194,8 @@ MeshFile::MeshFile() : impl_(std::make_unique<Impl>(this)) {
   SO_NODE_ADD_FIELD(upAxis, (Y));
   SO_NODE_ADD_EMPTY_MFIELD(exclude);
   SO_NODE_ADD_EMPTY_MFIELD(collisionExclude);
+  SO_NODE_ADD_FIELD(cropMin, (0.0f, 0.0f, 0.0f));
+  SO_NODE_ADD_FIELD(cropMax, (0.0f, 0.0f, 0.0f));
   SO_NODE_ADD_EMPTY_MFIELD(point);
   SO_NODE_ADD_EMPTY_MFIELD(coordIndex);
   SO_NODE_DEFINE_ENUM_VALUE(UpAxis, X);
@@ -200,7 +233,7 @@ std::shared_ptr<const figment::MeshCollider> MeshFile::collider() const {
 
 bool MeshFile::isLoadOption(const SoField* field) const {
   return field == &fileName || field == &metresPerUnit || field == &upAxis ||
-         field == &exclude || field == &collisionExclude;
+         field == &exclude || field == &collisionExclude || field == &cropMin || field == &cropMax;
 }
 
 SbBool MeshFile::readInstance(SoInput* in, unsigned short flags) {

@@ -8,6 +8,7 @@
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/fields/SoSFString.h>
+#include <Inventor/fields/SoSFVec3f.h>
 #include <Inventor/nodes/SoSubNode.h>
 
 #include <memory>
@@ -53,6 +54,8 @@ class MeshCollider;
         upAxis Y
         exclude [ ]
         collisionExclude [ ]
+        cropMin 0 0 0
+        cropMax 0 0 0
     }
   \endcode
 
@@ -89,6 +92,13 @@ class MeshFile : public SoNode {
   // Names of meshes that are drawn but left out of the collision surface (a body's
   // eyes, hair). Each must name a mesh of the file. Default [ ] (none).
   SoMFString collisionExclude;
+  // A box in the scene frame (m, after metresPerUnit and upAxis): when set, the node
+  // keeps only the triangles whose centroid lies inside it, drawn and for collisions.
+  // A body part, until the body has real ones: the default scene draws the default
+  // body's arms (|x| > 0.2 m) apart from its torso. Default 0 0 0 and 0 0 0 (no crop);
+  // otherwise cropMin must be below cropMax on every axis.
+  SoSFVec3f cropMin;
+  SoSFVec3f cropMax;
 
   // Read-only outputs: the drawn mesh, merged by position, in metres, y up.
   // Vertices (m). Set by the node; not written to files.

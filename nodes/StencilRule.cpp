@@ -18,11 +18,10 @@ namespace figment {
 namespace {
 
 // Where a node lies for the camera: its screen rectangle and its depth range along the
-// viewing direction, from the eight corners of its world bounding box.
+// viewing direction (nearest corner and centre) from its world bounding box.
 struct Extent {
   SbBox2f screen;
   float nearest = std::numeric_limits<float>::max();
-  float farthest = -std::numeric_limits<float>::max();
   float centre = 0.0f;
   bool empty = true;
 };
@@ -41,7 +40,6 @@ Extent extentOf(SoPath* path, const SbViewportRegion& viewport, const SbViewVolu
     const SbVec3f p(corner & 1 ? high[0] : low[0], corner & 2 ? high[1] : low[1], corner & 4 ? high[2] : low[2]);
     const float depth = (p - eye).dot(direction);
     extent.nearest = std::min(extent.nearest, depth);
-    extent.farthest = std::max(extent.farthest, depth);
     SbVec3f screen;
     view.projectToScreen(p, screen);
     extent.screen.extendBy(SbVec2f(screen[0], screen[1]));
@@ -80,7 +78,11 @@ StencilSettings applyStencilRule(SoNode* root, const SbViewportRegion& viewport,
     for (size_t l = 0; l < layers.size(); ++l) {
       const Extent& garment = layerExtents[l];
       if (p.empty || garment.empty || !p.screen.intersect(garment.screen)) continue;
-      if (p.farthest < garment.centre) writes = true, masked[l] = true;
+      // In front: the part's centre lies in the front half of the garment's depth,
+      // nearer than halfway from the garment's centre to its nearest point. A part the
+      // garment encloses (a torso) sits about its centre; one outside and nearer (a
+      // forearm across a shirt, the near arm from the side) is well in front of it.
+      if (p.centre < garment.centre - 0.5f * (garment.centre - garment.nearest)) writes = true, masked[l] = true;
     }
     auto* separator = static_cast<StencilSeparator*>(part->getTail());
     if (separator->writeStencil.getValue() != writes) separator->writeStencil.setValue(writes);

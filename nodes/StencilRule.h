@@ -15,9 +15,11 @@ struct StencilSettings {
 };
 
 // For the camera `view`, every StencilSeparator under `root` writes the stencil when it
-// lies in front of a ClothingLayer: their screen rectangles overlap and the separator's
-// bounding box ends nearer to the eye than the layer's centre (the part is outside the
-// garment, between it and the eye: a forearm across a shirt, not a torso inside it).
+// lies in front of a ClothingLayer: their screen rectangles overlap, and the centre of
+// the separator's bounding box lies in the front half of the layer's depth range along
+// the viewing direction (nearer than halfway from the layer's centre to its nearest
+// point): a forearm across a shirt, the near arm seen from the side; not a torso the
+// garment encloses, nor a part behind the garment.
 // Every ClothingLayer that such a separator lies in front of is masked; all others are
 // set FALSE. Call it whenever the camera moves (figment-view does before each render).
 StencilSettings applyStencilRule(SoNode* root, const SbViewportRegion& viewport, const SbViewVolume& view);

@@ -80,4 +80,24 @@ TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance) {
   return merged;
 }
 
+TriangleMesh croppedToBox(const TriangleMesh& mesh, const Bounds& box) {
+  TriangleMesh part;
+  std::vector<int> remap(mesh.vertices.size(), -1);
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 centroid = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+    if ((centroid.array() < box.min.array()).any() || (centroid.array() > box.max.array()).any()) continue;
+    Triangle kept;
+    for (int k = 0; k < 3; ++k) {
+      int& index = remap[t[k]];
+      if (index < 0) {
+        index = static_cast<int>(part.vertices.size());
+        part.vertices.push_back(mesh.vertices[t[k]]);
+      }
+      kept[k] = index;
+    }
+    part.triangles.push_back(kept);
+  }
+  return part;
+}
+
 }  // namespace figment

@@ -32,4 +32,8 @@ Bounds boundsOf(const std::vector<Vec3>& points);
 // used to turn a mesh split along texture seams back into one closed surface.
 TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance = 1e-6);
 
+// The triangles whose centroid lies inside `box` (bounds included), in their order,
+// with only the vertices they use (numbered as first used): one part of a body, say.
+TriangleMesh croppedToBox(const TriangleMesh& mesh, const Bounds& box);
+
 }  // namespace figment

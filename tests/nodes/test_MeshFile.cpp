@@ -191,3 +191,30 @@ TEST_F(MeshFileTest, HumanWithoutEyesIsOneClosedSurface) {
   EXPECT_EQ(body->collisionSurface().triangles.size(), 26756u);
   EXPECT_GT(body->point.getNum(), 13380) << "the eyes are still drawn";
 }
+
+TEST_F(MeshFileTest, CropKeepsTheTrianglesCentredInTheBox) {
+  // The unit cube from 0 to 1: each face is two triangles whose centroids lie a third
+  // of the way in. A box over x > 0.5 keeps the +x face (centroids at x = 1) and the
+  // halves of the four side faces whose centroids have x = 2/3.
+  dir.file("cube.obj", cubeObj());
+  SceneRoot root = readFile(scene("fileName \"cube.obj\" cropMin 0.5 -1 -1 cropMax 2 2 2"));
+  ASSERT_TRUE(root);
+  auto* mesh = find<MeshFile>(root.get(), "Mesh");
+  EXPECT_EQ(mesh->coordIndex.getNum() / 4, 2 + 4);
+  for (int i = 0; i < mesh->point.getNum(); ++i) EXPECT_GE(mesh->point[i][0], 0.0f);
+  EXPECT_EQ(mesh->collisionSurface().triangles.size(), 6u) << "the collision surface is cropped alike";
+}
+
+TEST_F(MeshFileTest, BadCropBoxesAreReadErrors) {
+  dir.file("cube.obj", cubeObj());
+  {
+    CapturedErrors errors;
+    EXPECT_FALSE(readFile(scene("fileName \"cube.obj\" cropMin 0 0 0 cropMax 1 0 1")));
+    EXPECT_NE(errors.all().find("cropMin = 0 0 0 must be below cropMax = 1 0 1"), std::string::npos) << errors.all();
+  }
+  {
+    CapturedErrors errors;
+    EXPECT_FALSE(readFile(scene("fileName \"cube.obj\" cropMin 5 5 5 cropMax 6 6 6")));
+    EXPECT_NE(errors.all().find("no triangle"), std::string::npos) << errors.all();
+  }
+}

@@ -85,3 +85,28 @@ TEST(TriangleMesh, MergeByPositionWithZeroToleranceWeldsExactCopies) {
 TEST(TriangleMesh, MergeByPositionRejectsNegativeTolerance) {
   EXPECT_THROW(mergeByPosition(TriangleMesh{}, -1e-6), std::invalid_argument);
 }
+
+TEST(TriangleMesh, CroppedToBoxKeepsTrianglesWhoseCentroidIsInside) {
+  // A strip of four unit squares along x, two triangles each with centroids at i + 1/3
+  // and i + 2/3; the box takes x in [1.2, 3]: the second and third squares.
+  TriangleMesh strip;
+  for (int i = 0; i <= 4; ++i) strip.vertices.push_back(Vec3(i, 0, 0)), strip.vertices.push_back(Vec3(i, 1, 0));
+  for (int i = 0; i < 4; ++i) {
+    const int a = 2 * i;
+    strip.triangles.push_back({a, a + 2, a + 3});
+    strip.triangles.push_back({a, a + 3, a + 1});
+  }
+  Bounds box;
+  box.min = Vec3(1.2, -1, -1);
+  box.max = Vec3(3, 2, 1);
+  const TriangleMesh part = croppedToBox(strip, box);
+  ASSERT_EQ(part.triangles.size(), 4u);
+  EXPECT_EQ(part.vertices.size(), 6u);
+  for (const Triangle& t : part.triangles) {
+    const Vec3 c = (part.vertices[t[0]] + part.vertices[t[1]] + part.vertices[t[2]]) / 3.0;
+    EXPECT_GE(c.x(), 1.2);
+    EXPECT_LE(c.x(), 3.0);
+  }
+  EXPECT_EQ(part.vertices[0], Vec3(1, 0, 0)) << "vertices numbered as first used";
+  EXPECT_TRUE(croppedToBox(strip, Bounds{}).triangles.empty()) << "an empty box keeps nothing";
+}

@@ -1,0 +1,167 @@
+// Paper §5 in pictures that can fail: scenes/hybrid/*.iv rendered through OSMesa with
+// FIGMENT's nodes and with the depth buffer alone (the -plain files), pixels counted by
+// flat colour.
+#include "nodes/ClothingLayer.h"
+#include "nodes/DepthSortedGroup.h"
+#include "nodes/StencilSeparator.h"
+#include "support/Pixels.h"
+#include "viewer/OffscreenContext.h"
+#include "viewer/SceneFile.h"
+#include "viewer/SceneRenderer.h"
+#include "viewer/SceneStaging.h"
+
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoDrawStyle.h>
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+using namespace figment::viewer;
+using figment::test::Image;
+
+namespace {
+
+constexpr ImageSize kSize{240, 240};
+
+// A scene from scenes/hybrid, staged for one view, that can hide named parts.
+class View {
+ public:
+  View(const std::string& name, double azimuth, double elevation = 15.0) {
+    std::string error;
+    scene_ = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/hybrid/" + name + ".iv", error);
+    EXPECT_NE(scene_, nullptr) << error;
+    scene_->ref();
+    root_ = stageScene(scene_, kSize, ViewDirection{azimuth, elevation});
+    root_->ref();
+  }
+  ~View() {
+    root_->unref();
+    scene_->unref();
+  }
+  // A node of this scene by name (scenes loaded side by side reuse names).
+  template <typename T>
+  T* node(const char* name) const {
+    SoPath* path = find(name);
+    return path ? dynamic_cast<T*>(path->getTail()) : nullptr;
+  }
+  // Puts `replacement` where the named node is.
+  void replace(const char* name, SoNode* replacement) const {
+    SoPath* path = find(name);
+    ASSERT_NE(path, nullptr) << name;
+    static_cast<SoGroup*>(path->getNodeFromTail(1))->replaceChild(path->getTail(), replacement);
+  }
+  // Renders with every part but those named hidden (an invisible draw style put first
+  // in each part); `keepStencilFields` as figment-view's flag.
+  Image render(const std::vector<const char*>& hidden = {}, bool keepStencilFields = false) const {
+    std::vector<SoGroup*> parts;
+    for (const char* name : hidden) {
+      auto* part = node<SoGroup>(name);
+      EXPECT_NE(part, nullptr) << name;
+      auto* invisible = new SoDrawStyle;
+      invisible->style = SoDrawStyle::INVISIBLE;
+      part->insertChild(invisible, 0);
+      parts.push_back(part);
+    }
+    SceneRenderer renderer(kSize);
+    EXPECT_EQ(renderer.render(root_, keepStencilFields), "");
+    Image image{kSize.width, kSize.height, {}};
+    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kSize.width * kSize.height);
+    for (SoGroup* part : parts) part->removeChild(0);
+    return image;
+  }
+  SoSeparator* root() const { return root_; }
+
+ private:
+  SoPath* find(const char* name) const {
+    search_.reset();
+    search_.setName(name);
+    search_.setInterest(SoSearchAction::FIRST);
+    search_.apply(scene_);
+    return search_.getPath();
+  }
+  mutable SoSearchAction search_;
+  SoSeparator* scene_ = nullptr;
+  SoSeparator* root_ = nullptr;
+};
+
+class HybridRendering : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { initHeadless(); }
+};
+
+const std::vector<double> kEightAzimuths = {0, 45, 90, 135, 180, 225, 270, 315};
+
+}  // namespace
+
+TEST_F(HybridRendering, SkinNeverShowsThroughTheCloth) {
+  // Inside the cloth's own silhouette: skin pixels with the depth buffer alone (the
+  // problem exists), none with ClothingLayer, from 8 directions around.
+  int plainTotal = 0;
+  for (double azimuth : kEightAzimuths) {
+    const View plain("poke-through-plain", azimuth), hybrid("poke-through", azimuth);
+    const std::vector<bool> silhouette = hybrid.render({"Ball"}).where(figment::test::kBlue);
+    const int plainSkin = plain.render().countWithin(figment::test::kRed, silhouette);
+    EXPECT_GT(plainSkin, 0) << "azimuth " << azimuth;
+    plainTotal += plainSkin;
+    EXPECT_EQ(hybrid.render().countWithin(figment::test::kRed, silhouette), 0) << "azimuth " << azimuth;
+  }
+  EXPECT_GT(plainTotal, 8 * 100);
+}
+
+TEST_F(HybridRendering, TheOuterLayerWinsWhereverItCovers) {
+  for (double azimuth : kEightAzimuths) {
+    const View plain("layers-plain", azimuth), hybrid("layers", azimuth);
+    const std::vector<bool> outer = hybrid.render({"Ball", "Inner"}).where(figment::test::kYellow);
+    EXPECT_GT(plain.render().countWithin(figment::test::kBlue, outer), 100) << "azimuth " << azimuth;
+    EXPECT_EQ(hybrid.render().countWithin(figment::test::kBlue, outer), 0) << "azimuth " << azimuth;
+  }
+}
+
+TEST_F(HybridRendering, ASleeveBehindTheShirtStaysBehindItAndShowsInFront) {
+  // The sleeve's pixels in a DepthSortedGroup match the depth buffer's (the pieces do not
+  // cross), from every side. In a plain Group it is drawn last and, from the front where
+  // it lies behind the shirt, shows through it.
+  for (double azimuth : kEightAzimuths) {
+    const View plain("shirt-plain", azimuth), hybrid("shirt", azimuth);
+    const int expected = plain.render().count(figment::test::kMagenta);
+    const int sorted = hybrid.render().count(figment::test::kMagenta);
+    EXPECT_NEAR(sorted, expected, 0.01 * expected + 20) << "azimuth " << azimuth;
+  }
+  const View front("shirt", 0.0), back("shirt", 180.0), plainFront("shirt-plain", 0.0);
+  EXPECT_GT(back.render().count(figment::test::kMagenta), 2000) << "from behind, the sleeve is in front";
+  // The same pieces in a plain Group: the sleeve is drawn over the shirt's front.
+  auto* sorted = front.node<DepthSortedGroup>("Shirt");
+  ASSERT_NE(sorted, nullptr);
+  auto* group = new SoGroup;
+  for (int i = 0; i < sorted->getNumChildren(); ++i) group->addChild(sorted->getChild(i));
+  sorted->ref();
+  front.replace("Shirt", group);
+  EXPECT_GT(front.render().count(figment::test::kMagenta), plainFront.render().count(figment::test::kMagenta) + 500);
+  sorted->unref();
+}
+
+TEST_F(HybridRendering, AForearmInFrontOfTheShirtKeepsItsPixels) {
+  const View plain("forearm-plain", 0.0), hybrid("forearm", 0.0);
+  const int expected = plain.render().count(figment::test::kGreen);
+  ASSERT_GT(expected, 1000);
+  // Without the stencil (the fields as written: FALSE) the shirt paints over the forearm.
+  EXPECT_LT(hybrid.render({}, true).count(figment::test::kGreen), expected / 2);
+  // The rule switches the forearm's stencil and the shirt's mask on for this camera.
+  EXPECT_GE(hybrid.render().count(figment::test::kGreen), expected);
+  EXPECT_TRUE(hybrid.node<StencilSeparator>("Forearm")->writeStencil.getValue());
+  auto* shirt = hybrid.node<SoGroup>("Shirt");
+  ASSERT_NE(shirt, nullptr);
+  auto* layer = dynamic_cast<ClothingLayer*>(shirt->getChild(shirt->getNumChildren() - 1));
+  ASSERT_NE(layer, nullptr);
+  EXPECT_TRUE(layer->masked.getValue());
+  // From behind the forearm is behind the shirt: the rule switches both off, and the
+  // forearm stays hidden as with the depth buffer.
+  const View behind("forearm", 180.0), plainBehind("forearm-plain", 180.0);
+  EXPECT_EQ(behind.render().count(figment::test::kGreen), plainBehind.render().count(figment::test::kGreen));
+  EXPECT_FALSE(behind.node<StencilSeparator>("Forearm")->writeStencil.getValue());
+}
