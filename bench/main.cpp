@@ -1,5 +1,6 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
 #include "DrapeStudy.h"
+#include "RenderStudy.h"
 #include "StabilityStudy.h"
 
 #include <CLI/CLI.hpp>
@@ -29,8 +30,22 @@ int main(int argc, char** argv) {
   stabilityCommand->add_option("--acceleration-limit", stability.accelerationLimit, "limiter cap, multiples of g")
       ->capture_default_str();
 
+  figment::bench::RenderStudyOptions render;
+  CLI::App* renderCommand =
+      app.add_subcommand("render", "render time with the hybrid nodes and with plain depth buffering");
+  renderCommand->add_option("--scene", render.scenes, "scenes to render (repeat the option)")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  renderCommand->add_option("--width", render.width, "image width")->capture_default_str()->check(CLI::Range(1, 8192));
+  renderCommand->add_option("--height", render.height, "image height")->capture_default_str()->check(CLI::Range(1, 8192));
+  renderCommand->add_option("--repeat", render.repeat, "renders per scene and mode")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  renderCommand->add_option("--out", render.outDir, "folder for render.csv")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return figment::bench::runDrapeStudy(drape);
   if (stabilityCommand->parsed()) return figment::bench::runStabilityStudy(stability);
+  if (renderCommand->parsed()) return figment::bench::runRenderStudy(render);
   return 1;
 }

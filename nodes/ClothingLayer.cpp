@@ -73,6 +73,23 @@ std::vector<SbVec3f> vertexNormals(const SbVec3f* points, int count, const int32
 
 }  // namespace
 
+struct ClothingLayer::DrawCache {
+  // What the arrays were built from.
+  SbUniqueId coordinatesId = 0, layerId = 0;
+  SbMatrix toCamera;
+  SbVec3f eye, direction;
+  bool perspective = false, clockwise = false;
+  // Triangle corners, three floats each: the facets facing away, then those facing
+  // the viewer, each group far to near.
+  std::vector<float> positions, normals;
+  int awayCorners = 0, facingCorners = 0;
+
+  bool matches(SbUniqueId coordinates, SbUniqueId layer, const figment::ViewPoint& view) const {
+    return coordinates == coordinatesId && layer == layerId && view.toCamera == toCamera && view.eye == eye &&
+           view.direction == direction && view.perspective == perspective && view.clockwise == clockwise;
+  }
+};
+
 void ClothingLayer::GLRender(SoGLRenderAction* action) {
   if (!shouldGLRender(action)) return;
   SoState* state = action->getState();
@@ -81,14 +98,36 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   state->push();
   if (auto* properties = static_cast<SoVertexProperty*>(vertexProperty.getValue())) properties->GLRender(action);
   const SoCoordinateElement* coordinates = SoCoordinateElement::getInstance(state);
-  const int pointCount = coordinates->getNum();
-  std::vector<SbVec3f> points(pointCount);
-  for (int i = 0; i < pointCount; ++i) points[i] = coordinates->get3(i);
-  const int32_t* index = coordIndex.getValues(0);
-  const int indexCount = coordIndex.getNum();
-  const std::vector<figment::OrderedFacet> facets =
-      figment::orderFacets(points.data(), pointCount, index, indexCount, viewPoint(state));
-  const std::vector<SbVec3f> normals = vertexNormals(points.data(), pointCount, index, indexCount);
+  const figment::ViewPoint view = viewPoint(state);
+  if (!cache_) cache_ = std::make_unique<DrawCache>();
+  if (!cache_->matches(coordinates->getNodeId(), getNodeId(), view)) {
+    const int pointCount = coordinates->getNum();
+    std::vector<SbVec3f> points(pointCount);
+    for (int i = 0; i < pointCount; ++i) points[i] = coordinates->get3(i);
+    const int32_t* index = coordIndex.getValues(0);
+    const int indexCount = coordIndex.getNum();
+    const std::vector<SbVec3f> smooth = vertexNormals(points.data(), pointCount, index, indexCount);
+    DrawCache& c = *cache_;
+    c.positions.clear(), c.normals.clear();
+    const std::vector<figment::OrderedFacet> facets =
+        figment::orderFacets(points.data(), pointCount, index, indexCount, view);
+    for (bool facing : {false, true}) {
+      const size_t before = c.positions.size();
+      for (const figment::OrderedFacet& facet : facets) {
+        if (facet.facesViewer != facing) continue;
+        for (int k = 1; k + 1 < facet.corners; ++k)
+          for (int corner : {index[facet.firstIndex], index[facet.firstIndex + k], index[facet.firstIndex + k + 1]}) {
+            c.positions.insert(c.positions.end(), points[corner].getValue(), points[corner].getValue() + 3);
+            c.normals.insert(c.normals.end(), smooth[corner].getValue(), smooth[corner].getValue() + 3);
+          }
+      }
+      (facing ? c.facingCorners : c.awayCorners) = static_cast<int>((c.positions.size() - before) / 3);
+    }
+    c.coordinatesId = coordinates->getNodeId();
+    c.layerId = getNodeId();
+    c.toCamera = view.toCamera, c.eye = view.eye, c.direction = view.direction;
+    c.perspective = view.perspective, c.clockwise = view.clockwise;
+  }
 
   SoMaterialBundle material(action);
   material.sendFirst();
@@ -96,27 +135,41 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   SoDepthBufferElement::DepthWriteFunction usualTest;
   SbVec2f depthRange;
   SoDepthBufferElement::get(state, depthTest, depthWrite, usualTest, depthRange);
-  bool drawingOver = false;
-  bool open = false;
-  for (const figment::OrderedFacet& facet : facets) {
-    if (!open || facet.facesViewer != drawingOver) {
-      if (open) glEnd();
-      drawingOver = facet.facesViewer;
-      // Facing the viewer: over everything drawn before (depth test ALWAYS, depth still
-      // written); facing away: the usual depth test. A masked layer keeps off the
-      // stencil's marks where it draws over.
-      SoDepthBufferElement::set(state, TRUE, TRUE, drawingOver ? SoDepthBufferElement::ALWAYS : usualTest,
-                                depthRange);
-      if (masked.getValue()) GLStencilElement::set(state, drawingOver ? GLStencilElement::MASK : GLStencilElement::OFF);
-      glBegin(GL_TRIANGLES);
-      open = true;
-    }
-    for (int k = 1; k + 1 < facet.corners; ++k)
-      for (int corner : {index[facet.firstIndex], index[facet.firstIndex + k], index[facet.firstIndex + k + 1]}) {
-        glNormal3fv(normals[corner].getValue());
-        glVertex3fv(points[corner].getValue());
-      }
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, cache_->positions.data());
+  glNormalPointer(GL_FLOAT, 0, cache_->normals.data());
+  auto depth = [&](SoDepthBufferElement::DepthWriteFunction function) {
+    SoDepthBufferElement::set(state, TRUE, TRUE, function, depthRange);
+  };
+  const int away = cache_->awayCorners, facing = cache_->facingCorners;
+  // Three draws, each one state change, not one per change of facing along the depth
+  // order (hundreds on a draped garment, and each costs a pipeline flush):
+  // 1. facets facing away, with the usual depth test, marking the layer bit where they
+  //    show;
+  if (away > 0) {
+    depth(usualTest);
+    GLStencilElement::set(state, GLStencilElement::MARK_LAYER);
+    glDrawArrays(GL_TRIANGLES, 0, away);
   }
-  if (open) glEnd();
+  // 2. facets facing the viewer, far to near, over everything drawn before them (depth
+  //    test ALWAYS, depth written), except where a facet of this layer facing away
+  //    shows (and, when masked, where a body part marked the stencil);
+  if (facing > 0) {
+    depth(SoDepthBufferElement::ALWAYS);
+    GLStencilElement::set(state, masked.getValue() ? GLStencilElement::OUTSIDE_LAYER_AND_PARTS
+                                                   : GLStencilElement::OUTSIDE_LAYER);
+    glDrawArrays(GL_TRIANGLES, away, facing);
+  }
+  // 3. there, the layer's own facets meet: the depth test decides between them, as it
+  //    would have in a single far-to-near pass for cloth that does not cross itself.
+  if (facing > 0 && away > 0) {
+    depth(usualTest);
+    GLStencilElement::set(state, GLStencilElement::INSIDE_LAYER);
+    glDrawArrays(GL_TRIANGLES, away, facing);
+  }
+  if (away > 0) GLStencilElement::clearLayerBit();
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
   state->pop();
 }

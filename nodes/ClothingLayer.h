@@ -4,6 +4,8 @@
 #include <Inventor/fields/SoSFBool.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 
+#include <memory>
+
 /*!
   \class ClothingLayer nodes/ClothingLayer.h
   \brief The faces of one cloth mesh; replaces an IndexedFaceSet one for one.
@@ -68,4 +70,10 @@ class ClothingLayer : public SoIndexedFaceSet {
 
  protected:
   ~ClothingLayer() override;
+
+ private:
+  // The facets in drawing order, as vertex arrays, kept while neither the view nor the
+  // geometry changes (a still camera re-draws without sorting again).
+  struct DrawCache;
+  std::unique_ptr<DrawCache> cache_;
 };

@@ -7,9 +7,6 @@
 
 SO_ELEMENT_SOURCE(GLStencilElement);
 
-// The mark a StencilSeparator writes and a masked ClothingLayer avoids.
-static constexpr GLint kMark = 1;
-
 void GLStencilElement::initClass() {
   if (getClassTypeId() != SoType::badType()) return;
   SO_ELEMENT_INIT_CLASS(GLStencilElement, inherited);
@@ -57,21 +54,43 @@ GLStencilElement::Mode GLStencilElement::get(SoState* state) {
 }
 
 void GLStencilElement::updateGL() const {
+  // (test function, reference, bits compared, bits written)
+  auto use = [](GLenum function, GLuint reference, GLuint compared, GLuint written) {
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(function, static_cast<GLint>(reference), compared);
+    glStencilMask(written);
+    glStencilOp(GL_KEEP, GL_KEEP, written ? GL_REPLACE : GL_KEEP);
+  };
   switch (mode_) {
     case OFF:
       glDisable(GL_STENCIL_TEST);
+      glStencilMask(0xff);
       break;
-    case WRITE:  // mark every pixel drawn (that passes the depth test)
-      glEnable(GL_STENCIL_TEST);
-      glStencilFunc(GL_ALWAYS, kMark, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    case MARK_PART:  // only where the fragment passes the depth test, too
+      use(GL_ALWAYS, kPartBit, 0, kPartBit);
       break;
-    case MASK:  // draw only where nothing is marked
-      glEnable(GL_STENCIL_TEST);
-      glStencilFunc(GL_NOTEQUAL, kMark, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    case MARK_LAYER:
+      use(GL_ALWAYS, kLayerBit, 0, kLayerBit);
+      break;
+    case OUTSIDE_LAYER:
+      use(GL_EQUAL, 0, kLayerBit, 0);
+      break;
+    case OUTSIDE_LAYER_AND_PARTS:
+      use(GL_EQUAL, 0, kLayerBit | kPartBit, 0);
+      break;
+    case INSIDE_LAYER:
+      use(GL_EQUAL, kLayerBit, kLayerBit, 0);
       break;
   }
+}
+
+void GLStencilElement::clearLayerBit() {
+  GLint written = 0xff;
+  glGetIntegerv(GL_STENCIL_WRITEMASK, &written);
+  glStencilMask(kLayerBit);
+  glClearStencil(0);
+  glClear(GL_STENCIL_BUFFER_BIT);
+  glStencilMask(static_cast<GLuint>(written));
 }
 
 namespace figment {

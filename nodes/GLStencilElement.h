@@ -4,15 +4,17 @@
 
 #include <Inventor/elements/SoSubElement.h>
 
+class SoGLRenderAction;
+
 /*!
   \class GLStencilElement nodes/GLStencilElement.h
   \brief How drawing uses the stencil buffer now (paper §5's stencil mask).
 
-  - OFF: no stencil test (the default).
-  - WRITE: everything drawn also marks its pixels in the stencil buffer (StencilSeparator
-    with writeStencil TRUE): a body part that must stay in front.
-  - MASK: drawing skips marked pixels (a masked ClothingLayer, for its facets that ignore
-    the depth buffer).
+  Two bits of the stencil buffer are used:
+  - the body-part bit (1): set where a StencilSeparator with writeStencil TRUE draws (a
+    body part that must stay in front); a masked ClothingLayer keeps off it;
+  - the layer bit (2): set where a ClothingLayer's facets facing away from the viewer
+    are visible, while that layer draws, and cleared after it (see ClothingLayer).
   Setting the element issues the GL calls; popping it restores the state below. Enabled
   for SoGLRenderAction only. The stencil must be cleared at the start of each frame:
   figment::clearStencilEachFrame() adds that to a render action.
@@ -22,11 +24,21 @@ class GLStencilElement : public SoElement {
   SO_ELEMENT_HEADER(GLStencilElement);
 
  public:
-  enum Mode { OFF, WRITE, MASK };
+  enum Mode {
+    OFF,           // no stencil test (the default)
+    MARK_PART,     // set the body-part bit where drawn
+    MARK_LAYER,    // set the layer bit where drawn
+    OUTSIDE_LAYER, // draw only where the layer bit is clear
+    OUTSIDE_LAYER_AND_PARTS,  // ... and the body-part bit too (a masked layer)
+    INSIDE_LAYER,  // draw only where the layer bit is set
+  };
+  static constexpr unsigned kPartBit = 1, kLayerBit = 2;
 
   static void initClass();
   static void set(SoState* state, Mode mode);
   static Mode get(SoState* state);
+  // Clears the layer bit everywhere (the body-part bit stays).
+  static void clearLayerBit();
 
   void init(SoState* state) override;
   void push(SoState* state) override;
@@ -41,8 +53,6 @@ class GLStencilElement : public SoElement {
   void updateGL() const;
   Mode mode_ = OFF;
 };
-
-class SoGLRenderAction;
 
 namespace figment {
 // Adds a pre-render callback to `action` that clears the stencil buffer before each

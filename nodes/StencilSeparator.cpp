@@ -25,7 +25,7 @@ StencilSeparator::~StencilSeparator() = default;
 void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) {
   SoState* state = action->getState();
   state->push();
-  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::WRITE);
+  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::MARK_PART);
   inherited::GLRenderBelowPath(action);
   state->pop();
 }
@@ -33,7 +33,7 @@ void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) {
 void StencilSeparator::GLRenderInPath(SoGLRenderAction* action) {
   SoState* state = action->getState();
   state->push();
-  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::WRITE);
+  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::MARK_PART);
   inherited::GLRenderInPath(action);
   state->pop();
 }

@@ -134,11 +134,32 @@ def forearm(hybrid):
 """ + cloth("Shirt", BLUE, tube((0, -0.25, 0), (0, 0.25, 0), 0.13), layer(hybrid))
 
 
+def wavy_tube(radius, amplitude, phase, rings=28, slices=60):
+    """A tube along y around the torso whose radius waves by +-amplitude (m)."""
+    points, faces = tube((0, -0.3, 0), (0, 0.3, 0), 1.0, rings, slices)
+    waved = []
+    for x, y, z in points:
+        a = math.atan2(x, z)
+        r = radius + amplitude * math.sin(5 * a + phase) * math.cos(7 * y + phase)
+        waved.append((r * math.sin(a), y, r * math.cos(a)))
+    return waved, faces
+
+
+def three_layers(hybrid):
+    # Three garments over a torso, 3,360 triangles each, close enough to cross: the
+    # rendering benchmark's load (figment-bench render).
+    return torso() + "".join(
+        cloth(name, colour, wavy_tube(radius, 0.01, phase), layer(hybrid))
+        for name, colour, radius, phase in (("Inner", BLUE, 0.13, 0.0), ("Middle", MAGENTA, 0.137, 1.0),
+                                            ("Outer", YELLOW, 0.144, 2.0)))
+
+
 SCENES = {
     "poke-through": ("A ball (red) poking up to 3 mm through a cloth (blue) that wraps it.", poke_through),
     "layers": ("Two cloth layers (blue inside, yellow outside) over a ball, crossing in places.", layers),
     "shirt": ("The body of a shirt (blue) and a sleeve (magenta) reaching behind it, as one garment.", shirt),
     "forearm": ("A forearm (green) across the front of a shirt (blue) over a torso (red).", forearm),
+    "three-layers": ("Three garments (blue, magenta, yellow; 10,080 triangles) over a torso (red).", three_layers),
 }
 
 if __name__ == "__main__":

@@ -225,7 +225,9 @@ TEST_F(DefaultScene, NoSkinInsideTheDressAndArmsInFrontKeepTheirPixels) {
     plainTorso += plain.countWithin(figment::test::kRed, dress);
     EXPECT_GE(hybrid.countWithin(figment::test::kGreen, dress), plain.countWithin(figment::test::kGreen, dress))
         << "azimuth " << azimuth;
-    if (azimuth == 60.0) EXPECT_GT(plain.countWithin(figment::test::kGreen, dress), 100) << "the near arm is in front";
+    if (azimuth == 60.0) {
+      EXPECT_GT(plain.countWithin(figment::test::kGreen, dress), 100) << "the near arm is in front";
+    }
   }
   RecordProperty("plain_torso_pixels_in_dress", plainTorso);
 }

@@ -1,0 +1,181 @@
+#include "RenderStudy.h"
+
+#include "Statistics.h"
+#include "nodes/ClothingLayer.h"
+#include "nodes/DepthSortedGroup.h"
+#include "nodes/StencilSeparator.h"
+#include "viewer/OffscreenContext.h"
+#include "viewer/SceneFile.h"
+#include "viewer/SceneRenderer.h"
+#include "viewer/SceneStaging.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/actions/SoGetPrimitiveCountAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/lists/SoPathList.h>
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace figment::bench {
+
+namespace {
+
+std::vector<SoPath*> pathsTo(SoNode* root, SoType type) {
+  SoSearchAction search;
+  search.setType(type, FALSE);
+  search.setInterest(SoSearchAction::ALL);
+  search.setSearchingAll(TRUE);
+  search.apply(root);
+  std::vector<SoPath*> paths;
+  for (int i = 0; i < search.getPaths().getLength(); ++i) {
+    search.getPaths()[i]->ref();
+    paths.push_back(search.getPaths()[i]);
+  }
+  return paths;
+}
+
+// Each hybrid node beside its plain stand-in (IndexedFaceSet, Group, Separator with the
+// same fields or children), so the scene can switch between the two.
+class Swaps {
+ public:
+  explicit Swaps(SoNode* root) {
+    for (SoPath* path : pathsTo(root, ClothingLayer::getClassTypeId())) {
+      auto* layer = static_cast<ClothingLayer*>(path->getTail());
+      auto* faces = new SoIndexedFaceSet;
+      faces->coordIndex = layer->coordIndex;
+      faces->vertexProperty = layer->vertexProperty.getValue();
+      add(path, faces);
+    }
+    for (SoPath* path : pathsTo(root, DepthSortedGroup::getClassTypeId())) add(path, regroup(path->getTail(), new SoGroup));
+    for (SoPath* path : pathsTo(root, StencilSeparator::getClassTypeId()))
+      add(path, regroup(path->getTail(), new SoSeparator));
+  }
+  ~Swaps() {
+    for (Swap& s : swaps_) s.parent->unref(), s.hybrid->unref(), s.plain->unref();
+  }
+  void use(bool plain) {
+    for (Swap& s : swaps_) {
+      SoNode* now = plain ? s.hybrid : s.plain;
+      if (s.parent->findChild(now) >= 0) s.parent->replaceChild(now, plain ? s.plain : s.hybrid);
+    }
+  }
+
+ private:
+  struct Swap {
+    SoGroup* parent;
+    SoNode *hybrid, *plain;
+  };
+  static SoGroup* regroup(SoNode* node, SoGroup* into) {
+    auto* group = static_cast<SoGroup*>(node);
+    for (int i = 0; i < group->getNumChildren(); ++i) into->addChild(group->getChild(i));
+    return into;
+  }
+  void add(SoPath* path, SoNode* plain) {
+    Swap s{static_cast<SoGroup*>(path->getNodeFromTail(1)), path->getTail(), plain};
+    s.parent->ref(), s.hybrid->ref(), s.plain->ref();
+    swaps_.push_back(s);
+    path->unref();
+  }
+  std::vector<Swap> swaps_;
+};
+
+int countTriangles(SoNode* root, SoType type) {
+  int triangles = 0;
+  for (SoPath* path : pathsTo(root, type)) {
+    SoGetPrimitiveCountAction count;
+    count.apply(path);
+    triangles += count.getTriangleCount();
+    path->unref();
+  }
+  return triangles;
+}
+
+}  // namespace
+
+int runRenderStudy(const RenderStudyOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  viewer::initHeadless();
+  std::filesystem::create_directories(options.outDir);
+  const std::string csvPath = options.outDir + "/render.csv";
+  std::ofstream csv(csvPath + ".partial");
+  csv << "scene,mode,view,width,height,cloth_triangles,renders,median_ms,overhead_pct\n";
+  const viewer::ImageSize size{options.width, options.height};
+  const float aspect = float(size.width) / float(size.height);
+  constexpr int kRounds = 4;  // hybrid and plain alternate, so drift on the machine hits both
+  for (const std::string& scenePath : options.scenes) {
+    std::string error;
+    SoSeparator* scene = viewer::readSceneFile(scenePath, error);
+    if (!scene) {
+      std::cerr << "figment-bench: " << scenePath << ": " << error << "\n";
+      return 1;
+    }
+    scene->ref();
+    SoSeparator* root = viewer::stageScene(scene, size, viewer::ViewDirection{30.0, 10.0});  // drapes
+    root->ref();
+    SoGetBoundingBoxAction bounds(SbViewportRegion(short(size.width), short(size.height)));
+    bounds.apply(scene);
+    const SbBox3f box = bounds.getBoundingBox();
+    std::vector<SoPath*> cameras = pathsTo(root, SoPerspectiveCamera::getClassTypeId());
+    auto* camera = static_cast<SoPerspectiveCamera*>(cameras.front()->getTail());
+    auto look = [&](double azimuth) {
+      SoPerspectiveCamera* framing = viewer::framingCamera(box, viewer::ViewDirection{azimuth, 10.0}, aspect);
+      framing->ref();
+      camera->copyFieldValues(framing);
+      framing->unref();
+    };
+    const int cloth = countTriangles(root, ClothingLayer::getClassTypeId());
+    viewer::SceneRenderer renderer(size);
+    Swaps swaps(root);
+    // (mode, view) -> milliseconds per render
+    std::map<std::pair<std::string, std::string>, std::vector<double>> ms;
+    const int perRound = std::max(1, options.repeat / kRounds);
+    for (int round = 0; round < kRounds; ++round)
+      for (const char* mode : {"hybrid", "plain"}) {
+        swaps.use(std::string(mode) == "plain");
+        look(30.0);
+        if (!renderer.render(root).empty()) {  // the first render after a switch builds caches
+          std::cerr << "figment-bench: cannot render (no off-screen context)\n";
+          return 1;
+        }
+        for (const char* view : {"still", "orbit"})
+          for (int i = 0; i < perRound; ++i) {
+            // still: the same camera every frame; orbit: a new azimuth every frame.
+            look(std::string(view) == "still" ? 30.0 : 30.0 + 360.0 * (round * perRound + i) / (kRounds * perRound));
+            const auto start = Clock::now();
+            renderer.render(root);
+            ms[{mode, view}].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+          }
+      }
+    swaps.use(false);
+    for (const char* view : {"still", "orbit"}) {
+      const double hybrid = median(ms[{"hybrid", view}]), plain = median(ms[{"plain", view}]);
+      const double overhead = 100.0 * (hybrid / plain - 1.0);
+      for (const auto& [mode, m] : {std::pair<const char*, double>{"hybrid", hybrid}, {"plain", plain}})
+        csv << scenePath << ',' << mode << ',' << view << ',' << size.width << ',' << size.height << ',' << cloth
+            << ',' << kRounds * perRound << ',' << m << ',' << (std::string(mode) == "hybrid" ? overhead : 0.0)
+            << '\n';
+      std::printf("%-30s %6d cloth triangles  %-5s  hybrid %6.2f ms  plain %6.2f ms  overhead %+5.1f %%\n",
+                  scenePath.c_str(), cloth, view, hybrid, plain, overhead);
+    }
+    for (SoPath* path : cameras) path->unref();
+    root->unref();
+    scene->unref();
+  }
+  csv.close();
+  std::filesystem::rename(csvPath + ".partial", csvPath);
+  std::cout << csvPath << "\n";
+  return 0;
+}
+
+}  // namespace figment::bench
