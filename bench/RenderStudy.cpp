@@ -2,8 +2,7 @@
 
 #include "Statistics.h"
 #include "nodes/ClothingLayer.h"
-#include "nodes/DepthSortedGroup.h"
-#include "nodes/StencilSeparator.h"
+#include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"
 #include "viewer/SceneRenderer.h"
@@ -15,8 +14,6 @@
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/lists/SoPathList.h>
-#include <Inventor/nodes/SoGroup.h>
-#include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -44,51 +41,6 @@ std::vector<SoPath*> pathsTo(SoNode* root, SoType type) {
   }
   return paths;
 }
-
-// Each hybrid node beside its plain stand-in (IndexedFaceSet, Group, Separator with the
-// same fields or children), so the scene can switch between the two.
-class Swaps {
- public:
-  explicit Swaps(SoNode* root) {
-    for (SoPath* path : pathsTo(root, ClothingLayer::getClassTypeId())) {
-      auto* layer = static_cast<ClothingLayer*>(path->getTail());
-      auto* faces = new SoIndexedFaceSet;
-      faces->coordIndex = layer->coordIndex;
-      faces->vertexProperty = layer->vertexProperty.getValue();
-      add(path, faces);
-    }
-    for (SoPath* path : pathsTo(root, DepthSortedGroup::getClassTypeId())) add(path, regroup(path->getTail(), new SoGroup));
-    for (SoPath* path : pathsTo(root, StencilSeparator::getClassTypeId()))
-      add(path, regroup(path->getTail(), new SoSeparator));
-  }
-  ~Swaps() {
-    for (Swap& s : swaps_) s.parent->unref(), s.hybrid->unref(), s.plain->unref();
-  }
-  void use(bool plain) {
-    for (Swap& s : swaps_) {
-      SoNode* now = plain ? s.hybrid : s.plain;
-      if (s.parent->findChild(now) >= 0) s.parent->replaceChild(now, plain ? s.plain : s.hybrid);
-    }
-  }
-
- private:
-  struct Swap {
-    SoGroup* parent;
-    SoNode *hybrid, *plain;
-  };
-  static SoGroup* regroup(SoNode* node, SoGroup* into) {
-    auto* group = static_cast<SoGroup*>(node);
-    for (int i = 0; i < group->getNumChildren(); ++i) into->addChild(group->getChild(i));
-    return into;
-  }
-  void add(SoPath* path, SoNode* plain) {
-    Swap s{static_cast<SoGroup*>(path->getNodeFromTail(1)), path->getTail(), plain};
-    s.parent->ref(), s.hybrid->ref(), s.plain->ref();
-    swaps_.push_back(s);
-    path->unref();
-  }
-  std::vector<Swap> swaps_;
-};
 
 int countTriangles(SoNode* root, SoType type) {
   int triangles = 0;
@@ -136,7 +88,7 @@ int runRenderStudy(const RenderStudyOptions& options) {
     };
     const int cloth = countTriangles(root, ClothingLayer::getClassTypeId());
     viewer::SceneRenderer renderer(size);
-    Swaps swaps(root);
+    viewer::DepthBufferOnly swaps(root);
     // (mode, view) -> milliseconds per render
     std::map<std::pair<std::string, std::string>, std::vector<double>> ms;
     const int perRound = std::max(1, options.repeat / kRounds);

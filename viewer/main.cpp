@@ -1,13 +1,14 @@
 // figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless.
 //
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]
-//                [--stats OUT.json] [--keep-stencil-fields]
+//                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
 //
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
 // exit status (2: bad command line, 1: anything else); no image is written then.
 
 #include "nodes/ClothEngine.h"
 #include "viewer/CoinMessages.h"
+#include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"
 #include "viewer/SceneRenderer.h"
@@ -35,6 +36,7 @@ struct Options {
   std::string view;
   std::string stats;
   bool keepStencilFields = false;
+  bool depthBufferOnly = false;
 };
 
 int fail(const std::string& where, const std::string& message, int status = 1) {
@@ -79,6 +81,8 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
     reportFinished(*engine);
   }
 
+  DepthBufferOnly plain(root);
+  plain.use(options.depthBufferOnly);
   SceneRenderer renderer(size);
   const auto start = std::chrono::steady_clock::now();
   error = renderer.render(root, options.keepStencilFields);
@@ -108,6 +112,9 @@ int main(int argc, char** argv) {
                  "Camera direction: front, back, left, right or AZ,EL in degrees "
                  "(default: the scene's camera, else front)");
   app.add_option("--stats", options.stats, "Write simulation and render statistics (JSON) here");
+  app.add_flag("--depth-buffer-only", options.depthBufferOnly,
+               "Draw ClothingLayer, DepthSortedGroup and StencilSeparator as IndexedFaceSet, Group and "
+               "Separator: the depth buffer alone, to compare with the hybrid rendering");
   app.add_flag("--keep-stencil-fields", options.keepStencilFields,
                "Render with the scene's StencilSeparator.writeStencil and ClothingLayer.masked values, "
                "not those the stencil rule sets for the camera");

@@ -174,3 +174,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"BadViewName", clothScene(""), "--view up", {"--view", "up"}},
         BadInput{"ViewStraightDown", clothScene(""), "--view 0,-90", {"--view", "0,-90"}}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
+
+TEST_F(FigmentView, DepthBufferOnlyDrawsTheSkinThatTheHybridNodesHide) {
+  // scenes/hybrid/poke-through.iv: the two pictures differ (skin shows in the first).
+  const std::string scene = FIGMENT_SOURCE_DIR "/scenes/hybrid/poke-through.iv";
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("plain.png")) + " --size 120x120 --depth-buffer-only").status, 0);
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("hybrid.png")) + " --size 120x120").status, 0);
+  auto bytes = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(bytes(path("plain.png")), bytes(path("hybrid.png")));
+}

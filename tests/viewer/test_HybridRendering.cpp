@@ -5,6 +5,8 @@
 #include "nodes/DepthSortedGroup.h"
 #include "nodes/StencilSeparator.h"
 #include "support/Pixels.h"
+#include "support/TempDir.h"
+#include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"
 #include "viewer/SceneRenderer.h"
@@ -164,4 +166,55 @@ TEST_F(HybridRendering, AForearmInFrontOfTheShirtKeepsItsPixels) {
   const View behind("forearm", 180.0), plainBehind("forearm-plain", 180.0);
   EXPECT_EQ(behind.render().count(figment::test::kGreen), plainBehind.render().count(figment::test::kGreen));
   EXPECT_FALSE(behind.node<StencilSeparator>("Forearm")->writeStencil.getValue());
+}
+
+TEST_F(HybridRendering, DepthBufferOnlyDrawsAsThePlainScene) {
+  // The swap figment-view --depth-buffer-only makes gives the -plain twin's pixels, and
+  // swapping back gives the hybrid picture again.
+  for (const char* name : {"poke-through", "shirt", "forearm"}) {
+    const View hybrid(name, 30.0), plain((std::string(name) + "-plain").c_str(), 30.0);
+    const Image before = hybrid.render();
+    {
+      DepthBufferOnly swap(hybrid.root());
+      swap.use(true);
+      EXPECT_EQ(hybrid.render().rgb, plain.render().rgb) << name;
+    }
+    EXPECT_EQ(hybrid.render().rgb, before.rgb) << name << ": restored";
+  }
+}
+
+TEST_F(HybridRendering, SeparatorsUndoTheDepthAndStencilState) {
+  // After a StencilSeparator that writes the stencil and a ClothingLayer drawn over
+  // everything, a later square behind the cloth is hidden (the depth test is back to
+  // LESS) and the layer after it is not masked by it (nothing outside the separator
+  // marked the stencil).
+  figment::test::TempDir dir;
+  const std::string path = dir.file("undo.iv", R"(#Inventor V2.1 ascii
+Separator {
+  LightModel { model BASE_COLOR }
+  StencilSeparator { writeStencil TRUE  BaseColor { rgb 0 1 0 }
+    Coordinate3 { point [ -1 -1 0.5, -0.6 -1 0.5, -0.6 1 0.5, -1 1 0.5 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }
+  Separator { BaseColor { rgb 0 0 1 }
+    Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] } ClothingLayer { coordIndex [ 0 1 2 3 -1 ] masked TRUE } }
+  DEF Behind Separator { BaseColor { rgb 1 0 0 }
+    Coordinate3 { point [ 0.2 -0.5 -0.5, 0.8 -0.5 -0.5, 0.8 0.5 -0.5, 0.2 0.5 -0.5 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }
+  Separator { BaseColor { rgb 1 1 0 }
+    Coordinate3 { point [ 0.2 -1 0.2, 1 -1 0.2, 1 -0.6 0.2, 0.2 -0.6 0.2 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }
+})");
+  std::string error;
+  SoSeparator* scene = readSceneFile(path, error);
+  ASSERT_NE(scene, nullptr) << error;
+  scene->ref();
+  SoSeparator* root = stageScene(scene, kSize, ViewDirection{0.0, 0.0});
+  root->ref();
+  SceneRenderer renderer(kSize);
+  ASSERT_EQ(renderer.render(root, true), "");
+  Image image{kSize.width, kSize.height, {}};
+  image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kSize.width * kSize.height);
+  EXPECT_GT(image.count(figment::test::kGreen), 500) << "the marked part stays in front of the masked cloth";
+  EXPECT_EQ(image.count(figment::test::kRed), 0) << "the square behind the cloth stays hidden";
+  EXPECT_GT(image.count(figment::test::kYellow), 500) << "a later shape in front of the cloth shows";
+  EXPECT_GT(image.count(figment::test::kBlue), 1000);
+  root->unref();
+  scene->unref();
 }
