@@ -2,6 +2,7 @@
 
 #include "Statistics.h"
 #include "nodes/ClothingLayer.h"
+#include "nodes/SceneSearch.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"
@@ -12,7 +13,6 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
-#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/lists/SoPathList.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -28,27 +28,13 @@ namespace figment::bench {
 
 namespace {
 
-std::vector<SoPath*> pathsTo(SoNode* root, SoType type) {
-  SoSearchAction search;
-  search.setType(type, FALSE);
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
-  std::vector<SoPath*> paths;
-  for (int i = 0; i < search.getPaths().getLength(); ++i) {
-    search.getPaths()[i]->ref();
-    paths.push_back(search.getPaths()[i]);
-  }
-  return paths;
-}
-
 int countTriangles(SoNode* root, SoType type) {
   int triangles = 0;
-  for (SoPath* path : pathsTo(root, type)) {
+  const SoPathList paths = findAll(root, type);
+  for (int i = 0; i < paths.getLength(); ++i) {
     SoGetPrimitiveCountAction count;
-    count.apply(path);
+    count.apply(paths[i]);
     triangles += count.getTriangleCount();
-    path->unref();
   }
   return triangles;
 }
@@ -78,8 +64,8 @@ int runRenderStudy(const RenderStudyOptions& options) {
     SoGetBoundingBoxAction bounds(SbViewportRegion(short(size.width), short(size.height)));
     bounds.apply(scene);
     const SbBox3f box = bounds.getBoundingBox();
-    std::vector<SoPath*> cameras = pathsTo(root, SoPerspectiveCamera::getClassTypeId());
-    auto* camera = static_cast<SoPerspectiveCamera*>(cameras.front()->getTail());
+    const SoPathList cameras = findAll(root, SoPerspectiveCamera::getClassTypeId());
+    auto* camera = static_cast<SoPerspectiveCamera*>(cameras[0]->getTail());
     auto look = [&](double azimuth) {
       SoPerspectiveCamera* framing = viewer::framingCamera(box, viewer::ViewDirection{azimuth, 10.0}, aspect);
       framing->ref();
@@ -120,7 +106,6 @@ int runRenderStudy(const RenderStudyOptions& options) {
       std::printf("%-30s %6d cloth triangles  %-5s  hybrid %6.2f ms  plain %6.2f ms  overhead %+5.1f %%\n",
                   scenePath.c_str(), cloth, view, hybrid, plain, overhead);
     }
-    for (SoPath* path : cameras) path->unref();
     root->unref();
     scene->unref();
   }

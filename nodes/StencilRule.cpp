@@ -1,13 +1,12 @@
 #include "nodes/StencilRule.h"
 
 #include "nodes/ClothingLayer.h"
+#include "nodes/SceneSearch.h"
 #include "nodes/StencilSeparator.h"
 
 #include <Inventor/SbBox2f.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
-#include <Inventor/actions/SoSearchAction.h>
-#include <Inventor/lists/SoPathList.h>
 
 #include <algorithm>
 #include <limits>
@@ -48,34 +47,20 @@ Extent extentOf(SoPath* path, const SbViewportRegion& viewport, const SbViewVolu
   return extent;
 }
 
-std::vector<SoPath*> pathsTo(SoNode* root, SoType type) {
-  SoSearchAction search;
-  search.setType(type);
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);  // also inside switches that are off at the moment
-  search.apply(root);
-  const SoPathList& found = search.getPaths();
-  std::vector<SoPath*> paths;
-  for (int i = 0; i < found.getLength(); ++i) {
-    found[i]->ref();
-    paths.push_back(found[i]);
-  }
-  return paths;
-}
-
 }  // namespace
 
 StencilSettings applyStencilRule(SoNode* root, const SbViewportRegion& viewport, const SbViewVolume& view) {
   StencilSettings settings;
-  const std::vector<SoPath*> parts = pathsTo(root, StencilSeparator::getClassTypeId());
-  const std::vector<SoPath*> layers = pathsTo(root, ClothingLayer::getClassTypeId());
+  const SoPathList parts = findAll(root, StencilSeparator::getClassTypeId());
+  const SoPathList layers = findAll(root, ClothingLayer::getClassTypeId());
   std::vector<Extent> layerExtents;
-  for (SoPath* layer : layers) layerExtents.push_back(extentOf(layer, viewport, view));
-  std::vector<bool> masked(layers.size(), false);
-  for (SoPath* part : parts) {
+  for (int l = 0; l < layers.getLength(); ++l) layerExtents.push_back(extentOf(layers[l], viewport, view));
+  std::vector<bool> masked(layers.getLength(), false);
+  for (int i = 0; i < parts.getLength(); ++i) {
+    SoPath* part = parts[i];
     const Extent p = extentOf(part, viewport, view);
     bool writes = false;
-    for (size_t l = 0; l < layers.size(); ++l) {
+    for (size_t l = 0; l < layerExtents.size(); ++l) {
       const Extent& garment = layerExtents[l];
       if (p.empty || garment.empty || !p.screen.intersect(garment.screen)) continue;
       // In front: the part's centre lies in the front half of the garment's depth,
@@ -88,13 +73,11 @@ StencilSettings applyStencilRule(SoNode* root, const SbViewportRegion& viewport,
     if (separator->writeStencil.getValue() != writes) separator->writeStencil.setValue(writes);
     settings.writers += writes;
   }
-  for (size_t l = 0; l < layers.size(); ++l) {
+  for (int l = 0; l < layers.getLength(); ++l) {
     auto* layer = static_cast<ClothingLayer*>(layers[l]->getTail());
     if (layer->masked.getValue() != masked[l]) layer->masked.setValue(masked[l]);
     settings.masked += masked[l];
   }
-  for (SoPath* path : parts) path->unref();
-  for (SoPath* path : layers) path->unref();
   return settings;
 }
 

@@ -22,18 +22,15 @@ StencilSeparator::~StencilSeparator() = default;
 
 // The mode is set in a pushed state around the separator's own traversal, so it holds
 // for the children and the pop restores the GL state below.
-void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) {
+void StencilSeparator::renderMarking(SoGLRenderAction* action, bool inPath) {
   SoState* state = action->getState();
   state->push();
   if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::MARK_PART);
-  inherited::GLRenderBelowPath(action);
+  if (inPath) inherited::GLRenderInPath(action);
+  else inherited::GLRenderBelowPath(action);
   state->pop();
 }
 
-void StencilSeparator::GLRenderInPath(SoGLRenderAction* action) {
-  SoState* state = action->getState();
-  state->push();
-  if (writeStencil.getValue()) GLStencilElement::set(state, GLStencilElement::MARK_PART);
-  inherited::GLRenderInPath(action);
-  state->pop();
-}
+void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) { renderMarking(action, false); }
+
+void StencilSeparator::GLRenderInPath(SoGLRenderAction* action) { renderMarking(action, true); }

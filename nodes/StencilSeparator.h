@@ -43,4 +43,9 @@ class StencilSeparator : public SoSeparator {
 
  protected:
   ~StencilSeparator() override;
+
+ private:
+  // Renders as a Separator does (along a path or below it), marking the stencil when
+  // writeStencil is TRUE.
+  void renderMarking(SoGLRenderAction* action, bool inPath);
 };

@@ -2,10 +2,10 @@
 
 #include "nodes/ClothingLayer.h"
 #include "nodes/DepthSortedGroup.h"
+#include "nodes/SceneSearch.h"
 #include "nodes/StencilSeparator.h"
 
 #include <Inventor/SoPath.h>
-#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -20,20 +20,6 @@ struct DepthBufferOnly::Swap {
 
 namespace {
 
-std::vector<SoPath*> pathsTo(SoNode* root, SoType type) {
-  SoSearchAction search;
-  search.setType(type, FALSE);
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
-  std::vector<SoPath*> paths;
-  for (int i = 0; i < search.getPaths().getLength(); ++i) {
-    search.getPaths()[i]->ref();
-    paths.push_back(search.getPaths()[i]);
-  }
-  return paths;
-}
-
 SoGroup* regroup(SoNode* node, SoGroup* into) {
   auto* group = static_cast<SoGroup*>(node);
   for (int i = 0; i < group->getNumChildren(); ++i) into->addChild(group->getChild(i));
@@ -43,22 +29,23 @@ SoGroup* regroup(SoNode* node, SoGroup* into) {
 }  // namespace
 
 DepthBufferOnly::DepthBufferOnly(SoNode* root) {
-  auto add = [this](SoPath* path, SoNode* plain) {
+  auto add = [this](const SoPath* path, SoNode* plain) {
     Swap s{static_cast<SoGroup*>(path->getNodeFromTail(1)), path->getTail(), plain};
     s.parent->ref(), s.hybrid->ref(), s.plain->ref();
     swaps_.push_back(s);
-    path->unref();
   };
-  for (SoPath* path : pathsTo(root, ClothingLayer::getClassTypeId())) {
-    auto* layer = static_cast<ClothingLayer*>(path->getTail());
+  const SoPathList layers = findAll(root, ClothingLayer::getClassTypeId());
+  for (int i = 0; i < layers.getLength(); ++i) {
+    auto* layer = static_cast<ClothingLayer*>(layers[i]->getTail());
     auto* faces = new SoIndexedFaceSet;
     faces->coordIndex = layer->coordIndex;
     faces->vertexProperty = layer->vertexProperty.getValue();
-    add(path, faces);
+    add(layers[i], faces);
   }
-  for (SoPath* path : pathsTo(root, DepthSortedGroup::getClassTypeId())) add(path, regroup(path->getTail(), new SoGroup));
-  for (SoPath* path : pathsTo(root, StencilSeparator::getClassTypeId()))
-    add(path, regroup(path->getTail(), new SoSeparator));
+  const SoPathList groups = findAll(root, DepthSortedGroup::getClassTypeId());
+  for (int i = 0; i < groups.getLength(); ++i) add(groups[i], regroup(groups[i]->getTail(), new SoGroup));
+  const SoPathList separators = findAll(root, StencilSeparator::getClassTypeId());
+  for (int i = 0; i < separators.getLength(); ++i) add(separators[i], regroup(separators[i]->getTail(), new SoSeparator));
 }
 
 DepthBufferOnly::~DepthBufferOnly() {
