@@ -2,9 +2,10 @@
 // The rendering study (paper §5): what the hybrid nodes cost over plain depth-buffered
 // rendering. Each scene is rendered as written (ClothingLayer, DepthSortedGroup,
 // StencilSeparator, with the stencil rule applied per render) and with those nodes
-// swapped for IndexedFaceSet, Group and Separator, alternating in rounds; from a still
-// camera (a ClothingLayer re-draws its sorted facets) and from a camera that moves
-// every frame (it sorts again every frame).
+// swapped for IndexedFaceSet, Group and Separator, alternating in rounds: the first
+// frame after a switch (a snapshot: nothing cached yet), then frames from a still camera
+// (a ClothingLayer re-draws its sorted facets) and from a camera that moves every frame
+// (it sorts again every frame).
 
 #include <string>
 #include <vector>
