@@ -1,0 +1,164 @@
+#include "Capsule.h"
+
+#include "Validation.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace figment {
+
+std::array<double, 12> CapsuleParameters::values() const {
+  return {r1, r2, tx, tz, x, y, z, ox, oy, oz, theta, phi};
+}
+
+CapsuleParameters CapsuleParameters::fromValues(const std::array<double, 12>& v) {
+  CapsuleParameters p;
+  p.r1 = v[0], p.r2 = v[1], p.tx = v[2], p.tz = v[3], p.x = v[4], p.y = v[5], p.z = v[6];
+  p.ox = v[7], p.oy = v[8], p.oz = v[9], p.theta = v[10], p.phi = v[11];
+  return p;
+}
+
+void CapsuleParameters::validate() const {
+  const char* names[12] = {"r1", "r2", "tx", "tz", "x", "y", "z", "ox", "oy", "oz", "theta", "phi"};
+  const std::array<double, 12> v = values();
+  for (int i = 0; i < 12; ++i) requireFinite(names[i], v[i]);
+  for (int i : {0, 1})
+    if (v[i] < 0.0 || v[i] > 1.0)
+      throw std::invalid_argument(std::string(names[i]) + " = " + formatNumber(v[i]) + " must be in [0, 1]");
+  requireOpenRange("tx", tx, -2.0, 2.0);
+  requireOpenRange("tz", tz, -2.0, 2.0);
+  requirePositive("x", x);
+  requirePositive("y", y);
+  requirePositive("z", z);
+}
+
+Capsule::Capsule(const CapsuleParameters& parameters) : parameters_(parameters) {
+  parameters_.validate();
+  const Vec3 axis(std::cos(parameters_.phi), 0.0, std::sin(parameters_.phi));
+  rotation_ = Eigen::AngleAxisd(parameters_.theta, axis).toRotationMatrix();
+  bottom_ = -0.5 + 0.5 * parameters_.r1;
+  top_ = 0.5 - 0.5 * parameters_.r2;
+}
+
+void Capsule::profile(double t, double& radius, double& height) const {
+  if (t <= 1.0) {  // the bottom end: a quarter ellipse from the pole to the rim
+    const double b = 0.5 * M_PI * t;
+    radius = 0.5 * std::sin(b);
+    height = bottom_ - 0.5 * parameters_.r1 * std::cos(b);
+  } else if (t <= 2.0) {
+    radius = 0.5;
+    height = bottom_ + (t - 1.0) * (top_ - bottom_);
+  } else {  // the top end, from the rim to the pole
+    const double b = 0.5 * M_PI * (t - 2.0);
+    radius = 0.5 * std::cos(b);
+    height = top_ + 0.5 * parameters_.r2 * std::sin(b);
+  }
+}
+
+Vec3 Capsule::fromUnit(const Vec3& u) const {
+  const CapsuleParameters& c = parameters_;
+  const Vec3 scaled(c.x * u.x() * (1.0 + c.tx * u.y()), c.y * u.y(), c.z * u.z() * (1.0 + c.tz * u.y()));
+  return rotation_ * scaled + Vec3(c.ox, c.oy, c.oz);
+}
+
+Vec3 Capsule::toUnit(const Vec3& p) const {
+  const CapsuleParameters& c = parameters_;
+  const Vec3 q = rotation_.transpose() * (p - Vec3(c.ox, c.oy, c.oz));
+  const double y = q.y() / c.y;
+  return {q.x() / c.x / (1.0 + c.tx * y), y, q.z() / c.z / (1.0 + c.tz * y)};
+}
+
+Vec3 Capsule::surface(double t, double a) const {
+  double radius, height;
+  profile(t, radius, height);
+  return fromUnit(Vec3(radius * std::cos(a), height, radius * std::sin(a)));
+}
+
+bool Capsule::contains(const Vec3& p) const {
+  const Vec3 u = toUnit(p);
+  if (std::abs(u.y()) > 0.5) return false;  // beyond the ends (and where the taper flips)
+  const double radial = (u.x() * u.x() + u.z() * u.z()) / 0.25;  // (rho / R)^2
+  if (u.y() >= bottom_ && u.y() <= top_) return radial <= 1.0;
+  const double capHeight = 0.5 * (u.y() < bottom_ ? parameters_.r1 : parameters_.r2);
+  const double along = (u.y() < bottom_ ? bottom_ - u.y() : u.y() - top_) / capHeight;
+  return radial + along * along <= 1.0;
+}
+
+void Capsule::project(const Vec3& unit, double& t, double& a) const {
+  a = std::atan2(unit.z(), unit.x());
+  // The nearest of a few profile points in world space, at this angle.
+  constexpr int kSamples = 24;
+  const Vec3 p = fromUnit(unit);
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= kSamples; ++i) {
+    const double ti = 3.0 * i / kSamples;
+    const double d = (surface(ti, a) - p).squaredNorm();
+    if (d < best) best = d, t = ti;
+  }
+}
+
+SurfacePoint Capsule::nearest(const Vec3& p) const {
+  double t, a;
+  project(toUnit(p), t, a);
+  // Levenberg-Marquardt on |W(t, a) - p|^2 (damping also covers the poles, where
+  // dW/da vanishes).
+  constexpr double kStep = 1e-6;
+  Vec3 w = surface(t, a);
+  double lambda = 1e-3;
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    const double tHigh = std::min(t + kStep, 3.0), tLow = std::max(t - kStep, 0.0);
+    Eigen::Matrix<double, 3, 2> J;
+    J.col(0) = (surface(tHigh, a) - surface(tLow, a)) / (tHigh - tLow);
+    J.col(1) = (surface(t, a + kStep) - surface(t, a - kStep)) / (2.0 * kStep);
+    const Eigen::Matrix2d A = J.transpose() * J;
+    const Eigen::Vector2d g = J.transpose() * (w - p);
+    bool improved = false;
+    double tNext = t, aNext = a;
+    for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
+      Eigen::Matrix2d damped = A;
+      damped.diagonal() += lambda * A.diagonal() + Eigen::Vector2d::Constant(1e-18);
+      const Eigen::Vector2d step = damped.ldlt().solve(-g);
+      tNext = std::clamp(t + step[0], 0.0, 3.0);
+      aNext = a + step[1];
+      const Vec3 wNext = surface(tNext, aNext);
+      if ((wNext - p).squaredNorm() < (w - p).squaredNorm()) {
+        improved = true;
+        w = wNext;
+        lambda = std::max(lambda * 0.3, 1e-9);
+      } else {
+        lambda *= 10.0;
+      }
+    }
+    const bool converged = std::abs(tNext - t) < 1e-12 && std::abs(aNext - a) < 1e-12;
+    if (!improved) break;
+    t = tNext, a = aNext;
+    if (converged) break;
+  }
+  SurfacePoint out;
+  out.point = w;
+  const bool inside = contains(p);
+  const double gap = (p - w).norm();
+  out.distance = inside ? -gap : gap;
+  // The normal: along p - w for a point clearly outside (exact at the nearest point, and
+  // the push direction at a flat end's rim); else from the surface's tangents.
+  if (!inside && gap > 1e-6) {
+    out.normal = (p - w) / gap;
+    return out;
+  }
+  const double h = 1e-6;
+  const Vec3 dt = surface(std::min(t + h, 3.0), a) - surface(std::max(t - h, 0.0), a);
+  const Vec3 da = surface(t, a + h) - surface(t, a - h);
+  const Vec3 axis = rotation_ * Vec3::UnitY();
+  Vec3 n = da.norm() > 0.0 && dt.norm() > 0.0 ? Vec3(da.normalized().cross(dt.normalized())) : Vec3::Zero();
+  if (n.norm() < 1e-6) n = t < 1.5 ? -axis : axis;  // at a pole: along the axis
+  n.normalize();
+  // Outward: away from the centre (the capsule is star-shaped about it).
+  out.normal = n.dot(w - fromUnit(Vec3::Zero())) >= 0.0 ? n : -n;
+  return out;
+}
+
+}  // namespace figment

@@ -1,0 +1,11 @@
+#include "CapsuleCollider.h"
+
+namespace figment {
+
+bool CapsuleCollider::contact(const Vec3& p, double clearance, double /*searchRadius*/, Contact& out) const {
+  const SurfacePoint s = capsule_.nearest(p);
+  out = {s.point, s.normal, s.distance};
+  return s.distance < clearance;
+}
+
+}  // namespace figment
