@@ -1,0 +1,172 @@
+#include "CapsuleFit.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace figment {
+
+namespace {
+
+// The point of the unit capsule's surface that `u` projects onto (radially from the
+// axis at the side, from the end's centre on a rounded end, straight onto a flat end).
+Vec3 projectOntoUnitSurface(const Vec3& u, double r1, double r2) {
+  const double bottom = -0.5 + 0.5 * r1, top = 0.5 - 0.5 * r2;
+  const double rho = std::hypot(u.x(), u.z());
+  const Vec3 radial = rho > 1e-12 ? Vec3(u.x() / rho, 0.0, u.z() / rho) : Vec3::UnitX();
+  const double h = u.y();
+  auto end = [&](double centre, double rounding, double side) -> Vec3 {  // side: -1 bottom, +1 top
+    if (rounding <= 0.0) return std::min(rho, 0.5) * radial + Vec3(0.0, centre, 0.0);
+    const double along = (h - centre) / rounding;  // in the end's hemisphere space
+    const double length = std::hypot(rho, along);
+    if (length < 1e-12) return Vec3(0.0, centre + side * 0.5 * rounding, 0.0);
+    return 0.5 * rho / length * radial + Vec3(0.0, centre + 0.5 * along / length * rounding, 0.0);
+  };
+  if (h < bottom) return end(bottom, r1, -1.0);
+  if (h > top) return end(top, r2, 1.0);
+  // Between the ends: the side, or a flat end when that is nearer (from inside).
+  Vec3 best = 0.5 * radial + Vec3(0.0, h, 0.0);
+  double gap = std::abs(0.5 - rho);
+  if (r1 <= 0.0 && rho < 0.5 && h - bottom < gap) best = rho * radial + Vec3(0.0, bottom, 0.0), gap = h - bottom;
+  if (r2 <= 0.0 && rho < 0.5 && top - h < gap) best = rho * radial + Vec3(0.0, top, 0.0);
+  return best;
+}
+
+struct Limits {
+  std::array<double, 12> low, high, step;
+};
+
+// Limits and mutation steps for a part of this size (m) around its centre.
+Limits limitsFor(const CapsuleParameters& start, double size) {
+  Limits l;
+  const Vec3 centre(start.ox, start.oy, start.oz);
+  l.low = {0, 0, -1.5, -1.5, 0.01 * size, 0.01 * size, 0.01 * size, centre.x() - size, centre.y() - size,
+           centre.z() - size, -M_PI, -M_PI};
+  l.high = {1, 1, 1.5, 1.5, 3 * size, 3 * size, 3 * size, centre.x() + size, centre.y() + size, centre.z() + size,
+            M_PI, M_PI};
+  l.step = {0.1, 0.1, 0.1, 0.1, 0.03 * size, 0.03 * size, 0.03 * size, 0.01 * size, 0.01 * size, 0.01 * size, 0.03,
+            0.1};
+  return l;
+}
+
+// The default capsule set on the points: centred, along their principal axis, as big
+// as their extents.
+CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+  Vec3 axis = eigen.eigenvectors().col(2);  // the largest eigenvalue's
+  if (axis.y() < 0.0) axis = -axis;
+  CapsuleParameters c;
+  c.r1 = c.r2 = 0.5;
+  const Vec3 turn = Vec3::UnitY().cross(axis);
+  c.theta = std::atan2(turn.norm(), Vec3::UnitY().dot(axis));
+  c.phi = turn.norm() > 1e-12 ? std::atan2(turn.z(), turn.x()) : 0.0;
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(c.theta, Vec3(std::cos(c.phi), 0.0, std::sin(c.phi))).toRotationMatrix();
+  Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
+  for (const Vec3& p : points) {
+    const Vec3 local = R.transpose() * (p - mean);
+    low = low.cwiseMin(local), high = high.cwiseMax(local);
+  }
+  const Vec3 extent = (high - low).cwiseMax(1e-6);
+  const Vec3 centre = mean + R * (0.5 * (low + high));
+  c.x = extent.x(), c.y = extent.y(), c.z = extent.z();
+  c.ox = centre.x(), c.oy = centre.y(), c.oz = centre.z();
+  return c;
+}
+
+// Grows `c` about its centre by the smallest factor (to 0.1 %) that puts every point
+// inside; returns the factor.
+double encloseAll(CapsuleParameters& c, const std::vector<Vec3>& points) {
+  auto enclosesAt = [&](double s) {
+    CapsuleParameters grown = c;
+    grown.x *= s, grown.y *= s, grown.z *= s;
+    const Capsule capsule(grown);
+    for (const Vec3& p : points)
+      if (!capsule.contains(p)) return false;
+    return true;
+  };
+  double low = 1.0, high = 1.0;
+  while (!enclosesAt(high)) low = high, high *= 1.25;
+  if (high == 1.0) return 1.0;
+  while (high / low > 1.001) {
+    const double mid = 0.5 * (low + high);
+    (enclosesAt(mid) ? high : low) = mid;
+  }
+  c.x *= high, c.y *= high, c.z *= high;
+  return high;
+}
+
+}  // namespace
+
+double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight) {
+  const CapsuleParameters& c = capsule.parameters();
+  double total = 0.0;
+  for (const Vec3& p : points) {
+    const Vec3 u = capsule.toUnit(p);
+    const double squared = (capsule.fromUnit(projectOntoUnitSurface(u, c.r1, c.r2)) - p).squaredNorm();
+    total += capsule.contains(p) ? squared : outsideWeight * squared;
+  }
+  return total / static_cast<double>(points.size());
+}
+
+CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options) {
+  if (points.size() < 4) throw std::invalid_argument("a capsule needs at least 4 points to fit");
+  const CapsuleParameters start = startingCapsule(points);
+  const double size = std::max({start.x, start.y, start.z});
+  if (!(size > 1e-6)) throw std::invalid_argument("the points to fit have no extent");
+  const Limits limits = limitsFor(start, size);
+
+  struct Member {
+    std::array<double, 12> values;
+    double cost;
+  };
+  auto costOf = [&](const std::array<double, 12>& v) {
+    return capsuleCost(Capsule(CapsuleParameters::fromValues(v)), points, options.outsideWeight);
+  };
+  std::mt19937 random(options.seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const int n = std::max(options.population, 4);
+  std::vector<Member> population(n, Member{start.values(), 0.0});
+  // Biased to low cost: the index of u^2 among the first `count` members.
+  auto pick = [&](int count) { return std::min(count - 1, static_cast<int>(count * std::pow(uniform(random), 2.0))); };
+  const int mutated = static_cast<int>(options.mutationShare * n);
+  const int crossed = static_cast<int>(options.crossoverShare * n);
+  const int parents = std::max(1, static_cast<int>(options.parentShare * n));
+  for (Member& m : population) m.cost = costOf(m.values);
+  for (int generation = 0; generation < options.generations; ++generation) {
+    std::stable_sort(population.begin(), population.end(), [](const Member& a, const Member& b) { return a.cost < b.cost; });
+    // Mutation: the worst `mutated` become copies of better members with one parameter moved.
+    for (int i = n - mutated; i < n; ++i) {
+      Member m = population[pick(n - mutated)];
+      const int k = static_cast<int>(12 * uniform(random)) % 12;
+      m.values[k] = std::clamp(m.values[k] + limits.step[k] * normal(random), limits.low[k], limits.high[k]);
+      m.cost = costOf(m.values);
+      population[i] = m;
+    }
+    // Crossover: the band above them, each parameter from a parent among the best.
+    for (int i = n - mutated - crossed; i < n - mutated; ++i) {
+      Member m;
+      for (int k = 0; k < 12; ++k) m.values[k] = population[pick(parents)].values[k];
+      m.cost = costOf(m.values);
+      population[i] = m;
+    }
+  }
+  const Member& best = *std::min_element(population.begin(), population.end(),
+                                         [](const Member& a, const Member& b) { return a.cost < b.cost; });
+  CapsuleFit fit;
+  fit.parameters = CapsuleParameters::fromValues(best.values);
+  fit.cost = best.cost;
+  if (options.enclose) fit.enclosureScale = encloseAll(fit.parameters, points);
+  return fit;
+}
+
+}  // namespace figment
