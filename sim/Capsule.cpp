@@ -1,5 +1,6 @@
 #include "Capsule.h"
 
+#include "SurfaceProjection.h"
 #include "Validation.h"
 
 #include <Eigen/Dense>
@@ -104,40 +105,8 @@ void Capsule::project(const Vec3& unit, double& t, double& a) const {
 SurfacePoint Capsule::nearest(const Vec3& p) const {
   double t, a;
   project(toUnit(p), t, a);
-  // Levenberg-Marquardt on |W(t, a) - p|^2 (damping also covers the poles, where
-  // dW/da vanishes).
-  constexpr double kStep = 1e-6;
-  Vec3 w = surface(t, a);
-  double lambda = 1e-3;
-  for (int iteration = 0; iteration < 50; ++iteration) {
-    const double tHigh = std::min(t + kStep, 3.0), tLow = std::max(t - kStep, 0.0);
-    Eigen::Matrix<double, 3, 2> J;
-    J.col(0) = (surface(tHigh, a) - surface(tLow, a)) / (tHigh - tLow);
-    J.col(1) = (surface(t, a + kStep) - surface(t, a - kStep)) / (2.0 * kStep);
-    const Eigen::Matrix2d A = J.transpose() * J;
-    const Eigen::Vector2d g = J.transpose() * (w - p);
-    bool improved = false;
-    double tNext = t, aNext = a;
-    for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
-      Eigen::Matrix2d damped = A;
-      damped.diagonal() += lambda * A.diagonal() + Eigen::Vector2d::Constant(1e-18);
-      const Eigen::Vector2d step = damped.ldlt().solve(-g);
-      tNext = std::clamp(t + step[0], 0.0, 3.0);
-      aNext = a + step[1];
-      const Vec3 wNext = surface(tNext, aNext);
-      if ((wNext - p).squaredNorm() < (w - p).squaredNorm()) {
-        improved = true;
-        w = wNext;
-        lambda = std::max(lambda * 0.3, 1e-9);
-      } else {
-        lambda *= 10.0;
-      }
-    }
-    const bool converged = std::abs(tNext - t) < 1e-12 && std::abs(aNext - a) < 1e-12;
-    if (!improved) break;
-    t = tNext, a = aNext;
-    if (converged) break;
-  }
+  const SurfaceFunction side = [this](double ti, double ai) { return surface(ti, ai); };
+  const Vec3 w = projectOntoSurface(side, p, 0.0, 3.0, t, a);
   SurfacePoint out;
   out.point = w;
   const bool inside = contains(p);
@@ -149,15 +118,10 @@ SurfacePoint Capsule::nearest(const Vec3& p) const {
     out.normal = (p - w) / gap;
     return out;
   }
-  const double h = 1e-6;
-  const Vec3 dt = surface(std::min(t + h, 3.0), a) - surface(std::max(t - h, 0.0), a);
-  const Vec3 da = surface(t, a + h) - surface(t, a - h);
+  // Outward: away from the centre (the capsule is star-shaped about it); at a pole, the
+  // axis.
   const Vec3 axis = rotation_ * Vec3::UnitY();
-  Vec3 n = da.norm() > 0.0 && dt.norm() > 0.0 ? Vec3(da.normalized().cross(dt.normalized())) : Vec3::Zero();
-  if (n.norm() < 1e-6) n = t < 1.5 ? -axis : axis;  // at a pole: along the axis
-  n.normalize();
-  // Outward: away from the centre (the capsule is star-shaped about it).
-  out.normal = n.dot(w - fromUnit(Vec3::Zero())) >= 0.0 ? n : -n;
+  out.normal = surfaceNormal(side, 0.0, 3.0, t, a, w - fromUnit(Vec3::Zero()), t < 1.5 ? -axis : axis);
   return out;
 }
 

@@ -1,0 +1,63 @@
+#pragma once
+// The paper's radial depth volume (§3.2): a body part as cross sections along an axis,
+// each section's radial depth a Fourier series in the angle about the axis.
+//
+//   axis     from `base` along the unit `direction` for `length` m; angle a measured
+//            from the unit `reference` (perpendicular to the axis) towards direction x
+//            reference
+//   section  j at s_j = j length / (n - 1), j = 0 .. n-1:
+//            r_j(a) = c_j0 + sum_k=1..K (c_j,2k-1 cos k a + c_j,2k sin k a)       (m)
+//   between  sections the coefficients interpolate linearly in s;
+//   ends     closed by flat caps at s = 0 and s = length.
+// A point is inside when it projects onto [0, length] and lies within r(s, a) of the
+// axis. The nearest surface point is found in world space (the side by
+// Levenberg-Marquardt over (s, a) from the radial projection; the caps directly): the
+// push-out follows the surface normal, not the radius, so cloth on a sloping shoulder
+// is not pushed sideways.
+
+#include "Capsule.h"  // SurfacePoint
+#include "TriangleMesh.h"
+
+#include <vector>
+
+namespace figment {
+
+struct RadialDepthParameters {
+  Vec3 base = Vec3::Zero();
+  Vec3 direction = Vec3::UnitY();
+  Vec3 reference = Vec3::UnitX();
+  double length = 1.0;                            // m
+  int harmonics = 0;                              // K
+  std::vector<std::vector<double>> coefficients;  // per section: 2K + 1 values, m
+
+  // Throws std::invalid_argument naming the field when the axis, the length or the
+  // coefficient table is unusable.
+  void validate() const;
+};
+
+class RadialDepthVolume {
+ public:
+  explicit RadialDepthVolume(RadialDepthParameters parameters);
+
+  const RadialDepthParameters& parameters() const { return parameters_; }
+  double radius(double s, double a) const;  // m, at axis position s (m) and angle a
+  Vec3 surface(double s, double a) const;   // the side's point at (s, a)
+  bool contains(const Vec3& p) const;
+  SurfacePoint nearest(const Vec3& p) const;
+  // Axis coordinates of p: position along the axis s (m), angle a, distance from it (m).
+  void toAxis(const Vec3& p, double& s, double& a, double& rho) const;
+
+ private:
+  RadialDepthParameters parameters_;
+  Vec3 side_;  // direction x reference: angle pi/2
+};
+
+// Fits a radial depth volume to `body`'s triangles whose centroid projects onto the axis
+// [base, base + length direction] and lies within `maxRadius` of it: `sections` cross
+// sections (>= 2), each sampled at `angles` angles by the farthest section point per
+// angular bin, then K = `harmonics` Fourier terms by least squares; then every section's
+// constant term grows until each of those triangles' vertices is inside (enclosure).
+RadialDepthVolume fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
+                                 double maxRadius, int sections, int harmonics, int angles = 64);
+
+}  // namespace figment

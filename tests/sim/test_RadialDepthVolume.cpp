@@ -1,0 +1,115 @@
+// The radial depth volume (paper §3.2): a cylinder has a constant radial depth and no
+// higher harmonics; a cone's nearest point and normal are exact, the push-out follows
+// the normal, not the radius; a fitted volume encloses its part's vertices.
+#include "TestMeshes.h"
+#include "sim/RadialDepthVolume.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace figment;
+
+namespace {
+
+// A closed cylinder mesh of radius r from y = 0 to y = height, `slices` around.
+TriangleMesh cylinder(double r, double height, int slices, int rings) {
+  TriangleMesh mesh;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j < slices; ++j) {
+      const double a = 2 * M_PI * j / slices;
+      mesh.vertices.push_back(Vec3(r * std::cos(a), height * i / rings, r * std::sin(a)));
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < slices; ++j) {
+      const int a = i * slices + j, b = i * slices + (j + 1) % slices;
+      mesh.triangles.push_back({a, a + slices, b});
+      mesh.triangles.push_back({b, a + slices, b + slices});
+    }
+  return mesh;
+}
+
+// A cone frustum along y: radius r0 at s = 0, r1 at s = length, no harmonics.
+RadialDepthVolume frustum(double r0, double r1, double length) {
+  RadialDepthParameters p;
+  p.length = length;
+  p.coefficients = {{r0}, {r1}};
+  return RadialDepthVolume(p);
+}
+
+}  // namespace
+
+TEST(RadialDepthVolume, ACylinderHasAConstantDepthAndNoHigherHarmonics) {
+  const TriangleMesh mesh = cylinder(0.1, 0.5, 96, 10);
+  const RadialDepthVolume v = fitRadialDepth(mesh, Vec3(0, 0, 0), Vec3::UnitY(), 0.5, 0.3, 6, 4);
+  for (const auto& c : v.parameters().coefficients) {
+    EXPECT_NEAR(c[0], 0.1, 0.001);  // the 96-gon's chords lie within 0.05 mm of r
+    for (size_t k = 1; k < c.size(); ++k) EXPECT_NEAR(c[k], 0.0, 2e-4) << "term " << k;
+  }
+}
+
+TEST(RadialDepthVolume, AConesNearestPointAndNormalAreExact) {
+  // Radius 0.1 at the bottom, 0.05 at the top of a 0.5 m axis: the side leans in by
+  // atan(0.1) and its outward normal has an axial component of sin(atan(0.1)).
+  const RadialDepthVolume cone = frustum(0.1, 0.05, 0.5);
+  const double slope = 0.05 / 0.5, lean = std::atan(slope);
+  const Vec3 p(0.2, 0.25, 0.0);  // outside, level with the middle (radius 0.075)
+  const SurfacePoint s = cone.nearest(p);
+  // Distance from p to the side's line in the x-y plane.
+  const Vec3 foot(0.075, 0.25, 0.0), along = Vec3(-slope, 1.0, 0.0).normalized();
+  const Vec3 expected = foot + (p - foot).dot(along) * along;
+  EXPECT_NEAR((s.point - expected).norm(), 0.0, 1e-8);
+  EXPECT_NEAR(s.normal.y(), std::sin(lean), 1e-6) << "along the normal, not the radius";
+  EXPECT_NEAR(s.normal.x(), std::cos(lean), 1e-6);
+  EXPECT_NEAR(s.distance, (p - expected).norm(), 1e-8);
+  // Inside, nearer the side than the caps: pushed out along the same tilted normal.
+  const SurfacePoint in = cone.nearest(Vec3(0.07, 0.25, 0.0));
+  EXPECT_LT(in.distance, 0.0);
+  EXPECT_NEAR(in.normal.y(), std::sin(lean), 1e-5);
+  EXPECT_TRUE(cone.contains(Vec3(0.07, 0.25, 0.0)));
+  EXPECT_FALSE(cone.contains(Vec3(0.08, 0.25, 0.0)));
+  EXPECT_FALSE(cone.contains(Vec3(0.0, 0.51, 0.0)));
+}
+
+TEST(RadialDepthVolume, PointsNearAnEndGoToTheCap) {
+  const RadialDepthVolume cone = frustum(0.1, 0.05, 0.5);
+  const SurfacePoint top = cone.nearest(Vec3(0.01, 0.49, 0.02));
+  EXPECT_NEAR(top.distance, -0.01, 1e-9);
+  EXPECT_NEAR((top.point - Vec3(0.01, 0.5, 0.02)).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(top.normal.y(), 1.0, 1e-9);
+  const SurfacePoint below = cone.nearest(Vec3(0.03, -0.2, 0.0));
+  EXPECT_NEAR(below.distance, 0.2, 1e-9);
+  EXPECT_NEAR(below.normal.y(), -1.0, 1e-9);
+}
+
+TEST(RadialDepthVolume, AFittedVolumeEnclosesItsPartAndFollowsItsShape) {
+  // A ball (UV sphere, r = 0.12) along a tilted axis through it: every vertex whose
+  // projection falls on the axis is inside, and the surface stays within 1 cm of the ball
+  // (sections every 2.4 cm, 8 harmonics).
+  const TriangleMesh ball = meshes::sphere(0.12, 48, 24);
+  const Vec3 direction = Vec3(0.3, 1.0, 0.2).normalized();
+  const Vec3 base = -0.12 * direction;
+  const RadialDepthVolume v = fitRadialDepth(ball, base, direction, 0.24, 0.5, 11, 8);
+  int checked = 0;
+  for (const Vec3& p : ball.vertices) {
+    double s, a, rho;
+    v.toAxis(p, s, a, rho);
+    if (s <= 0.0 || s >= 0.24) continue;
+    ++checked;
+    EXPECT_TRUE(v.contains(p)) << p.transpose();
+  }
+  EXPECT_GT(checked, 1000);
+  for (double s : {0.06, 0.12, 0.18})
+    for (double a : {0.0, 1.0, 2.0, 4.0}) EXPECT_NEAR(v.surface(s, a).norm(), 0.12, 0.01) << s << " " << a;
+}
+
+TEST(RadialDepthVolume, BadParametersAreNamed) {
+  RadialDepthParameters p;
+  p.coefficients = {{0.1}};
+  EXPECT_THROW(RadialDepthVolume{p}, std::invalid_argument);
+  p.coefficients = {{0.1}, {0.1, 0.0}};
+  EXPECT_THROW(RadialDepthVolume{p}, std::invalid_argument);
+  p.coefficients = {{0.1}, {0.1}};
+  p.reference = Vec3::UnitY();
+  EXPECT_THROW(RadialDepthVolume{p}, std::invalid_argument);
+}
