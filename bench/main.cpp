@@ -1,4 +1,5 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
+#include "CollisionStudy.h"
 #include "DrapeStudy.h"
 #include "RenderStudy.h"
 #include "StabilityStudy.h"
@@ -43,9 +44,20 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   renderCommand->add_option("--out", render.outDir, "folder for render.csv")->capture_default_str();
 
+  figment::bench::CollisionStudyOptions collision;
+  collision.plotScript = FIGMENT_PLOT_COLLISION;
+  CLI::App* collisionCommand = app.add_subcommand(
+      "collision", "per body part: capsule and radial depth volumes against the body (gap, enclosure, query cost)");
+  collisionCommand->add_option("--body", collision.body, "body mesh (model search path)")->capture_default_str();
+  collisionCommand->add_option("--harmonics", collision.harmonics, "Fourier terms K of the radial depth volumes")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 64));
+  collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")->capture_default_str();
+
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return figment::bench::runDrapeStudy(drape);
   if (stabilityCommand->parsed()) return figment::bench::runStabilityStudy(stability);
   if (renderCommand->parsed()) return figment::bench::runRenderStudy(render);
+  if (collisionCommand->parsed()) return figment::bench::runCollisionStudy(collision);
   return 1;
 }

@@ -82,9 +82,9 @@ CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
   return c;
 }
 
-// Grows `c` about its centre by the smallest factor (to 0.1 %) that puts every point
-// inside; returns the factor.
-double encloseAll(CapsuleParameters& c, const std::vector<Vec3>& points) {
+}  // namespace
+
+double growToEnclose(CapsuleParameters& c, const std::vector<Vec3>& points) {
   auto enclosesAt = [&](double s) {
     CapsuleParameters grown = c;
     grown.x *= s, grown.y *= s, grown.z *= s;
@@ -103,8 +103,6 @@ double encloseAll(CapsuleParameters& c, const std::vector<Vec3>& points) {
   c.x *= high, c.y *= high, c.z *= high;
   return high;
 }
-
-}  // namespace
 
 double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight) {
   const CapsuleParameters& c = capsule.parameters();
@@ -165,7 +163,7 @@ CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& 
   CapsuleFit fit;
   fit.parameters = CapsuleParameters::fromValues(best.values);
   fit.cost = best.cost;
-  if (options.enclose) fit.enclosureScale = encloseAll(fit.parameters, points);
+  if (options.enclose) fit.enclosureScale = growToEnclose(fit.parameters, points);
   return fit;
 }
 

@@ -48,6 +48,10 @@ struct CapsuleFit {
 // Throws std::invalid_argument when `points` has fewer than 4 points or no extent.
 CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options = {});
 
+// Grows `capsule` about its centre by the smallest factor (to 0.1 %) that puts every
+// point inside; returns the factor (1: it already enclosed them).
+double growToEnclose(CapsuleParameters& capsule, const std::vector<Vec3>& points);
+
 // The cost above of `capsule` for `points` (lower is better).
 double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight);
 
