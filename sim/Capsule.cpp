@@ -89,17 +89,44 @@ bool Capsule::contains(const Vec3& p) const {
   return radial + along * along <= 1.0;
 }
 
+Vec3 Capsule::unitProjection(const Vec3& u) const {
+  const double r1 = parameters_.r1, r2 = parameters_.r2, bottom = bottom_, top = top_;
+  const double rho = std::sqrt(u.x() * u.x() + u.z() * u.z());
+  const Vec3 radial = rho > 1e-12 ? Vec3(u.x() / rho, 0.0, u.z() / rho) : Vec3::UnitX();
+  const double h = u.y();
+  auto end = [&](double centre, double rounding, double side) -> Vec3 {  // side: -1 bottom, +1 top
+    if (rounding <= 0.0) return std::min(rho, 0.5) * radial + Vec3(0.0, centre, 0.0);
+    const double along = (h - centre) / rounding;  // in the end's hemisphere space
+    const double length = std::sqrt(rho * rho + along * along);
+    if (length < 1e-12) return Vec3(0.0, centre + side * 0.5 * rounding, 0.0);
+    return 0.5 * rho / length * radial + Vec3(0.0, centre + 0.5 * along / length * rounding, 0.0);
+  };
+  if (h < bottom) return end(bottom, r1, -1.0);
+  if (h > top) return end(top, r2, 1.0);
+  // Between the ends: the side, or a flat end when that is nearer (from inside).
+  Vec3 best = 0.5 * radial + Vec3(0.0, h, 0.0);
+  double gap = std::abs(0.5 - rho);
+  if (r1 <= 0.0 && rho < 0.5 && h - bottom < gap) best = rho * radial + Vec3(0.0, bottom, 0.0), gap = h - bottom;
+  if (r2 <= 0.0 && rho < 0.5 && top - h < gap) best = rho * radial + Vec3(0.0, top, 0.0);
+  return best;
+}
+
 void Capsule::project(const Vec3& unit, double& t, double& a) const {
-  a = std::atan2(unit.z(), unit.x());
-  // The nearest of a few profile points in world space, at this angle.
-  constexpr int kSamples = 24;
-  const Vec3 p = fromUnit(unit);
-  double best = std::numeric_limits<double>::infinity();
-  for (int i = 0; i <= kSamples; ++i) {
-    const double ti = 3.0 * i / kSamples;
-    const double d = (surface(ti, a) - p).squaredNorm();
-    if (d < best) best = d, t = ti;
-  }
+  // The parameters of the unit-space projection (the paper's path): the starting guess.
+  const Vec3 q = unitProjection(unit);
+  a = std::atan2(q.z(), q.x());
+  const double rho = std::sqrt(q.x() * q.x() + q.z() * q.z()) / 0.5;  // 0 at the axis, 1 at the side
+  const double r1 = parameters_.r1, r2 = parameters_.r2;
+  // On an end, (rho, along) = (sin b, cos b) of the profile's angle; a flat end's disc
+  // has along = sqrt(1 - rho^2) by the same parametrisation.
+  const double flat = std::sqrt(std::max(0.0, 1.0 - rho * rho));
+  if (q.y() < bottom_ || (q.y() == bottom_ && rho < 1.0 && r1 <= 0.0))
+    t = std::atan2(rho, r1 > 0.0 ? (bottom_ - q.y()) / (0.5 * r1) : flat) / (0.5 * M_PI);
+  else if (q.y() > top_ || (q.y() == top_ && rho < 1.0 && r2 <= 0.0))
+    t = 2.0 + std::atan2(r2 > 0.0 ? (q.y() - top_) / (0.5 * r2) : flat, rho) / (0.5 * M_PI);
+  else
+    t = top_ > bottom_ ? 1.0 + (q.y() - bottom_) / (top_ - bottom_) : 1.5;
+  t = std::clamp(t, 0.0, 3.0);
 }
 
 SurfacePoint Capsule::nearest(const Vec3& p) const {

@@ -57,6 +57,11 @@ class Capsule {
   // World point -> unit-capsule coordinates (inverse offset, tilt, scale, taper) and back.
   Vec3 toUnit(const Vec3& p) const;
   Vec3 fromUnit(const Vec3& u) const;
+  // The point of the unit capsule's surface that unit-space `u` projects onto: radially
+  // from the axis at the side, from the end's centre on a rounded end, straight onto a
+  // flat end (the paper's cylinder-or-hemisphere step; exact in unit space for the side
+  // and hemispheres).
+  Vec3 unitProjection(const Vec3& u) const;
 
  private:
   // Profile of the unit capsule: radius and height at t.

@@ -11,30 +11,6 @@ namespace figment {
 
 namespace {
 
-// The point of the unit capsule's surface that `u` projects onto (radially from the
-// axis at the side, from the end's centre on a rounded end, straight onto a flat end).
-Vec3 projectOntoUnitSurface(const Vec3& u, double r1, double r2) {
-  const double bottom = -0.5 + 0.5 * r1, top = 0.5 - 0.5 * r2;
-  const double rho = std::hypot(u.x(), u.z());
-  const Vec3 radial = rho > 1e-12 ? Vec3(u.x() / rho, 0.0, u.z() / rho) : Vec3::UnitX();
-  const double h = u.y();
-  auto end = [&](double centre, double rounding, double side) -> Vec3 {  // side: -1 bottom, +1 top
-    if (rounding <= 0.0) return std::min(rho, 0.5) * radial + Vec3(0.0, centre, 0.0);
-    const double along = (h - centre) / rounding;  // in the end's hemisphere space
-    const double length = std::hypot(rho, along);
-    if (length < 1e-12) return Vec3(0.0, centre + side * 0.5 * rounding, 0.0);
-    return 0.5 * rho / length * radial + Vec3(0.0, centre + 0.5 * along / length * rounding, 0.0);
-  };
-  if (h < bottom) return end(bottom, r1, -1.0);
-  if (h > top) return end(top, r2, 1.0);
-  // Between the ends: the side, or a flat end when that is nearer (from inside).
-  Vec3 best = 0.5 * radial + Vec3(0.0, h, 0.0);
-  double gap = std::abs(0.5 - rho);
-  if (r1 <= 0.0 && rho < 0.5 && h - bottom < gap) best = rho * radial + Vec3(0.0, bottom, 0.0), gap = h - bottom;
-  if (r2 <= 0.0 && rho < 0.5 && top - h < gap) best = rho * radial + Vec3(0.0, top, 0.0);
-  return best;
-}
-
 struct Limits {
   std::array<double, 12> low, high, step;
 };
@@ -105,11 +81,9 @@ double growToEnclose(CapsuleParameters& c, const std::vector<Vec3>& points) {
 }
 
 double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight) {
-  const CapsuleParameters& c = capsule.parameters();
   double total = 0.0;
   for (const Vec3& p : points) {
-    const Vec3 u = capsule.toUnit(p);
-    const double squared = (capsule.fromUnit(projectOntoUnitSurface(u, c.r1, c.r2)) - p).squaredNorm();
+    const double squared = (capsule.fromUnit(capsule.unitProjection(capsule.toUnit(p))) - p).squaredNorm();
     total += capsule.contains(p) ? squared : outsideWeight * squared;
   }
   return total / static_cast<double>(points.size());
