@@ -73,6 +73,33 @@ Vec3 Capsule::toUnit(const Vec3& p) const {
   return {q.x() / c.x / (1.0 + c.tx * y), y, q.z() / c.z / (1.0 + c.tz * y)};
 }
 
+SurfaceSample Capsule::sample(double t, double a) const {
+  // Profile and its derivative in t, then the unit point and its tangents, then the
+  // taper and scale's Jacobian and the tilt.
+  const CapsuleParameters& c = parameters_;
+  double radius, height, dRadius, dHeight;
+  if (t <= 1.0) {
+    const double b = 0.5 * M_PI * t;
+    radius = 0.5 * std::sin(b), height = bottom_ - 0.5 * c.r1 * std::cos(b);
+    dRadius = 0.25 * M_PI * std::cos(b), dHeight = 0.25 * M_PI * c.r1 * std::sin(b);
+  } else if (t <= 2.0) {
+    radius = 0.5, height = bottom_ + (t - 1.0) * (top_ - bottom_);
+    dRadius = 0.0, dHeight = top_ - bottom_;
+  } else {
+    const double b = 0.5 * M_PI * (t - 2.0);
+    radius = 0.5 * std::cos(b), height = top_ + 0.5 * c.r2 * std::sin(b);
+    dRadius = -0.25 * M_PI * std::sin(b), dHeight = 0.25 * M_PI * c.r2 * std::cos(b);
+  }
+  const double ca = std::cos(a), sa = std::sin(a);
+  const Vec3 u(radius * ca, height, radius * sa);
+  const Vec3 du(dRadius * ca, dHeight, dRadius * sa), dua(-radius * sa, 0.0, radius * ca);
+  Eigen::Matrix3d jacobian;
+  jacobian << c.x * (1.0 + c.tx * u.y()), c.x * c.tx * u.x(), 0.0, 0.0, c.y, 0.0, 0.0, c.z * c.tz * u.z(),
+      c.z * (1.0 + c.tz * u.y());
+  const Eigen::Matrix3d toWorld = rotation_ * jacobian;
+  return {fromUnit(u), toWorld * du, toWorld * dua};
+}
+
 Vec3 Capsule::surface(double t, double a) const {
   double radius, height;
   profile(t, radius, height);
@@ -132,7 +159,7 @@ void Capsule::project(const Vec3& unit, double& t, double& a) const {
 SurfacePoint Capsule::nearest(const Vec3& p) const {
   double t, a;
   project(toUnit(p), t, a);
-  const SurfaceFunction side = [this](double ti, double ai) { return surface(ti, ai); };
+  const auto side = [this](double ti, double ai) { return sample(ti, ai); };
   const Vec3 w = projectOntoSurface(side, p, 0.0, 3.0, t, a);
   SurfacePoint out;
   out.point = w;
@@ -148,7 +175,7 @@ SurfacePoint Capsule::nearest(const Vec3& p) const {
   // Outward: away from the centre (the capsule is star-shaped about it); at a pole, the
   // axis.
   const Vec3 axis = rotation_ * Vec3::UnitY();
-  out.normal = surfaceNormal(side, 0.0, 3.0, t, a, w - fromUnit(Vec3::Zero()), t < 1.5 ? -axis : axis);
+  out.normal = surfaceNormal(sample(t, a), w - fromUnit(Vec3::Zero()), t < 1.5 ? -axis : axis);
   return out;
 }
 

@@ -15,6 +15,7 @@
 // unit-space projection), since scale and taper move the nearest point away from the
 // unit-space one.
 
+#include "SurfaceProjection.h"
 #include "TriangleMesh.h"
 
 #include <array>
@@ -54,6 +55,8 @@ class Capsule {
   // The surface in its two parameters: t in [0, 3] along the profile (0: bottom pole,
   // 1: bottom rim, 2: top rim, 3: top pole), a in radians about the axis.
   Vec3 surface(double t, double a) const;
+  // The surface point and its tangents d/dt, d/da at (t, a), analytically.
+  SurfaceSample sample(double t, double a) const;
   // World point -> unit-capsule coordinates (inverse offset, tilt, scale, taper) and back.
   Vec3 toUnit(const Vec3& p) const;
   Vec3 fromUnit(const Vec3& u) const;

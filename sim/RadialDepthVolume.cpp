@@ -46,6 +46,34 @@ double RadialDepthVolume::radius(double s, double a) const {
   return std::max(r, 0.0);
 }
 
+SurfaceSample RadialDepthVolume::sample(double s, double a) const {
+  // r and its derivatives: linear in s between sections, a Fourier series in a.
+  const auto& c = parameters_.coefficients;
+  const double spacing = parameters_.length / static_cast<double>(c.size() - 1);
+  const double x = std::clamp(s / parameters_.length, 0.0, 1.0) * static_cast<double>(c.size() - 1);
+  const size_t j = std::min(static_cast<size_t>(x), c.size() - 2);
+  const double f = x - static_cast<double>(j);
+  double r0 = 0.0, r1 = 0.0, ra = 0.0;  // r at sections j and j + 1; dr/da interpolated
+  for (int k = 0; k <= parameters_.harmonics; ++k) {
+    if (k == 0) {
+      r0 += c[j][0], r1 += c[j + 1][0];
+      continue;
+    }
+    const double ck = std::cos(k * a), sk = std::sin(k * a);
+    r0 += c[j][2 * k - 1] * ck + c[j][2 * k] * sk;
+    r1 += c[j + 1][2 * k - 1] * ck + c[j + 1][2 * k] * sk;
+    ra += k * ((1.0 - f) * (c[j][2 * k] * ck - c[j][2 * k - 1] * sk) + f * (c[j + 1][2 * k] * ck - c[j + 1][2 * k - 1] * sk));
+  }
+  const double r = (1.0 - f) * r0 + f * r1;
+  const bool clamped = r < 0.0;  // radius() clamps at 0: a point on the axis
+  const double rs = clamped ? 0.0 : (r1 - r0) / spacing;
+  const Vec3 radial = std::cos(a) * parameters_.reference + std::sin(a) * side_;
+  const Vec3 turning = -std::sin(a) * parameters_.reference + std::cos(a) * side_;
+  const double radiusHere = std::max(r, 0.0);
+  return {parameters_.base + s * parameters_.direction + radiusHere * radial,
+          parameters_.direction + rs * radial, (clamped ? 0.0 : ra) * radial + radiusHere * turning};
+}
+
 Vec3 RadialDepthVolume::surface(double s, double a) const {
   return parameters_.base + s * parameters_.direction +
          radius(s, a) * (std::cos(a) * parameters_.reference + std::sin(a) * side_);
@@ -72,7 +100,7 @@ SurfacePoint RadialDepthVolume::nearest(const Vec3& p) const {
   const bool inside = contains(p);
   // The side, from the radial projection.
   double t = std::clamp(s, 0.0, length), angle = a;
-  const SurfaceFunction side = [this](double ti, double ai) { return surface(ti, ai); };
+  const auto side = [this](double ti, double ai) { return sample(ti, ai); };
   Vec3 best = projectOntoSurface(side, p, 0.0, length, t, angle);
   double bestGap = (p - best).norm();
   bool onCap = false;
@@ -90,7 +118,7 @@ SurfacePoint RadialDepthVolume::nearest(const Vec3& p) const {
   out.distance = inside ? -bestGap : bestGap;
   if (!inside && bestGap > 1e-6) out.normal = (p - best) / bestGap;
   else if (onCap) out.normal = capNormal;
-  else out.normal = surfaceNormal(side, 0.0, length, t, angle, best - (parameters_.base + t * parameters_.direction),
+  else out.normal = surfaceNormal(side(t, angle), best - (parameters_.base + t * parameters_.direction),
                                   parameters_.direction);
   return out;
 }

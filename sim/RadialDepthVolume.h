@@ -16,6 +16,7 @@
 // is not pushed sideways.
 
 #include "Capsule.h"  // SurfacePoint
+#include "SurfaceProjection.h"
 #include "TriangleMesh.h"
 
 #include <vector>
@@ -42,6 +43,7 @@ class RadialDepthVolume {
   const RadialDepthParameters& parameters() const { return parameters_; }
   double radius(double s, double a) const;  // m, at axis position s (m) and angle a
   Vec3 surface(double s, double a) const;   // the side's point at (s, a)
+  SurfaceSample sample(double s, double a) const;  // ... and its tangents d/ds, d/da
   bool contains(const Vec3& p) const;
   SurfacePoint nearest(const Vec3& p) const;
   // Axis coordinates of p: position along the axis s (m), angle a, distance from it (m).

@@ -7,18 +7,60 @@
 
 #include "TriangleMesh.h"
 
-#include <functional>
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
 
 namespace figment {
 
-using SurfaceFunction = std::function<Vec3(double t, double a)>;
+// The surface's point and its two tangents dW/dt, dW/da at one (t, a).
+struct SurfaceSample {
+  Vec3 w, dt, da;
+};
 
-// Refines (t, a) in place; returns W(t, a).
-Vec3 projectOntoSurface(const SurfaceFunction& surface, const Vec3& p, double tMin, double tMax, double& t, double& a);
+// `sample(t, a)` returns a SurfaceSample. Refines (t, a) in place; returns W(t, a).
+template <typename Sample>
+Vec3 projectOntoSurface(const Sample& sample, const Vec3& p, double tMin, double tMax, double& t, double& a) {
+  SurfaceSample s = sample(t, a);
+  double lambda = 1e-3;  // the damping also covers the poles, where dW/da vanishes
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    Eigen::Matrix<double, 3, 2> J;
+    J << s.dt, s.da;
+    const Eigen::Matrix2d A = J.transpose() * J;
+    const Eigen::Vector2d g = J.transpose() * (s.w - p);
+    bool improved = false;
+    double tNext = t, aNext = a;
+    for (int attempt = 0; attempt < 12 && !improved; ++attempt) {
+      Eigen::Matrix2d damped = A;
+      damped.diagonal() += lambda * A.diagonal() + Eigen::Vector2d::Constant(1e-18);
+      const Eigen::Vector2d step = damped.ldlt().solve(-g);
+      tNext = std::clamp(t + step[0], tMin, tMax);
+      aNext = a + step[1];
+      const SurfaceSample next = sample(tNext, aNext);
+      if ((next.w - p).squaredNorm() < (s.w - p).squaredNorm()) {
+        improved = true;
+        s = next;
+        lambda = std::max(lambda * 0.3, 1e-9);
+      } else {
+        lambda *= 10.0;
+      }
+    }
+    const bool converged = std::abs(tNext - t) < 1e-12 && std::abs(aNext - a) < 1e-12;
+    if (!improved) break;
+    t = tNext, a = aNext;
+    if (converged) break;
+  }
+  return s.w;
+}
 
-// The unit outward normal at W(t, a) from its tangents, or `fallback` where they are
+// The unit outward normal of a sample from its tangents, or `fallback` where they are
 // parallel (a pole); `outwardHint` is any vector pointing out of the volume there.
-Vec3 surfaceNormal(const SurfaceFunction& surface, double tMin, double tMax, double t, double a,
-                   const Vec3& outwardHint, const Vec3& fallback);
+inline Vec3 surfaceNormal(const SurfaceSample& s, const Vec3& outwardHint, const Vec3& fallback) {
+  Vec3 n = s.da.norm() > 0.0 && s.dt.norm() > 0.0 ? Vec3(s.da.normalized().cross(s.dt.normalized())) : Vec3::Zero();
+  if (n.norm() < 1e-6) return fallback.normalized();
+  n.normalize();
+  return n.dot(outwardHint) >= 0.0 ? n : -n;
+}
 
 }  // namespace figment

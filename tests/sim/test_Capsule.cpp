@@ -155,3 +155,16 @@ TEST(CapsuleCollider, ClothDrapedOverACapsuleStaysOutsideIt) {
   EXPECT_NEAR(highest, 0.05 + p.clearance, 0.005) << "held on the capsule's top (radius 5 cm)";
   EXPECT_LT(solver.positions()[0].y(), -0.02) << "a corner fell past it";
 }
+
+TEST(Capsule, AnalyticTangentsMatchFiniteDifferences) {
+  const Capsule capsule(forearm());
+  for (double t : {0.2, 0.8, 1.3, 1.9, 2.4, 2.9})
+    for (double a : {0.1, 2.0, 4.5}) {
+      const SurfaceSample s = capsule.sample(t, a);
+      const Vec3 dt = (capsule.surface(t + 1e-6, a) - capsule.surface(t - 1e-6, a)) / 2e-6;
+      const Vec3 da = (capsule.surface(t, a + 1e-6) - capsule.surface(t, a - 1e-6)) / 2e-6;
+      EXPECT_NEAR((s.w - capsule.surface(t, a)).norm(), 0.0, 1e-15);
+      EXPECT_NEAR((s.dt - dt).norm(), 0.0, 1e-6 * (1 + dt.norm())) << "t " << t << " a " << a;
+      EXPECT_NEAR((s.da - da).norm(), 0.0, 1e-6 * (1 + da.norm())) << "t " << t << " a " << a;
+    }
+}

@@ -113,3 +113,22 @@ TEST(RadialDepthVolume, BadParametersAreNamed) {
   p.reference = Vec3::UnitY();
   EXPECT_THROW(RadialDepthVolume{p}, std::invalid_argument);
 }
+
+TEST(RadialDepthVolume, AnalyticTangentsMatchFiniteDifferences) {
+  RadialDepthParameters p;
+  p.direction = Vec3(0.2, 1.0, -0.1).normalized();
+  p.reference = p.direction.unitOrthogonal();
+  p.length = 0.4;
+  p.harmonics = 2;
+  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
+  const RadialDepthVolume v(p);
+  for (double s : {0.05, 0.13, 0.27, 0.36})
+    for (double a : {0.3, 2.2, 5.0}) {
+      const SurfaceSample x = v.sample(s, a);
+      const Vec3 ds = (v.surface(s + 1e-7, a) - v.surface(s - 1e-7, a)) / 2e-7;
+      const Vec3 da = (v.surface(s, a + 1e-7) - v.surface(s, a - 1e-7)) / 2e-7;
+      EXPECT_NEAR((x.w - v.surface(s, a)).norm(), 0.0, 1e-15);
+      EXPECT_NEAR((x.dt - ds).norm(), 0.0, 1e-6) << "s " << s << " a " << a;
+      EXPECT_NEAR((x.da - da).norm(), 0.0, 1e-6) << "s " << s << " a " << a;
+    }
+}
