@@ -74,8 +74,12 @@ std::vector<SbVec3f> vertexNormals(const SbVec3f* points, int count, const int32
 }  // namespace
 
 struct ClothingLayer::DrawCache {
-  // What the arrays were built from.
+  // The geometry, kept while the coordinates and the layer's fields stay the same.
   SbUniqueId coordinatesId = 0, layerId = 0;
+  std::vector<SbVec3f> points, smooth;  // coordinates and smooth normals
+  std::vector<figment::FacetGeometry> facets;
+  // The view the arrays were built for.
+  bool built = false;
   SbMatrix toCamera;
   SbVec3f eye, direction;
   bool perspective = false, clockwise = false;
@@ -84,9 +88,9 @@ struct ClothingLayer::DrawCache {
   std::vector<float> positions, normals;
   int awayCorners = 0, facingCorners = 0;
 
-  bool matches(SbUniqueId coordinates, SbUniqueId layer, const figment::ViewPoint& view) const {
-    return coordinates == coordinatesId && layer == layerId && view.toCamera == toCamera && view.eye == eye &&
-           view.direction == direction && view.perspective == perspective && view.clockwise == clockwise;
+  bool sameView(const figment::ViewPoint& view) const {
+    return built && view.toCamera == toCamera && view.eye == eye && view.direction == direction &&
+           view.perspective == perspective && view.clockwise == clockwise;
   }
 };
 
@@ -100,33 +104,37 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   const SoCoordinateElement* coordinates = SoCoordinateElement::getInstance(state);
   const figment::ViewPoint view = viewPoint(state);
   if (!cache_) cache_ = std::make_unique<DrawCache>();
-  if (!cache_->matches(coordinates->getNodeId(), getNodeId(), view)) {
+  DrawCache& c = *cache_;
+  const int32_t* index = coordIndex.getValues(0);
+  const int indexCount = coordIndex.getNum();
+  if (coordinates->getNodeId() != c.coordinatesId || getNodeId() != c.layerId) {
     const int pointCount = coordinates->getNum();
-    std::vector<SbVec3f> points(pointCount);
-    for (int i = 0; i < pointCount; ++i) points[i] = coordinates->get3(i);
-    const int32_t* index = coordIndex.getValues(0);
-    const int indexCount = coordIndex.getNum();
-    const std::vector<SbVec3f> smooth = vertexNormals(points.data(), pointCount, index, indexCount);
-    DrawCache& c = *cache_;
+    c.points.resize(pointCount);
+    for (int i = 0; i < pointCount; ++i) c.points[i] = coordinates->get3(i);
+    c.smooth = vertexNormals(c.points.data(), pointCount, index, indexCount);
+    c.facets = figment::describeFacets(c.points.data(), pointCount, index, indexCount);
+    c.coordinatesId = coordinates->getNodeId();
+    c.layerId = getNodeId();
+    c.built = false;
+  }
+  if (!c.sameView(view)) {
     c.positions.clear(), c.normals.clear();
-    const std::vector<figment::OrderedFacet> facets =
-        figment::orderFacets(points.data(), pointCount, index, indexCount, view);
+    const std::vector<figment::OrderedFacet> facets = figment::orderFacets(c.facets, view);
     for (bool facing : {false, true}) {
       const size_t before = c.positions.size();
       for (const figment::OrderedFacet& facet : facets) {
         if (facet.facesViewer != facing) continue;
         for (int k = 1; k + 1 < facet.corners; ++k)
           for (int corner : {index[facet.firstIndex], index[facet.firstIndex + k], index[facet.firstIndex + k + 1]}) {
-            c.positions.insert(c.positions.end(), points[corner].getValue(), points[corner].getValue() + 3);
-            c.normals.insert(c.normals.end(), smooth[corner].getValue(), smooth[corner].getValue() + 3);
+            c.positions.insert(c.positions.end(), c.points[corner].getValue(), c.points[corner].getValue() + 3);
+            c.normals.insert(c.normals.end(), c.smooth[corner].getValue(), c.smooth[corner].getValue() + 3);
           }
       }
       (facing ? c.facingCorners : c.awayCorners) = static_cast<int>((c.positions.size() - before) / 3);
     }
-    c.coordinatesId = coordinates->getNodeId();
-    c.layerId = getNodeId();
     c.toCamera = view.toCamera, c.eye = view.eye, c.direction = view.direction;
     c.perspective = view.perspective, c.clockwise = view.clockwise;
+    c.built = true;
   }
 
   SoMaterialBundle material(action);

@@ -23,14 +23,28 @@ struct ViewPoint {
   float edgeOnCosine = 0.05f;
 };
 
+// What a facet is, whatever the view: computed once per change of the coordinates.
+struct FacetGeometry {
+  int32_t firstIndex;  // into coordIndex
+  int32_t corners;
+  SbVec3f centre;
+  SbVec3f normal;      // Newell's normal (counter-clockwise front), not normalised
+};
+
+// Facets of `coordIndex` (polygons ended by -1 or the end) with every index in
+// [0, pointCount) and at least three corners; others are skipped.
+std::vector<FacetGeometry> describeFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
+                                          int indexCount);
+
 struct OrderedFacet {
   int32_t firstIndex;  // into coordIndex: the facet's first corner
   int32_t corners;     // how many corners it has (>= 3)
   bool facesViewer;    // the front faces the eye: drawn over what lies beneath
 };
 
-// Facets of `coordIndex` (polygons ended by -1 or the end) with every index in
-// [0, pointCount) and at least three corners; others are skipped. Far to near.
+// The facets far to near for `view`, each marked facing the viewer or away.
+std::vector<OrderedFacet> orderFacets(const std::vector<FacetGeometry>& facets, const ViewPoint& view);
+// Both steps at once.
 std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
                                       int indexCount, const ViewPoint& view);
 
