@@ -179,4 +179,19 @@ SurfacePoint Capsule::nearest(const Vec3& p) const {
   return out;
 }
 
+SurfacePoint Capsule::nearestFast(const Vec3& p) const {
+  double t, a;
+  project(toUnit(p), t, a);
+  const SurfaceSample s = refineOnSurface([this](double ti, double ai) { return sample(ti, ai); }, p, 0.0, 3.0, t, a);
+  SurfacePoint out;
+  out.point = s.w;
+  const bool inside = contains(p);
+  const double gap = (p - s.w).norm();
+  out.distance = inside ? -gap : gap;
+  const Vec3 axis = rotation_ * Vec3::UnitY();
+  out.normal = !inside && gap > 1e-6 ? Vec3((p - s.w) / gap)
+                                     : surfaceNormal(s, s.w - fromUnit(Vec3::Zero()), t < 1.5 ? -axis : axis);
+  return out;
+}
+
 }  // namespace figment

@@ -51,6 +51,11 @@ class Capsule {
   // The nearest point of the surface to p (in world space), the outward normal there
   // and p's signed distance.
   SurfacePoint nearest(const Vec3& p) const;
+  // The paper's fast path, for collision response: the unit-space projection (inverse
+  // transform, inverse taper, cylinder or end) mapped back, then two Gauss-Newton steps
+  // in world space to correct for scale and taper; no line search. Within a fraction of
+  // a millimetre of nearest() on body-part capsules (tested), a few times faster.
+  SurfacePoint nearestFast(const Vec3& p) const;
 
   // The surface in its two parameters: t in [0, 3] along the profile (0: bottom pole,
   // 1: bottom rim, 2: top rim, 3: top pole), a in radians about the axis.

@@ -10,9 +10,10 @@ class CapsuleCollider : public Collider {
  public:
   explicit CapsuleCollider(const CapsuleParameters& parameters) : capsule_(parameters) {}
 
-  // True when p is inside or within `clearance` of the surface. The nearest point is
-  // exact at any distance, so `searchRadius` is not needed: when it returns false,
-  // out.distance is p's distance itself. `out` is filled in either case.
+  // True when p is inside or within `clearance` of the surface, by Capsule::nearestFast
+  // (the paper's path with a world-space correction). It answers at any distance, so
+  // `searchRadius` is not needed: when it returns false, out.distance is p's distance
+  // (to the fast path's accuracy). `out` is filled in either case.
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
 
   const Capsule& capsule() const { return capsule_; }

@@ -93,7 +93,11 @@ bool RadialDepthVolume::contains(const Vec3& p) const {
   return s >= 0.0 && s <= parameters_.length && rho <= radius(s, a);
 }
 
-SurfacePoint RadialDepthVolume::nearest(const Vec3& p) const {
+SurfacePoint RadialDepthVolume::nearest(const Vec3& p) const { return closest(p, false); }
+
+SurfacePoint RadialDepthVolume::nearestFast(const Vec3& p) const { return closest(p, true); }
+
+SurfacePoint RadialDepthVolume::closest(const Vec3& p, bool fast) const {
   double s, a, rho;
   toAxis(p, s, a, rho);
   const double length = parameters_.length;
@@ -101,7 +105,7 @@ SurfacePoint RadialDepthVolume::nearest(const Vec3& p) const {
   // The side, from the radial projection.
   double t = std::clamp(s, 0.0, length), angle = a;
   const auto side = [this](double ti, double ai) { return sample(ti, ai); };
-  Vec3 best = projectOntoSurface(side, p, 0.0, length, t, angle);
+  Vec3 best = fast ? refineOnSurface(side, p, 0.0, length, t, angle).w : projectOntoSurface(side, p, 0.0, length, t, angle);
   double bestGap = (p - best).norm();
   bool onCap = false;
   Vec3 capNormal;

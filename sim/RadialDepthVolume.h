@@ -46,10 +46,15 @@ class RadialDepthVolume {
   SurfaceSample sample(double s, double a) const;  // ... and its tangents d/ds, d/da
   bool contains(const Vec3& p) const;
   SurfacePoint nearest(const Vec3& p) const;
+  // The fast path for points near the surface (cloth nodes): from the radial projection,
+  // three Gauss-Newton steps in world space; the caps as in nearest().
+  SurfacePoint nearestFast(const Vec3& p) const;
   // Axis coordinates of p: position along the axis s (m), angle a, distance from it (m).
   void toAxis(const Vec3& p, double& s, double& a, double& rho) const;
 
  private:
+  SurfacePoint closest(const Vec3& p, bool fast) const;
+
   RadialDepthParameters parameters_;
   Vec3 side_;  // direction x reference: angle pi/2
 };

@@ -54,6 +54,30 @@ Vec3 projectOntoSurface(const Sample& sample, const Vec3& p, double tMin, double
   return s.w;
 }
 
+// A few Gauss-Newton steps with backtracking (the full step, a half or a quarter), no
+// damping: the fast path for points near the surface, from a good start. Refines (t, a)
+// and returns the sample there.
+template <typename Sample>
+SurfaceSample refineOnSurface(const Sample& sample, const Vec3& p, double tMin, double tMax, double& t, double& a,
+                              int steps = 3) {
+  SurfaceSample s = sample(t, a);
+  for (int step = 0; step < steps; ++step) {
+    Eigen::Matrix<double, 3, 2> J;
+    J << s.dt, s.da;
+    Eigen::Matrix2d A = J.transpose() * J;
+    A.diagonal() += Eigen::Vector2d::Constant(1e-12 * (A.trace() + 1e-12));
+    const Eigen::Vector2d delta = A.ldlt().solve(-J.transpose() * (s.w - p));
+    bool moved = false;
+    for (double scale = 1.0; scale > 0.2 && !moved; scale *= 0.5) {
+      const double tNext = std::clamp(t + scale * delta[0], tMin, tMax), aNext = a + scale * delta[1];
+      const SurfaceSample next = sample(tNext, aNext);
+      if ((next.w - p).squaredNorm() < (s.w - p).squaredNorm()) t = tNext, a = aNext, s = next, moved = true;
+    }
+    if (!moved) break;
+  }
+  return s;
+}
+
 // The unit outward normal of a sample from its tangents, or `fallback` where they are
 // parallel (a pole); `outwardHint` is any vector pointing out of the volume there.
 inline Vec3 surfaceNormal(const SurfaceSample& s, const Vec3& outwardHint, const Vec3& fallback) {

@@ -132,3 +132,19 @@ TEST(RadialDepthVolume, AnalyticTangentsMatchFiniteDifferences) {
       EXPECT_NEAR((x.da - da).norm(), 0.0, 1e-6) << "s " << s << " a " << a;
     }
 }
+
+TEST(RadialDepthVolume, TheFastPathStaysCloseToTheExactNearestPoint) {
+  // A wavy volume (2 harmonics, 3 sections); points within 1 cm of its side.
+  RadialDepthParameters p;
+  p.length = 0.4;
+  p.harmonics = 2;
+  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
+  const RadialDepthVolume v(p);
+  double worst = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    const double s = 0.02 + 0.36 * ((i * 37) % 300) / 300.0, a = 2 * M_PI * ((i * 91) % 300) / 300.0;
+    const Vec3 q = v.surface(s, a) + 0.01 * Vec3(std::sin(3.0 * i), std::cos(5.0 * i), std::sin(7.0 * i));
+    worst = std::max(worst, std::abs(v.nearestFast(q).distance - v.nearest(q).distance));
+  }
+  EXPECT_LT(worst, 3e-4);
+}
