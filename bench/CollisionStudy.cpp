@@ -65,9 +65,21 @@ double nanosecondsPerQuery(const std::vector<Vec3>& points, Query query) {
   return ns;
 }
 
+int collisionStudy(const CollisionStudyOptions& options);
+
 }  // namespace
 
 int runCollisionStudy(const CollisionStudyOptions& options) {
+  try {
+    return collisionStudy(options);
+  } catch (const std::exception& e) {  // a body that is no standing humanoid, say
+    std::cerr << "figment-bench: " << options.body << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+namespace {
+int collisionStudy(const CollisionStudyOptions& options) {
   const std::string path = findModelFile(options.body);
   if (path.empty()) {
     std::cerr << "figment-bench: " << options.body << ": not found\n";
@@ -151,5 +163,7 @@ int runCollisionStudy(const CollisionStudyOptions& options) {
   }
   return 0;
 }
+
+}  // namespace
 
 }  // namespace figment::bench

@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   collisionCommand->add_option("--body", collision.body, "body mesh (model search path)")->capture_default_str();
   collisionCommand->add_option("--harmonics", collision.harmonics, "Fourier terms K of the radial depth volumes")
       ->capture_default_str()
-      ->check(CLI::Range(0, 64));
+      ->check(CLI::Range(0, 31));  // 64 angular samples per section
   collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")->capture_default_str();
 
   CLI11_PARSE(app, argc, argv);
