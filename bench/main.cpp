@@ -52,6 +52,9 @@ int main(int argc, char** argv) {
   collisionCommand->add_option("--harmonics", collision.harmonics, "Fourier terms K of the radial depth volumes")
       ->capture_default_str()
       ->check(CLI::Range(0, 31));  // 64 angular samples per section
+  collisionCommand->add_option("--section-spacing", collision.sectionSpacing, "m between radial depth sections")
+      ->capture_default_str()
+      ->check(CLI::Range(0.002, 0.2));
   collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")->capture_default_str();
 
   CLI11_PARSE(app, argc, argv);

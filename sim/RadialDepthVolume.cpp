@@ -169,12 +169,17 @@ RadialDepthVolume fitRadialDepth(const TriangleMesh& body, const Vec3& base, con
   for (int j = 0; j < sections; ++j) {
     const double height = std::clamp(length * j / (sections - 1), margin, length - margin);
     std::vector<double> farthest(angles, -1.0);
-    for (const Segment2& segment : planeSection(part, SectionAxis::Y, height))
-      for (const Vec2& q : {segment.a, segment.b}) {
-        const double angle = std::atan2(q.y(), q.x());
-        const int bin = static_cast<int>(std::floor((angle + M_PI) / (2 * M_PI) * angles)) % angles;
-        farthest[bin] = std::max(farthest[bin], q.norm());
-      }
+    auto take = [&](const Vec2& q) {
+      const double angle = std::atan2(q.y(), q.x());
+      const int bin = static_cast<int>(std::floor((angle + M_PI) / (2 * M_PI) * angles)) % angles;
+      farthest[bin] = std::max(farthest[bin], q.norm());
+    };
+    for (const Segment2& segment : planeSection(part, SectionAxis::Y, height)) take(segment.a), take(segment.b);
+    // The vertices between this section and its neighbours count too: the volume
+    // interpolates between sections, so each section must reach what lies next to it.
+    const double spacing = length / (sections - 1);
+    for (const Vec3& v : part.vertices)
+      if (std::abs(v.y() - length * j / (sections - 1)) < spacing) take(Vec2(v.x(), v.z()));
     // Empty bins take the nearer filled neighbour's value (a coarse section).
     for (int pass = 0; pass < angles; ++pass)
       for (int b = 0; b < angles; ++b)
