@@ -188,3 +188,22 @@ TEST(Capsule, TheFastPathStaysCloseToTheExactNearestPoint) {
   EXPECT_LT(worst, 3e-4);
   RecordProperty("worst_mm", std::to_string(1000 * worst));
 }
+
+TEST(CapsuleCollider, FarPointsAreAnsweredByTheBoundingSphereWithALowerBound) {
+  const CapsuleCollider collider(forearm());
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> offset(-0.6, 0.6);
+  int answeredBySphere = 0;
+  for (int i = 0; i < 400; ++i) {
+    const Vec3 p = Vec3(0.2, 1.1, -0.05) + Vec3(offset(random), offset(random), offset(random));
+    Contact c;
+    const bool touching = collider.contact(p, 0.003, 0.05, c);
+    const double exact = collider.capsule().nearest(p).distance;
+    EXPECT_EQ(touching, exact < 0.003) << p.transpose();
+    if (!touching) {
+      EXPECT_LE(c.distance, exact + 1e-4) << "a lower bound";
+    }
+    answeredBySphere += !touching && c.distance < exact - 1e-3;
+  }
+  EXPECT_GT(answeredBySphere, 100) << "most far points never reach the surface search";
+}
