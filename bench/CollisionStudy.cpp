@@ -37,7 +37,7 @@ void measureGaps(const Volume& volume, const std::vector<Vec3>& vertices, Row& r
     const SurfacePoint s = volume.nearest(v);
     const double gap = std::abs(s.distance);
     row.meanGap += gap, row.maxGap = std::max(row.maxGap, gap);
-    inside += s.distance <= 1e-9 || volume.contains(v);
+    inside += s.distance <= 1e-9;  // nearest() signs the distance by the inside test
   }
   row.meanGap /= static_cast<double>(vertices.size());
   row.enclosed = 100.0 * inside / static_cast<double>(vertices.size());

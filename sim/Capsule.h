@@ -48,6 +48,7 @@ class Capsule {
 
   const CapsuleParameters& parameters() const { return parameters_; }
   bool contains(const Vec3& p) const;
+  bool containsUnit(const Vec3& u) const;  // the same for a point already in unit coordinates
   // The nearest point of the surface to p (in world space), the outward normal there
   // and p's signed distance.
   SurfacePoint nearest(const Vec3& p) const;

@@ -83,8 +83,9 @@ double growToEnclose(CapsuleParameters& c, const std::vector<Vec3>& points) {
 double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight) {
   double total = 0.0;
   for (const Vec3& p : points) {
-    const double squared = (capsule.fromUnit(capsule.unitProjection(capsule.toUnit(p))) - p).squaredNorm();
-    total += capsule.contains(p) ? squared : outsideWeight * squared;
+    const Vec3 u = capsule.toUnit(p);  // once: the cost runs for every member and vertex
+    const double squared = (capsule.fromUnit(capsule.unitProjection(u)) - p).squaredNorm();
+    total += capsule.containsUnit(u) ? squared : outsideWeight * squared;
   }
   return total / static_cast<double>(points.size());
 }
