@@ -3,7 +3,7 @@
 #include "Statistics.h"
 #include "io/MeshImport.h"
 #include "sim/BodyParts.h"
-#include "sim/CapsuleFit.h"
+#include "sim/BodyVolumes.h"
 #include "sim/MeshCollider.h"
 #include "sim/SkeletonEstimate.h"
 
@@ -15,6 +15,7 @@
 #include <iostream>
 #include <limits>
 #include <random>
+#include <variant>
 
 namespace figment::bench {
 
@@ -26,21 +27,86 @@ double secondsSince(Clock::time_point start) { return std::chrono::duration<doub
 
 struct Row {
   double meanGap = 0.0, maxGap = 0.0, enclosed = 0.0, queryNs = 0.0, fitSeconds = 0.0;
+  int volumes = 0;
 };
 
-// Gap (one-sided, from the body): each vertex's distance to the volume's surface, and
-// the share of vertices inside or on it.
-template <typename Volume>
-void measureGaps(const Volume& volume, const std::vector<Vec3>& vertices, Row& row) {
+// One fitted volume ready for queries, with its bounding sphere.
+struct Volume {
+  std::variant<Capsule, RadialDepthVolume> shape;
+  Vec3 centre;
+  double radius;
+  explicit Volume(const FittedVolume& v) : shape(makeShape(v)) {
+    if (const Capsule* c = std::get_if<Capsule>(&shape)) {
+      centre = c->fromUnit(Vec3::Zero());
+      radius = 0.0;
+      for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 u(corner & 1 ? 0.5 : -0.5, corner & 2 ? 0.5 : -0.5, corner & 4 ? 0.5 : -0.5);
+        radius = std::max(radius, (c->fromUnit(u) - centre).norm());
+      }
+    } else {
+      const RadialDepthParameters& p = std::get<RadialDepthVolume>(shape).parameters();
+      double widest = 0.0;
+      for (const auto& section : p.coefficients) {
+        double r = 0.0;
+        for (double c : section) r += std::abs(c);
+        widest = std::max(widest, r);
+      }
+      centre = p.base + 0.5 * p.length * p.direction;
+      radius = std::hypot(0.5 * p.length, widest);
+    }
+  }
+  static std::variant<Capsule, RadialDepthVolume> makeShape(const FittedVolume& v) {
+    if (v.kind == FittedVolume::Kind::Capsule) return Capsule(v.capsule);
+    return RadialDepthVolume(v.radial);
+  }
+  SurfacePoint nearest(const Vec3& p) const {
+    return std::visit([&](const auto& s) { return s.nearest(p); }, shape);
+  }
+  bool contains(const Vec3& p) const {
+    return std::visit([&](const auto& s) { return s.contains(p); }, shape);
+  }
+  SurfacePoint nearestFast(const Vec3& p) const {
+    return std::visit([&](const auto& s) { return s.nearestFast(p); }, shape);
+  }
+};
+
+// Gap (one-sided, from the body): for each vertex of the part, its depth in the deepest
+// of the part's volumes that holds it (exact when one volume holds it; where volumes
+// overlap, a lower bound of its distance to the union's surface), or, when none holds
+// it, its distance to the nearest volume; and the share of vertices inside or on one.
+void measureGaps(const std::vector<Volume>& volumes, const std::vector<Vec3>& vertices, Row& row) {
   int inside = 0;
   for (const Vec3& v : vertices) {
-    const SurfacePoint s = volume.nearest(v);
-    const double gap = std::abs(s.distance);
+    double deepest = -1.0, nearestOutside = std::numeric_limits<double>::infinity();
+    for (const Volume& volume : volumes) {
+      const double d = volume.nearest(v).distance;  // signed by the inside test
+      if (d <= 1e-9) deepest = std::max(deepest, -d);
+      else nearestOutside = std::min(nearestOutside, d);
+    }
+    const double gap = deepest >= 0.0 ? deepest : nearestOutside;
+    inside += deepest >= 0.0;
     row.meanGap += gap, row.maxGap = std::max(row.maxGap, gap);
-    inside += s.distance <= 1e-9;  // nearest() signs the distance by the inside test
   }
   row.meanGap /= static_cast<double>(vertices.size());
   row.enclosed = 100.0 * inside / static_cast<double>(vertices.size());
+}
+
+// One query as a cloth node makes it against a part (the deepest contact, as
+// CompositeCollider reports it): when volumes hold the point, the fast nearest point
+// (nearestFast: point, normal, signed distance) of those only (a volume that does not
+// hold it cannot be deeper); else of each volume whose bounding sphere the point is not
+// outside (CapsuleCollider's test); the smallest signed distance is the answer.
+double queryVolumes(const std::vector<Volume>& volumes, const Vec3& p) {
+  double best = std::numeric_limits<double>::infinity();
+  bool held = false;
+  for (const Volume& v : volumes)
+    if (v.contains(p)) best = std::min(best, v.nearestFast(p).distance), held = true;
+  if (held) return best;
+  for (const Volume& v : volumes) {
+    const double outside = (p - v.centre).norm() - v.radius;
+    best = std::min(best, outside > 0.0 ? outside : v.nearestFast(p).distance);
+  }
+  return best;
 }
 
 // Points around a part, where cloth nodes meet it: its vertices moved up to 1 cm on each
@@ -94,39 +160,41 @@ int collisionStudy(const CollisionStudyOptions& options) {
   std::filesystem::create_directories(options.outDir);
   const std::string csvPath = options.outDir + "/collision.csv";
   std::ofstream csv(csvPath + ".partial");
-  csv << "part,method,mean_gap_mm,max_gap_mm,enclosed_pct,query_ns,fit_s,vertices\n";
+  csv << "part,method,mean_gap_mm,max_gap_mm,enclosed_pct,query_ns,fit_s,vertices,volumes,kind\n";
   std::vector<double> capsuleGap, radialGap, capsuleNs, radialNs, exactNs;
   for (const PartMesh& part : parts) {
     const std::vector<Vec3>& vertices = part.mesh.vertices;
     const std::vector<Vec3> points = queryPoints(vertices);
-    // Capsule: the genetic fit on at most 600 of the vertices (every k-th), enclosure on all.
-    std::vector<Vec3> sample;
-    const size_t every = std::max<size_t>(1, vertices.size() / 600);
-    for (size_t i = 0; i < vertices.size(); i += every) sample.push_back(vertices[i]);
+    // What fitCapsules and fitRadialVolumes return for this part (they loop over the
+    // parts of splitIntoParts with these same calls).
+    BodyFitOptions fitOptions;
+    fitOptions.harmonics = options.harmonics;
+    fitOptions.sectionSpacing = options.sectionSpacing;
     Row capsuleRow;
     auto start = Clock::now();
-    CapsuleFitOptions fitOptions;
-    fitOptions.enclose = false;
-    CapsuleParameters grown = fitCapsule(sample, fitOptions).parameters;
-    growToEnclose(grown, vertices);
-    const Capsule capsule(grown);
+    const std::vector<FittedVolume> capsules = fitPartCapsules(part, fitOptions);
     capsuleRow.fitSeconds = secondsSince(start);
-    measureGaps(capsule, vertices, capsuleRow);
-    // A query as a cloth node makes it: the fast path (CapsuleCollider).
-    capsuleRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return capsule.nearestFast(p).distance; });
+    const std::vector<Volume> capsuleVolumes(capsules.begin(), capsules.end());
+    capsuleRow.volumes = static_cast<int>(capsules.size());
+    measureGaps(capsuleVolumes, vertices, capsuleRow);
+    capsuleRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return queryVolumes(capsuleVolumes, p); });
 
     Row radialRow;
     start = Clock::now();
-    const RadialDepthVolume radial = fitRadialPart(part, options.harmonics, options.sectionSpacing);
+    const std::vector<FittedVolume> radial = fitPartRadial(part, capsules, fitOptions);
     radialRow.fitSeconds = secondsSince(start);
-    measureGaps(radial, vertices, radialRow);
-    radialRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return radial.nearestFast(p).distance; });
+    const std::vector<Volume> radialVolumes(radial.begin(), radial.end());
+    radialRow.volumes = static_cast<int>(radial.size());
+    const bool fellBack = radial.front().kind == FittedVolume::Kind::Capsule;
+    measureGaps(radialVolumes, vertices, radialRow);
+    radialRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return queryVolumes(radialVolumes, p); });
 
     Row exactRow;
     start = Clock::now();
     const MeshCollider exact(part.mesh);
     exactRow.fitSeconds = secondsSince(start);
     exactRow.enclosed = 100.0;
+    exactRow.volumes = 1;
     const double inf = std::numeric_limits<double>::infinity();
     exactRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) {
       Contact c;
@@ -137,24 +205,26 @@ int collisionStudy(const CollisionStudyOptions& options) {
     for (const auto& [method, row] : {std::pair<const char*, const Row&>{"capsule", capsuleRow},
                                       {"radial", radialRow}, {"exact", exactRow}}) {
       char line[256];
-      std::snprintf(line, sizeof line, "%s,%s,%.3f,%.3f,%.2f,%.0f,%.3f,%zu\n", part.name.c_str(), method,
-                    1000 * row.meanGap, 1000 * row.maxGap, row.enclosed, row.queryNs, row.fitSeconds, vertices.size());
+      const char* kind = method == std::string("radial") && fellBack ? "capsule" : method;
+      std::snprintf(line, sizeof line, "%s,%s,%.3f,%.3f,%.2f,%.0f,%.3f,%zu,%d,%s\n", part.name.c_str(), method,
+                    1000 * row.meanGap, 1000 * row.maxGap, row.enclosed, row.queryNs, row.fitSeconds, vertices.size(),
+                    row.volumes, kind);
       csv << line;
     }
-    std::printf("%-11s %5zu vertices  capsule gap %5.1f mm (max %5.1f) %4.0f ns  radial gap %5.1f mm (max %5.1f) "
-                "%5.0f ns  exact %6.0f ns\n",
-                part.name.c_str(), vertices.size(), 1000 * capsuleRow.meanGap, 1000 * capsuleRow.maxGap,
-                capsuleRow.queryNs, 1000 * radialRow.meanGap, 1000 * radialRow.maxGap, radialRow.queryNs,
-                exactRow.queryNs);
+    std::printf("%-11s %5zu vertices  capsule x%d gap %5.1f mm (max %5.1f) %4.0f ns  radial%s gap %5.1f mm (max "
+                "%5.1f) %5.0f ns  exact %6.0f ns  enclosed %.0f %% %.0f %%\n",
+                part.name.c_str(), vertices.size(), capsuleRow.volumes, 1000 * capsuleRow.meanGap,
+                1000 * capsuleRow.maxGap, capsuleRow.queryNs, fellBack ? "(capsules)" : "", 1000 * radialRow.meanGap,
+                1000 * radialRow.maxGap, radialRow.queryNs, exactRow.queryNs, capsuleRow.enclosed, radialRow.enclosed);
     capsuleGap.push_back(1000 * capsuleRow.meanGap), radialGap.push_back(1000 * radialRow.meanGap);
     capsuleNs.push_back(capsuleRow.queryNs), radialNs.push_back(radialRow.queryNs), exactNs.push_back(exactRow.queryNs);
   }
   csv.close();
   std::filesystem::rename(csvPath + ".partial", csvPath);
   std::printf("medians over parts: mean gap capsule %.1f mm, radial %.1f mm (K = %d); query capsule %.0f ns, "
-              "radial %.0f ns, exact %.0f ns\n",
+              "radial %.0f ns, exact %.0f ns; exact/capsule %.1fx, radial/capsule %.2fx\n",
               median(capsuleGap), median(radialGap), options.harmonics, median(capsuleNs), median(radialNs),
-              median(exactNs));
+              median(exactNs), median(exactNs) / median(capsuleNs), median(radialNs) / median(capsuleNs));
   std::cout << csvPath << "\n";
   if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
     const std::string png = options.outDir + "/collision.png";

@@ -3,6 +3,24 @@
 // a fitted capsule and a radial depth volume follow it, whether they enclose it, what
 // fitting costs, and what one point query costs against them and against the part's
 // own triangles (the exact BVH collider).
+//
+// What is measured, per part of splitIntoParts (sim/BodyParts.h):
+//   volumes   exactly what fitCapsules / fitRadialVolumes (sim/BodyVolumes.h) return for
+//             the part: one or more capsules; a radial volume, or the part's capsules
+//             where it falls back (kind column);
+//   gap       one-sided, from the body: for each vertex of the part, its depth in the
+//             deepest of the part's volumes that holds it (exact when one holds it; where
+//             sub-volumes overlap, a lower bound of the distance to their union's
+//             surface), else its distance to the nearest volume; mean and max over the
+//             part's vertices, by the volumes' exact nearest();
+//   enclosed  the share of the part's vertices inside one of its volumes;
+//   query     ns per point for 2000 points within 1 cm (per axis) of the part's vertices:
+//             for each of the part's volumes, a bounding-sphere test, then its fast
+//             nearest point (nearestFast: point, normal, signed distance); the exact row
+//             is MeshCollider::contact on the part's triangles (BVH closest point with an
+//             unbounded search radius and pseudo-normal sign, the same answer);
+//   fit_s     seconds to fit the part's volumes (radial: excluding the capsules it may
+//             fall back to, fitted once for the capsule row).
 
 #include <string>
 
@@ -17,7 +35,8 @@ struct CollisionStudyOptions {
 };
 
 // Writes DIR/collision.csv (part,method,mean_gap_mm,max_gap_mm,enclosed_pct,query_ns,
-// fit_s,vertices) and DIR/collision.png, prints the medians. Returns the exit code.
+// fit_s,vertices,volumes,kind) and DIR/collision.png, prints the medians and the query
+// time ratios. Returns the exit code.
 int runCollisionStudy(const CollisionStudyOptions& options);
 
 }  // namespace figment::bench

@@ -2,6 +2,7 @@
 // The drape study: how long the default scene's garments take to come to rest.
 
 #include <string>
+#include <vector>
 
 namespace figment::bench {
 
@@ -9,10 +10,14 @@ struct DrapeStudyOptions {
   std::string scene = "scenes/dress.iv";
   int repeat = 3;
   std::string outDir = "bench-out";
+  // What the garments collide with, each timed in turn: "scene" (as written), "exact"
+  // (the triangles of the scene's Mannequin body), or a volumes file (.iv, as
+  // figment-fit writes) that replaces the Mannequin's children.
+  std::vector<std::string> bodies = {"scene"};
 };
 
-// Reads the scene, re-runs every ClothEngine `repeat` times, writes DIR/drape.csv and
-// prints the medians. Returns the process exit code.
+// Reads the scene, re-runs every ClothEngine `repeat` times against each body, writes
+// DIR/drape.csv and prints the medians per body. Returns the process exit code.
 int runDrapeStudy(const DrapeStudyOptions& options);
 
 }  // namespace figment::bench

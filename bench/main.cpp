@@ -15,6 +15,10 @@ int main(int argc, char** argv) {
   drapeCommand->add_option("--scene", drape.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
   drapeCommand->add_option("--repeat", drape.repeat, "runs per garment")->capture_default_str()->check(CLI::PositiveNumber);
   drapeCommand->add_option("--out", drape.outDir, "folder for drape.csv")->capture_default_str();
+  drapeCommand->add_option("--body", drape.bodies,
+                           "what the garments collide with, each timed: scene, exact (the Mannequin's body "
+                           "triangles) or a volumes .iv file")
+      ->capture_default_str();
 
   figment::bench::StabilityStudyOptions stability;
   stability.plotScript = FIGMENT_PLOT_STABILITY;

@@ -100,8 +100,8 @@ class ClothEngine : public SoEngine {
   // Faces of the garment as indices into restPoints, each face ended by -1; faces with
   // more than three corners are split into triangles as a fan. Default [ ].
   SoMFInt32 coordIndex;
-  // What the cloth collides with: a MeshFile (its collision surface), or NULL for
-  // nothing. Default NULL.
+  // What the cloth collides with: a MeshFile (its triangles, exactly), a Mannequin (its
+  // posed collision volumes), or NULL for nothing. Default NULL.
   SoSFNode body;
   // A named fabric (sim/MaterialPresets.h: cotton, silk, denim, jersey) that gives
   // thickness, density, youngsModulus and poissonRatio; any of those four written in

@@ -2,6 +2,7 @@
 
 #include "nodes/ClothEngine.h"
 #include "nodes/FieldValues.h"
+#include "nodes/Mannequin.h"
 #include "nodes/MeshFile.h"
 #include "sim/MaterialPresets.h"
 #include "sim/MeshCollider.h"
@@ -119,9 +120,16 @@ std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body) {
   SoNode* node = body.getValue();
   if (!node) return nullptr;
   const std::string name = node->getName().getLength() ? " '" + std::string(node->getName().getString()) + "'" : "";
+  if (node->isOfType(Mannequin::getClassTypeId())) {
+    try {
+      return static_cast<Mannequin*>(node)->collider();
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(std::string("body: ") + e.what());
+    }
+  }
   if (!node->isOfType(MeshFile::getClassTypeId()))
     throw std::invalid_argument(std::string("body: ") + node->getTypeId().getName().getString() + name +
-                                " is not a collision body (use a MeshFile)");
+                                " is not a collision body (use a MeshFile or a Mannequin)");
   std::shared_ptr<const MeshCollider> collider = static_cast<MeshFile*>(node)->collider();
   if (!collider) throw std::invalid_argument("body: MeshFile" + name + " has no mesh");
   return collider;

@@ -27,7 +27,8 @@ Material materialFromFields(const ClothEngine& engine);
 // Material and run parameters from the engine's fields, validated.
 ClothParameters parametersFromFields(const ClothEngine& engine);
 
-// The collider of the node in `body`: null for NULL; a MeshFile's collider otherwise.
+// The collider of the node in `body`: null for NULL; a MeshFile's exact collider, or a
+// Mannequin's posed volumes.
 std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body);
 
 }  // namespace figment

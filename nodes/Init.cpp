@@ -1,9 +1,15 @@
 #include "nodes/Init.h"
 
+#include "nodes/CapsuleVolume.h"
 #include "nodes/ClothEngine.h"
 #include "nodes/ClothingLayer.h"
 #include "nodes/DepthSortedGroup.h"
+#include "nodes/ExactVolume.h"
+#include "nodes/Mannequin.h"
+#include "nodes/MannequinSkin.h"
 #include "nodes/MeshFile.h"
+#include "nodes/RadialDepthVolume.h"
+#include "nodes/SkeletonJoints.h"
 #include "nodes/StencilSeparator.h"
 
 #include <Inventor/SoDB.h>
@@ -19,6 +25,12 @@ void init() {
   ClothEngine::initClass();
   DepthSortedGroup::initClass();
   StencilSeparator::initClass();
+  SkeletonJoints::initClass();
+  CapsuleVolume::initClass();
+  RadialDepthVolume::initClass();
+  ExactVolume::initClass();
+  Mannequin::initClass();
+  MannequinSkin::initClass();
 }
 
 }  // namespace figment

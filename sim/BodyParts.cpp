@@ -1,16 +1,115 @@
 #include "BodyParts.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <numeric>
 
 namespace figment {
 
+namespace {
+
+// Vertex indices welded by position (texture seams split vertices that touch).
+std::vector<int> weldedIndices(const std::vector<Vec3>& vertices) {
+  std::map<std::array<long long, 3>, int> first;
+  std::vector<int> welded(vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    const std::array<long long, 3> key = {std::llround(vertices[v].x() * 1e6), std::llround(vertices[v].y() * 1e6),
+                                          std::llround(vertices[v].z() * 1e6)};
+    welded[v] = first.try_emplace(key, static_cast<int>(v)).first->second;
+  }
+  return welded;
+}
+
+// Triangles sharing a (welded) vertex with each triangle.
+std::vector<std::vector<int>> triangleNeighbours(const TriangleMesh& body) {
+  const std::vector<int> welded = weldedIndices(body.vertices);
+  std::vector<std::vector<int>> around(body.vertices.size());
+  for (size_t t = 0; t < body.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) around[welded[body.triangles[t][k]]].push_back(static_cast<int>(t));
+  std::vector<std::vector<int>> neighbours(body.triangles.size());
+  for (size_t t = 0; t < body.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k)
+      for (int u : around[welded[body.triangles[t][k]]])
+        if (u != static_cast<int>(t)) neighbours[t].push_back(u);
+    std::sort(neighbours[t].begin(), neighbours[t].end());
+    neighbours[t].erase(std::unique(neighbours[t].begin(), neighbours[t].end()), neighbours[t].end());
+  }
+  return neighbours;
+}
+
+}  // namespace
+
+std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton) {
+  const size_t n = body.triangles.size(), parts = skeleton.parts.size();
+  std::vector<int> owner(n, 0);
+  for (size_t t = 0; t < n; ++t) {
+    const Vec3 &a = body.vertices[body.triangles[t][0]], &b = body.vertices[body.triangles[t][1]],
+               &c = body.vertices[body.triangles[t][2]];
+    const Vec3 centroid = (a + b + c) / 3.0, normal = (b - a).cross(c - a);
+    double best = std::numeric_limits<double>::infinity(), bestFacing = best;
+    int nearest = 0, facing = -1;
+    for (size_t k = 0; k < parts; ++k) {
+      const Vec3& from = skeleton.joints[skeleton.parts[k].from].position;
+      const Vec3 bone = skeleton.joints[skeleton.parts[k].to].position - from;
+      const double f = std::clamp((centroid - from).dot(bone) / std::max(bone.squaredNorm(), 1e-18), 0.0, 1.0);
+      const Vec3 out = centroid - (from + f * bone);
+      const double d = out.squaredNorm();
+      if (d < best) best = d, nearest = static_cast<int>(k);
+      if (normal.dot(out) >= 0.0 && d < bestFacing) bestFacing = d, facing = static_cast<int>(k);
+    }
+    owner[t] = facing >= 0 ? facing : nearest;
+  }
+  // Islands: every piece of a part but its largest joins its neighbours' part.
+  const std::vector<std::vector<int>> neighbours = triangleNeighbours(body);
+  for (int pass = 0; pass < 10; ++pass) {
+    std::vector<int> piece(n, -1), pieceSize;
+    for (size_t t = 0; t < n; ++t) {
+      if (piece[t] >= 0) continue;
+      const int id = static_cast<int>(pieceSize.size());
+      std::vector<int> stack = {static_cast<int>(t)};
+      piece[t] = id;
+      int size = 0;
+      while (!stack.empty()) {
+        const int u = stack.back();
+        stack.pop_back();
+        ++size;
+        for (int w : neighbours[u])
+          if (piece[w] < 0 && owner[w] == owner[u]) piece[w] = id, stack.push_back(w);
+      }
+      pieceSize.push_back(size);
+    }
+    std::vector<int> largest(parts, -1);
+    for (size_t t = 0; t < n; ++t) {
+      int& l = largest[owner[t]];
+      if (l < 0 || pieceSize[piece[t]] > pieceSize[l]) l = piece[t];
+    }
+    // Votes of each small piece's neighbours.
+    std::map<int, std::vector<int>> votes;
+    for (size_t t = 0; t < n; ++t) {
+      if (piece[t] == largest[owner[t]]) continue;
+      std::vector<int>& v = votes.try_emplace(piece[t], std::vector<int>(parts, 0)).first->second;
+      for (int w : neighbours[t])
+        if (piece[w] != piece[t]) ++v[owner[w]];
+    }
+    if (votes.empty()) break;
+    std::map<int, int> joins;
+    for (const auto& [id, v] : votes) {
+      const int to = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
+      if (v[to] > 0) joins[id] = to;
+    }
+    if (joins.empty()) break;
+    for (size_t t = 0; t < n; ++t)
+      if (const auto j = joins.find(piece[t]); j != joins.end() && piece[t] != largest[owner[t]]) owner[t] = j->second;
+  }
+  return owner;
+}
+
 std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton) {
-  std::vector<Vec3> centroids;
-  for (const Triangle& t : body.triangles)
-    centroids.push_back((body.vertices[t[0]] + body.vertices[t[1]] + body.vertices[t[2]]) / 3.0);
-  const std::vector<int> owner = assignParts(skeleton, centroids);
+  const std::vector<int> owner = assignTriangles(body, skeleton);
   std::vector<PartMesh> parts;
   for (const BodyPart& p : skeleton.parts)
     parts.push_back({p.name, {}, skeleton.joints[p.from].position, skeleton.joints[p.to].position});
@@ -29,20 +128,63 @@ std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& s
   return parts;
 }
 
-RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing) {
-  const Vec3 direction = (part.to - part.from).normalized();
-  double low = std::numeric_limits<double>::max(), high = -low, farthest = 0.0;
+namespace {
+
+// A radial volume on the line through `origin` along `direction`, spanning the part.
+RadialDepthVolume fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin,
+                           const Vec3& direction, int harmonics, double sectionSpacing) {
+  double low = std::numeric_limits<double>::max(), high = -low;
   for (const Vec3& v : part.mesh.vertices) {
-    const double s = (v - part.from).dot(direction);
+    const double s = (v - origin).dot(direction);
     low = std::min(low, s), high = std::max(high, s);
-    farthest = std::max(farthest, (v - part.from - s * direction).norm());
   }
   // A hair beyond the extreme vertices, so the caps enclose them.
   const double margin = 1e-4;
   const double length = high - low + 2 * margin;
   const int sections = std::max(2, static_cast<int>(std::ceil(length / sectionSpacing)) + 1);
-  return fitRadialDepth(part.mesh, part.from + (low - margin) * direction, direction, length, farthest + 1.0, sections,
-                        harmonics);
+  return fitRadialDepthToPoints(points, part.mesh.vertices, origin + (low - margin) * direction, direction, length,
+                                sections, harmonics);
+}
+
+}  // namespace
+
+double radialGapEstimate(const RadialDepthVolume& volume, const std::vector<Vec3>& vertices) {
+  double total = 0.0;
+  for (const Vec3& v : vertices) {
+    double s, a, rho;
+    volume.toAxis(v, s, a, rho);
+    const double ends = std::min(s, volume.parameters().length - s);
+    total += std::max(0.0, std::min(volume.radius(s, a) - rho, ends));
+  }
+  return total / static_cast<double>(vertices.size());
+}
+
+RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing) {
+  std::vector<Vec3> points = part.mesh.vertices;
+  for (const Triangle& t : part.mesh.triangles)
+    points.push_back((part.mesh.vertices[t[0]] + part.mesh.vertices[t[1]] + part.mesh.vertices[t[2]]) / 3.0);
+  const Vec3 bone = (part.to - part.from).normalized();
+  // Candidates: the bone; the bone's direction through the part's centroid; the part's
+  // principal axis nearest the bone's direction, through its centroid.
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& p : points) centroid += p;
+  centroid /= static_cast<double>(points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for (const Vec3& p : points) covariance += (p - centroid) * (p - centroid).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
+  Vec3 principal = eigen.eigenvectors().col(2);
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(eigen.eigenvectors().col(k).dot(bone)) > std::abs(principal.dot(bone))) principal = eigen.eigenvectors().col(k);
+  if (principal.dot(bone) < 0.0) principal = -principal;
+  const std::vector<std::pair<Vec3, Vec3>> axes = {{part.from, bone}, {centroid, bone}, {centroid, principal}};
+  RadialDepthVolume best = fitAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);
+  double bestGap = radialGapEstimate(best, part.mesh.vertices);
+  for (size_t k = 1; k < axes.size(); ++k) {
+    RadialDepthVolume candidate = fitAlong(part, points, axes[k].first, axes[k].second, harmonics, sectionSpacing);
+    const double gap = radialGapEstimate(candidate, part.mesh.vertices);
+    if (gap < bestGap) best = std::move(candidate), bestGap = gap;
+  }
+  return best;
 }
 
 }  // namespace figment

@@ -1,6 +1,15 @@
 #pragma once
 // A body mesh cut into the parts of its skeleton (sim/Skeleton.h), and a radial depth
 // volume fitted along each part's bone: the inputs of the collision volumes (§3).
+//
+// The cut, per triangle (by its centroid c and outward face normal n):
+//   1. the nearest bone among those the triangle faces away from, n . (c - q) >= 0 with
+//      q the bone's nearest point to c (a torso flank facing the arm is not the arm's,
+//      an inner thigh facing the other leg is not that leg's); the nearest bone when it
+//      faces none;
+//   2. each part keeps the largest connected piece of its triangles (connected through
+//      shared vertex positions); every smaller piece joins the part that most of its
+//      neighbouring triangles belong to (repeated until nothing moves).
 
 #include "RadialDepthVolume.h"
 #include "Skeleton.h"
@@ -12,14 +21,24 @@ namespace figment {
 
 struct PartMesh {
   std::string name;
-  TriangleMesh mesh;  // the body's triangles whose centroid is nearest this part's bone
+  TriangleMesh mesh;  // the body's triangles assigned to this part (see above)
   Vec3 from, to;      // the bone
 };
 
 std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton);
 
-// A radial depth volume along the part's bone, lengthened to span every vertex of the
-// part, with sections about `sectionSpacing` (m) apart and K = `harmonics`.
+// The part index (into skeleton.parts) of each triangle of `body`, as described above.
+std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton);
+
+// A radial depth volume on the best of three axes (the bone; the bone's direction
+// through the part's centroid; the part's principal axis nearest the bone's direction,
+// through the centroid), by radialGapEstimate, each lengthened to span every vertex of
+// the part, with sections about `sectionSpacing` (m) apart and K = `harmonics`
+// (fitRadialDepthToPoints on the part's vertices and triangle centroids).
 RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing);
+
+// A cheap estimate of the mean gap from `vertices` to `volume`: the radial shortfall
+// r(s, a) - rho of each, at most its distance to the nearer cap (m).
+double radialGapEstimate(const RadialDepthVolume& volume, const std::vector<Vec3>& vertices);
 
 }  // namespace figment

@@ -41,6 +41,7 @@ Capsule::Capsule(const CapsuleParameters& parameters) : parameters_(parameters) 
   parameters_.validate();
   const Vec3 axis(std::cos(parameters_.phi), 0.0, std::sin(parameters_.phi));
   rotation_ = Eigen::AngleAxisd(parameters_.theta, axis).toRotationMatrix();
+  inverseRotation_ = rotation_.transpose();
   bottom_ = -0.5 + 0.5 * parameters_.r1;
   top_ = 0.5 - 0.5 * parameters_.r2;
 }
@@ -68,7 +69,7 @@ Vec3 Capsule::fromUnit(const Vec3& u) const {
 
 Vec3 Capsule::toUnit(const Vec3& p) const {
   const CapsuleParameters& c = parameters_;
-  const Vec3 q = rotation_.transpose() * (p - Vec3(c.ox, c.oy, c.oz));
+  const Vec3 q = inverseRotation_ * (p - Vec3(c.ox, c.oy, c.oz));
   const double y = q.y() / c.y;
   return {q.x() / c.x / (1.0 + c.tx * y), y, q.z() / c.z / (1.0 + c.tz * y)};
 }
@@ -182,16 +183,19 @@ SurfacePoint Capsule::nearest(const Vec3& p) const {
 
 SurfacePoint Capsule::nearestFast(const Vec3& p) const {
   double t, a;
-  project(toUnit(p), t, a);
-  const SurfaceSample s = refineOnSurface([this](double ti, double ai) { return sample(ti, ai); }, p, 0.0, 3.0, t, a);
+  const Vec3 u = toUnit(p);  // once: the inside test and the starting guess share it
+  project(u, t, a);
+  const SurfaceSample s =
+      refineOnSurface([this](double ti, double ai) { return sample(ti, ai); }, p, 0.0, 3.0, t, a, 2);
   SurfacePoint out;
   out.point = s.w;
-  const bool inside = contains(p);
+  const bool inside = containsUnit(u);
   const double gap = (p - s.w).norm();
   out.distance = inside ? -gap : gap;
-  const Vec3 axis = rotation_ * Vec3::UnitY();
+  const Vec3 axis = rotation_.col(1);
   out.normal = !inside && gap > 1e-6 ? Vec3((p - s.w) / gap)
-                                     : surfaceNormal(s, s.w - fromUnit(Vec3::Zero()), t < 1.5 ? -axis : axis);
+                                     : surfaceNormal(s, s.w - Vec3(parameters_.ox, parameters_.oy, parameters_.oz),
+                                                     t < 1.5 ? -axis : axis);
   return out;
 }
 

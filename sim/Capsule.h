@@ -80,6 +80,7 @@ class Capsule {
 
   CapsuleParameters parameters_;
   Eigen::Matrix3d rotation_;  // tilt
+  Eigen::Matrix3d inverseRotation_;
   double bottom_, top_;       // unit-space y of the cylinder's ends
 };
 

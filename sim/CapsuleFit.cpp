@@ -90,6 +90,37 @@ double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, doub
   return total / static_cast<double>(points.size());
 }
 
+double unitGauge(const Capsule& capsule, const Vec3& u) {
+  const CapsuleParameters& c = capsule.parameters();
+  const double rho = std::sqrt(u.x() * u.x() + u.z() * u.z());
+  const double y = std::abs(u.y());
+  const double h = 0.5 * (u.y() >= 0.0 ? c.r2 : c.r1), top = 0.5 - h;  // the end's half-height, its start
+  const double cylinder = 2.0 * rho;
+  if (y <= top * cylinder) return cylinder;
+  // On the end: (rho / s)^2 / 0.25 + ((y / s - top) / h)^2 = 1, the smallest positive s.
+  if (h <= 0.0) return y / top;
+  const double a = top * top - h * h, b = -2.0 * y * top, k = y * y + 4.0 * h * h * rho * rho;
+  if (std::abs(a) < 1e-12) return k / (-b);
+  const double root = std::sqrt(std::max(0.0, b * b - 4.0 * a * k));
+  const double s1 = (-b - root) / (2.0 * a), s2 = (-b + root) / (2.0 * a);
+  const double low = std::min(s1, s2), high = std::max(s1, s2);
+  return low > 0.0 ? low : high;
+}
+
+double enclosedCapsuleCost(const CapsuleParameters& parameters, const std::vector<Vec3>& points) {
+  // The growth in fixed-point steps: grown by the largest gauge, the taper moves the
+  // points' unit coordinates a little, so measure again (three passes settle it).
+  CapsuleParameters grown = parameters;
+  for (int pass = 0; pass < 3; ++pass) {
+    const Capsule capsule(grown);
+    double grow = 0.0;
+    for (const Vec3& p : points) grow = std::max(grow, unitGauge(capsule, capsule.toUnit(p)));
+    if (!(grow > 0.0) || std::abs(grow - 1.0) < 1e-3) break;
+    grown.x *= grow, grown.y *= grow, grown.z *= grow;
+  }
+  return capsuleCost(Capsule(grown), points, 1.0);
+}
+
 CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options) {
   if (points.size() < 4) throw std::invalid_argument("a capsule needs at least 4 points to fit");
   const CapsuleParameters start = startingCapsule(points);
@@ -102,7 +133,8 @@ CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& 
     double cost;
   };
   auto costOf = [&](const std::array<double, 12>& v) {
-    return capsuleCost(Capsule(CapsuleParameters::fromValues(v)), points, options.outsideWeight);
+    const CapsuleParameters c = CapsuleParameters::fromValues(v);
+    return options.costAfterEnclosure ? enclosedCapsuleCost(c, points) : capsuleCost(Capsule(c), points, options.outsideWeight);
   };
   std::mt19937 random(options.seed);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);

@@ -37,6 +37,10 @@ struct CapsuleFitOptions {
   double outsideWeight = 10.0;
   uint32_t seed = 1;
   bool enclose = true;  // grow the result until every vertex is inside
+  // The cost of a member: the cost above of the member grown about its centre until it
+  // encloses every point (enclosedCapsuleCost: the bias to enclosure taken to its end,
+  // since enclosure is forced afterwards anyway); false: the cost above as it stands.
+  bool costAfterEnclosure = true;
 };
 
 struct CapsuleFit {
@@ -54,5 +58,15 @@ double growToEnclose(CapsuleParameters& capsule, const std::vector<Vec3>& points
 
 // The cost above of `capsule` for `points` (lower is better).
 double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight);
+
+// The factor g by which the untapered unit capsule must grow about its centre to reach
+// the unit-space point u (u on its surface: 1; inside: < 1), in closed form: the side
+// where |u.y| <= g (1/2 - h), else the end's half-ellipsoid of half-height h.
+double unitGauge(const Capsule& capsule, const Vec3& u);
+
+// capsuleCost (outsideWeight 1) of `parameters` grown about the centre by the largest
+// unitGauge of the points: the mean squared gap once (nearly: the taper is ignored in
+// the growth) every point is enclosed.
+double enclosedCapsuleCost(const CapsuleParameters& parameters, const std::vector<Vec3>& points);
 
 }  // namespace figment

@@ -38,10 +38,14 @@ double RadialDepthVolume::radius(double s, double a) const {
   const double x = std::clamp(s / parameters_.length, 0.0, 1.0) * static_cast<double>(c.size() - 1);
   const size_t j = std::min(static_cast<size_t>(x), c.size() - 2);
   const double f = x - static_cast<double>(j);
-  double r = 0.0;
-  for (int k = 0; k <= parameters_.harmonics; ++k) {
-    auto at = [&](size_t i) { return (1.0 - f) * c[j][i] + f * c[j + 1][i]; };
-    r += k == 0 ? at(0) : at(2 * k - 1) * std::cos(k * a) + at(2 * k) * std::sin(k * a);
+  const std::vector<double>&c0 = c[j], &c1 = c[j + 1];
+  // cos k a, sin k a by the angle-addition recurrence: one cos and one sin in all.
+  const double ca = std::cos(a), sa = std::sin(a);
+  double ck = 1.0, sk = 0.0, r = (1.0 - f) * c0[0] + f * c1[0];
+  for (int k = 1; k <= parameters_.harmonics; ++k) {
+    const double next = ck * ca - sk * sa;
+    sk = sk * ca + ck * sa, ck = next;
+    r += ((1.0 - f) * c0[2 * k - 1] + f * c1[2 * k - 1]) * ck + ((1.0 - f) * c0[2 * k] + f * c1[2 * k]) * sk;
   }
   return std::max(r, 0.0);
 }
@@ -54,12 +58,15 @@ SurfaceSample RadialDepthVolume::sample(double s, double a) const {
   const size_t j = std::min(static_cast<size_t>(x), c.size() - 2);
   const double f = x - static_cast<double>(j);
   double r0 = 0.0, r1 = 0.0, ra = 0.0;  // r at sections j and j + 1; dr/da interpolated
+  const double cosA = std::cos(a), sinA = std::sin(a);
+  double ck = 1.0, sk = 0.0;
   for (int k = 0; k <= parameters_.harmonics; ++k) {
     if (k == 0) {
       r0 += c[j][0], r1 += c[j + 1][0];
       continue;
     }
-    const double ck = std::cos(k * a), sk = std::sin(k * a);
+    const double next = ck * cosA - sk * sinA;
+    sk = sk * cosA + ck * sinA, ck = next;
     r0 += c[j][2 * k - 1] * ck + c[j][2 * k] * sk;
     r1 += c[j + 1][2 * k - 1] * ck + c[j + 1][2 * k] * sk;
     ra += k * ((1.0 - f) * (c[j][2 * k] * ck - c[j][2 * k - 1] * sk) + f * (c[j + 1][2 * k] * ck - c[j + 1][2 * k - 1] * sk));
@@ -67,8 +74,8 @@ SurfaceSample RadialDepthVolume::sample(double s, double a) const {
   const double r = (1.0 - f) * r0 + f * r1;
   const bool clamped = r < 0.0;  // radius() clamps at 0: a point on the axis
   const double rs = clamped ? 0.0 : (r1 - r0) / spacing;
-  const Vec3 radial = std::cos(a) * parameters_.reference + std::sin(a) * side_;
-  const Vec3 turning = -std::sin(a) * parameters_.reference + std::cos(a) * side_;
+  const Vec3 radial = cosA * parameters_.reference + sinA * side_;
+  const Vec3 turning = -sinA * parameters_.reference + cosA * side_;
   const double radiusHere = std::max(r, 0.0);
   return {parameters_.base + s * parameters_.direction + radiusHere * radial,
           parameters_.direction + rs * radial, (clamped ? 0.0 : ra) * radial + radiusHere * turning};
@@ -215,6 +222,128 @@ RadialDepthVolume fitRadialDepth(const TriangleMesh& body, const Vec3& base, con
     raise[j + 1] = std::max(raise[j + 1], shortfall * 1.0001);
   }
   for (int j = 0; j < sections; ++j) p.coefficients[j][0] += raise[j];
+  return RadialDepthVolume(p);
+}
+
+}  // namespace figment
+
+namespace figment {
+
+namespace {
+
+// Grows the constant terms of `p` until every point of `enclose` on the axis is inside.
+void encloseBySection(RadialDepthParameters& p, const std::vector<Vec3>& enclose) {
+  const int sections = static_cast<int>(p.coefficients.size());
+  for (int pass = 0; pass < 3; ++pass) {
+    const RadialDepthVolume fitted(p);
+    std::vector<double> raise(sections, 0.0);
+    bool any = false;
+    for (const Vec3& v : enclose) {
+      double s, a, rho;
+      fitted.toAxis(v, s, a, rho);
+      if (s < 0.0 || s > p.length) continue;
+      const double shortfall = rho - fitted.radius(s, a);
+      if (shortfall <= 0.0) continue;
+      const double x = s / p.length * (sections - 1);
+      const int j = std::min(static_cast<int>(x), sections - 2);
+      raise[j] = std::max(raise[j], shortfall * 1.0001 + 1e-9);
+      raise[j + 1] = std::max(raise[j + 1], shortfall * 1.0001 + 1e-9);
+      any = true;
+    }
+    if (!any) return;
+    for (int j = 0; j < sections; ++j) p.coefficients[j][0] += raise[j];
+  }
+}
+
+}  // namespace
+
+RadialDepthVolume fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose,
+                                         const Vec3& base, const Vec3& direction, double length, int sections,
+                                         int harmonics, double outsideWeight) {
+  if (sections < 2) throw std::invalid_argument("sections = " + std::to_string(sections) + " must be >= 2");
+  if (points.empty()) throw std::invalid_argument("no points to fit");
+  RadialDepthParameters p;
+  p.base = base;
+  p.direction = direction.normalized();
+  const Vec3 helper = std::abs(p.direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitZ();
+  p.reference = (helper - helper.dot(p.direction) * p.direction).normalized();
+  p.length = length;
+  p.harmonics = harmonics;
+  const Vec3 side = p.direction.cross(p.reference);
+  const int terms = 2 * harmonics + 1, unknowns = sections * terms;
+
+  // Each point's row: its section pair j, j + 1, the interpolation weight and the basis.
+  struct Row {
+    int j;
+    double f, rho;
+    std::vector<double> basis;
+  };
+  std::vector<Row> rows;
+  rows.reserve(points.size());
+  for (const Vec3& v : points) {
+    const Vec3 d = v - base;
+    const double s = std::clamp(d.dot(p.direction), 0.0, length);
+    const Vec3 across = d - d.dot(p.direction) * p.direction;
+    const double a = std::atan2(across.dot(side), across.dot(p.reference));
+    const double x = s / length * (sections - 1);
+    Row r{std::min(static_cast<int>(x), sections - 2), 0.0, across.norm(), std::vector<double>(terms)};
+    r.f = x - r.j;
+    r.basis[0] = 1.0;
+    for (int k = 1; k <= harmonics; ++k) r.basis[2 * k - 1] = std::cos(k * a), r.basis[2 * k] = std::sin(k * a);
+    rows.push_back(std::move(r));
+  }
+  // Smoothness: a small multiple of the data's weight.
+  Eigen::MatrixXd penalty = Eigen::MatrixXd::Zero(unknowns, unknowns);
+  const double scale = 1e-3 * static_cast<double>(points.size()) / sections;
+  for (int j = 0; j < sections; ++j)
+    for (int k = 1; k <= harmonics; ++k)
+      for (int i : {2 * k - 1, 2 * k}) penalty(j * terms + i, j * terms + i) += scale * std::pow(k, 4) * 1e-2;
+  for (int j = 1; j + 1 < sections; ++j)
+    for (int i = 0; i < terms; ++i) {
+      const int c[3] = {(j - 1) * terms + i, j * terms + i, (j + 1) * terms + i};
+      const double w[3] = {1.0, -2.0, 1.0};
+      for (int m = 0; m < 3; ++m)
+        for (int n = 0; n < 3; ++n) penalty(c[m], c[n]) += scale * w[m] * w[n];
+    }
+  std::vector<double> weight(rows.size(), 1.0);
+  Eigen::VectorXd solution = Eigen::VectorXd::Zero(unknowns);
+  for (int iteration = 0; iteration < 12; ++iteration) {
+    Eigen::MatrixXd normal = penalty;
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
+    for (size_t n = 0; n < rows.size(); ++n) {
+      const Row& r = rows[n];
+      const double w = weight[n];
+      for (int side0 = 0; side0 < 2; ++side0) {
+        const double f0 = side0 ? r.f : 1.0 - r.f;
+        const int o0 = (r.j + side0) * terms;
+        for (int i = 0; i < terms; ++i) {
+          const double bi = w * f0 * r.basis[i];
+          rhs[o0 + i] += bi * r.rho;
+          for (int side1 = 0; side1 < 2; ++side1) {
+            const double f1 = side1 ? r.f : 1.0 - r.f;
+            const int o1 = (r.j + side1) * terms;
+            for (int m = 0; m < terms; ++m) normal(o0 + i, o1 + m) += bi * f1 * r.basis[m];
+          }
+        }
+      }
+    }
+    solution = normal.ldlt().solve(rhs);
+    bool changed = false;
+    for (size_t n = 0; n < rows.size(); ++n) {
+      const Row& r = rows[n];
+      double value = 0.0;
+      for (int i = 0; i < terms; ++i)
+        value += ((1.0 - r.f) * solution[r.j * terms + i] + r.f * solution[(r.j + 1) * terms + i]) * r.basis[i];
+      const double w = value < r.rho ? outsideWeight : 1.0;
+      changed |= w != weight[n];
+      weight[n] = w;
+    }
+    if (!changed) break;
+  }
+  p.coefficients.assign(sections, std::vector<double>(terms));
+  for (int j = 0; j < sections; ++j)
+    for (int i = 0; i < terms; ++i) p.coefficients[j][i] = solution[j * terms + i];
+  encloseBySection(p, enclose);
   return RadialDepthVolume(p);
 }
 

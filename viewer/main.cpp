@@ -2,11 +2,14 @@
 //
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]
 //                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
+//                [--show-volumes]
 //
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
 // exit status (2: bad command line, 1: anything else); no image is written then.
 
 #include "nodes/ClothEngine.h"
+#include "nodes/Mannequin.h"
+#include "nodes/SceneSearch.h"
 #include "viewer/CoinMessages.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
@@ -17,6 +20,7 @@
 #include "viewer/ViewOptions.h"
 
 #include <CLI/CLI.hpp>
+#include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <chrono>
@@ -37,6 +41,7 @@ struct Options {
   std::string stats;
   bool keepStencilFields = false;
   bool depthBufferOnly = false;
+  bool showVolumes = false;
 };
 
 int fail(const std::string& where, const std::string& message, int status = 1) {
@@ -65,6 +70,12 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
   std::string error;
   SoSeparator* scene = readSceneFile(options.scene, error);
   if (!scene) return fail(options.scene, error);
+  // Before anything simulates: a Mannequin's fields feed the engines that use it.
+  if (options.showVolumes) {
+    const SoPathList mannequins = figment::findAll(scene, Mannequin::getClassTypeId());
+    for (int i = 0; i < mannequins.getLength(); ++i)
+      static_cast<Mannequin*>(mannequins[i]->getTail())->showVolumes = TRUE;
+  }
 
   const std::vector<ClothEngine*> engines = figment::findClothEngines(scene);
   ClothEngine::setProgressCallback(reportProgress);
@@ -118,6 +129,8 @@ int main(int argc, char** argv) {
   app.add_flag("--keep-stencil-fields", options.keepStencilFields,
                "Render with the scene's StencilSeparator.writeStencil and ClothingLayer.masked values, "
                "not those the stencil rule sets for the camera");
+  app.add_flag("--show-volumes", options.showVolumes,
+               "Draw every Mannequin's collision volumes as wireframes over the body");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -85,3 +85,21 @@ TEST(CapsuleFit, TheSameSeedRepeatsAFitAndAnotherChangesIt) {
 TEST(CapsuleFit, TooFewPointsAreRefused) {
   EXPECT_THROW(fitCapsule({Vec3::Zero(), Vec3::UnitX()}), std::invalid_argument);
 }
+
+TEST(CapsuleFit, TheGaugeAgreesWithTheInsideTest) {
+  // unitGauge(u) <= 1 exactly where the unit capsule holds u, for a tapered, tilted,
+  // unequally rounded capsule; and grown by the gauge a point lies on the surface.
+  CapsuleParameters c = thigh();
+  c.r1 = 0.2, c.r2 = 0.9;
+  const Capsule capsule(c);
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> offset(-0.4, 0.4);
+  for (int i = 0; i < 20000; ++i) {
+    const Vec3 u = capsule.toUnit(Vec3(c.ox, c.oy, c.oz) + Vec3(offset(random), offset(random), offset(random)));
+    const double g = unitGauge(capsule, u);
+    if (std::abs(g - 1.0) > 1e-9) EXPECT_EQ(g <= 1.0, capsule.containsUnit(u)) << u.transpose() << " g " << g;
+  }
+  const Vec3 u(0.3, 0.45, -0.2);
+  const Vec3 onSurface = u / unitGauge(capsule, u);
+  EXPECT_NEAR((capsule.unitProjection(onSurface) - onSurface).norm(), 0.0, 1e-9);
+}

@@ -1,0 +1,76 @@
+#include "nodes/BodyVolume.h"
+
+#include <Inventor/SbBox3f.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/bundles/SoMaterialBundle.h>
+#include <Inventor/elements/SoGLLazyElement.h>
+#include <Inventor/elements/SoLightModelElement.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/misc/SoState.h>
+#include <Inventor/SoPrimitiveVertex.h>
+
+#include <GL/gl.h>
+
+#include <stdexcept>
+
+SO_NODE_ABSTRACT_SOURCE(BodyVolume);
+
+void BodyVolume::initClass() {
+  if (classTypeId != SoType::badType()) return;
+  SO_NODE_INIT_ABSTRACT_CLASS(BodyVolume, SoShape, "Shape");
+}
+
+BodyVolume::BodyVolume() {
+  SO_NODE_CONSTRUCTOR(BodyVolume);
+  SO_NODE_ADD_FIELD(part, (""));
+}
+
+BodyVolume::~BodyVolume() = default;
+
+std::string BodyVolume::label() const {
+  std::string text = getTypeId().getName().getString();
+  if (getName().getLength() > 0) text += " '" + std::string(getName().getString()) + "'";
+  return text;
+}
+
+std::vector<BodyVolume::Polyline> BodyVolume::safeWireframe() const {
+  try {
+    return wireframe();
+  } catch (const std::exception& e) {
+    SoDebugError::postWarning("BodyVolume", "%s: %s", label().c_str(), e.what());
+    return {};
+  }
+}
+
+void BodyVolume::GLRender(SoGLRenderAction* action) {
+  if (!shouldGLRender(action)) return;
+  SoState* state = action->getState();
+  state->push();
+  // Lines in the current colour: no lighting (they have no normals).
+  SoLightModelElement::set(state, this, SoLightModelElement::BASE_COLOR);
+  SoMaterialBundle material(action);
+  material.sendFirst();
+  for (const Polyline& line : safeWireframe()) {
+    glBegin(GL_LINE_STRIP);
+    for (const Eigen::Vector3f& p : line) glVertex3f(p.x(), p.y(), p.z());
+    glEnd();
+  }
+  state->pop();
+}
+
+void BodyVolume::generatePrimitives(SoAction* action) {
+  SoPrimitiveVertex a, b;
+  for (const Polyline& line : safeWireframe())
+    for (size_t i = 1; i < line.size(); ++i) {
+      a.setPoint(SbVec3f(line[i - 1].x(), line[i - 1].y(), line[i - 1].z()));
+      b.setPoint(SbVec3f(line[i].x(), line[i].y(), line[i].z()));
+      invokeLineSegmentCallbacks(action, &a, &b);
+    }
+}
+
+void BodyVolume::computeBBox(SoAction*, SbBox3f& box, SbVec3f& center) {
+  box.makeEmpty();
+  for (const Polyline& line : safeWireframe())
+    for (const Eigen::Vector3f& p : line) box.extendBy(SbVec3f(p.x(), p.y(), p.z()));
+  if (!box.isEmpty()) center = box.getCenter();
+}

@@ -1,0 +1,120 @@
+#include "BodyVolumes.h"
+
+#include "CapsuleFit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace figment {
+
+namespace {
+
+constexpr double kSplitGap = 0.008;  // m: a capsule with a larger mean gap is split
+constexpr int kMaxCapsules = 4;      // per part
+
+double meanGap(const Capsule& capsule, const std::vector<Vec3>& points) {
+  double total = 0.0;
+  for (const Vec3& p : points) total += std::abs(capsule.nearestFast(p).distance);
+  return total / static_cast<double>(points.size());
+}
+
+CapsuleParameters fitEnclosing(const std::vector<Vec3>& points, uint64_t seed) {
+  std::vector<Vec3> sample;
+  const size_t every = std::max<size_t>(1, (points.size() + 299) / 300);
+  for (size_t i = 0; i < points.size(); i += every) sample.push_back(points[i]);
+  CapsuleFitOptions options;
+  options.seed = static_cast<uint32_t>(seed);
+  options.generations = 300;
+  options.enclose = false;
+  CapsuleParameters c = fitCapsule(sample, options).parameters;
+  growToEnclose(c, points);
+  return c;
+}
+
+// Capsules for `points`, split along the capsule's axis while that helps; appends them
+// and returns the summed gap over the points.
+double fitPieces(const std::vector<Vec3>& points, uint64_t seed, int budget, std::vector<CapsuleParameters>& out) {
+  const CapsuleParameters whole = fitEnclosing(points, seed);
+  const Capsule capsule(whole);
+  const double gap = meanGap(capsule, points);
+  if (gap <= kSplitGap || budget < 2 || points.size() < 40) {
+    out.push_back(whole);
+    return gap * static_cast<double>(points.size());
+  }
+  std::vector<double> along(points.size());
+  for (size_t i = 0; i < points.size(); ++i) along[i] = capsule.toUnit(points[i]).y();
+  std::vector<double> sorted = along;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double cut = sorted[sorted.size() / 2];
+  std::vector<Vec3> low, high;
+  for (size_t i = 0; i < points.size(); ++i) (along[i] < cut ? low : high).push_back(points[i]);
+  if (low.size() < 8 || high.size() < 8) {
+    out.push_back(whole);
+    return gap * static_cast<double>(points.size());
+  }
+  std::vector<CapsuleParameters> pieces;
+  const int lowBudget = budget / 2;
+  const double split = fitPieces(low, seed + 1, lowBudget, pieces) + fitPieces(high, seed + 2, budget - lowBudget, pieces);
+  if (split < gap * static_cast<double>(points.size())) {
+    out.insert(out.end(), pieces.begin(), pieces.end());
+    return split;
+  }
+  out.push_back(whole);
+  return gap * static_cast<double>(points.size());
+}
+
+}  // namespace
+
+double signedDistance(const FittedVolume& volume, const Vec3& p) {
+  return volume.kind == FittedVolume::Kind::Capsule ? Capsule(volume.capsule).nearest(p).distance
+                                                    : RadialDepthVolume(volume.radial).nearest(p).distance;
+}
+
+std::vector<FittedVolume> fitPartCapsules(const PartMesh& part, const BodyFitOptions& options) {
+  std::vector<CapsuleParameters> capsules;
+  fitPieces(part.mesh.vertices, options.seed, kMaxCapsules, capsules);
+  std::vector<FittedVolume> out;
+  for (const CapsuleParameters& c : capsules) out.push_back({part.name, FittedVolume::Kind::Capsule, c, {}});
+  return out;
+}
+
+std::vector<FittedVolume> fitPartRadial(const PartMesh& part, const std::vector<FittedVolume>& capsules,
+                                        const BodyFitOptions& options) {
+  const RadialDepthVolume radial = fitRadialPart(part, options.harmonics, options.sectionSpacing);
+  // The capsules' gap by the same estimate as the radial one's: each vertex's depth in
+  // the deepest capsule holding it.
+  double radialGap = 0.0, capsuleGap = 0.0;
+  for (const Vec3& v : part.mesh.vertices) {
+    radialGap += std::abs(radial.nearest(v).distance);
+    double deepest = 0.0;
+    for (const FittedVolume& c : capsules) deepest = std::max(deepest, -signedDistance(c, v));
+    capsuleGap += deepest;
+  }
+  if (capsuleGap < radialGap) return capsules;
+  return {{part.name, FittedVolume::Kind::Radial, {}, radial.parameters()}};
+}
+
+std::vector<FittedVolume> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
+                                      const BodyFitOptions& options) {
+  std::vector<FittedVolume> out;
+  for (const PartMesh& part : splitIntoParts(body, skeleton)) {
+    if (part.mesh.vertices.size() < 4) continue;
+    const std::vector<FittedVolume> v = fitPartCapsules(part, options);
+    out.insert(out.end(), v.begin(), v.end());
+  }
+  return out;
+}
+
+std::vector<FittedVolume> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
+                                           const BodyFitOptions& options) {
+  std::vector<FittedVolume> out;
+  for (const PartMesh& part : splitIntoParts(body, skeleton)) {
+    if (part.mesh.vertices.size() < 4) continue;
+    const std::vector<FittedVolume> v = fitPartRadial(part, fitPartCapsules(part, options), options);
+    out.insert(out.end(), v.begin(), v.end());
+  }
+  return out;
+}
+
+}  // namespace figment

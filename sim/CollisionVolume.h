@@ -1,0 +1,61 @@
+#pragma once
+// One body part's collision volume (paper §3), whatever its kind, in the part's rest
+// frame, and the same volume carried into the posed world by an affine map (paper §3.3:
+// "the application of geometric transformations to animate the mannequin and to adjust
+// its dimensions and proportions").
+//
+// Under a map x -> A x + b (A invertible):
+//   inside        exact for any A: the rest volume contains A^-1 (x - b);
+//   rigid A       (a rotation) the rest-frame nearest point and normal, mapped: exact;
+//   other A       (sizing's stretches) the nearest point of the mapped surface is not the
+//                 image of the rest-frame one: a parametric volume corrects it on the
+//                 mapped surface W(t, a) = A S(t, a) + b (Gauss-Newton from the rest
+//                 frame's start, tangents A dS/dt, A dS/da, normal their cross product);
+//                 a triangle mesh is rebuilt from its mapped triangles (exact).
+
+#include "Capsule.h"            // SurfacePoint
+#include "RadialDepthVolume.h"  // RadialDepthParameters
+#include "TriangleMesh.h"
+
+#include <Eigen/Geometry>
+
+#include <memory>
+
+namespace figment {
+
+class CollisionVolume {
+ public:
+  virtual ~CollisionVolume() = default;
+  virtual bool contains(const Vec3& p) const = 0;
+  // The nearest surface point, the outward normal there and p's signed distance (< 0
+  // inside); the volume's fast path where it has one.
+  virtual SurfacePoint nearest(const Vec3& p) const = 0;
+  // A sphere enclosing the volume, for early-outs: centre (m) and radius (m).
+  virtual Vec3 centre() const = 0;
+  virtual double boundingRadius() const = 0;
+
+  // The nearest point to world point p of this volume's image under `map` (`inverse` its
+  // inverse), for a map that is not rigid. The default maps the rest-frame answer (normal
+  // by A^-T): approximate; parametric volumes override it with the correction above.
+  virtual SurfacePoint nearestUnder(const Eigen::Affine3d& map, const Eigen::Affine3d& inverse, const Vec3& p) const;
+  // This volume with `map` built in, where it can carry any affine map exactly (a mesh:
+  // its mapped triangles); null otherwise.
+  virtual std::shared_ptr<const CollisionVolume> mappedCopy(const Eigen::Affine3d& map) const;
+};
+
+std::shared_ptr<const CollisionVolume> makeVolume(const CapsuleParameters& parameters);  // Capsule::nearestFast
+std::shared_ptr<const CollisionVolume> makeVolume(const RadialDepthParameters& parameters);  // ...::nearestFast
+// Exact: a bounding-volume hierarchy over a part's own triangles, closed or not; inside =
+// behind the nearest feature's angle-weighted pseudo-normal, as MeshCollider decides.
+// Throws std::invalid_argument when it has no triangles.
+std::shared_ptr<const CollisionVolume> makeVolume(TriangleMesh partTriangles);
+
+// `volume` carried by `transform` (its rest frame -> world), answering in world space.
+// Throws std::invalid_argument when `volume` is null or `transform` is singular.
+std::shared_ptr<const CollisionVolume> transformedVolume(std::shared_ptr<const CollisionVolume> volume,
+                                                         const Eigen::Affine3d& transform);
+
+// Whether `transform`'s linear part is a rotation (to 1e-12): the exact, cheap path.
+bool isRigid(const Eigen::Affine3d& transform);
+
+}  // namespace figment

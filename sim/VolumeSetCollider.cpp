@@ -1,0 +1,143 @@
+#include "VolumeSetCollider.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace figment {
+
+namespace {
+// Touching: d < clearance - kTouchMargin; clear: d >= clearance - kClearMargin. Clear is
+// the stricter of the two, so a node set on a target (rounded) touches nothing.
+constexpr double kTouchMargin = 1e-9;  // m
+constexpr double kClearMargin = 0.5e-9;  // m
+constexpr int kMaxCandidates = 8;  // a node touches a few volumes at most: keep the nearest
+constexpr int kCreasePushes = 16;
+constexpr int kMarchSteps = 64;  // doubling steps from >= 0.1 mm: beyond any body
+
+struct Candidate {
+  size_t volume = 0;
+  SurfacePoint s;
+};
+}  // namespace
+
+VolumeSetCollider::VolumeSetCollider(std::vector<PosedVolume> volumes) {
+  for (size_t i = 0; i < volumes.size(); ++i) {
+    PosedVolume& v = volumes[i];
+    const std::string which = "volume " + std::to_string(i) + " (part " + std::to_string(v.part) + ")";
+    if (!v.volume) throw std::invalid_argument(which + " is null");
+    std::shared_ptr<const CollisionVolume> world;
+    try {
+      world = transformedVolume(std::move(v.volume), v.transform);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(which + ": " + e.what());
+    }
+    parts_.push_back(v.part);
+    centres_.push_back(world->centre());
+    radii_.push_back(world->boundingRadius());
+    world_.push_back(std::move(world));
+  }
+}
+
+bool VolumeSetCollider::clearOfAll(const Vec3& x, double clearance) const {
+  for (size_t i = 0; i < world_.size(); ++i)
+    if (sphereGap(i, x) < clearance && world_[i]->nearest(x).distance < clearance - kClearMargin) return false;
+  return true;
+}
+
+bool VolumeSetCollider::contact(const Vec3& p, double clearance, double /*searchRadius*/, Contact& out) const {
+  const double touch = clearance - kTouchMargin;
+  std::array<Candidate, kMaxCandidates> candidates;
+  int count = 0;
+  bool inside = false;
+  double bound = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < world_.size(); ++i) {
+    const double gap = sphereGap(i, p);
+    if (gap >= touch) {
+      bound = std::min(bound, gap);
+      continue;
+    }
+    const SurfacePoint s = world_[i]->nearest(p);
+    if (s.distance >= touch) {
+      bound = std::min(bound, s.distance);
+      continue;
+    }
+    inside = inside || s.distance < 0.0;
+    // Insert by |d| (after equals: ties go to the first volume); the farthest falls off.
+    int at = std::min(count, kMaxCandidates - 1);
+    if (count == kMaxCandidates && std::abs(s.distance) >= std::abs(candidates[at].s.distance)) continue;
+    while (at > 0 && std::abs(candidates[at - 1].s.distance) > std::abs(s.distance)) {
+      candidates[at] = candidates[at - 1];
+      --at;
+    }
+    candidates[at] = {i, s};
+    count = std::min(count + 1, kMaxCandidates);
+  }
+  if (count == 0) {
+    out.distance = bound;
+    return false;
+  }
+  for (int k = 0; k < count; ++k) {
+    const SurfacePoint& s = candidates[k].s;
+    if (!clearOfAll(s.point + clearance * s.normal, clearance)) continue;
+    out = {s.point, s.normal, inside ? -std::abs(s.distance) : std::abs(s.distance)};
+    return true;
+  }
+  // A crease: every volume's own target lies in (or too near) another volume.
+  const SurfacePoint& nearest = candidates[0].s;
+  const Vec3 target = creaseTarget(p, nearest.point + clearance * nearest.normal, nearest.normal, clearance);
+  const Vec3 move = target - p;
+  out.normal = move.norm() > 1e-12 ? Vec3(move.normalized()) : nearest.normal;
+  out.surfacePoint = target - clearance * out.normal;
+  const double gap = (p - out.surfacePoint).norm();
+  out.distance = inside ? -gap : gap;
+  return true;
+}
+
+Vec3 VolumeSetCollider::creaseTarget(const Vec3& p, const Vec3& start, const Vec3& away, double clearance) const {
+  Vec3 x = start;
+  const double kNone = std::numeric_limits<double>::infinity();
+  for (int push = 0; push < kCreasePushes; ++push) {
+    // The two volumes x is deepest in (or nearest within the clearance of).
+    SurfacePoint first{Vec3::Zero(), Vec3::Zero(), kNone}, second = first;
+    for (size_t i = 0; i < world_.size(); ++i) {
+      if (sphereGap(i, x) >= clearance) continue;
+      const SurfacePoint s = world_[i]->nearest(x);
+      if (s.distance >= clearance - kClearMargin) continue;
+      if (s.distance < first.distance) second = first, first = s;
+      else if (s.distance < second.distance) second = s;
+    }
+    if (first.distance == kNone) return x;
+    // Out past each tangent plane by the clearance: delta . n >= h. A convex volume lies
+    // behind its tangent plane, so that clears it.
+    const Vec3 &na = first.normal, &nb = second.normal;
+    const double ha = clearance - (x - first.point).dot(na);
+    if (second.distance == kNone) {
+      x += ha * na;
+      continue;
+    }
+    const double hb = clearance - (x - second.point).dot(nb);
+    if ((ha * na).dot(nb) >= hb) {
+      x += ha * na;
+    } else if ((hb * nb).dot(na) >= ha) {
+      x += hb * nb;
+    } else {
+      // Both planes: the shortest step in their normals' span.
+      const double cosine = na.dot(nb), det = 1.0 - cosine * cosine;
+      if (det < 1e-9) break;  // facing planes (a gap narrower than twice the clearance)
+      x += (ha - cosine * hb) / det * na + (hb - cosine * ha) / det * nb;
+    }
+  }
+  // Away from p until clear: the volumes are bounded, so this ends.
+  Vec3 direction = x - p;
+  direction = direction.norm() > 1e-12 ? Vec3(direction.normalized()) : away;
+  double step = std::max(clearance, 1e-4);
+  for (int k = 0; k < kMarchSteps && !clearOfAll(x, clearance); ++k, step *= 2.0) x += step * direction;
+  return x;
+}
+
+}  // namespace figment

@@ -1,0 +1,188 @@
+// figment-fit: fits a body's collision volumes once and writes them as an .iv file that
+// scenes include in a Mannequin (paper §3).
+//
+//   figment-fit [--body human.zae] -o scenes/human-volumes.iv [--method radial|capsule]
+//               [--capsule PART ...] [--exact PART ...] [--harmonics K]
+//               [--section-spacing M] [--seed N]
+//
+// The body is read as a MeshFile with the same fields reads it (metres, y up, without
+// the excluded meshes); its skeleton is estimated from cross sections
+// (sim/SkeletonEstimate.h); each part gets radial depth volumes (or capsules where a
+// radial volume does not suit it, sim/BodyVolumes.h) or capsules, or, for the parts
+// named by --capsule and --exact, capsules and ExactVolume. The file holds one
+// SkeletonJoints and the volume nodes. One summary line on stdout; any error is one
+// line, "figment-fit: <file>: <reason>", exit status 1, and no file.
+
+#include "io/MeshImport.h"
+#include "nodes/CapsuleVolume.h"
+#include "nodes/ExactVolume.h"
+#include "nodes/Init.h"
+#include "nodes/RadialDepthVolume.h"
+#include "nodes/SkeletonJoints.h"
+#include "sim/BodyVolumes.h"
+#include "sim/SkeletonEstimate.h"
+
+#include <CLI/CLI.hpp>
+#include <Inventor/SoOutput.h>
+#include <Inventor/actions/SoWriteAction.h>
+#include <Inventor/nodes/SoGroup.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr const char* kProgram = "figment-fit";
+
+int fail(const std::string& message) {
+  std::fprintf(stderr, "%s: %s\n", kProgram, message.c_str());
+  return 1;
+}
+
+struct Options {
+  std::string body = "human.zae";
+  std::string output;
+  std::vector<std::string> exclude = {"eyes"};
+  std::string method = "radial";
+  std::vector<std::string> capsuleParts, exactParts;
+  figment::BodyFitOptions fit;
+  std::string commandLine;
+};
+
+// The nodes for `volumes`, with the parts in `exact` as ExactVolume.
+SoGroup* volumeNodes(const figment::Skeleton& skeleton, const std::vector<figment::FittedVolume>& volumes,
+                     const std::set<std::string>& exact) {
+  auto* group = new SoGroup;
+  auto* joints = new SkeletonJoints;
+  joints->setSkeleton(skeleton);
+  group->addChild(joints);
+  for (const figment::FittedVolume& v : volumes) {
+    if (exact.count(v.part)) continue;
+    if (v.kind == figment::FittedVolume::Kind::Capsule) {
+      auto* node = new CapsuleVolume;
+      node->part = v.part.c_str();
+      node->setParameters(v.capsule);
+      group->addChild(node);
+    } else {
+      auto* node = new RadialDepthVolume;
+      node->part = v.part.c_str();
+      node->setParameters(v.radial);
+      group->addChild(node);
+    }
+  }
+  for (const std::string& part : exact) {
+    auto* node = new ExactVolume;
+    node->part = part.c_str();
+    group->addChild(node);
+  }
+  return group;
+}
+
+std::string writeIv(SoNode* root, const std::string& path, const std::string& header) {
+  SoOutput out;
+  if (!out.openFile(path.c_str())) return "cannot write " + path;
+  out.setHeaderString(SbString(("#Inventor V2.1 ascii\n\n" + header).c_str()));
+  SoWriteAction write(&out);
+  write.apply(root);
+  out.closeFile();
+  return "";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  CLI::App app{"Fits a body's collision volumes and writes them as an .iv file for a Mannequin.", kProgram};
+  app.add_option("--body", options.body, "body model file, looked up on the model search path")->capture_default_str();
+  app.add_option("-o,--output", options.output, ".iv file to write")->required();
+  app.add_option("--exclude", options.exclude, "meshes of the body file to leave out (name or part of it)")
+      ->capture_default_str();
+  app.add_option("--method", options.method, "radial (radial depth, capsules where it does not suit) or capsule")
+      ->check(CLI::IsMember({"radial", "capsule"}))
+      ->capture_default_str();
+  app.add_option("--capsule", options.capsuleParts, "parts that get capsules whatever the method");
+  app.add_option("--exact", options.exactParts, "parts that collide with their own triangles (ExactVolume)");
+  app.add_option("--harmonics", options.fit.harmonics, "K, Fourier harmonics of the radial depth")
+      ->check(CLI::Range(0, 31))
+      ->capture_default_str();
+  app.add_option("--section-spacing", options.fit.sectionSpacing, "distance between radial sections, m")
+      ->check(CLI::Range(0.002, 0.5))
+      ->capture_default_str();
+  app.add_option("--seed", options.fit.seed, "seed of the genetic algorithm")->capture_default_str();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& help) {
+    return app.exit(help);
+  } catch (const CLI::ParseError& error) {
+    return fail(error.what());
+  }
+  options.commandLine = kProgram;
+  for (int i = 1; i < argc; ++i) options.commandLine += std::string(" ") + argv[i];
+
+  const std::string bodyPath = figment::findModelFile(options.body);
+  if (bodyPath.empty())
+    return fail(options.body +
+                ": not found (searched the working directory, $FIGMENT_MODEL_PATH, /usr/share/assimp/models)");
+  figment::init();
+  const auto start = std::chrono::steady_clock::now();
+  SoGroup* root = nullptr;
+  size_t capsules = 0, radials = 0;
+  try {
+    figment::ImportOptions importOptions;
+    importOptions.exclude = options.exclude;
+    const figment::TriangleMesh body = figment::importMesh(bodyPath, importOptions).mesh;
+    const figment::Skeleton skeleton = figment::estimateSkeleton(body);
+    std::set<std::string> exact(options.exactParts.begin(), options.exactParts.end());
+    std::set<std::string> forcedCapsules(options.capsuleParts.begin(), options.capsuleParts.end());
+    for (const std::string& name : exact)
+      if (std::none_of(skeleton.parts.begin(), skeleton.parts.end(), [&](const auto& p) { return p.name == name; }))
+        return fail("--exact: " + name + " is not a part");
+    for (const std::string& name : forcedCapsules)
+      if (std::none_of(skeleton.parts.begin(), skeleton.parts.end(), [&](const auto& p) { return p.name == name; }))
+        return fail("--capsule: " + name + " is not a part");
+
+    std::vector<figment::FittedVolume> volumes;
+    const bool radial = options.method == "radial";
+    if (radial) {
+      for (figment::FittedVolume& v : figment::fitRadialVolumes(body, skeleton, options.fit))
+        if (!forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
+    }
+    if (!radial || !forcedCapsules.empty()) {
+      for (figment::FittedVolume& v : figment::fitCapsules(body, skeleton, options.fit))
+        if (!radial || forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
+    }
+    for (const auto& v : volumes)
+      if (!exact.count(v.part)) (v.kind == figment::FittedVolume::Kind::Capsule ? capsules : radials)++;
+    root = volumeNodes(skeleton, volumes, exact);
+    root->ref();
+    const std::string header = "# The collision volumes of " + options.body + ", fitted by\n#   " +
+                               options.commandLine +
+                               "\n# Include it in a Mannequin (nodes/Mannequin.h); regenerate, do not edit.";
+    // Written under a temporary name and renamed: the file exists only when complete.
+    const std::string temporary = options.output + ".partial";
+    const std::string error = writeIv(root, temporary, header);
+    root->unref();
+    std::error_code renamed;
+    if (error.empty()) std::filesystem::rename(temporary, options.output, renamed);
+    if (!error.empty() || renamed) {
+      std::filesystem::remove(temporary, renamed);
+      return fail(options.output + ": " + (error.empty() ? "cannot write it" : error));
+    }
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+    std::printf("%s: %s: %zu radial depth volumes, %zu capsules, %zu exact parts, %.1f s\n", kProgram,
+                options.output.c_str(), radials, capsules, exact.size(), wall.count());
+  } catch (const std::runtime_error& error) {  // the importer's message starts with the path
+    if (root) root->unref();
+    return fail(error.what());
+  } catch (const std::exception& error) {
+    return fail(bodyPath + ": " + error.what());
+  }
+  return 0;
+}
