@@ -48,7 +48,7 @@ struct Volume {
       double widest = 0.0;
       for (const auto& section : p.coefficients) {
         double r = 0.0;
-        for (double c : section) r += std::abs(c);
+        for (double coefficient : section) r += std::abs(coefficient);
         widest = std::max(widest, r);
       }
       centre = p.base + 0.5 * p.length * p.direction;
@@ -181,7 +181,7 @@ int collisionStudy(const CollisionStudyOptions& options) {
 
     Row radialRow;
     start = Clock::now();
-    const std::vector<FittedVolume> radial = fitPartRadial(part, capsules, fitOptions);
+    const std::vector<FittedVolume> radial = fitPartRadial(part, fitOptions);
     radialRow.fitSeconds = secondsSince(start);
     const std::vector<Volume> radialVolumes(radial.begin(), radial.end());
     radialRow.volumes = static_cast<int>(radial.size());

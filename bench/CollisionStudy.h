@@ -19,8 +19,8 @@
 //             nearest point (nearestFast: point, normal, signed distance); the exact row
 //             is MeshCollider::contact on the part's triangles (BVH closest point with an
 //             unbounded search radius and pseudo-normal sign, the same answer);
-//   fit_s     seconds to fit the part's volumes (radial: excluding the capsules it may
-//             fall back to, fitted once for the capsule row).
+//   fit_s     seconds to fit the part's volumes (radial: with the capsules, when the
+//             radial volume's gap is large enough to try them).
 
 #include <string>
 

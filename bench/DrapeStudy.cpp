@@ -10,6 +10,7 @@
 #include <Inventor/SoInput.h>
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoFile.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -39,7 +40,7 @@ SoNode* bodyFor(const std::string& method, SoNode* root, std::string& error) {
   auto* file = new SoFile;
   file->ref();
   file->name = std::filesystem::absolute(method).string().c_str();
-  if (file->getNumChildren() == 0) {
+  if (file->getChildren()->getLength() == 0) {
     error = "--body " + method + ": no volumes read from it";
     file->unref();
     return nullptr;

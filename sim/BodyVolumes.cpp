@@ -79,20 +79,22 @@ std::vector<FittedVolume> fitPartCapsules(const PartMesh& part, const BodyFitOpt
   return out;
 }
 
-std::vector<FittedVolume> fitPartRadial(const PartMesh& part, const std::vector<FittedVolume>& capsules,
-                                        const BodyFitOptions& options) {
+std::vector<FittedVolume> fitPartRadial(const PartMesh& part, const BodyFitOptions& options) {
   const RadialDepthVolume radial = fitRadialPart(part, options.harmonics, options.sectionSpacing);
+  const std::vector<FittedVolume> suited = {{part.name, FittedVolume::Kind::Radial, {}, radial.parameters()}};
+  double radialGap = 0.0;
+  for (const Vec3& v : part.mesh.vertices) radialGap += std::abs(radial.nearest(v).distance);
+  if (radialGap <= kSplitGap * static_cast<double>(part.mesh.vertices.size())) return suited;
+  const std::vector<FittedVolume> capsules = fitPartCapsules(part, options);
   // The capsules' gap by the same estimate as the radial one's: each vertex's depth in
   // the deepest capsule holding it.
-  double radialGap = 0.0, capsuleGap = 0.0;
+  double capsuleGap = 0.0;
   for (const Vec3& v : part.mesh.vertices) {
-    radialGap += std::abs(radial.nearest(v).distance);
     double deepest = 0.0;
     for (const FittedVolume& c : capsules) deepest = std::max(deepest, -signedDistance(c, v));
     capsuleGap += deepest;
   }
-  if (capsuleGap < radialGap) return capsules;
-  return {{part.name, FittedVolume::Kind::Radial, {}, radial.parameters()}};
+  return capsuleGap < radialGap ? capsules : suited;
 }
 
 std::vector<FittedVolume> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
@@ -111,7 +113,7 @@ std::vector<FittedVolume> fitRadialVolumes(const TriangleMesh& body, const Skele
   std::vector<FittedVolume> out;
   for (const PartMesh& part : splitIntoParts(body, skeleton)) {
     if (part.mesh.vertices.size() < 4) continue;
-    const std::vector<FittedVolume> v = fitPartRadial(part, fitPartCapsules(part, options), options);
+    const std::vector<FittedVolume> v = fitPartRadial(part, options);
     out.insert(out.end(), v.begin(), v.end());
   }
   return out;

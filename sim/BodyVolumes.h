@@ -11,9 +11,10 @@
 // 4 capsules a part; a split is kept only when it lowers the part's mean gap.
 // Radial depth volumes: fitRadialPart (the best of three axes, least-squares envelope
 // of K harmonics per section, per-section enclosure). A part whose sections are not
-// star-shaped about the axis leaves vertices hidden behind others (deep inside the
-// volume); where the radial volume's mean gap is larger than the part's capsules', the
-// part falls back to those capsules (kind Capsule).
+// star-shaped about the axis leaves vertices hidden behind others, deep inside the
+// volume: where the radial volume's mean gap is above 8 mm, the part's capsules are
+// fitted too and, where their mean gap (each vertex's depth in the deepest capsule
+// holding it) is smaller, the part falls back to them (kind Capsule).
 // Sub-volumes share their part's name, so posing by part still works.
 
 #include "BodyParts.h"
@@ -51,9 +52,7 @@ std::vector<FittedVolume> fitRadialVolumes(const TriangleMesh& body, const Skele
 
 // The same, for parts already cut (splitIntoParts); the bench measures these.
 std::vector<FittedVolume> fitPartCapsules(const PartMesh& part, const BodyFitOptions& options = {});
-// `capsules`: fitPartCapsules(part, options), the fallback.
-std::vector<FittedVolume> fitPartRadial(const PartMesh& part, const std::vector<FittedVolume>& capsules,
-                                        const BodyFitOptions& options = {});
+std::vector<FittedVolume> fitPartRadial(const PartMesh& part, const BodyFitOptions& options = {});
 
 // The signed distance of p to one volume (< 0 inside), by its nearest().
 double signedDistance(const FittedVolume& volume, const Vec3& p);

@@ -18,10 +18,32 @@ namespace {
 // Gauss-Newton steps on a mapped parametric surface: the map's stretch moves the answer
 // farther from the start than the volumes' own fast paths (2-3 steps) expect.
 constexpr int kMappedSteps = 5;
+// How far the residual may lean off the normal (cosine against a tangent) before the
+// answer counts as unconverged.
+constexpr double kStationary = 1e-3;
 
 // A SurfaceSample carried by an affine map.
 SurfaceSample mapped(const Eigen::Affine3d& map, const SurfaceSample& s) {
   return {map * s.w, map.linear() * s.dt, map.linear() * s.da};
+}
+
+// Gauss-Newton from the start; where that stops short of a stationary point (near a
+// capsule's pole, where the angle degenerates), Levenberg-Marquardt from there. A clamped
+// t counts as stationary unless the ends are poles (a radial volume's rims are edges).
+template <typename Sample>
+SurfaceSample refineMapped(const Sample& sample, const Vec3& p, double tMin, double tMax, bool polesAtEnds, double& t,
+                           double& a) {
+  const SurfaceSample s = refineOnSurface(sample, p, tMin, tMax, t, a, kMappedSteps);
+  const Vec3 r = s.w - p;
+  const double gap = r.norm();
+  const auto leans = [&](const Vec3& tangent) {
+    const double length = tangent.norm();
+    return length > 1e-12 && std::abs(r.dot(tangent)) > kStationary * length * gap;
+  };
+  const bool atEnd = t <= tMin || t >= tMax;
+  if (gap < 1e-12 || (!(atEnd && polesAtEnds) && !leans(s.da) && (atEnd || !leans(s.dt)))) return s;
+  projectOntoSurface(sample, p, tMin, tMax, t, a);
+  return sample(t, a);
 }
 
 SurfacePoint fromSample(const SurfaceSample& s, const Vec3& p, bool inside, const Vec3& outwardHint,
@@ -56,7 +78,7 @@ class CapsuleVolume final : public CollisionVolume {
     double t, a;
     parametersOf(capsule_.unitProjection(unit), t, a);
     const auto side = [&](double ti, double ai) { return mapped(map, capsule_.sample(ti, ai)); };
-    const SurfaceSample s = refineOnSurface(side, p, 0.0, 3.0, t, a, kMappedSteps);
+    const SurfaceSample s = refineMapped(side, p, 0.0, 3.0, true, t, a);
     const Vec3 pole = (inverse.linear().transpose() * (t < 1.5 ? -axis_ : axis_)).normalized();
     return fromSample(s, p, capsule_.containsUnit(unit), s.w - map * centre_, pole);
   }
@@ -111,7 +133,7 @@ class RadialVolume final : public CollisionVolume {
     // p's foot on the mapped plane counts where it lies within the cap.
     double t = std::clamp(s, 0.0, q.length), angle = a;
     const auto side = [&](double ti, double ai) { return mapped(map, volume_.sample(ti, ai)); };
-    const SurfaceSample sample = refineOnSurface(side, p, 0.0, q.length, t, angle, kMappedSteps);
+    const SurfaceSample sample = refineMapped(side, p, 0.0, q.length, false, t, angle);
     const bool inside = volume_.contains(rest);
     SurfacePoint out = fromSample(sample, p, inside, sample.w - map * (q.base + t * q.direction),
                                   map.linear() * q.direction);
@@ -170,11 +192,21 @@ class MeshVolume final : public CollisionVolume {
   double radius_ = 0.0;
 };
 
-// A volume under an affine map: queries go to the rest frame and come back.
+// s when the linear part is s times a rotation (to 1e-12), else 0.
+double similarityScale(const Eigen::Affine3d& map) {
+  const Eigen::Matrix3d& a = map.linear();
+  const Eigen::Matrix3d gram = a.transpose() * a;
+  const double s2 = gram.trace() / 3.0;
+  const bool similar = (gram - s2 * Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-12 * s2;
+  return similar && a.determinant() > 0.0 ? std::sqrt(s2) : 0.0;
+}
+
+// A volume under an affine map: queries go to the rest frame and come back; a rotation
+// with a uniform scale (height) maps the rest-frame answer exactly.
 class MappedVolume final : public CollisionVolume {
  public:
   MappedVolume(std::shared_ptr<const CollisionVolume> rest, const Eigen::Affine3d& map)
-      : rest_(std::move(rest)), map_(map), inverse_(map.inverse()), rigid_(isRigid(map)) {
+      : rest_(std::move(rest)), map_(map), inverse_(map.inverse()), scale_(similarityScale(map)) {
     centre_ = map_ * rest_->centre();
     // The largest singular value stretches the bounding sphere the most.
     const double stretch = Eigen::JacobiSVD<Eigen::Matrix3d>(map_.linear()).singularValues()[0];
@@ -182,9 +214,9 @@ class MappedVolume final : public CollisionVolume {
   }
   bool contains(const Vec3& p) const override { return rest_->contains(inverse_ * p); }
   SurfacePoint nearest(const Vec3& p) const override {
-    if (!rigid_) return rest_->nearestUnder(map_, inverse_, p);
+    if (!(scale_ > 0.0)) return rest_->nearestUnder(map_, inverse_, p);
     const SurfacePoint s = rest_->nearest(inverse_ * p);
-    return {map_ * s.point, map_.linear() * s.normal, s.distance};
+    return {map_ * s.point, map_.linear() * s.normal / scale_, s.distance * scale_};
   }
   Vec3 centre() const override { return centre_; }
   double boundingRadius() const override { return radius_; }
@@ -192,7 +224,7 @@ class MappedVolume final : public CollisionVolume {
  private:
   std::shared_ptr<const CollisionVolume> rest_;
   Eigen::Affine3d map_, inverse_;
-  bool rigid_;
+  double scale_;  // > 0: a rotation times this scale, which maps nearest points exactly
   Vec3 centre_;
   double radius_ = 0.0;
 };
@@ -222,11 +254,6 @@ std::shared_ptr<const CollisionVolume> makeVolume(TriangleMesh partTriangles) {
   return std::make_shared<MeshVolume>(std::move(partTriangles));
 }
 
-bool isRigid(const Eigen::Affine3d& transform) {
-  const Eigen::Matrix3d& a = transform.linear();
-  return ((a.transpose() * a - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-12) && a.determinant() > 0.0;
-}
-
 std::shared_ptr<const CollisionVolume> transformedVolume(std::shared_ptr<const CollisionVolume> volume,
                                                          const Eigen::Affine3d& transform) {
   if (!volume) throw std::invalid_argument("volume is null");
@@ -234,7 +261,7 @@ std::shared_ptr<const CollisionVolume> transformedVolume(std::shared_ptr<const C
   if (!transform.matrix().allFinite() || !(std::abs(det) > 1e-12))
     throw std::invalid_argument("transform is singular: det = " + formatNumber(det));
   if (transform.matrix() == Eigen::Matrix4d::Identity()) return volume;
-  if (!isRigid(transform))
+  if (!(similarityScale(transform) > 0.0))
     if (auto copy = volume->mappedCopy(transform)) return copy;
   return std::make_shared<MappedVolume>(std::move(volume), transform);
 }

@@ -6,11 +6,13 @@
 //
 // Under a map x -> A x + b (A invertible):
 //   inside        exact for any A: the rest volume contains A^-1 (x - b);
-//   rigid A       (a rotation) the rest-frame nearest point and normal, mapped: exact;
-//   other A       (sizing's stretches) the nearest point of the mapped surface is not the
+//   similar A     (a rotation times a uniform scale s: posing, height) the rest-frame
+//                 nearest point and normal, mapped, the distance times s: exact;
+//   other A       (girth and arm length stretches) the nearest point of the mapped surface is not the
 //                 image of the rest-frame one: a parametric volume corrects it on the
 //                 mapped surface W(t, a) = A S(t, a) + b (Gauss-Newton from the rest
-//                 frame's start, tangents A dS/dt, A dS/da, normal their cross product);
+//                 frame's start, Levenberg-Marquardt where that stops short, as near a
+//                 capsule's pole; tangents A dS/dt, A dS/da, normal their cross product);
 //                 a triangle mesh is rebuilt from its mapped triangles (exact).
 
 #include "Capsule.h"            // SurfacePoint
@@ -35,8 +37,8 @@ class CollisionVolume {
   virtual double boundingRadius() const = 0;
 
   // The nearest point to world point p of this volume's image under `map` (`inverse` its
-  // inverse), for a map that is not rigid. The default maps the rest-frame answer (normal
-  // by A^-T): approximate; parametric volumes override it with the correction above.
+  // inverse), for a map that is not a similarity. The default maps the rest-frame answer
+  // (normal by A^-T): approximate; parametric volumes override it with the correction above.
   virtual SurfacePoint nearestUnder(const Eigen::Affine3d& map, const Eigen::Affine3d& inverse, const Vec3& p) const;
   // This volume with `map` built in, where it can carry any affine map exactly (a mesh:
   // its mapped triangles); null otherwise.
@@ -54,8 +56,5 @@ std::shared_ptr<const CollisionVolume> makeVolume(TriangleMesh partTriangles);
 // Throws std::invalid_argument when `volume` is null or `transform` is singular.
 std::shared_ptr<const CollisionVolume> transformedVolume(std::shared_ptr<const CollisionVolume> volume,
                                                          const Eigen::Affine3d& transform);
-
-// Whether `transform`'s linear part is a rotation (to 1e-12): the exact, cheap path.
-bool isRigid(const Eigen::Affine3d& transform);
 
 }  // namespace figment

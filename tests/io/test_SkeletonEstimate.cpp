@@ -1,11 +1,13 @@
 // The humanoid skeleton estimated from the default body by cross sections, and the same
 // skeleton from that body turned z-up and in centimetres.
 #include "io/MeshImport.h"
+#include "sim/BodyVolumes.h"
 #include "sim/SkeletonEstimate.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 using namespace figment;
 
@@ -83,4 +85,28 @@ TEST(SkeletonEstimate, ABoxIsNotAHumanoid) {
   TriangleMesh box;
   for (int i = 0; i < 200; ++i) box.vertices.push_back(Vec3(i % 5, i / 5 % 8, i / 40));
   EXPECT_THROW(estimateSkeleton(box), std::invalid_argument);
+}
+
+TEST(BodyVolumes, EncloseEveryPartOfTheDefaultBodyAndNameIt) {
+  // fitCapsules and fitRadialVolumes (sim/BodyVolumes.h): every part of the skeleton
+  // gets volumes carrying its name, and every vertex of a part lies in one of them.
+  if (!humanAvailable()) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  const TriangleMesh body = defaultBody();
+  const Skeleton skeleton = estimateSkeleton(body);
+  const std::vector<PartMesh> parts = splitIntoParts(body, skeleton);
+  for (const auto& volumes : {fitCapsules(body, skeleton), fitRadialVolumes(body, skeleton)}) {
+    std::set<std::string> named;
+    for (const FittedVolume& v : volumes) named.insert(v.part);
+    for (const BodyPart& part : skeleton.parts) EXPECT_TRUE(named.count(part.name)) << part.name;
+    for (const PartMesh& part : parts) {
+      int outside = 0;
+      for (const Vec3& p : part.mesh.vertices) {
+        bool inside = false;
+        for (const FittedVolume& v : volumes)
+          if (!inside && v.part == part.name) inside = signedDistance(v, p) <= 1e-9;
+        outside += !inside;
+      }
+      EXPECT_EQ(outside, 0) << part.name;
+    }
+  }
 }

@@ -4,6 +4,9 @@
 #include "nodes/ClothEngine.h"
 #include "nodes/MeshFile.h"
 #include "nodes/ClothingLayer.h"
+#include "nodes/Mannequin.h"
+#include "sim/Skeleton.h"
+#include "sim/VolumeSetCollider.h"
 #include "sim/MeshCollider.h"
 #include "support/Pixels.h"
 #include "viewer/OffscreenContext.h"
@@ -179,6 +182,20 @@ TEST_F(DefaultScene, NoGarmentVertexInsideTheBody) {
     deepest = std::min(deepest, contact.distance);
   }
   EXPECT_EQ(inside, 0) << "deepest " << deepest * 1000 << " mm inside";
+}
+
+TEST_F(DefaultScene, NoGarmentVertexInsideAnyCollisionVolume) {
+  // The dress collides with the mannequin's fitted volumes; it ends outside each one.
+  const auto* model = dynamic_cast<Mannequin*>(SoNode::getByName("Model"));
+  ASSERT_NE(model, nullptr);
+  const auto volumes = std::dynamic_pointer_cast<const figment::VolumeSetCollider>(model->collider());
+  ASSERT_NE(volumes, nullptr);
+  ASSERT_GE(volumes->size(), model->skeleton().parts.size()) << "a volume per part at least";
+  int inside = 0;
+  for (const figment::Vec3& p : drapedPositions())
+    for (size_t i = 0; i < volumes->size(); ++i)
+      if (volumes->worldVolume(i).contains(p)) ++inside;
+  EXPECT_EQ(inside, 0);
 }
 
 TEST_F(DefaultScene, ShouldersHoldTheDressUp) {

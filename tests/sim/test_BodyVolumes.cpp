@@ -98,8 +98,11 @@ TEST(BodyVolumes, RadialVolumesEncloseEveryPartAndCarryItsName) {
   const std::vector<FittedVolume> volumes = fitRadialVolumes(body, skeleton);
   expectEnclosedAndNamed(volumes, body, skeleton);
   // The straight tube is what a radial volume suits: no fallback there.
-  for (const FittedVolume& v : volumes)
-    if (v.part == "shin") EXPECT_EQ(v.kind, FittedVolume::Kind::Radial);
+  for (const FittedVolume& v : volumes) {
+    if (v.part == "shin") {
+      EXPECT_EQ(v.kind, FittedVolume::Kind::Radial);
+    }
+  }
 }
 
 TEST(BodyVolumes, TheSameSeedRepeatsAFit) {

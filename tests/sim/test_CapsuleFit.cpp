@@ -97,7 +97,9 @@ TEST(CapsuleFit, TheGaugeAgreesWithTheInsideTest) {
   for (int i = 0; i < 20000; ++i) {
     const Vec3 u = capsule.toUnit(Vec3(c.ox, c.oy, c.oz) + Vec3(offset(random), offset(random), offset(random)));
     const double g = unitGauge(capsule, u);
-    if (std::abs(g - 1.0) > 1e-9) EXPECT_EQ(g <= 1.0, capsule.containsUnit(u)) << u.transpose() << " g " << g;
+    if (std::abs(g - 1.0) > 1e-9) {
+      EXPECT_EQ(g <= 1.0, capsule.containsUnit(u)) << u.transpose() << " g " << g;
+    }
   }
   const Vec3 u(0.3, 0.45, -0.2);
   const Vec3 onSurface = u / unitGauge(capsule, u);

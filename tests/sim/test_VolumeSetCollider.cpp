@@ -110,21 +110,25 @@ void expectNearestMatchesSampling(const CollisionVolume& volume, const std::vect
 }
 }  // namespace
 
-TEST(CollisionVolume, RigidMapIsExact) {
-  // A rotation and a move: the mapped answer is the rest-frame answer, mapped.
+TEST(CollisionVolume, RigidAndUniformlyScaledMapsAreExact) {
+  // A rotation and a move (posing), then also a uniform scale (height): the mapped answer
+  // is the rest-frame answer, mapped, its distance scaled.
   CapsuleParameters c = segmentCapsule(Vec3(0, 0, 0), Vec3(0, 0.3, 0), 0.05);
   c.tx = 0.3;
   const auto rest = makeVolume(c);
-  const Eigen::Affine3d map = Eigen::Translation3d(0.2, 1.0, -0.1) * Eigen::AngleAxisd(1.1, Vec3(1, 1, 0).normalized());
-  const auto world = transformedVolume(rest, map);
-  std::mt19937 rng(3);
-  for (int i = 0; i < 200; ++i) {
-    const Vec3 p = randomIn(rng, Vec3(-0.1, 0.8, -0.3), Vec3(0.5, 1.3, 0.2));
-    const SurfacePoint r = rest->nearest(map.inverse() * p), w = world->nearest(p);
-    EXPECT_NEAR(w.distance, r.distance, 1e-12);
-    EXPECT_LT((w.point - map * r.point).norm(), 1e-12);
-    EXPECT_LT((w.normal - map.linear() * r.normal).norm(), 1e-12);
-    EXPECT_EQ(world->contains(p), rest->contains(map.inverse() * p));
+  for (const double scale : {1.0, 1.1}) {
+    const Eigen::Affine3d map = Eigen::Translation3d(0.2, 1.0, -0.1) *
+                                Eigen::AngleAxisd(1.1, Vec3(1, 1, 0).normalized()) * Eigen::Scaling(scale);
+    const auto world = transformedVolume(rest, map);
+    std::mt19937 rng(3);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 p = randomIn(rng, Vec3(-0.1, 0.8, -0.3), Vec3(0.5, 1.3, 0.2));
+      const SurfacePoint r = rest->nearest(map.inverse() * p), w = world->nearest(p);
+      EXPECT_NEAR(w.distance, scale * r.distance, 1e-12);
+      EXPECT_LT((w.point - map * r.point).norm(), 1e-12);
+      EXPECT_LT((w.normal - map.linear() * r.normal / scale).norm(), 1e-12);
+      EXPECT_EQ(world->contains(p), rest->contains(map.inverse() * p));
+    }
   }
   EXPECT_EQ(transformedVolume(rest, Eigen::Affine3d::Identity()), rest);  // identity: the volume itself
 }
@@ -151,7 +155,7 @@ TEST(CollisionVolume, StretchedCapsuleMatchesDenseSampling) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3> queries;
-  for (int i = 0; i < 200; ++i)
+  for (int i = 0; i < 1000; ++i)
     queries.push_back(sample(3.0 * u(rng), 2 * M_PI * u(rng)).w + 0.02 * u(rng) * randomDirection(rng));
   expectNearestMatchesSampling(*world, samples, parameters, sample, 0.0, 3.0, queries);
 }
@@ -194,7 +198,7 @@ TEST(CollisionVolume, StretchedRadialVolumeMatchesDenseSampling) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3> queries;
-  for (int i = 0; i < 200; ++i)
+  for (int i = 0; i < 1000; ++i)
     queries.push_back(samples[static_cast<size_t>(u(rng) * samples.size()) % samples.size()] +
                       0.02 * u(rng) * randomDirection(rng));
   expectNearestMatchesSampling(*world, samples, parameters, sample, 0.0, r.length, queries);
