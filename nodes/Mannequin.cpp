@@ -132,8 +132,8 @@ const Mannequin::Model& Mannequin::model() const {
           model->pose.rotations[j];
     }
     model->sizing = {height.getValue(), chest.getValue(), waist.getValue(), hips.getValue(), armLength.getValue()};
-    if (!(blendRadius.getValue() >= 0.0f))
-      throw std::invalid_argument("blendRadius = " + std::to_string(blendRadius.getValue()) + " must be >= 0");
+    if (!(blendRadius.getValue() > 0.0f))
+      throw std::invalid_argument("blendRadius = " + std::to_string(blendRadius.getValue()) + " must be > 0");
     model->transforms = figment::partTransforms(model->skeleton, model->pose, model->sizing);
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(label() + ": " + e.what());
@@ -191,12 +191,12 @@ const figment::TriangleMesh& Mannequin::posedBody() const {
   }
   for (int i = 0; i + 3 < mesh->coordIndex.getNum() + 1; i += 4)
     posed->triangles.push_back({mesh->coordIndex[i], mesh->coordIndex[i + 1], mesh->coordIndex[i + 2]});
-  std::vector<figment::Vec3> centroids;
-  for (const figment::Triangle& t : posed->triangles)
-    centroids.push_back((posed->vertices[t[0]] + posed->vertices[t[1]] + posed->vertices[t[2]]) / 3.0);
-  triangleParts_ = figment::assignParts(m.skeleton, centroids);
-  const figment::SkinWeights weights = figment::skinWeights(m.skeleton, posed->vertices, blendRadius.getValue());
-  posed->vertices = figment::skin(weights, m.transforms, posed->vertices);
+  // The parts as the fit assigned them, so skin and volumes move together.
+  triangleParts_ = figment::assignTriangles(*posed, m.skeleton);
+  skinWeights_ = std::make_unique<figment::SkinWeights>(figment::skinWeights(
+      m.skeleton, posed->vertices, figment::vertexParts(*posed, triangleParts_, m.skeleton.parts.size()),
+      blendRadius.getValue()));
+  posed->vertices = figment::skin(*skinWeights_, m.transforms, posed->vertices);
   posedBody_ = std::move(posed);
   return *posedBody_;
 }
@@ -204,6 +204,11 @@ const figment::TriangleMesh& Mannequin::posedBody() const {
 const std::vector<int>& Mannequin::triangleParts() const {
   posedBody();
   return triangleParts_;
+}
+
+const figment::SkinWeights& Mannequin::skinWeights() const {
+  posedBody();
+  return *skinWeights_;
 }
 
 void Mannequin::notify(SoNotList* list) {

@@ -18,6 +18,7 @@
 
 namespace figment {
 class Collider;
+struct SkinWeights;
 struct Skeleton;
 struct TriangleMesh;
 }  // namespace figment
@@ -93,7 +94,7 @@ class Mannequin : public SoGroup {
   // Sizing factors, 1 = as fitted; each in [0.5, 2]. Default 1.
   SoSFFloat height, chest, waist, hips, armLength;
   // Distance from a joint within which the skin blends between its two parts, m.
-  // Default 0.04. Must be >= 0.
+  // Default 0.04. Must be > 0.
   SoSFFloat blendRadius;
   SoSFBool showVolumes;    // Default FALSE.
   SoSFColor volumeColor;   // Default 0.1 0.85 0.25.
@@ -110,6 +111,9 @@ class Mannequin : public SoGroup {
   // of each of its triangles; throws as collider(), and when `body` is NULL.
   const figment::TriangleMesh& posedBody() const;
   const std::vector<int>& triangleParts() const;
+  // How each vertex of the drawn mesh follows the parts (its own part as the volumes
+  // were fitted to it: sim/BodyParts.h assignTriangles); throws as posedBody().
+  const figment::SkinWeights& skinWeights() const;
   // The volumes and the part each belongs to, in the order found.
   struct VolumeEntry {
     class BodyVolume* node;
@@ -143,4 +147,5 @@ class Mannequin : public SoGroup {
   mutable std::shared_ptr<const figment::Collider> collider_;
   mutable std::unique_ptr<figment::TriangleMesh> posedBody_;
   mutable std::vector<int> triangleParts_;
+  mutable std::unique_ptr<figment::SkinWeights> skinWeights_;
 };

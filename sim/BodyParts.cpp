@@ -187,4 +187,17 @@ RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sect
   return best;
 }
 
+std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& triangleParts, size_t partCount) {
+  std::vector<std::vector<int>> votes(body.vertices.size());
+  for (size_t t = 0; t < body.triangles.size(); ++t)
+    for (int v : body.triangles[t]) {
+      if (votes[v].empty()) votes[v].assign(partCount, 0);
+      ++votes[v][triangleParts[t]];
+    }
+  std::vector<int> part(body.vertices.size(), -1);
+  for (size_t v = 0; v < votes.size(); ++v)
+    if (!votes[v].empty()) part[v] = static_cast<int>(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
+  return part;
+}
+
 }  // namespace figment

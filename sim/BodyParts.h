@@ -30,6 +30,11 @@ std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& s
 // The part index (into skeleton.parts) of each triangle of `body`, as described above.
 std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton);
 
+// The part of each vertex of `body`: the part most of its triangles belong to (ties: the
+// lower index); -1 for a vertex no triangle uses. With triangleParts from
+// assignTriangles, the vertices skin with the parts whose volumes were fitted to them.
+std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& triangleParts, size_t partCount);
+
 // A radial depth volume on the best of three axes (the bone; the bone's direction
 // through the part's centroid; the part's principal axis nearest the bone's direction,
 // through the centroid), by radialGapEstimate, each lengthened to span every vertex of

@@ -37,10 +37,26 @@ int partStartingAt(const Skeleton& skeleton, int j, int self, const Vec3& p) {
 }  // namespace
 
 SkinWeights skinWeights(const Skeleton& skeleton, const std::vector<Vec3>& restVertices, double blendRadius) {
+  return skinWeights(skeleton, restVertices, std::vector<int>(restVertices.size(), -1), blendRadius);
+}
+
+SkinWeights skinWeights(const Skeleton& skeleton, const std::vector<Vec3>& restVertices, const std::vector<int>& given,
+                        double blendRadius) {
   requirePositive("blendRadius", blendRadius);
   if (skeleton.parts.empty() && !restVertices.empty())
     throw std::invalid_argument("skeleton has no parts to skin " + std::to_string(restVertices.size()) + " vertices to");
-  const std::vector<int> owner = assignParts(skeleton, restVertices);
+  if (given.size() != restVertices.size())
+    throw std::invalid_argument("owner: " + std::to_string(given.size()) + " parts for " +
+                                std::to_string(restVertices.size()) + " vertices");
+  std::vector<int> owner = given;
+  for (size_t v = 0; v < owner.size(); ++v)
+    if (owner[v] >= static_cast<int>(skeleton.parts.size()))
+      throw std::invalid_argument("owner[" + std::to_string(v) + "] = " + std::to_string(owner[v]) + " is not a part");
+  if (std::find(owner.begin(), owner.end(), -1) != owner.end()) {
+    const std::vector<int> nearest = assignParts(skeleton, restVertices);
+    for (size_t v = 0; v < owner.size(); ++v)
+      if (owner[v] < 0) owner[v] = nearest[v];
+  }
   const std::vector<int> carriers = jointCarriers(skeleton);
   SkinWeights weights;
   weights.vertices.resize(restVertices.size());

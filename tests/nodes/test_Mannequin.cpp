@@ -254,7 +254,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadMannequin{"rotatedJoints [ \"elbowL\", \"kneeL\" ]  rotations 0 0 1 1", "",
                      "rotatedJoints has 2 names but rotations has 1 values"},
         BadMannequin{"height 3", "", "height"},
-        BadMannequin{"blendRadius -1", "", "blendRadius"},
+        BadMannequin{"blendRadius 0", "", "blendRadius = 0"},
         BadMannequin{"", std::string(kJoints) + "CapsuleVolume { part \"elbow\" }\n",
                      "CapsuleVolume: part = \"elbow\" is not a part"},
         BadMannequin{"", std::string(kJoints) + "DEF C CapsuleVolume { part \"handL\"  x -1 }\n",

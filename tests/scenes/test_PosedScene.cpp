@@ -1,0 +1,88 @@
+// scenes/posed.iv without draping it: the mannequin posed and sized through its fields,
+// its skin and its collision volumes moved by the same transformations.
+#include "nodes/Mannequin.h"
+#include "nodes/MeshFile.h"
+#include "sim/Collider.h"
+#include "sim/Skeleton.h"
+#include "sim/Skinning.h"
+#include "sim/TriangleMesh.h"
+#include "viewer/OffscreenContext.h"
+#include "viewer/SceneFile.h"
+
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+using namespace figment::viewer;
+
+namespace {
+
+class PosedScene : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    initHeadless();
+    std::string error;
+    scene_ = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/posed.iv", error);
+    ASSERT_NE(scene_, nullptr) << error;
+    scene_->ref();
+    model_ = dynamic_cast<Mannequin*>(SoNode::getByName("Model"));
+    ASSERT_NE(model_, nullptr);
+    const auto* body = dynamic_cast<MeshFile*>(model_->body.getValue());
+    ASSERT_NE(body, nullptr);
+    for (int i = 0; i < body->point.getNum(); ++i)
+      rest_.emplace_back(body->point[i][0], body->point[i][1], body->point[i][2]);
+  }
+  void TearDown() override {
+    if (scene_) scene_->unref();
+  }
+  SoSeparator* scene_ = nullptr;
+  Mannequin* model_ = nullptr;
+  std::vector<figment::Vec3> rest_;
+};
+
+double top(const std::vector<figment::Vec3>& vertices) {
+  double y = -1e9;
+  for (const figment::Vec3& v : vertices) y = std::max(y, v.y());
+  return y;
+}
+
+}  // namespace
+
+TEST_F(PosedScene, IsPosedAndSizedByItsFields) {
+  const std::vector<figment::Vec3>& posed = model_->posedBody().vertices;
+  ASSERT_EQ(posed.size(), rest_.size());
+  // height 0.98 about the floor (the head turns about the vertical: no change there).
+  const double floor = [&] {
+    double y = 1e9;
+    for (const figment::Vec3& v : rest_) y = std::min(y, v.y());
+    return y;
+  }();
+  EXPECT_NEAR((top(posed) - floor) / (top(rest_) - floor), 0.98, 0.003);
+  // The right forearm is raised by its elbow: its fingertip moved by decimetres.
+  const figment::Skeleton& skeleton = model_->skeleton();
+  const figment::Vec3 fingertip = skeleton["fingertipR"].position;
+  size_t nearest = 0;
+  for (size_t i = 0; i < rest_.size(); ++i)
+    if ((rest_[i] - fingertip).norm() < (rest_[nearest] - fingertip).norm()) nearest = i;
+  EXPECT_GT((posed[nearest] - rest_[nearest]).norm(), 0.2);
+}
+
+TEST_F(PosedScene, TheSkinStaysInsideTheVolumesThatFollowIt) {
+  // Every vertex that moves with one part alone (not blended near a joint) is as
+  // enclosed posed as the fitted volumes enclose it at rest: within 0.1 mm.
+  const figment::SkinWeights& weights = model_->skinWeights();
+  const std::vector<figment::Vec3>& posed = model_->posedBody().vertices;
+  const auto collider = model_->collider();
+  int rigid = 0, outside = 0;
+  for (size_t i = 0; i < posed.size(); ++i) {
+    if (weights.vertices[i][0].weight < 1.0) continue;
+    ++rigid;
+    figment::Contact contact;
+    if (!collider->contact(posed[i], 1e-4, 0.05, contact)) ++outside;
+  }
+  EXPECT_GT(rigid, static_cast<int>(posed.size() * 6 / 10)) << "most vertices are away from the joints";
+  EXPECT_EQ(outside, 0) << "of " << rigid;
+}
