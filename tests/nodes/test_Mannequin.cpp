@@ -208,6 +208,38 @@ TEST_F(MannequinTest, TheSkinFollowsThePose) {
   EXPECT_TRUE(bbox.getBoundingBox().isEmpty());
 }
 
+TEST_F(MannequinTest, AnExactPartCollidesWithItsOwnTrianglesAndFollowsThePose) {
+  // The forearm as its own triangles (a closed 4 cm box around it, x 0.5-0.65) instead
+  // of a capsule; the torso keeps its radial volume: a method per part.
+  TempDir dir;
+  dir.file("arm.obj",
+           "v 0.5 1.40 -0.02\nv 0.65 1.40 -0.02\nv 0.5 1.44 -0.02\nv 0.65 1.44 -0.02\n"
+           "v 0.5 1.40 0.02\nv 0.65 1.40 0.02\nv 0.5 1.44 0.02\nv 0.65 1.44 0.02\n"
+           "f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 1 3 4 2\nf 5 6 8 7\n");
+  const std::string path = dir.file(
+      "scene.iv", mannequinScene("body DEF Arm MeshFile { fileName \"arm.obj\" }",
+                                 std::string(kJoints) + "ExactVolume { part \"forearmL\" }\n" + kTorso));
+  SceneRoot root = readFile(path);
+  ASSERT_TRUE(root);
+  auto* model = find<Mannequin>(root.get(), "Model");
+  figment::Contact c;
+  ASSERT_TRUE(inContact(*model->collider(), {0.575, 1.42, 0.0}, c));
+  EXPECT_NEAR(c.distance, -0.02, 1e-9) << "the box's faces are 2 cm from its axis";
+  EXPECT_FALSE(inContact(*model->collider(), {0.575, 1.42, 0.03}, c));
+  EXPECT_TRUE(inContact(*model->collider(), {0.0, 1.3, 0.0}, c)) << "the torso's radial volume";
+  model->rotatedJoints.setValue("shoulderL");
+  model->rotations.setValue(SbRotation(SbVec3f(0, 0, 1), -1.5707963f));
+  ASSERT_TRUE(inContact(*model->collider(), {0.2, 1.42 - 0.375, 0.0}, c));
+  EXPECT_NEAR(c.distance, -0.02, 1e-6);
+}
+
+TEST_F(MannequinTest, AnExactPartNeedsABody) {
+  CapturedErrors errors;
+  SceneRoot root = readString(mannequinScene("", std::string(kJoints) + "ExactVolume { part \"forearmL\" }\n"));
+  ASSERT_TRUE(root) << errors.all();
+  EXPECT_THROW(find<Mannequin>(root.get(), "Model")->collider(), std::invalid_argument);
+}
+
 TEST_F(MannequinTest, ClothDropsOntoTheForearmAndStaysOutside) {
   // A 16 cm square of cloth 5 cm above the forearm capsule (top at y = 1.46).
   const Grid g = grid(9, 0.16, 1.51, 0.575, 0.0);
