@@ -1,5 +1,7 @@
 #include "BodyParts.h"
 
+#include "AxisSearch.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -179,11 +181,21 @@ RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sect
   const std::vector<std::pair<Vec3, Vec3>> axes = {{part.from, bone}, {centroid, bone}, {centroid, principal}};
   RadialDepthVolume best = fitAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);
   double bestGap = radialGapEstimate(best, part.mesh.vertices);
+  size_t start = 0;
   for (size_t k = 1; k < axes.size(); ++k) {
     RadialDepthVolume candidate = fitAlong(part, points, axes[k].first, axes[k].second, harmonics, sectionSpacing);
     const double gap = radialGapEstimate(candidate, part.mesh.vertices);
-    if (gap < bestGap) best = std::move(candidate), bestGap = gap;
+    if (gap < bestGap) best = std::move(candidate), bestGap = gap, start = k;
   }
+  // The genetic search from the best of them (it keeps its best: never worse).
+  const AxisSearchResult searched = searchAxis(
+      {axes[start].first, axes[start].second},
+      [&](const Axis& axis) {
+        return radialGapEstimate(fitAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
+                                 part.mesh.vertices);
+      });
+  if (searched.cost < bestGap)
+    best = fitAlong(part, points, searched.axis.origin, searched.axis.direction, harmonics, sectionSpacing);
   return best;
 }
 

@@ -35,10 +35,11 @@ std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skele
 // assignTriangles, the vertices skin with the parts whose volumes were fitted to them.
 std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& triangleParts, size_t partCount);
 
-// A radial depth volume on the best of three axes (the bone; the bone's direction
-// through the part's centroid; the part's principal axis nearest the bone's direction,
-// through the centroid), by radialGapEstimate, each lengthened to span every vertex of
-// the part, with sections about `sectionSpacing` (m) apart and K = `harmonics`
+// A radial depth volume on the best axis found: the best of three (the bone; the bone's
+// direction through the part's centroid; the part's principal axis nearest the bone's
+// direction, through the centroid) by radialGapEstimate, then the genetic search
+// (sim/AxisSearch.h) from it; each volume lengthened to span every vertex of the part,
+// with sections about `sectionSpacing` (m) apart and K = `harmonics`
 // (fitRadialDepthToPoints on the part's vertices and triangle centroids).
 RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing);
 
