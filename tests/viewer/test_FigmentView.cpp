@@ -186,3 +186,17 @@ TEST_F(FigmentView, DepthBufferOnlyDrawsTheSkinThatTheHybridNodesHide) {
   };
   EXPECT_NE(bytes(path("plain.png")), bytes(path("hybrid.png")));
 }
+
+TEST_F(FigmentView, ShowVolumesDrawsTheMannequinsVolumes) {
+  // scenes/mannequin.iv with and without the flag: the pictures differ (what is drawn
+  // is counted in pixels by test_VolumeDrawing).
+  const std::string scene = FIGMENT_SOURCE_DIR "/scenes/mannequin.iv";
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("plain.png")) + " --size 120x160").status, 0);
+  const ProcessResult shown = run(quote(scene) + " -o " + quote(path("shown.png")) + " --size 120x160 --show-volumes");
+  ASSERT_EQ(shown.status, 0) << shown.err;
+  auto bytes = [](const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_NE(bytes(path("plain.png")), bytes(path("shown.png")));
+}
