@@ -1,6 +1,11 @@
 #include "viewer/StatsJson.h"
 
+#include "nodes/CapsuleVolume.h"
 #include "nodes/ClothEngine.h"
+#include "nodes/ExactVolume.h"
+#include "nodes/Mannequin.h"
+#include "nodes/MeshFile.h"
+#include "nodes/RadialDepthVolume.h"
 #include "viewer/AtomicFile.h"
 
 #include <nlohmann/json.hpp>
@@ -28,6 +33,24 @@ nlohmann::json method(const ClothEngine& engine, const ClothEngine::RunStats& ru
           {"acceleration_limit_g", limited ? engine.accelerationLimit.getValue() : 0.0},
           {"limited_node_share", run.limitedNodeShare}};
 }
+// What the garment collided with: a mesh (exactly), a mannequin's volumes by kind, or
+// nothing.
+nlohmann::json body(const ClothEngine& engine) {
+  SoNode* node = engine.body.getValue();
+  if (!node) return {{"kind", "none"}};
+  if (!node->isOfType(Mannequin::getClassTypeId())) return {{"kind", "mesh"}};
+  int capsules = 0, radial = 0, exact = 0;
+  try {
+    for (const Mannequin::VolumeEntry& v : static_cast<const Mannequin*>(node)->volumes()) {
+      capsules += v.node->isOfType(CapsuleVolume::getClassTypeId());
+      radial += v.node->isOfType(RadialDepthVolume::getClassTypeId());
+      exact += v.node->isOfType(ExactVolume::getClassTypeId());
+    }
+  } catch (const std::exception&) {
+    // An unusable mannequin fails the drape, which is reported before any stats.
+  }
+  return {{"kind", "mannequin"}, {"capsule_volumes", capsules}, {"radial_volumes", radial}, {"exact_parts", exact}};
+}
 }  // namespace
 
 std::string writeStatsJson(const std::string& path, const std::string& scene,
@@ -42,7 +65,8 @@ std::string writeStatsJson(const std::string& path, const std::string& scene,
                         {"simulated_s", run.simulatedSeconds},
                         {"wall_s", run.wallSeconds},
                         {"at_rest", run.atRest},
-                        {"method", method(*engine, run)}});
+                        {"method", method(*engine, run)},
+                        {"body", body(*engine)}});
   }
   const nlohmann::json stats = {{"scene", scene},
                                 {"garments", garments},

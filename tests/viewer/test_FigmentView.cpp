@@ -2,6 +2,7 @@
 // input gives one line on stderr naming the file, node, field and value, a non-zero
 // exit status and no image.
 
+#include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
 
 #include <gtest/gtest.h>
@@ -89,7 +90,22 @@ TEST_F(FigmentView, RendersAPngAndWritesStatistics) {
   EXPECT_NEAR(garment["simulated_s"].get<double>(), 0.01, 1e-3);
   EXPECT_GE(garment["wall_s"].get<double>(), 0.0);
   EXPECT_TRUE(garment["at_rest"].is_boolean());
+  EXPECT_EQ(garment["body"]["kind"], "none");
   EXPECT_GE(stats["render_wall_s"].get<double>(), 0.0);
+}
+
+TEST_F(FigmentView, StatisticsSayWhatTheGarmentCollidedWith) {
+  const std::string mannequin = std::string("  DEF Body Mannequin {\n") + figment::test::kTPoseJoints +
+                                figment::test::kForearmCapsule + "  }\n";
+  const std::string scene = write("cloth.iv", clothScene("body USE Body", mannequin));
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " +
+                              quote(path("stats.json")));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json body = nlohmann::json::parse(std::ifstream(path("stats.json")))["garments"][0]["body"];
+  EXPECT_EQ(body["kind"], "mannequin");
+  EXPECT_EQ(body["capsule_volumes"], 1);
+  EXPECT_EQ(body["radial_volumes"], 0);
+  EXPECT_EQ(body["exact_parts"], 0);
 }
 
 TEST_F(FigmentView, StatisticsReportTheMethodAndHowOftenTheLimitersEngaged) {

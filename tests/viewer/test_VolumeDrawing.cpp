@@ -2,6 +2,7 @@
 // colour, over the body, only when shown (what figment-view --show-volumes switches on).
 #include "nodes/Mannequin.h"
 #include "support/Pixels.h"
+#include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"
@@ -25,29 +26,17 @@ constexpr ImageSize kSize{200, 200};
 
 // A T-posed skeleton, a forearm capsule along +x and a red box (the "body") inside it;
 // lines in pure green, flat colours.
-const char* kScene = R"(#Inventor V2.1 ascii
-Separator {
-  LightModel { model BASE_COLOR }
-  DEF Model Mannequin {
-    volumeColor 0 1 0
-    SkeletonJoints {
-      names [ "pelvis", "waist", "chest", "neckBase", "neckTop", "headTop",
-              "hipL", "kneeL", "ankleL", "toeL", "hipR", "kneeR", "ankleR", "toeR",
-              "shoulderBaseL", "shoulderL", "elbowL", "wristL", "fingertipL",
-              "shoulderBaseR", "shoulderR", "elbowR", "wristR", "fingertipR", "pelvisFloor" ]
-      positions [ 0 0.9 0, 0 1.05 0, 0 1.25 0, 0 1.45 0, 0 1.55 0, 0 1.75 0,
-                  0.1 0.9 0, 0.1 0.5 0, 0.1 0.08 0, 0.1 0.02 0.15,
-                  -0.1 0.9 0, -0.1 0.5 0, -0.1 0.08 0, -0.1 0.02 0.15,
-                  0.05 1.42 0, 0.2 1.42 0, 0.45 1.42 0, 0.7 1.42 0, 0.88 1.42 0,
-                  -0.05 1.42 0, -0.2 1.42 0, -0.45 1.42 0, -0.7 1.42 0, -0.88 1.42 0, 0 0.8 0 ]
-    }
-    CapsuleVolume { part "forearmL"  x 0.08 y 0.35 z 0.08  ox 0.575 oy 1.42 oz 0
-                    theta -1.5707963  phi 1.5707963 }
-  }
-  BaseColor { rgb 1 0 0 }
-  Separator { Translation { translation 0.575 1.42 0 }  Cube { width 0.3 height 0.05 depth 0.05 } }
-}
-)";
+const std::string kScene = std::string("#Inventor V2.1 ascii\n"
+                                       "Separator {\n"
+                                       "  LightModel { model BASE_COLOR }\n"
+                                       "  DEF Model Mannequin {\n"
+                                       "    volumeColor 0 1 0\n") +
+                           figment::test::kTPoseJoints + figment::test::kForearmCapsule +
+                           "  }\n"
+                           "  BaseColor { rgb 1 0 0 }\n"
+                           "  Separator { Translation { translation 0.575 1.42 0 }\n"
+                           "              Cube { width 0.3 height 0.05 depth 0.05 } }\n"
+                           "}\n";
 
 class VolumeDrawing : public ::testing::Test {
  protected:
