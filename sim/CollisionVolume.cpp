@@ -66,11 +66,28 @@ class CapsuleVolume final : public CollisionVolume {
       radius_ = std::max(radius_, (capsule_.fromUnit(u) - centre_).norm());
     }
     axis_ = (capsule_.fromUnit(Vec3(0, 0.5, 0)) - capsule_.fromUnit(Vec3(0, -0.5, 0))).normalized();
+    // The unit capsule lies in the unit cylinder (radius 1/2, y in [-1/2, 1/2]); the taper
+    // and scale take a point of it at most (1/2) max(x (1 + |tx| / 2), z (1 + |tz| / 2))
+    // from the axis, and the axis onto the segment of length y: a bounding cylinder.
+    const CapsuleParameters& c = capsule_.parameters();
+    halfHeight_ = 0.5 * c.y;
+    axisRadius_ = 0.5 * std::max(c.x * (1.0 + 0.5 * std::abs(c.tx)), c.z * (1.0 + 0.5 * std::abs(c.tz)));
   }
   bool contains(const Vec3& p) const override { return capsule_.contains(p); }
   SurfacePoint nearest(const Vec3& p) const override { return capsule_.nearestFast(p); }
   Vec3 centre() const override { return centre_; }
   double boundingRadius() const override { return radius_; }
+  BoundingCapsule boundingCapsule() const override {
+    return {centre_ - halfHeight_ * axis_, centre_ + halfHeight_ * axis_, axisRadius_};
+  }
+  // The bounding cylinder's signed distance.
+  double distanceBound(const Vec3& p) const override {
+    const Vec3 q = p - centre_;
+    const double h = q.dot(axis_);
+    const double radial = (q - h * axis_).norm() - axisRadius_, axial = std::abs(h) - halfHeight_;
+    if (axial > 0.0) return std::hypot(axial, std::max(radial, 0.0));
+    return std::max(radial, axial);
+  }
 
   SurfacePoint nearestUnder(const Eigen::Affine3d& map, const Eigen::Affine3d& inverse, const Vec3& p) const override {
     const Vec3 rest = inverse * p;
@@ -103,6 +120,7 @@ class CapsuleVolume final : public CollisionVolume {
   Capsule capsule_;
   Vec3 centre_, axis_;
   double radius_ = 0.0;
+  double halfHeight_ = 0.0, axisRadius_ = 0.0;  // the bounding cylinder about axis_, m
 };
 
 class RadialVolume final : public CollisionVolume {
@@ -123,6 +141,11 @@ class RadialVolume final : public CollisionVolume {
   SurfacePoint nearest(const Vec3& p) const override { return volume_.nearestFast(p); }
   Vec3 centre() const override { return centre_; }
   double boundingRadius() const override { return radius_; }
+  BoundingCapsule boundingCapsule() const override {
+    const RadialDepthParameters& q = volume_.parameters();
+    return {q.base, q.base + q.length * q.direction, volume_.rMax()};
+  }
+  double distanceBound(const Vec3& p) const override { return volume_.distanceBound(p); }
 
   SurfacePoint nearestUnder(const Eigen::Affine3d& map, const Eigen::Affine3d& inverse, const Vec3& p) const override {
     const RadialDepthParameters& q = volume_.parameters();
@@ -209,8 +232,11 @@ class MappedVolume final : public CollisionVolume {
       : rest_(std::move(rest)), map_(map), inverse_(map.inverse()), scale_(similarityScale(map)) {
     centre_ = map_ * rest_->centre();
     // The largest singular value stretches the bounding sphere the most.
-    const double stretch = Eigen::JacobiSVD<Eigen::Matrix3d>(map_.linear()).singularValues()[0];
-    radius_ = rest_->boundingRadius() * stretch;
+    const Vec3 stretch = Eigen::JacobiSVD<Eigen::Matrix3d>(map_.linear()).singularValues();
+    radius_ = rest_->boundingRadius() * stretch[0];
+    largest_ = stretch[0], smallest_ = stretch[2];
+    const BoundingCapsule c = rest_->boundingCapsule();
+    capsule_ = {map_ * c.a, map_ * c.b, c.radius * largest_};
   }
   bool contains(const Vec3& p) const override { return rest_->contains(inverse_ * p); }
   SurfacePoint nearest(const Vec3& p) const override {
@@ -220,6 +246,13 @@ class MappedVolume final : public CollisionVolume {
   }
   Vec3 centre() const override { return centre_; }
   double boundingRadius() const override { return radius_; }
+  BoundingCapsule boundingCapsule() const override { return capsule_; }
+  // A rest-frame gap g maps to at least smallest g outside (no segment shrinks more) and
+  // a depth -g to at most largest (-g) inside.
+  double distanceBound(const Vec3& p) const override {
+    const double rest = rest_->distanceBound(inverse_ * p);
+    return rest >= 0.0 ? smallest_ * rest : largest_ * rest;
+  }
 
  private:
   std::shared_ptr<const CollisionVolume> rest_;
@@ -227,6 +260,8 @@ class MappedVolume final : public CollisionVolume {
   double scale_;  // > 0: a rotation times this scale, which maps nearest points exactly
   Vec3 centre_;
   double radius_ = 0.0;
+  double largest_ = 1.0, smallest_ = 1.0;  // the map's singular values
+  BoundingCapsule capsule_;
 };
 }  // namespace
 

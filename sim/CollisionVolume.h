@@ -21,9 +21,24 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <memory>
 
 namespace figment {
+
+// The points within `radius` (m) of the segment a-b.
+struct BoundingCapsule {
+  Vec3 a, b;
+  double radius = 0.0;
+  // p's signed distance to this capsule: a lower bound of its signed distance to anything
+  // inside it.
+  double gap(const Vec3& p) const {
+    const Vec3 ab = b - a, ap = p - a;
+    const double length2 = ab.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp(ap.dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return (ap - t * ab).norm() - radius;
+  }
+};
 
 class CollisionVolume {
  public:
@@ -35,6 +50,15 @@ class CollisionVolume {
   // A sphere enclosing the volume, for early-outs: centre (m) and radius (m).
   virtual Vec3 centre() const = 0;
   virtual double boundingRadius() const = 0;
+  // A capsule enclosing the volume (the points within `radius` of the segment a-b), a
+  // tighter early-out for long parts; the default is the bounding sphere.
+  virtual BoundingCapsule boundingCapsule() const { return {centre(), centre(), boundingRadius()}; }
+  // A lower bound of p's signed distance (m) without a nearest-point search: where it is
+  // at least the clearance, so is the distance. Any enclosing set's signed distance is
+  // one (a point inside is no deeper than the way out of the enclosing set); the
+  // default is the bounding capsule's, a radial volume's is tighter
+  // (RadialDepthVolume::distanceBound).
+  virtual double distanceBound(const Vec3& p) const { return boundingCapsule().gap(p); }
 
   // The nearest point to world point p of this volume's image under `map` (`inverse` its
   // inverse), for a map that is not a similarity. The default maps the rest-frame answer

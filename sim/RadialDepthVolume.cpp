@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -31,45 +32,89 @@ RadialDepthVolume::RadialDepthVolume(RadialDepthParameters parameters) : paramet
   parameters_.direction.normalize();
   parameters_.reference.normalize();
   side_ = parameters_.direction.cross(parameters_.reference);
+  // The table, and the bounds distanceBound() relies on (see the header): each from the
+  // function's largest value on a grid of kGrid angles plus pi / kGrid times a bound of
+  // its derivative (every angle lies within pi / kGrid of a grid angle).
+  const auto& c = parameters_.coefficients;
+  const int harmonics = parameters_.harmonics;
+  const size_t sections = c.size();
+  const double spacing = parameters_.length / static_cast<double>(sections - 1);
+  constexpr int kGrid = 256;
+  const auto largest = [&](auto&& f, double derivativeBound) {
+    double most = 0.0;
+    for (int i = 0; i < kGrid; ++i) most = std::max(most, std::abs(f(2 * M_PI * i / kGrid)));
+    return most + M_PI / kGrid * derivativeBound;
+  };
+  for (size_t j = 0; j < sections; ++j) {
+    table_.insert(table_.end(), c[j].begin(), c[j].end());
+    double amplitude = 0.0, curvature = 0.0;  // sum |harmonic k|, sum k^2 |harmonic k|
+    for (int k = 1; k <= harmonics; ++k) {
+      const double a = std::hypot(c[j][2 * k - 1], c[j][2 * k]);
+      amplitude += a, curvature += k * k * a;
+    }
+    rMax_ = std::max(rMax_, c[j][0] + amplitude);
+    turning_.push_back(largest(
+        [&](double a) {
+          double d = 0.0;
+          for (int k = 1; k <= harmonics; ++k) d += k * (c[j][2 * k] * std::cos(k * a) - c[j][2 * k - 1] * std::sin(k * a));
+          return d;
+        },
+        curvature));
+    if (j + 1 == sections) break;
+    double change = 0.0;  // sum k |harmonic k of the difference to the next section|
+    for (int k = 1; k <= harmonics; ++k)
+      change += k * std::hypot(c[j + 1][2 * k - 1] - c[j][2 * k - 1], c[j + 1][2 * k] - c[j][2 * k]);
+    slope_.push_back(largest(
+                         [&](double a) {
+                           double d = c[j + 1][0] - c[j][0];
+                           for (int k = 1; k <= harmonics; ++k)
+                             d += (c[j + 1][2 * k - 1] - c[j][2 * k - 1]) * std::cos(k * a) +
+                                  (c[j + 1][2 * k] - c[j][2 * k]) * std::sin(k * a);
+                           return d;
+                         },
+                         change) /
+                     spacing);
+  }
+}
+
+double RadialDepthVolume::seriesAt(double s, double cosA, double sinA) const {
+  const size_t sections = parameters_.coefficients.size(), terms = 2 * parameters_.harmonics + 1;
+  const double x = std::clamp(s / parameters_.length, 0.0, 1.0) * static_cast<double>(sections - 1);
+  const size_t j = std::min(static_cast<size_t>(x), sections - 2);
+  const double f = x - static_cast<double>(j);
+  const double *c0 = &table_[j * terms], *c1 = c0 + terms;
+  // cos k a, sin k a by the angle-addition recurrence.
+  double ck = 1.0, sk = 0.0, r = (1.0 - f) * c0[0] + f * c1[0];
+  for (int k = 1; k <= parameters_.harmonics; ++k) {
+    const double next = ck * cosA - sk * sinA;
+    sk = sk * cosA + ck * sinA, ck = next;
+    r += ((1.0 - f) * c0[2 * k - 1] + f * c1[2 * k - 1]) * ck + ((1.0 - f) * c0[2 * k] + f * c1[2 * k]) * sk;
+  }
+  return r;
 }
 
 double RadialDepthVolume::radius(double s, double a) const {
-  const auto& c = parameters_.coefficients;
-  const double x = std::clamp(s / parameters_.length, 0.0, 1.0) * static_cast<double>(c.size() - 1);
-  const size_t j = std::min(static_cast<size_t>(x), c.size() - 2);
-  const double f = x - static_cast<double>(j);
-  const std::vector<double>&c0 = c[j], &c1 = c[j + 1];
-  // cos k a, sin k a by the angle-addition recurrence: one cos and one sin in all.
-  const double ca = std::cos(a), sa = std::sin(a);
-  double ck = 1.0, sk = 0.0, r = (1.0 - f) * c0[0] + f * c1[0];
-  for (int k = 1; k <= parameters_.harmonics; ++k) {
-    const double next = ck * ca - sk * sa;
-    sk = sk * ca + ck * sa, ck = next;
-    r += ((1.0 - f) * c0[2 * k - 1] + f * c1[2 * k - 1]) * ck + ((1.0 - f) * c0[2 * k] + f * c1[2 * k]) * sk;
-  }
-  return std::max(r, 0.0);
+  return std::max(seriesAt(s, std::cos(a), std::sin(a)), 0.0);
 }
 
-SurfaceSample RadialDepthVolume::sample(double s, double a) const {
+SurfaceSample RadialDepthVolume::sample(double s, double a) const { return sampleAt(s, std::cos(a), std::sin(a)); }
+
+SurfaceSample RadialDepthVolume::sampleAt(double s, double cosA, double sinA) const {
   // r and its derivatives: linear in s between sections, a Fourier series in a.
-  const auto& c = parameters_.coefficients;
-  const double spacing = parameters_.length / static_cast<double>(c.size() - 1);
-  const double x = std::clamp(s / parameters_.length, 0.0, 1.0) * static_cast<double>(c.size() - 1);
-  const size_t j = std::min(static_cast<size_t>(x), c.size() - 2);
+  const size_t sections = parameters_.coefficients.size(), terms = 2 * parameters_.harmonics + 1;
+  const double spacing = parameters_.length / static_cast<double>(sections - 1);
+  const double x = std::clamp(s / parameters_.length, 0.0, 1.0) * static_cast<double>(sections - 1);
+  const size_t j = std::min(static_cast<size_t>(x), sections - 2);
   const double f = x - static_cast<double>(j);
-  double r0 = 0.0, r1 = 0.0, ra = 0.0;  // r at sections j and j + 1; dr/da interpolated
-  const double cosA = std::cos(a), sinA = std::sin(a);
+  const double *c0 = &table_[j * terms], *c1 = c0 + terms;
+  double r0 = c0[0], r1 = c1[0], ra = 0.0;  // r at sections j and j + 1; dr/da interpolated
   double ck = 1.0, sk = 0.0;
-  for (int k = 0; k <= parameters_.harmonics; ++k) {
-    if (k == 0) {
-      r0 += c[j][0], r1 += c[j + 1][0];
-      continue;
-    }
+  for (int k = 1; k <= parameters_.harmonics; ++k) {
     const double next = ck * cosA - sk * sinA;
     sk = sk * cosA + ck * sinA, ck = next;
-    r0 += c[j][2 * k - 1] * ck + c[j][2 * k] * sk;
-    r1 += c[j + 1][2 * k - 1] * ck + c[j + 1][2 * k] * sk;
-    ra += k * ((1.0 - f) * (c[j][2 * k] * ck - c[j][2 * k - 1] * sk) + f * (c[j + 1][2 * k] * ck - c[j + 1][2 * k - 1] * sk));
+    r0 += c0[2 * k - 1] * ck + c0[2 * k] * sk;
+    r1 += c1[2 * k - 1] * ck + c1[2 * k] * sk;
+    ra += k * ((1.0 - f) * (c0[2 * k] * ck - c0[2 * k - 1] * sk) + f * (c1[2 * k] * ck - c1[2 * k - 1] * sk));
   }
   const double r = (1.0 - f) * r0 + f * r1;
   const bool clamped = r < 0.0;  // radius() clamps at 0: a point on the axis
@@ -94,15 +139,47 @@ void RadialDepthVolume::toAxis(const Vec3& p, double& s, double& a, double& rho)
   a = std::atan2(across.dot(side_), across.dot(parameters_.reference));
 }
 
+void RadialDepthVolume::toAxis(const Vec3& p, double& s, double& cosA, double& sinA, double& rho) const {
+  const Vec3 d = p - parameters_.base;
+  s = d.dot(parameters_.direction);
+  const Vec3 across = d - s * parameters_.direction;
+  rho = across.norm();
+  const double x = across.dot(parameters_.reference), y = across.dot(side_), h = std::sqrt(x * x + y * y);
+  if (h > 0.0) cosA = x / h, sinA = y / h;
+  else cosA = 1.0, sinA = 0.0;  // on the axis: atan2's angle 0
+}
+
 bool RadialDepthVolume::contains(const Vec3& p) const {
-  double s, a, rho;
-  toAxis(p, s, a, rho);
-  return s >= 0.0 && s <= parameters_.length && rho <= radius(s, a);
+  double s, cosA, sinA, rho;
+  toAxis(p, s, cosA, sinA, rho);
+  return s >= 0.0 && s <= parameters_.length && rho <= std::max(seriesAt(s, cosA, sinA), 0.0);
+}
+
+double RadialDepthVolume::distanceBound(const Vec3& p) const {
+  double s, cosA, sinA, rho;
+  toAxis(p, s, cosA, sinA, rho);
+  const double length = parameters_.length;
+  const double axial = s < 0.0 ? -s : s > length ? s - length : 0.0;
+  if (axial > 0.0) return std::hypot(axial, std::max(rho - rMax_, 0.0));
+  const double r = std::max(seriesAt(s, cosA, sinA), 0.0), g = rho - r;
+  if (g <= 0.0) return -std::min({s, length - s, -g});
+  const double cylinder = std::max(rho - rMax_, 0.0);
+  if (!(r > 0.0)) return cylinder;
+  // The spans that [s - g, s + g] meets.
+  const double perSpan = static_cast<double>(slope_.size()) / length;
+  const size_t last = slope_.size() - 1;
+  const size_t from = std::min(static_cast<size_t>(std::max(s - g, 0.0) * perSpan), last);
+  const size_t to = std::min(static_cast<size_t>(std::min(s + g, length) * perSpan), last);
+  double slope = 0.0, turning = 0.0;
+  for (size_t j = from; j <= to; ++j)
+    slope = std::max(slope, slope_[j]), turning = std::max({turning, turning_[j], turning_[j + 1]});
+  const double lean = turning / r;
+  return std::max(g / std::sqrt(1.0 + slope * slope + lean * lean), cylinder);
 }
 
 SurfacePoint RadialDepthVolume::nearest(const Vec3& p) const { return closest(p, false); }
 
-SurfacePoint RadialDepthVolume::nearestFast(const Vec3& p) const { return closest(p, true); }
+SurfacePoint RadialDepthVolume::nearestFast(const Vec3& p) const { return closestFast(p); }
 
 SurfacePoint RadialDepthVolume::closest(const Vec3& p, bool fast) const {
   double s, a, rho;
@@ -131,6 +208,55 @@ SurfacePoint RadialDepthVolume::closest(const Vec3& p, bool fast) const {
   else if (onCap) out.normal = capNormal;
   else out.normal = surfaceNormal(side(t, angle), best - (parameters_.base + t * parameters_.direction),
                                   parameters_.direction);
+  return out;
+}
+
+namespace {
+constexpr double kConverged = 1e-8;  // m: a Gauss-Newton step shorter than this ends the search
+}  // namespace
+
+SurfacePoint RadialDepthVolume::closestFast(const Vec3& p) const {
+  // closest(p, true), the angle carried as (cos a, sin a): refineOnSurface's three
+  // Gauss-Newton steps with backtracking, each step turning the angle by rotateAngle.
+  double s, cosA, sinA, rho;
+  toAxis(p, s, cosA, sinA, rho);
+  const double length = parameters_.length;
+  const bool inside = s >= 0.0 && s <= length && rho <= std::max(seriesAt(s, cosA, sinA), 0.0);
+  double t = std::clamp(s, 0.0, length), c = cosA, sn = sinA;
+  SurfaceSample at = sampleAt(t, c, sn);
+  double gap2 = (at.w - p).squaredNorm();
+  for (int step = 0; step < 3; ++step) {
+    const Eigen::Vector2d delta = gaussNewtonStep(at, p);
+    double moved = -1.0;  // how far the accepted step moved the point, m
+    for (double scale = 1.0; scale > 0.2 && moved < 0.0; scale *= 0.5) {
+      const double tNext = std::clamp(t + scale * delta[0], 0.0, length);
+      double cNext = c, sNext = sn;
+      rotateAngle(scale * delta[1], cNext, sNext);
+      const SurfaceSample next = sampleAt(tNext, cNext, sNext);
+      const double nextGap2 = (next.w - p).squaredNorm();
+      if (nextGap2 < gap2) moved = (next.w - at.w).norm(), t = tNext, c = cNext, sn = sNext, at = next, gap2 = nextGap2;
+    }
+    // Converged: Gauss-Newton contracts at least tenfold per step here (p within a
+    // fraction of the curvature radius), so the next step would move it < 1 nm.
+    if (moved < kConverged) break;
+  }
+  Vec3 best = at.w;
+  double bestGap = std::sqrt(gap2);
+  bool onCap = false;
+  Vec3 capNormal;
+  // The flat caps: straight onto a cap where p lies over it (and nearer than the side).
+  for (const double capS : {0.0, length}) {
+    const double gap = std::abs(s - capS);
+    if (gap >= bestGap || rho > std::max(seriesAt(capS, cosA, sinA), 0.0)) continue;
+    best = p - (s - capS) * parameters_.direction, bestGap = gap, onCap = true;
+    capNormal = capS == 0.0 ? -parameters_.direction : parameters_.direction;
+  }
+  SurfacePoint out;
+  out.point = best;
+  out.distance = inside ? -bestGap : bestGap;
+  if (!inside && bestGap > 1e-6) out.normal = (p - best) / bestGap;
+  else if (onCap) out.normal = capNormal;
+  else out.normal = surfaceNormal(at, best - (parameters_.base + t * parameters_.direction), parameters_.direction);
   return out;
 }
 

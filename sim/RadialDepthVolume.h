@@ -47,16 +47,47 @@ class RadialDepthVolume {
   bool contains(const Vec3& p) const;
   SurfacePoint nearest(const Vec3& p) const;
   // The fast path for points near the surface (cloth nodes): from the radial projection,
-  // three Gauss-Newton steps in world space; the caps as in nearest().
+  // three Gauss-Newton steps in world space; the caps as in nearest(). No atan2, no sin
+  // or cos: the angle is carried as its cosine and sine, turned by each step.
   SurfacePoint nearestFast(const Vec3& p) const;
   // Axis coordinates of p: position along the axis s (m), angle a, distance from it (m).
   void toAxis(const Vec3& p, double& s, double& a, double& rho) const;
 
+  // A lower bound of p's signed distance (m), without a search: for a cheap early-out.
+  //   outside the slab 0 <= s <= length   its distance to the bounding cylinder (the axis
+  //                                       segment, radius rMax());
+  //   in it, outside (g = rho - r(s, a)   g / sqrt(1 + S^2 + (A / r)^2): were p's distance
+  //   > 0)                                d < g, the segment from p to its nearest point
+  //                                       would stay in the slab, outside (rho > r), at
+  //                                       rho > rho(p) - d > r(s, a) and within g of s,
+  //                                       where |grad g|^2 = 1 + (dr/ds)^2 + (dr/da / rho)^2
+  //                                       <= 1 + S^2 + (A / r)^2, S the steepest slope of
+  //                                       the spans [s - g, s + g] meets and A the largest
+  //                                       |dr/da| of their sections; so d >= g / that;
+  //   inside                              -min(s, length - s, r - rho): the cap or the
+  //                                       side point straight out is no nearer.
+  // S and A are bounded once, from a grid of angles plus the grid step times a bound of
+  // the derivative.
+  double distanceBound(const Vec3& p) const;
+  // An upper bound of r over the whole volume (m).
+  double rMax() const { return rMax_; }
+
  private:
   SurfacePoint closest(const Vec3& p, bool fast) const;
+  SurfacePoint closestFast(const Vec3& p) const;
+  // Axis coordinates with the angle as its cosine and sine (no atan2).
+  void toAxis(const Vec3& p, double& s, double& cosA, double& sinA, double& rho) const;
+  // r at (s, a) from cos a, sin a (the Fourier series by the angle-addition recurrence),
+  // unclamped.
+  double seriesAt(double s, double cosA, double sinA) const;
+  SurfaceSample sampleAt(double s, double cosA, double sinA) const;
 
   RadialDepthParameters parameters_;
   Vec3 side_;  // direction x reference: angle pi/2
+  std::vector<double> table_;    // the coefficients, section after section (2K + 1 each)
+  std::vector<double> slope_;    // per span: max over a of |dr/ds|
+  std::vector<double> turning_;  // per section: max over a of |dr/da|, m/rad
+  double rMax_ = 0.0;            // m
 };
 
 // Fits a radial depth volume to `body`'s triangles whose centroid projects onto the axis

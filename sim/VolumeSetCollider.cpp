@@ -12,8 +12,10 @@ namespace figment {
 
 namespace {
 // Touching: d < clearance - kTouchMargin; clear: d >= clearance - kClearMargin. Clear is
-// the stricter of the two, so a node set on a target (rounded) touches nothing.
-constexpr double kTouchMargin = 1e-9;  // m
+// the stricter of the two, so a node set on a target (rounded) touches nothing; the touch
+// margin also covers the fast paths' convergence noise (nanometres) in the target's
+// distance to its own volume, which is not searched again.
+constexpr double kTouchMargin = 1e-7;  // m
 constexpr double kClearMargin = 0.5e-9;  // m
 constexpr int kMaxCandidates = 8;  // a node touches a few volumes at most: keep the nearest
 constexpr int kCreasePushes = 16;
@@ -37,27 +39,40 @@ VolumeSetCollider::VolumeSetCollider(std::vector<PosedVolume> volumes) {
       throw std::invalid_argument(which + ": " + e.what());
     }
     parts_.push_back(v.part);
-    centres_.push_back(world->centre());
-    radii_.push_back(world->boundingRadius());
+    capsules_.push_back(world->boundingCapsule());
     world_.push_back(std::move(world));
   }
 }
 
-bool VolumeSetCollider::clearOfAll(const Vec3& x, double clearance) const {
-  for (size_t i = 0; i < world_.size(); ++i)
-    if (sphereGap(i, x) < clearance && world_[i]->nearest(x).distance < clearance - kClearMargin) return false;
+bool VolumeSetCollider::beyond(size_t i, const Vec3& x, double gap) const {
+  return capsules_[i].gap(x) >= gap || world_[i]->distanceBound(x) >= gap;
+}
+
+bool VolumeSetCollider::clearOfAll(const Vec3& x, double clearance, size_t own) const {
+  const double clear = clearance - kClearMargin;
+  for (size_t i = 0; i < world_.size(); ++i) {
+    if (i == own) {
+      if (world_[i]->contains(x)) return false;
+      continue;
+    }
+    if (!beyond(i, x, clear) && world_[i]->nearest(x).distance < clear) return false;
+  }
   return true;
 }
 
 bool VolumeSetCollider::contact(const Vec3& p, double clearance, double /*searchRadius*/, Contact& out) const {
-  const double touch = clearance - kTouchMargin;
+  const double touch = clearance - kTouchMargin, clear = clearance - kClearMargin;
   std::array<Candidate, kMaxCandidates> candidates;
   int count = 0;
   bool inside = false;
   double bound = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < world_.size(); ++i) {
-    const double gap = sphereGap(i, p);
-    if (gap >= touch) {
+    // The cheap lower bounds first: the bounding capsule, then the volume's own; they
+    // decide only where they show the volume clear (so a target, clear by a search of
+    // its volumes, reports a distance of at least the clearance less kClearMargin).
+    double gap = capsules_[i].gap(p);
+    if (gap < clear) gap = world_[i]->distanceBound(p);
+    if (gap >= clear) {
       bound = std::min(bound, gap);
       continue;
     }
@@ -83,7 +98,7 @@ bool VolumeSetCollider::contact(const Vec3& p, double clearance, double /*search
   }
   for (int k = 0; k < count; ++k) {
     const SurfacePoint& s = candidates[k].s;
-    if (!clearOfAll(s.point + clearance * s.normal, clearance)) continue;
+    if (!clearOfAll(s.point + clearance * s.normal, clearance, candidates[k].volume)) continue;
     out = {s.point, s.normal, inside ? -std::abs(s.distance) : std::abs(s.distance)};
     return true;
   }
@@ -105,7 +120,7 @@ Vec3 VolumeSetCollider::creaseTarget(const Vec3& p, const Vec3& start, const Vec
     // The two volumes x is deepest in (or nearest within the clearance of).
     SurfacePoint first{Vec3::Zero(), Vec3::Zero(), kNone}, second = first;
     for (size_t i = 0; i < world_.size(); ++i) {
-      if (sphereGap(i, x) >= clearance) continue;
+      if (beyond(i, x, clearance - kClearMargin)) continue;
       const SurfacePoint s = world_[i]->nearest(x);
       if (s.distance >= clearance - kClearMargin) continue;
       if (s.distance < first.distance) second = first, first = s;

@@ -5,23 +5,31 @@
 // the point, built so that its push-out target surfacePoint + clearance normal is clear
 // of every volume (beyond the clearance):
 //
-//   touching(i, p)  volume i's signed distance at p < clearance (less 1 nm, so that a
-//                   node set on a target by rounding is not touched again)
+//   touching(i, p)  volume i's signed distance at p < clearance (less 0.1 um, so that a
+//                   node set on a target by rounding, or by a fast path's few nanometres,
+//                   is not touched again)
 //   candidates      each touching volume's nearest point w_i, normal n_i, target
 //                   x_i = w_i + clearance n_i
 //   contact(p)      the candidate nearest p (smallest |d_i|, ties: the first volume)
 //                   whose target is clear of every volume; distance = |d_i|, negative
-//                   when p is inside any volume
+//                   when p is inside any volume. Its own volume is not searched again:
+//                   the target lies the clearance out along the normal by construction
+//                   (re-measuring it by the same fast path only adds its convergence
+//                   noise, nanometres, which used to reject good targets); only its
+//                   inside test must say outside.
 //   crease          no target clear (p deep in the fold between two volumes): from the
 //                   nearest target, push out of the volumes it is still in (the two
 //                   deepest at once, by their tangent planes, which a convex volume lies
 //                   behind), at most 16 times; then march away from p, doubling the step,
 //                   until clear (the volumes are bounded: it ends). The contact then runs
 //                   from p to that point: normal along it, surfacePoint = x - clearance n.
-//   not touching    out.distance = min over volumes of their distance or their bounding
-//                   sphere's (a lower bound of the distance to the union's surface).
+//   not touching    out.distance = min over volumes of a lower bound of their distance:
+//                   their bounding capsule's, their own cheap bound
+//                   (CollisionVolume::distanceBound) or their distance (a lower bound of
+//                   the distance to the union's surface).
 // A target is a fixed point: queried again, it touches nothing. No heap allocation per
-// query; bounding spheres skip far volumes.
+// query; the cheap bounds skip the nearest-point search of every volume they show to be
+// beyond the clearance, here and in the clear-of-all test.
 
 #include "CollisionVolume.h"
 #include "Collider.h"
@@ -54,15 +62,18 @@ class VolumeSetCollider : public Collider {
   const CollisionVolume& worldVolume(size_t i) const { return *world_[i]; }
 
  private:
-  // Lower bound of p's distance to volume i by its bounding sphere.
-  double sphereGap(size_t i, const Vec3& p) const { return (p - centres_[i]).norm() - radii_[i]; }
-  bool clearOfAll(const Vec3& x, double clearance) const;
+  // Whether x is at least `gap` from volume i by a cheap lower bound (its bounding
+  // capsule's, then its own distanceBound): no nearest-point search needed.
+  bool beyond(size_t i, const Vec3& x, double gap) const;
+  // Whether x is clear of every volume; `own` (the volume whose target x is, or none)
+  // only by its inside test: x lies the clearance out along its normal by construction.
+  bool clearOfAll(const Vec3& x, double clearance, size_t own = kNone) const;
+  static constexpr size_t kNone = static_cast<size_t>(-1);
   Vec3 creaseTarget(const Vec3& p, const Vec3& start, const Vec3& away, double clearance) const;
 
   std::vector<int> parts_;
   std::vector<std::shared_ptr<const CollisionVolume>> world_;
-  std::vector<Vec3> centres_;
-  std::vector<double> radii_;
+  std::vector<BoundingCapsule> capsules_;
 };
 
 }  // namespace figment

@@ -111,10 +111,11 @@ TEST_F(MannequinTest, LongerArmsMoveTheForearmOut) {
   ASSERT_TRUE(root);
   const auto collider = find<Mannequin>(root.get(), "Model")->collider();
   figment::Contact c;
-  // The forearm starts at the elbow, 0.25 * 1.2 m from the shoulder, and is 1.2x longer.
-  const double start = 0.2 + 0.25 * 1.2;
-  EXPECT_TRUE(inContact(*collider, {start + 0.3 * 1.2, 1.42, 0.0}, c));
-  EXPECT_FALSE(inContact(*collider, {start - 0.07, 1.42, 0.0}, c));
+  // The elbow moves out to 0.2 + 0.25 * 1.2 m and the forearm is 1.2x longer: its
+  // capsule (x 0.4 to 0.75 at rest) spans 0.44 to 0.86 m.
+  const double elbow = 0.2 + 0.25 * 1.2;
+  EXPECT_TRUE(inContact(*collider, {elbow + 1.2 * (0.72 - 0.45), 1.42, 0.0}, c));
+  EXPECT_FALSE(inContact(*collider, {0.43, 1.42, 0.0}, c)) << "inside at rest, left behind now";
 }
 
 TEST_F(MannequinTest, DrawsAndBoundsItsVolumesOnlyWhenShown) {
