@@ -185,17 +185,23 @@ SurfacePoint Capsule::nearestFast(const Vec3& p) const {
   double t, a;
   const Vec3 u = toUnit(p);  // once: the inside test and the starting guess share it
   project(u, t, a);
-  const SurfaceSample s =
-      refineOnSurface([this](double ti, double ai) { return sample(ti, ai); }, p, 0.0, 3.0, t, a, 2);
+  const auto side = [this](double ti, double ai) { return sample(ti, ai); };
+  SurfaceSample s = refineOnSurface(side, p, 0.0, 3.0, t, a, 2);
   SurfacePoint out;
-  out.point = s.w;
   const bool inside = containsUnit(u);
-  const double gap = (p - s.w).norm();
+  double gap = (p - s.w).norm();
+  if (!inside && gap > 1e-6) {
+    out.point = s.w, out.distance = gap, out.normal = (p - s.w) / gap;
+    return out;
+  }
+  // Inside (or on the surface): the surface's normal, unless p does not lie along it (a
+  // deep point's two steps stop short of the stationary point), when the push-out to
+  // point + clearance normal would move p sideways: then the way out from p to the point.
+  const Vec3 axis = rotation_.col(1), centre(parameters_.ox, parameters_.oy, parameters_.oz);
+  out.normal = surfaceNormal(s, s.w - centre, t < 1.5 ? -axis : axis);
+  if (gap > 1e-6 && sideways(p - s.w, out.normal) > kSideways) out.normal = (s.w - p) / gap;
+  out.point = s.w;
   out.distance = inside ? -gap : gap;
-  const Vec3 axis = rotation_.col(1);
-  out.normal = !inside && gap > 1e-6 ? Vec3((p - s.w) / gap)
-                                     : surfaceNormal(s, s.w - Vec3(parameters_.ox, parameters_.oy, parameters_.oz),
-                                                     t < 1.5 ? -axis : axis);
   return out;
 }
 

@@ -55,7 +55,10 @@ class Capsule {
   // The paper's fast path, for collision response: the unit-space projection (inverse
   // transform, inverse taper, cylinder or end) mapped back, then two Gauss-Newton steps
   // in world space to correct for scale and taper; no line search. Within a fraction of
-  // a millimetre of nearest() on body-part capsules (tested), a few times faster.
+  // a millimetre of nearest() on body-part capsules (tested), a few times faster. Inside,
+  // where p does not lie along the surface normal (kSideways: the steps stopped short of
+  // the stationary point), the normal is the way out from p to the point, so that a
+  // push-out along it does not move p sideways.
   SurfacePoint nearestFast(const Vec3& p) const;
 
   // The surface in its two parameters: t in [0, 3] along the profile (0: bottom pole,

@@ -53,6 +53,9 @@ SurfacePoint fromSample(const SurfaceSample& s, const Vec3& p, bool inside, cons
   const double gap = (p - s.w).norm();
   out.distance = inside ? -gap : gap;
   out.normal = !inside && gap > 1e-6 ? Vec3((p - s.w) / gap) : surfaceNormal(s, outwardHint, fallback);
+  // Inside, the push-out from p to point + clearance normal must not move p sideways:
+  // where the search stopped short of that, the normal is the way out from p.
+  if (inside && gap > 1e-6 && sideways(p - s.w, out.normal) > kSideways) out.normal = (s.w - p) / gap;
   return out;
 }
 

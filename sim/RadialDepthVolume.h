@@ -47,8 +47,12 @@ class RadialDepthVolume {
   bool contains(const Vec3& p) const;
   SurfacePoint nearest(const Vec3& p) const;
   // The fast path for points near the surface (cloth nodes): from the radial projection,
-  // three Gauss-Newton steps in world space; the caps as in nearest(). No atan2, no sin
-  // or cos: the angle is carried as its cosine and sine, turned by each step.
+  // up to three Gauss-Newton steps in world space (fewer once a step moves the point
+  // less than 1 um); the caps as in nearest(). No atan2, no sin or cos: the angle is
+  // carried as its cosine and sine, turned by each step. Inside, where p does not lie
+  // along the side's normal (kSideways: the steps stopped short of the stationary point),
+  // the normal is the way out from p to the point, so that a push-out along it does not
+  // move p sideways.
   SurfacePoint nearestFast(const Vec3& p) const;
   // Axis coordinates of p: position along the axis s (m), angle a, distance from it (m).
   void toAxis(const Vec3& p, double& s, double& a, double& rho) const;

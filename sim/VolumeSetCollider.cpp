@@ -39,23 +39,43 @@ VolumeSetCollider::VolumeSetCollider(std::vector<PosedVolume> volumes) {
       throw std::invalid_argument(which + ": " + e.what());
     }
     parts_.push_back(v.part);
-    capsules_.push_back(world->boundingCapsule());
+    reach_.emplace_back(world->boundingCapsule());
     world_.push_back(std::move(world));
   }
 }
 
-bool VolumeSetCollider::beyond(size_t i, const Vec3& x, double gap) const {
-  return capsules_[i].gap(x) >= gap || world_[i]->distanceBound(x) >= gap;
+VolumeSetCollider::Reach::Reach(const BoundingCapsule& c)
+    : a(c.a), ab(c.b - c.a), inverseLength2(ab.squaredNorm() > 0.0 ? 1.0 / ab.squaredNorm() : 0.0), radius(c.radius) {}
+
+double VolumeSetCollider::Reach::squaredAxisDistance(const Vec3& p) const {
+  const Vec3 ap = p - a;
+  const double t = std::clamp(ap.dot(ab) * inverseLength2, 0.0, 1.0);
+  return (ap - t * ab).squaredNorm();
 }
 
-bool VolumeSetCollider::clearOfAll(const Vec3& x, double clearance, size_t own) const {
+bool VolumeSetCollider::Reach::beyond(const Vec3& p, double gap) const {
+  const double reach = radius + gap;
+  return reach <= 0.0 || squaredAxisDistance(p) >= reach * reach;
+}
+
+bool VolumeSetCollider::beyond(size_t i, const Vec3& x, double gap) const {
+  return reach_[i].beyond(x, gap) || world_[i]->distanceBound(x) >= gap;
+}
+
+bool VolumeSetCollider::clearOfAll(const Vec3& x, double clearance, size_t own, const Measured& measured,
+                                   double moved) const {
   const double clear = clearance - kClearMargin;
   for (size_t i = 0; i < world_.size(); ++i) {
     if (i == own) {
       if (world_[i]->contains(x)) return false;
       continue;
     }
-    if (!beyond(i, x, clear) && world_[i]->nearest(x).distance < clear) return false;
+    if (reach_[i].beyond(x, clear)) continue;
+    // Bounded or measured at p, `moved` from x: a distance function changes no faster.
+    const double* d = measured.find(i);
+    if (d && *d - moved >= clear) continue;
+    if (world_[i]->distanceBound(x) >= clear) continue;
+    if (world_[i]->nearest(x).distance < clear) return false;
   }
   return true;
 }
@@ -65,20 +85,20 @@ bool VolumeSetCollider::contact(const Vec3& p, double clearance, double /*search
   std::array<Candidate, kMaxCandidates> candidates;
   int count = 0;
   bool inside = false;
-  double bound = std::numeric_limits<double>::infinity();
+  Measured measured;  // not touching: their bounds or distances
   for (size_t i = 0; i < world_.size(); ++i) {
     // The cheap lower bounds first: the bounding capsule, then the volume's own; they
     // decide only where they show the volume clear (so a target, clear by a search of
     // its volumes, reports a distance of at least the clearance less kClearMargin).
-    double gap = capsules_[i].gap(p);
-    if (gap < clear) gap = world_[i]->distanceBound(p);
-    if (gap >= clear) {
-      bound = std::min(bound, gap);
+    if (reach_[i].beyond(p, clear)) continue;
+    const double bound = world_[i]->distanceBound(p);
+    if (bound >= clear) {
+      measured.add(i, bound);
       continue;
     }
     const SurfacePoint s = world_[i]->nearest(p);
     if (s.distance >= touch) {
-      bound = std::min(bound, s.distance);
+      measured.add(i, s.distance);
       continue;
     }
     inside = inside || s.distance < 0.0;
@@ -93,12 +113,13 @@ bool VolumeSetCollider::contact(const Vec3& p, double clearance, double /*search
     count = std::min(count + 1, kMaxCandidates);
   }
   if (count == 0) {
-    out.distance = bound;
+    out.distance = lowerBound(p, clear, measured);
     return false;
   }
   for (int k = 0; k < count; ++k) {
     const SurfacePoint& s = candidates[k].s;
-    if (!clearOfAll(s.point + clearance * s.normal, clearance, candidates[k].volume)) continue;
+    const Vec3 target = s.point + clearance * s.normal;
+    if (!clearOfAll(target, clearance, candidates[k].volume, measured, (target - p).norm())) continue;
     out = {s.point, s.normal, inside ? -std::abs(s.distance) : std::abs(s.distance)};
     return true;
   }
@@ -113,12 +134,28 @@ bool VolumeSetCollider::contact(const Vec3& p, double clearance, double /*search
   return true;
 }
 
+double VolumeSetCollider::lowerBound(const Vec3& p, double clear, const Measured& measured) const {
+  // Each volume's bounding-capsule gap, or what contact() found: its own bound or its
+  // distance (or, past kMeasured of them, the same again).
+  double bound = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < world_.size(); ++i) {
+    double gap = std::sqrt(reach_[i].squaredAxisDistance(p)) - reach_[i].radius;
+    if (gap < clear) {
+      const double* d = measured.find(i);
+      if (d) gap = *d;
+      else if ((gap = world_[i]->distanceBound(p)) < clear) gap = world_[i]->nearest(p).distance;
+    }
+    bound = std::min(bound, gap);
+  }
+  return bound;
+}
+
 Vec3 VolumeSetCollider::creaseTarget(const Vec3& p, const Vec3& start, const Vec3& away, double clearance) const {
   Vec3 x = start;
-  const double kNone = std::numeric_limits<double>::infinity();
+  const double kFar = std::numeric_limits<double>::infinity();
   for (int push = 0; push < kCreasePushes; ++push) {
     // The two volumes x is deepest in (or nearest within the clearance of).
-    SurfacePoint first{Vec3::Zero(), Vec3::Zero(), kNone}, second = first;
+    SurfacePoint first{Vec3::Zero(), Vec3::Zero(), kFar}, second = first;
     for (size_t i = 0; i < world_.size(); ++i) {
       if (beyond(i, x, clearance - kClearMargin)) continue;
       const SurfacePoint s = world_[i]->nearest(x);
@@ -126,12 +163,12 @@ Vec3 VolumeSetCollider::creaseTarget(const Vec3& p, const Vec3& start, const Vec
       if (s.distance < first.distance) second = first, first = s;
       else if (s.distance < second.distance) second = s;
     }
-    if (first.distance == kNone) return x;
+    if (first.distance == kFar) return x;
     // Out past each tangent plane by the clearance: delta . n >= h. A convex volume lies
     // behind its tangent plane, so that clears it.
     const Vec3 &na = first.normal, &nb = second.normal;
     const double ha = clearance - (x - first.point).dot(na);
-    if (second.distance == kNone) {
+    if (second.distance == kFar) {
       x += ha * na;
       continue;
     }
@@ -151,7 +188,8 @@ Vec3 VolumeSetCollider::creaseTarget(const Vec3& p, const Vec3& start, const Vec
   Vec3 direction = x - p;
   direction = direction.norm() > 1e-12 ? Vec3(direction.normalized()) : away;
   double step = std::max(clearance, 1e-4);
-  for (int k = 0; k < kMarchSteps && !clearOfAll(x, clearance); ++k, step *= 2.0) x += step * direction;
+  for (int k = 0; k < kMarchSteps && !clearOfAll(x, clearance, kNone, Measured{}, 0.0); ++k, step *= 2.0)
+    x += step * direction;
   return x;
 }
 

@@ -29,13 +29,16 @@
 //                   the distance to the union's surface).
 // A target is a fixed point: queried again, it touches nothing. No heap allocation per
 // query; the cheap bounds skip the nearest-point search of every volume they show to be
-// beyond the clearance, here and in the clear-of-all test.
+// beyond the clearance, here and in the clear-of-all test, where a volume bounded or
+// measured at p is also clear of a target whose step from p its bound exceeds by the
+// clearance (distances are 1-Lipschitz).
 
 #include "CollisionVolume.h"
 #include "Collider.h"
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -62,18 +65,48 @@ class VolumeSetCollider : public Collider {
   const CollisionVolume& worldVolume(size_t i) const { return *world_[i]; }
 
  private:
+  // A bounding capsule for the squared-distance early-out.
+  struct Reach {
+    explicit Reach(const BoundingCapsule& c);
+    double squaredAxisDistance(const Vec3& p) const;  // to the segment, m^2
+    bool beyond(const Vec3& p, double gap) const;     // its capsule's gap >= gap
+    Vec3 a, ab;
+    double inverseLength2, radius;
+  };
+  // The volumes contact() found not touching p within their bounding capsules' reach, each
+  // with a lower bound of its distance (its distanceBound or its distance): the first
+  // kMeasured, no heap allocation.
+  static constexpr int kMeasured = 16;
+  struct Measured {
+    std::array<size_t, kMeasured> volume{};
+    std::array<double, kMeasured> distance{};
+    int count = 0;
+    void add(size_t i, double d) {
+      if (count < kMeasured) volume[count] = i, distance[count] = d, ++count;
+    }
+    const double* find(size_t i) const {
+      for (int k = 0; k < count; ++k)
+        if (volume[k] == i) return &distance[k];
+      return nullptr;
+    }
+  };
+  static constexpr size_t kNone = static_cast<size_t>(-1);
+
   // Whether x is at least `gap` from volume i by a cheap lower bound (its bounding
   // capsule's, then its own distanceBound): no nearest-point search needed.
   bool beyond(size_t i, const Vec3& x, double gap) const;
-  // Whether x is clear of every volume; `own` (the volume whose target x is, or none)
-  // only by its inside test: x lies the clearance out along its normal by construction.
-  bool clearOfAll(const Vec3& x, double clearance, size_t own = kNone) const;
-  static constexpr size_t kNone = static_cast<size_t>(-1);
+  // Whether x is clear of every volume. `own` (the volume whose target x is, or kNone) only
+  // by its inside test: x lies the clearance out along its normal by construction. A
+  // volume in `measured` (at a point `moved` from x) is clear where its bound there less
+  // `moved` is (distance functions are 1-Lipschitz).
+  bool clearOfAll(const Vec3& x, double clearance, size_t own, const Measured& measured, double moved) const;
+  // out.distance when nothing touches p.
+  double lowerBound(const Vec3& p, double clear, const Measured& measured) const;
   Vec3 creaseTarget(const Vec3& p, const Vec3& start, const Vec3& away, double clearance) const;
 
   std::vector<int> parts_;
   std::vector<std::shared_ptr<const CollisionVolume>> world_;
-  std::vector<BoundingCapsule> capsules_;
+  std::vector<Reach> reach_;
 };
 
 }  // namespace figment

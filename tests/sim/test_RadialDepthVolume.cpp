@@ -172,3 +172,27 @@ TEST(RadialDepthVolume, AnEnvelopeFitEnclosesItsPointsAndHugsAnEllipticTube) {
     EXPECT_NEAR(std::hypot(x / 0.06, z / 0.04), 1.0, 0.03) << a;
   }
 }
+
+TEST(RadialDepthVolume, TheFastPathPushesADeepPointStraightOut) {
+  // Points up to 4 cm deep in a wavy volume: the push-out from p to point + clearance
+  // normal runs along the normal (else a contact response turns its sideways part into
+  // velocity).
+  RadialDepthParameters p;
+  p.length = 0.4;
+  p.harmonics = 2;
+  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
+  const RadialDepthVolume v(p);
+  int tested = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const double s = 0.01 + 0.38 * ((i * 37) % 1000) / 1000.0, a = 2 * M_PI * ((i * 91) % 1000) / 1000.0;
+    const Vec3 surface = v.surface(s, a);
+    const Vec3 q = surface - 0.04 * ((i * 13) % 100 + 1) / 101.0 * Vec3(surface.x(), 0.0, surface.z()).normalized();
+    if (!v.contains(q)) continue;
+    ++tested;
+    const SurfacePoint fast = v.nearestFast(q);
+    ASSERT_LT(fast.distance, 0.0);
+    const Vec3 r = q - fast.point;
+    EXPECT_LT((r - r.dot(fast.normal) * fast.normal).norm(), kSideways + 1e-12) << q.transpose();
+  }
+  EXPECT_GT(tested, 800);
+}
