@@ -1,5 +1,6 @@
 #include "nodes/MannequinSkin.h"
 
+#include "nodes/HiddenChildren.h"
 #include "nodes/Mannequin.h"
 #include "sim/Skeleton.h"
 #include "sim/TriangleMesh.h"
@@ -42,13 +43,9 @@ MannequinSkin::MannequinSkin() : impl_(std::make_unique<Impl>(this)) {
   SO_NODE_CONSTRUCTOR(MannequinSkin);
   SO_NODE_ADD_FIELD(mannequin, (nullptr));
   SO_NODE_ADD_EMPTY_MFIELD(parts);
-  auto* root = new SoSeparator;
-  impl_->coordinates = new SoCoordinate3;
-  impl_->coordinates->point.setNum(0);
-  impl_->faces = new SoIndexedFaceSet;
-  root->addChild(impl_->coordinates);
-  root->addChild(impl_->faces);
-  impl_->children.append(root);
+  const figment::HiddenMesh mesh = figment::appendHiddenMesh(impl_->children);
+  impl_->coordinates = mesh.coordinates;
+  impl_->faces = mesh.faces;
 }
 
 MannequinSkin::~MannequinSkin() { impl_->children.truncate(0); }
@@ -107,12 +104,7 @@ SoChildList* MannequinSkin::getChildren() const { return &impl_->children; }
 
 void MannequinSkin::doAction(SoAction* action) {
   update();
-  int numIndices = 0;
-  const int* indices = nullptr;
-  if (action->getPathCode(numIndices, indices) == SoAction::IN_PATH)
-    impl_->children.traverseInPath(action, numIndices, indices);
-  else
-    impl_->children.traverse(action);
+  figment::traverseHidden(impl_->children, action);
 }
 
 void MannequinSkin::callback(SoCallbackAction* action) { MannequinSkin::doAction(action); }

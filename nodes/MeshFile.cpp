@@ -2,6 +2,7 @@
 
 #include "io/MeshImport.h"
 #include "nodes/FieldValues.h"
+#include "nodes/HiddenChildren.h"
 #include "sim/MeshCollider.h"
 #include "sim/Validation.h"
 
@@ -206,14 +207,9 @@ MeshFile::MeshFile() : impl_(std::make_unique<Impl>(this)) {
   SO_NODE_DEFINE_ENUM_VALUE(UpAxis, NEG_Z);
   SO_NODE_SET_SF_ENUM_TYPE(upAxis, UpAxis);
 
-  // Drawn like any shape, with the current state (Material, ShapeHints before it).
-  auto* root = new SoSeparator;
-  impl_->coordinates = new SoCoordinate3;
-  impl_->coordinates->point.setNum(0);
-  impl_->faces = new SoIndexedFaceSet;
-  root->addChild(impl_->coordinates);
-  root->addChild(impl_->faces);
-  impl_->children.append(root);
+  const figment::HiddenMesh mesh = figment::appendHiddenMesh(impl_->children);
+  impl_->coordinates = mesh.coordinates;
+  impl_->faces = mesh.faces;
 }
 
 MeshFile::~MeshFile() {
@@ -313,14 +309,7 @@ void MeshFile::copyContents(const SoFieldContainer* from, SbBool copyConnections
 
 SoChildList* MeshFile::getChildren() const { return &impl_->children; }
 
-void MeshFile::doAction(SoAction* action) {
-  int numIndices;
-  const int* indices;
-  if (action->getPathCode(numIndices, indices) == SoAction::IN_PATH)
-    impl_->children.traverseInPath(action, numIndices, indices);
-  else
-    impl_->children.traverse(action);
-}
+void MeshFile::doAction(SoAction* action) { figment::traverseHidden(impl_->children, action); }
 
 void MeshFile::callback(SoCallbackAction* action) { MeshFile::doAction(action); }
 

@@ -1,8 +1,8 @@
 #include "BodyParts.h"
 
 #include "AxisSearch.h"
+#include "PrincipalAxes.h"
 
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -168,15 +168,11 @@ RadialDepthVolume fitRadialPart(const PartMesh& part, int harmonics, double sect
   const Vec3 bone = (part.to - part.from).normalized();
   // Candidates: the bone; the bone's direction through the part's centroid; the part's
   // principal axis nearest the bone's direction, through its centroid.
-  Vec3 centroid = Vec3::Zero();
-  for (const Vec3& p : points) centroid += p;
-  centroid /= static_cast<double>(points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Vec3& p : points) covariance += (p - centroid) * (p - centroid).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
-  Vec3 principal = eigen.eigenvectors().col(2);
+  const PrincipalAxes spread = principalAxes(points);
+  const Vec3& centroid = spread.mean;
+  Vec3 principal = spread.axes.col(2);
   for (int k = 0; k < 3; ++k)
-    if (std::abs(eigen.eigenvectors().col(k).dot(bone)) > std::abs(principal.dot(bone))) principal = eigen.eigenvectors().col(k);
+    if (std::abs(spread.axes.col(k).dot(bone)) > std::abs(principal.dot(bone))) principal = spread.axes.col(k);
   if (principal.dot(bone) < 0.0) principal = -principal;
   const std::vector<std::pair<Vec3, Vec3>> axes = {{part.from, bone}, {centroid, bone}, {centroid, principal}};
   RadialDepthVolume best = fitAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);

@@ -97,26 +97,30 @@ std::vector<FittedVolume> fitPartRadial(const PartMesh& part, const BodyFitOptio
   return capsuleGap < radialGap ? capsules : suited;
 }
 
-std::vector<FittedVolume> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
-                                      const BodyFitOptions& options) {
+namespace {
+
+// `fitPart` on every part of `body` with enough vertices to fit, in the skeleton's order.
+template <typename FitPart>
+std::vector<FittedVolume> fitEachPart(const TriangleMesh& body, const Skeleton& skeleton, FitPart fitPart) {
   std::vector<FittedVolume> out;
   for (const PartMesh& part : splitIntoParts(body, skeleton)) {
     if (part.mesh.vertices.size() < 4) continue;
-    const std::vector<FittedVolume> v = fitPartCapsules(part, options);
+    const std::vector<FittedVolume> v = fitPart(part);
     out.insert(out.end(), v.begin(), v.end());
   }
   return out;
 }
 
+}  // namespace
+
+std::vector<FittedVolume> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
+                                      const BodyFitOptions& options) {
+  return fitEachPart(body, skeleton, [&](const PartMesh& part) { return fitPartCapsules(part, options); });
+}
+
 std::vector<FittedVolume> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
                                            const BodyFitOptions& options) {
-  std::vector<FittedVolume> out;
-  for (const PartMesh& part : splitIntoParts(body, skeleton)) {
-    if (part.mesh.vertices.size() < 4) continue;
-    const std::vector<FittedVolume> v = fitPartRadial(part, options);
-    out.insert(out.end(), v.begin(), v.end());
-  }
-  return out;
+  return fitEachPart(body, skeleton, [&](const PartMesh& part) { return fitPartRadial(part, options); });
 }
 
 }  // namespace figment

@@ -1,6 +1,7 @@
 #include "CapsuleFit.h"
 
-#include <Eigen/Eigenvalues>
+#include "PrincipalAxes.h"
+
 
 #include <algorithm>
 #include <cmath>
@@ -31,13 +32,9 @@ Limits limitsFor(const CapsuleParameters& start, double size) {
 // The default capsule set on the points: centred, along their principal axis, as big
 // as their extents.
 CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
-  Vec3 mean = Vec3::Zero();
-  for (const Vec3& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
-  for (const Vec3& p : points) covariance += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(covariance);
-  Vec3 axis = eigen.eigenvectors().col(2);  // the largest eigenvalue's
+  const PrincipalAxes principal = principalAxes(points);
+  const Vec3& mean = principal.mean;
+  Vec3 axis = principal.axes.col(2);  // the largest spread's
   if (axis.y() < 0.0) axis = -axis;
   CapsuleParameters c;
   c.r1 = c.r2 = 0.5;

@@ -292,19 +292,29 @@ SurfacePoint RadialDepthVolume::closestFast(const Vec3& p) const {
   return out;
 }
 
+namespace {
+
+// A fit's axis: from `base` along `direction` for `length`, any reference perpendicular
+// to it (the world x or z axis made perpendicular), no coefficients yet.
+RadialDepthParameters axisFrame(const Vec3& base, const Vec3& direction, double length, int harmonics) {
+  RadialDepthParameters p;
+  p.base = base;
+  p.direction = direction.normalized();
+  const Vec3 helper = std::abs(p.direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitZ();
+  p.reference = (helper - helper.dot(p.direction) * p.direction).normalized();
+  p.length = length;
+  p.harmonics = harmonics;
+  return p;
+}
+
+}  // namespace
+
 RadialDepthVolume fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
                                  double maxRadius, int sections, int harmonics, int angles) {
   if (sections < 2) throw std::invalid_argument("sections = " + std::to_string(sections) + " must be >= 2");
   if (angles < 2 * harmonics + 1)
     throw std::invalid_argument("angles = " + std::to_string(angles) + " must be >= 2 harmonics + 1");
-  RadialDepthParameters p;
-  p.base = base;
-  p.direction = direction.normalized();
-  // Any reference perpendicular to the axis: the world x or z axis, made perpendicular.
-  const Vec3 helper = std::abs(p.direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitZ();
-  p.reference = (helper - helper.dot(p.direction) * p.direction).normalized();
-  p.length = length;
-  p.harmonics = harmonics;
+  RadialDepthParameters p = axisFrame(base, direction, length, harmonics);
   const Vec3 side = p.direction.cross(p.reference);
 
   // The part's triangles in the axis frame: x along reference, y along the axis, z along side.
@@ -420,13 +430,7 @@ RadialDepthVolume fitRadialDepthToPoints(const std::vector<Vec3>& points, const 
                                          int harmonics, double outsideWeight) {
   if (sections < 2) throw std::invalid_argument("sections = " + std::to_string(sections) + " must be >= 2");
   if (points.empty()) throw std::invalid_argument("no points to fit");
-  RadialDepthParameters p;
-  p.base = base;
-  p.direction = direction.normalized();
-  const Vec3 helper = std::abs(p.direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitZ();
-  p.reference = (helper - helper.dot(p.direction) * p.direction).normalized();
-  p.length = length;
-  p.harmonics = harmonics;
+  RadialDepthParameters p = axisFrame(base, direction, length, harmonics);
   const Vec3 side = p.direction.cross(p.reference);
   const int terms = 2 * harmonics + 1, unknowns = sections * terms;
 

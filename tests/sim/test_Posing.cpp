@@ -1,5 +1,6 @@
 // Posing and sizing the jointed mannequin (sim/Posing.h) on a small T-posed humanoid
 // skeleton whose joints sit on round numbers: y up, floor at y = 0, arms along +-x.
+#include "TestCapsules.h"
 #include "sim/CollisionVolume.h"
 #include "sim/Posing.h"
 #include "sim/Skinning.h"
@@ -42,19 +43,7 @@ Eigen::Affine3d rotationAbout(const Vec3& centre, const Eigen::Quaterniond& q) {
   return Eigen::Translation3d(centre) * q * Eigen::Translation3d(-centre);
 }
 
-// A sphere-swept segment from a to b (see test_VolumeSetCollider.cpp).
-CapsuleParameters segmentCapsule(const Vec3& a, const Vec3& b, double radius) {
-  const Vec3 d = (b - a).normalized();
-  CapsuleParameters c;
-  c.x = c.z = 2.0 * radius;
-  c.y = (b - a).norm() + 2.0 * radius;
-  c.r1 = c.r2 = 2.0 * radius / c.y;
-  c.theta = std::acos(std::clamp(d.y(), -1.0, 1.0));
-  c.phi = std::sin(c.theta) > 1e-12 ? std::atan2(-d.x(), d.z()) : 0.0;
-  const Vec3 mid = 0.5 * (a + b);
-  c.ox = mid.x(), c.oy = mid.y(), c.oz = mid.z();
-  return c;
-}
+using test::segmentCapsule;
 }  // namespace
 
 TEST(Posing, IdentityPoseAndUnitSizingGiveIdentityTransforms) {

@@ -2,6 +2,7 @@
 // (sim/VolumeSetCollider.h): mapped queries against dense sampling of the mapped surface,
 // and the overlap rule at a bent elbow.
 #include "TestMeshes.h"
+#include "TestCapsules.h"
 #include "sim/CollisionVolume.h"
 #include "sim/MeshCollider.h"
 #include "sim/VolumeSetCollider.h"
@@ -17,20 +18,7 @@ using namespace figment;
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A capsule that is a sphere-swept segment from a to b (hemispherical ends of `radius`).
-CapsuleParameters segmentCapsule(const Vec3& a, const Vec3& b, double radius) {
-  const Vec3 d = (b - a).normalized();
-  CapsuleParameters c;
-  c.x = c.z = 2.0 * radius;
-  c.y = (b - a).norm() + 2.0 * radius;
-  c.r1 = c.r2 = 2.0 * radius / c.y;
-  // The tilt about (cos phi, 0, sin phi) by theta takes y to (-sin phi sin theta, cos theta, cos phi sin theta).
-  c.theta = std::acos(std::clamp(d.y(), -1.0, 1.0));
-  c.phi = std::sin(c.theta) > 1e-12 ? std::atan2(-d.x(), d.z()) : 0.0;
-  const Vec3 mid = 0.5 * (a + b);
-  c.ox = mid.x(), c.oy = mid.y(), c.oz = mid.z();
-  return c;
-}
+using test::segmentCapsule;
 
 // A stretched, rotated, moved frame: what sizing and posing make of a part.
 Eigen::Affine3d stretchedMap() {
