@@ -95,10 +95,16 @@ class CapsuleVolume final : public CollisionVolume {
   SurfacePoint nearestUnder(const Eigen::Affine3d& map, const Eigen::Affine3d& inverse, const Vec3& p) const override {
     const Vec3 rest = inverse * p;
     const Vec3 unit = capsule_.toUnit(rest);
-    double t, a;
-    parametersOf(capsule_.unitProjection(unit), t, a);
     const auto side = [&](double ti, double ai) { return mapped(map, capsule_.sample(ti, ai)); };
-    const SurfaceSample s = refineMapped(side, p, 0.0, 3.0, true, t, a);
+    // Two starts, the nearer result kept: the unit-space projection, and the rest
+    // frame's own nearest point (inside, under a stretch, one of them can sit in a local
+    // minimum far from the nearest point: a push-out there kicks the node).
+    double t, a, tRest, aRest;
+    parametersOf(capsule_.unitProjection(unit), t, a);
+    parametersOf(capsule_.toUnit(capsule_.nearestFast(rest).point), tRest, aRest);
+    SurfaceSample s = refineMapped(side, p, 0.0, 3.0, true, t, a);
+    const SurfaceSample fromRest = refineMapped(side, p, 0.0, 3.0, true, tRest, aRest);
+    if ((fromRest.w - p).squaredNorm() < (s.w - p).squaredNorm()) s = fromRest, t = tRest;
     const Vec3 pole = (inverse.linear().transpose() * (t < 1.5 ? -axis_ : axis_)).normalized();
     return fromSample(s, p, capsule_.containsUnit(unit), s.w - map * centre_, pole);
   }
@@ -159,7 +165,15 @@ class RadialVolume final : public CollisionVolume {
     // p's foot on the mapped plane counts where it lies within the cap.
     double t = std::clamp(s, 0.0, q.length), angle = a;
     const auto side = [&](double ti, double ai) { return mapped(map, volume_.sample(ti, ai)); };
-    const SurfaceSample sample = refineMapped(side, p, 0.0, q.length, false, t, angle);
+    // Two starts, the nearer result kept: the radial projection, and the rest frame's own
+    // nearest side point (inside, under a stretch, one of them can sit in a local minimum
+    // far from the nearest point: a push-out there kicks the node).
+    SurfaceSample sample = refineMapped(side, p, 0.0, q.length, false, t, angle);
+    double restS, restA, restRho;
+    volume_.toAxis(volume_.nearestFast(rest).point, restS, restA, restRho);
+    restS = std::clamp(restS, 0.0, q.length);
+    const SurfaceSample fromRest = refineMapped(side, p, 0.0, q.length, false, restS, restA);
+    if ((fromRest.w - p).squaredNorm() < (sample.w - p).squaredNorm()) sample = fromRest, t = restS;
     const bool inside = volume_.contains(rest);
     SurfacePoint out = fromSample(sample, p, inside, sample.w - map * (q.base + t * q.direction),
                                   map.linear() * q.direction);
