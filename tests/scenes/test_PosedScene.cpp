@@ -108,6 +108,6 @@ TEST_F(PosedScene, TheDressComesToRestOutsideThePosedVolumes) {
     for (size_t k = 0; k < volumes->size(); ++k) inside += volumes->worldVolume(k).contains(p);
   }
   EXPECT_EQ(inside, 0);
-  // Held up at the shoulders (its top starts at 1.37 m; the body is 2 % shorter).
+  // Held up at the shoulders (its top starts at 1.42 m; the body is 2 % shorter).
   EXPECT_GT(top, 1.25) << "the dress slid down";
 }
