@@ -6,6 +6,7 @@
 #include <Inventor/elements/SoGLLazyElement.h>
 #include <Inventor/elements/SoLightModelElement.h>
 #include <Inventor/errors/SoDebugError.h>
+#include <Inventor/misc/SoNotification.h>
 #include <Inventor/misc/SoState.h>
 #include <Inventor/SoPrimitiveVertex.h>
 
@@ -33,13 +34,21 @@ std::string BodyVolume::label() const {
   return text;
 }
 
-std::vector<BodyVolume::Polyline> BodyVolume::safeWireframe() const {
+const std::vector<BodyVolume::Polyline>& BodyVolume::cachedWireframe() const {
+  if (wireframeValid_) return wireframe_;
   try {
-    return wireframe();
+    wireframe_ = wireframe();
   } catch (const std::exception& e) {
     SoDebugError::postWarning("BodyVolume", "%s: %s", label().c_str(), e.what());
-    return {};
+    wireframe_.clear();
   }
+  wireframeValid_ = true;
+  return wireframe_;
+}
+
+void BodyVolume::notify(SoNotList* list) {
+  wireframeValid_ = false;
+  inherited::notify(list);
 }
 
 void BodyVolume::GLRender(SoGLRenderAction* action) {
@@ -50,7 +59,7 @@ void BodyVolume::GLRender(SoGLRenderAction* action) {
   SoLightModelElement::set(state, this, SoLightModelElement::BASE_COLOR);
   SoMaterialBundle material(action);
   material.sendFirst();
-  for (const Polyline& line : safeWireframe()) {
+  for (const Polyline& line : cachedWireframe()) {
     glBegin(GL_LINE_STRIP);
     for (const Eigen::Vector3f& p : line) glVertex3f(p.x(), p.y(), p.z());
     glEnd();
@@ -60,7 +69,7 @@ void BodyVolume::GLRender(SoGLRenderAction* action) {
 
 void BodyVolume::generatePrimitives(SoAction* action) {
   SoPrimitiveVertex a, b;
-  for (const Polyline& line : safeWireframe())
+  for (const Polyline& line : cachedWireframe())
     for (size_t i = 1; i < line.size(); ++i) {
       a.setPoint(SbVec3f(line[i - 1].x(), line[i - 1].y(), line[i - 1].z()));
       b.setPoint(SbVec3f(line[i].x(), line[i].y(), line[i].z()));
@@ -70,7 +79,7 @@ void BodyVolume::generatePrimitives(SoAction* action) {
 
 void BodyVolume::computeBBox(SoAction*, SbBox3f& box, SbVec3f& center) {
   box.makeEmpty();
-  for (const Polyline& line : safeWireframe())
+  for (const Polyline& line : cachedWireframe())
     for (const Eigen::Vector3f& p : line) box.extendBy(SbVec3f(p.x(), p.y(), p.z()));
   if (!box.isEmpty()) center = box.getCenter();
 }

@@ -49,6 +49,7 @@ class BodyVolume : public SoShape {
   std::string label() const;
 
   void GLRender(SoGLRenderAction* action) override;
+  void notify(SoNotList* list) override;
 
  protected:
   BodyVolume();
@@ -62,5 +63,10 @@ class BodyVolume : public SoShape {
   void computeBBox(SoAction* action, SbBox3f& box, SbVec3f& center) override;
 
  private:
-  std::vector<Polyline> safeWireframe() const;
+  // The wireframe, computed once per change of the fields (empty, with a warning, when
+  // they make no volume).
+  const std::vector<Polyline>& cachedWireframe() const;
+
+  mutable std::vector<Polyline> wireframe_;
+  mutable bool wireframeValid_ = false;
 };

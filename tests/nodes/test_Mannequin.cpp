@@ -145,6 +145,18 @@ TEST_F(MannequinTest, DrawsAndBoundsItsVolumesOnlyWhenShown) {
   EXPECT_NEAR(bbox.getBoundingBox().getMax()[0], 0.2 + 0.04, 0.01);
 }
 
+TEST_F(MannequinTest, AVolumesDrawingFollowsItsFields) {
+  // The wireframe is kept between renders: a field change must renew it.
+  SceneRoot root = readString(mannequinScene("showVolumes TRUE"));
+  ASSERT_TRUE(root);
+  SoGetBoundingBoxAction bbox(SbViewportRegion(100, 100));
+  bbox.apply(root.get());
+  EXPECT_NEAR(bbox.getBoundingBox().getMax()[0], 0.75, 0.01);
+  find<CapsuleVolume>(root.get(), "Forearm")->y = 0.45f;  // 5 cm longer at each end
+  bbox.apply(root.get());
+  EXPECT_NEAR(bbox.getBoundingBox().getMax()[0], 0.80, 0.01);
+}
+
 TEST_F(MannequinTest, TheSkinFollowsThePose) {
   TempDir dir;
   // A 4 cm box around the middle of the left forearm (x 0.55-0.6), as the body mesh.

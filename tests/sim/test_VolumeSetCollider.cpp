@@ -59,6 +59,19 @@ Vec3 randomDirection(std::mt19937& rng) {
   return Vec3(g(rng), g(rng), g(rng)).normalized();
 }
 
+// A dense grid of a mapped surface's side: `steps` + 1 rows over t in [0, tMax] by
+// `angles` columns; each point and its (t, a) appended.
+template <typename Sample>
+void sampleGrid(const Sample& sample, double tMax, int steps, int angles, std::vector<Vec3>& samples,
+                std::vector<std::array<double, 2>>& parameters) {
+  for (int i = 0; i <= steps; ++i)
+    for (int j = 0; j < angles; ++j) {
+      const double t = tMax * i / steps, a = 2 * M_PI * j / angles;
+      samples.push_back(sample(t, a).w);
+      parameters.push_back({t, a});
+    }
+}
+
 // Checks `volume` (a mapped parametric surface) against `samples` of that surface: within
 // 0.2 mm of the best sample and of the sample's refinement; on the surface; normal
 // perpendicular to the refined tangents and pointing out.
@@ -134,12 +147,7 @@ TEST(CollisionVolume, StretchedCapsuleMatchesDenseSampling) {
   };
   std::vector<Vec3> samples;
   std::vector<std::array<double, 2>> parameters;
-  for (int i = 0; i <= 400; ++i)
-    for (int j = 0; j < 250; ++j) {
-      const double t = 3.0 * i / 400, a = 2 * M_PI * j / 250;
-      samples.push_back(sample(t, a).w);
-      parameters.push_back({t, a});
-    }
+  sampleGrid(sample, 3.0, 400, 250, samples, parameters);
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3> queries;
@@ -168,12 +176,7 @@ TEST(CollisionVolume, StretchedRadialVolumeMatchesDenseSampling) {
   };
   std::vector<Vec3> samples;
   std::vector<std::array<double, 2>> parameters;
-  for (int i = 0; i <= 300; ++i)
-    for (int j = 0; j < 250; ++j) {
-      const double s = r.length * i / 300, a = 2 * M_PI * j / 250;
-      samples.push_back(sample(s, a).w);
-      parameters.push_back({s, a});
-    }
+  sampleGrid(sample, r.length, 300, 250, samples, parameters);
   // The caps after the side: flat discs out to the rim.
   const Vec3 axis = volume.parameters().direction, reference = volume.parameters().reference;
   const Vec3 side = axis.cross(reference);
