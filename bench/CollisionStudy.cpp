@@ -2,10 +2,10 @@
 
 #include "Statistics.h"
 #include "io/MeshImport.h"
-#include "sim/BodyParts.h"
-#include "sim/BodyVolumes.h"
-#include "sim/MeshCollider.h"
-#include "sim/SkeletonEstimate.h"
+#include "sim/body/BodyParts.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/body/SkeletonEstimate.h"
 
 #include <chrono>
 #include <cstdio>
@@ -32,10 +32,10 @@ struct Row {
 
 // One fitted volume ready for queries, with its bounding sphere.
 struct Volume {
-  std::variant<Capsule, RadialDepthVolume> shape;
+  std::variant<Capsule, RadialDepth> shape;
   Vec3 centre;
   double radius;
-  explicit Volume(const FittedVolume& v) : shape(makeShape(v)) {
+  explicit Volume(const CollisionVolumeParameters& v) : shape(makeShape(v)) {
     if (const Capsule* c = std::get_if<Capsule>(&shape)) {
       centre = c->fromUnit(Vec3::Zero());
       radius = 0.0;
@@ -44,7 +44,7 @@ struct Volume {
         radius = std::max(radius, (c->fromUnit(u) - centre).norm());
       }
     } else {
-      const RadialDepthParameters& p = std::get<RadialDepthVolume>(shape).parameters();
+      const RadialDepthParameters& p = std::get<RadialDepth>(shape).parameters();
       double widest = 0.0;
       for (const auto& section : p.coefficients) {
         double r = 0.0;
@@ -55,9 +55,9 @@ struct Volume {
       radius = std::hypot(0.5 * p.length, widest);
     }
   }
-  static std::variant<Capsule, RadialDepthVolume> makeShape(const FittedVolume& v) {
-    if (v.kind == FittedVolume::Kind::Capsule) return Capsule(v.capsule);
-    return RadialDepthVolume(v.radial);
+  static std::variant<Capsule, RadialDepth> makeShape(const CollisionVolumeParameters& v) {
+    if (v.kind == CollisionVolumeParameters::Kind::Capsule) return Capsule(v.capsule);
+    return RadialDepth(v.radial);
   }
   SurfacePoint nearest(const Vec3& p) const {
     return std::visit([&](const auto& s) { return s.nearest(p); }, shape);
@@ -167,12 +167,12 @@ int collisionStudy(const CollisionStudyOptions& options) {
     const std::vector<Vec3> points = queryPoints(vertices);
     // What fitCapsules and fitRadialVolumes return for this part (they loop over the
     // parts of splitIntoParts with these same calls).
-    BodyFitOptions fitOptions;
+    CollisionVolumeFitOptions fitOptions;
     fitOptions.harmonics = options.harmonics;
     fitOptions.sectionSpacing = options.sectionSpacing;
     Row capsuleRow;
     auto start = Clock::now();
-    const std::vector<FittedVolume> capsules = fitPartCapsules(part, fitOptions);
+    const std::vector<CollisionVolumeParameters> capsules = fitPartCapsules(part, fitOptions);
     capsuleRow.fitSeconds = secondsSince(start);
     const std::vector<Volume> capsuleVolumes(capsules.begin(), capsules.end());
     capsuleRow.volumes = static_cast<int>(capsules.size());
@@ -181,11 +181,11 @@ int collisionStudy(const CollisionStudyOptions& options) {
 
     Row radialRow;
     start = Clock::now();
-    const std::vector<FittedVolume> radial = fitPartRadial(part, fitOptions);
+    const std::vector<CollisionVolumeParameters> radial = fitPartRadial(part, fitOptions);
     radialRow.fitSeconds = secondsSince(start);
     const std::vector<Volume> radialVolumes(radial.begin(), radial.end());
     radialRow.volumes = static_cast<int>(radial.size());
-    const bool fellBack = radial.front().kind == FittedVolume::Kind::Capsule;
+    const bool fellBack = radial.front().kind == CollisionVolumeParameters::Kind::Capsule;
     measureGaps(radialVolumes, vertices, radialRow);
     radialRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return queryVolumes(radialVolumes, p); });
 

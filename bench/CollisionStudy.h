@@ -4,8 +4,8 @@
 // fitting costs, and what one point query costs against them and against the part's
 // own triangles (the exact BVH collider).
 //
-// What is measured, per part of splitIntoParts (sim/BodyParts.h):
-//   volumes   exactly what fitCapsules / fitRadialVolumes (sim/BodyVolumes.h) return for
+// What is measured, per part of splitIntoParts (sim/body/BodyParts.h):
+//   volumes   exactly what fitCapsules / fitRadialVolumes (sim/fitting/CollisionVolumeFitting.h) return for
 //             the part: one or more capsules; a radial volume, or the part's capsules
 //             where it falls back (kind column);
 //   gap       one-sided, from the body: for each vertex of the part, its depth in the

@@ -1,9 +1,9 @@
 #include "DrapeStudy.h"
 
 #include "Statistics.h"
-#include "nodes/ClothEngine.h"
+#include "nodes/cloth/ClothEngine.h"
 #include "nodes/Init.h"
-#include "nodes/Mannequin.h"
+#include "nodes/body/Mannequin.h"
 #include "nodes/SceneSearch.h"
 
 #include <Inventor/SoDB.h>

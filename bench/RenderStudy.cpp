@@ -1,7 +1,7 @@
 #include "RenderStudy.h"
 
 #include "Statistics.h"
-#include "nodes/ClothingLayer.h"
+#include "nodes/render/ClothingLayer.h"
 #include "nodes/SceneSearch.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"

@@ -2,7 +2,7 @@
 // The first garment of a scene, for studies that re-run its ClothEngine with other
 // settings: the engine, the Coordinate3 it feeds, and its rest shape.
 
-#include "nodes/ClothEngine.h"
+#include "nodes/cloth/ClothEngine.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoSeparator.h>

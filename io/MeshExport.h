@@ -1,7 +1,7 @@
 #pragma once
 // Writes a mesh (metres, y up) to a file others can read: the garments our tools make.
 
-#include "sim/TriangleMesh.h"
+#include "sim/core/TriangleMesh.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 // Reads a mesh file (Collada, .zae, OBJ, PLY, ... anything assimp reads) into the
 // scene frame: metres, y up. Bodies and garments both come in through here.
 
-#include "sim/TriangleMesh.h"
+#include "sim/core/TriangleMesh.h"
 
 #include <string>
 #include <vector>

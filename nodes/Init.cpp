@@ -1,16 +1,16 @@
 #include "nodes/Init.h"
 
-#include "nodes/CapsuleVolume.h"
-#include "nodes/ClothEngine.h"
-#include "nodes/ClothingLayer.h"
-#include "nodes/DepthSortedGroup.h"
-#include "nodes/ExactVolume.h"
-#include "nodes/Mannequin.h"
-#include "nodes/MannequinSkin.h"
-#include "nodes/MeshFile.h"
-#include "nodes/RadialDepthVolume.h"
-#include "nodes/SkeletonJoints.h"
-#include "nodes/StencilSeparator.h"
+#include "nodes/body/CapsuleVolume.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/DepthSortedGroup.h"
+#include "nodes/body/ExactVolume.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MannequinSkin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/body/RadialDepthVolume.h"
+#include "nodes/body/SkeletonJoints.h"
+#include "nodes/render/StencilSeparator.h"
 
 #include <Inventor/SoDB.h>
 

@@ -7,20 +7,20 @@
 //
 // The body is read as a MeshFile with the same fields reads it (metres, y up, without
 // the excluded meshes); its skeleton is estimated from cross sections
-// (sim/SkeletonEstimate.h); each part gets radial depth volumes (or capsules where a
-// radial volume does not suit it, sim/BodyVolumes.h) or capsules, or, for the parts
+// (sim/body/SkeletonEstimate.h); each part gets radial depth volumes (or capsules where a
+// radial volume does not suit it, sim/fitting/CollisionVolumeFitting.h) or capsules, or, for the parts
 // named by --capsule and --exact, capsules and ExactVolume. The file holds one
 // SkeletonJoints and the volume nodes. One summary line on stdout; any error is one
 // line, "figment-fit: <file>: <reason>", exit status 1, and no file.
 
 #include "io/MeshImport.h"
-#include "nodes/CapsuleVolume.h"
-#include "nodes/ExactVolume.h"
+#include "nodes/body/CapsuleVolume.h"
+#include "nodes/body/ExactVolume.h"
 #include "nodes/Init.h"
-#include "nodes/RadialDepthVolume.h"
-#include "nodes/SkeletonJoints.h"
-#include "sim/BodyVolumes.h"
-#include "sim/SkeletonEstimate.h"
+#include "nodes/body/RadialDepthVolume.h"
+#include "nodes/body/SkeletonJoints.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/body/SkeletonEstimate.h"
 
 #include <CLI/CLI.hpp>
 #include <Inventor/SoOutput.h>
@@ -52,20 +52,20 @@ struct Options {
   std::vector<std::string> exclude = {"eyes"};
   std::string method = "radial";
   std::vector<std::string> capsuleParts, exactParts;
-  figment::BodyFitOptions fit;
+  figment::CollisionVolumeFitOptions fit;
   std::string commandLine;
 };
 
 // The nodes for `volumes`, with the parts in `exact` as ExactVolume.
-SoGroup* volumeNodes(const figment::Skeleton& skeleton, const std::vector<figment::FittedVolume>& volumes,
+SoGroup* volumeNodes(const figment::Skeleton& skeleton, const std::vector<figment::CollisionVolumeParameters>& volumes,
                      const std::set<std::string>& exact) {
   auto* group = new SoGroup;
   auto* joints = new SkeletonJoints;
   joints->setSkeleton(skeleton);
   group->addChild(joints);
-  for (const figment::FittedVolume& v : volumes) {
+  for (const figment::CollisionVolumeParameters& v : volumes) {
     if (exact.count(v.part)) continue;
-    if (v.kind == figment::FittedVolume::Kind::Capsule) {
+    if (v.kind == figment::CollisionVolumeParameters::Kind::Capsule) {
       auto* node = new CapsuleVolume;
       node->part = v.part.c_str();
       node->setParameters(v.capsule);
@@ -148,23 +148,23 @@ int main(int argc, char** argv) {
       if (std::none_of(skeleton.parts.begin(), skeleton.parts.end(), [&](const auto& p) { return p.name == name; }))
         return fail("--capsule: " + name + " is not a part");
 
-    std::vector<figment::FittedVolume> volumes;
+    std::vector<figment::CollisionVolumeParameters> volumes;
     const bool radial = options.method == "radial";
     if (radial) {
-      for (figment::FittedVolume& v : figment::fitRadialVolumes(body, skeleton, options.fit))
+      for (figment::CollisionVolumeParameters& v : figment::fitRadialVolumes(body, skeleton, options.fit))
         if (!forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
     }
     if (!radial || !forcedCapsules.empty()) {
-      for (figment::FittedVolume& v : figment::fitCapsules(body, skeleton, options.fit))
+      for (figment::CollisionVolumeParameters& v : figment::fitCapsules(body, skeleton, options.fit))
         if (!radial || forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
     }
     for (const auto& v : volumes)
-      if (!exact.count(v.part)) (v.kind == figment::FittedVolume::Kind::Capsule ? capsules : radials)++;
+      if (!exact.count(v.part)) (v.kind == figment::CollisionVolumeParameters::Kind::Capsule ? capsules : radials)++;
     root = volumeNodes(skeleton, volumes, exact);
     root->ref();
     const std::string header = "# The collision volumes of " + options.body + ", fitted by\n#   " +
                                options.commandLine +
-                               "\n# Include it in a Mannequin (nodes/Mannequin.h); regenerate, do not edit.";
+                               "\n# Include it in a Mannequin (nodes/body/Mannequin.h); regenerate, do not edit.";
     // Written under a temporary name and renamed: the file exists only when complete.
     const std::string temporary = options.output + ".partial";
     const std::string error = writeIv(root, temporary, header);

@@ -6,7 +6,7 @@
 
 #include "io/MeshExport.h"
 #include "io/MeshImport.h"
-#include "sim/StrapDress.h"
+#include "sim/garment/StrapDress.h"
 
 #include <CLI/CLI.hpp>
 

@@ -1,9 +1,9 @@
 #include "viewer/DepthBufferOnly.h"
 
-#include "nodes/ClothingLayer.h"
-#include "nodes/DepthSortedGroup.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/DepthSortedGroup.h"
 #include "nodes/SceneSearch.h"
-#include "nodes/StencilSeparator.h"
+#include "nodes/render/StencilSeparator.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoGroup.h>

@@ -1,7 +1,7 @@
 #include "viewer/SceneRenderer.h"
 
-#include "nodes/GLStencilElement.h"
-#include "nodes/StencilRule.h"
+#include "nodes/render/GLStencilElement.h"
+#include "nodes/render/StencilRule.h"
 #include "viewer/AtomicFile.h"
 
 #include <Inventor/SbViewportRegion.h>

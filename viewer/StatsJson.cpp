@@ -1,11 +1,11 @@
 #include "viewer/StatsJson.h"
 
-#include "nodes/CapsuleVolume.h"
-#include "nodes/ClothEngine.h"
-#include "nodes/ExactVolume.h"
-#include "nodes/Mannequin.h"
-#include "nodes/MeshFile.h"
-#include "nodes/RadialDepthVolume.h"
+#include "nodes/body/CapsuleVolume.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/body/ExactVolume.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/body/RadialDepthVolume.h"
 #include "viewer/AtomicFile.h"
 
 #include <nlohmann/json.hpp>

@@ -7,8 +7,8 @@
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
 // exit status (2: bad command line, 1: anything else); no image is written then.
 
-#include "nodes/ClothEngine.h"
-#include "nodes/Mannequin.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/body/Mannequin.h"
 #include "nodes/SceneSearch.h"
 #include "viewer/CoinMessages.h"
 #include "viewer/DepthBufferOnly.h"

@@ -1,12 +1,12 @@
 // The default dress on the default body (human.zae): the garment figment-make-dress writes
 // to scenes/dress.obj. It must start outside the body everywhere, be one consistently wound
 // piece, and carry its straps over the shoulders.
-#include "../sim/DressChecks.h"
-#include "../sim/MeshChecks.h"
-#include "IoTestSupport.h"
+#include "support/DressChecks.h"
+#include "support/MeshChecks.h"
+#include "support/IoTestSupport.h"
 #include "io/MeshImport.h"
-#include "sim/StrapDress.h"
-#include "sim/TriangleBvh.h"
+#include "sim/garment/StrapDress.h"
+#include "sim/collision/TriangleBvh.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // OBJ output: what is written reads back the same, and a failed write leaves nothing behind.
-#include "IoTestSupport.h"
+#include "support/IoTestSupport.h"
 #include "io/MeshExport.h"
 #include "io/MeshImport.h"
 

@@ -1,8 +1,8 @@
 // The importer brings files into the scene frame (metres, y up), leaves out excluded meshes
 // and welds seams; findModelFile walks the model search path in its documented order.
-#include "IoTestSupport.h"
+#include "support/IoTestSupport.h"
 #include "io/MeshImport.h"
-#include "../sim/MeshChecks.h"
+#include "support/MeshChecks.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // The humanoid skeleton estimated from the default body by cross sections, and the same
 // skeleton from that body turned z-up and in centimetres.
 #include "io/MeshImport.h"
-#include "sim/BodyVolumes.h"
-#include "sim/SkeletonEstimate.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/body/SkeletonEstimate.h"
 
 #include <gtest/gtest.h>
 
@@ -87,8 +87,8 @@ TEST(SkeletonEstimate, ABoxIsNotAHumanoid) {
   EXPECT_THROW(estimateSkeleton(box), std::invalid_argument);
 }
 
-TEST(BodyVolumes, EncloseEveryPartOfTheDefaultBodyAndNameIt) {
-  // fitCapsules and fitRadialVolumes (sim/BodyVolumes.h): every part of the skeleton
+TEST(CollisionVolumeFitting, EncloseEveryPartOfTheDefaultBodyAndNameIt) {
+  // fitCapsules and fitRadialVolumes (sim/fitting/CollisionVolumeFitting.h): every part of the skeleton
   // gets volumes carrying its name, and every vertex of a part lies in one of them.
   if (!humanAvailable()) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
   const TriangleMesh body = defaultBody();
@@ -96,13 +96,13 @@ TEST(BodyVolumes, EncloseEveryPartOfTheDefaultBodyAndNameIt) {
   const std::vector<PartMesh> parts = splitIntoParts(body, skeleton);
   for (const auto& volumes : {fitCapsules(body, skeleton), fitRadialVolumes(body, skeleton)}) {
     std::set<std::string> named;
-    for (const FittedVolume& v : volumes) named.insert(v.part);
+    for (const CollisionVolumeParameters& v : volumes) named.insert(v.part);
     for (const BodyPart& part : skeleton.parts) EXPECT_TRUE(named.count(part.name)) << part.name;
     for (const PartMesh& part : parts) {
       int outside = 0;
       for (const Vec3& p : part.mesh.vertices) {
         bool inside = false;
-        for (const FittedVolume& v : volumes)
+        for (const CollisionVolumeParameters& v : volumes)
           if (!inside && v.part == part.name) inside = signedDistance(v, p) <= 1e-9;
         outside += !inside;
       }

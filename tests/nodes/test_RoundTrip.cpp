@@ -1,10 +1,10 @@
 // A scene with every FIGMENT node type, written with SoWriteAction and read again,
 // comes back with the same nodes and field values.
 
-#include "nodes/ClothEngine.h"
-#include "nodes/ClothingLayer.h"
-#include "nodes/MeshFile.h"
-#include "SceneTestSupport.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/body/MeshFile.h"
+#include "support/SceneTestSupport.h"
 
 #include <Inventor/SoFullPath.h>
 #include <Inventor/fields/SoMFVec3f.h>

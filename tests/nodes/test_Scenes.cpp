@@ -1,6 +1,6 @@
 // Every scene under scenes/ reads (reading simulates nothing, so this is fast).
 
-#include "SceneTestSupport.h"
+#include "support/SceneTestSupport.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Uses the installed FIGMENT node kit from another project: registers a node type of
 // its own beside FIGMENT's and reads a scene with both. Exits 0 when all is as written.
 
-#include <nodes/ClothEngine.h>
-#include <nodes/ClothingLayer.h>
+#include <nodes/cloth/ClothEngine.h>
+#include <nodes/render/ClothingLayer.h>
 #include <nodes/Init.h>
-#include <nodes/MeshFile.h>
+#include <nodes/body/MeshFile.h>
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>

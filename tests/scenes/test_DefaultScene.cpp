@@ -1,13 +1,13 @@
 // The default scene end to end: scenes/dress.iv is read, the dress is draped on the
 // default body by the simulation and comes to rest outside the body, held up at the
 // shoulders, and the front view shows both dress and skin.
-#include "nodes/ClothEngine.h"
-#include "nodes/MeshFile.h"
-#include "nodes/ClothingLayer.h"
-#include "nodes/Mannequin.h"
-#include "sim/Skeleton.h"
-#include "sim/VolumeSetCollider.h"
-#include "sim/MeshCollider.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/body/Mannequin.h"
+#include "sim/body/Skeleton.h"
+#include "sim/collision/VolumeSetCollider.h"
+#include "sim/collision/MeshCollider.h"
 #include "support/Pixels.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"

@@ -1,13 +1,13 @@
 // scenes/posed.iv without draping it: the mannequin posed and sized through its fields,
 // its skin and its collision volumes moved by the same transformations.
-#include "nodes/ClothEngine.h"
-#include "nodes/Mannequin.h"
-#include "nodes/MeshFile.h"
-#include "sim/Collider.h"
-#include "sim/Skeleton.h"
-#include "sim/Skinning.h"
-#include "sim/TriangleMesh.h"
-#include "sim/VolumeSetCollider.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MeshFile.h"
+#include "sim/collision/Collider.h"
+#include "sim/body/Skeleton.h"
+#include "sim/body/Skinning.h"
+#include "sim/core/TriangleMesh.h"
+#include "sim/collision/VolumeSetCollider.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneFile.h"
 

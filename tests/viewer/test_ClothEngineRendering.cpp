@@ -1,6 +1,6 @@
 // Rendering reads the garment's coordinates but simulates only when an input changed.
 
-#include "nodes/ClothEngine.h"
+#include "nodes/cloth/ClothEngine.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneRenderer.h"
 #include "viewer/SceneStaging.h"

@@ -1,9 +1,9 @@
 // Paper §5 in pictures that can fail: scenes/hybrid/*.iv rendered through OSMesa with
 // FIGMENT's nodes and with the depth buffer alone (the -plain files), pixels counted by
 // flat colour.
-#include "nodes/ClothingLayer.h"
-#include "nodes/DepthSortedGroup.h"
-#include "nodes/StencilSeparator.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/DepthSortedGroup.h"
+#include "nodes/render/StencilSeparator.h"
 #include "support/Pixels.h"
 #include "support/TempDir.h"
 #include "viewer/DepthBufferOnly.h"

@@ -1,6 +1,6 @@
 // Mannequin.showVolumes in pictures: the posed volumes drawn as wireframes in their
 // colour, over the body, only when shown (what figment-view --show-volumes switches on).
-#include "nodes/Mannequin.h"
+#include "nodes/body/Mannequin.h"
 #include "support/Pixels.h"
 #include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"

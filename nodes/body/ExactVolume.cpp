@@ -1,0 +1,26 @@
+#include "nodes/body/ExactVolume.h"
+
+#include "sim/collision/CollisionVolume.h"
+#include "sim/core/TriangleMesh.h"
+
+#include <stdexcept>
+
+SO_NODE_SOURCE(ExactVolume);
+
+void ExactVolume::initClass() {
+  if (classTypeId != SoType::badType()) return;
+  CollisionVolumeNode::initClass();
+  SO_NODE_INIT_CLASS(ExactVolume, CollisionVolumeNode, "CollisionVolumeNode");
+}
+
+ExactVolume::ExactVolume() { SO_NODE_CONSTRUCTOR(ExactVolume); }
+
+ExactVolume::~ExactVolume() = default;
+
+std::shared_ptr<const figment::CollisionVolume> ExactVolume::makeVolume(
+    const figment::TriangleMesh& partTriangles) const {
+  if (partTriangles.triangles.empty())
+    throw std::invalid_argument(label() + ": part = \"" + std::string(part.getValue().getString()) +
+                                "\" has no triangles in the body");
+  return figment::makeVolume(partTriangles);
+}

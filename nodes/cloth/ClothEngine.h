@@ -1,0 +1,222 @@
+#pragma once
+// ClothEngine: drapes one garment on a body; its output feeds the garment's coordinates.
+
+#include <Inventor/engines/SoSubEngine.h>
+#include <Inventor/fields/SoMFInt32.h>
+#include <Inventor/fields/SoMFVec3f.h>
+#include <Inventor/fields/SoSFDouble.h>
+#include <Inventor/fields/SoSFEnum.h>
+#include <Inventor/fields/SoSFInt32.h>
+#include <Inventor/fields/SoSFNode.h>
+#include <Inventor/fields/SoSFString.h>
+#include <Inventor/fields/SoSFVec3f.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+class SoNode;
+
+/*!
+  \class ClothEngine nodes/cloth/ClothEngine.h
+  \brief Simulates a garment until it rests on a body; outputs the draped positions.
+
+  Only a translator: the fields become FIGMENT's simulation parameters (sim/cloth/Material.h,
+  sim/cloth/ClothParameters.h), a ClothSolver runs from the rest shape until the cloth is at
+  rest or maxTime has been simulated, and the final node positions come out of
+  `positions`. Like every Coin engine it is lazy: it simulates when its output is read
+  after an input changed (on the first render, or when a bounding box is asked for),
+  never once per render.
+
+  Errors never escape: a field out of range, a coordIndex that does not index
+  restPoints, a body that is not a collision body, or a simulation that blows up is
+  stored as lastError() (one line naming the engine and the field and value, e.g.
+  "ClothEngine 'Drape': thickness = -0.001 must be > 0"), posted through SoDebugError,
+  and the output is the rest shape.
+
+  In an .iv file an engine is written where its output is used. Coin 4 reads a field
+  connection as `field = CONTAINER . name`, where CONTAINER is an engine written in
+  place or `USE Name` of a node or engine defined earlier, and the value before `=` may
+  be left out; `USE Pattern.point` and `USE Pattern . point` read the same:
+  \code
+    Switch { whichChild -1  DEF Pattern MeshFile { fileName "dress.obj" } }
+    Coordinate3 {
+      point = DEF Drape ClothEngine {
+        restPoints = USE Pattern.point
+        coordIndex = USE Pattern.coordIndex
+        body USE Body
+      } . positions
+    }
+    ClothingLayer { coordIndex = USE Pattern.coordIndex }
+  \endcode
+  The body's collision surface is taken in the body node's own coordinates and the
+  garment's in the world frame: keep both under the same transform.
+
+  <b>FILE FORMAT/DEFAULTS:</b>
+  \code
+    ClothEngine {
+        restPoints [ ]
+        coordIndex [ ]
+        body NULL
+        material ""
+        thickness 0.0005
+        density 300
+        youngsModulus 1000000
+        poissonRatio 0.3
+        timeStep 0.00015
+        maxTime 5
+        restSpeed 0.01
+        restWindow 0.25
+        gravity 0 -9.81 0
+        airResistance 1
+        friction 0.4
+        clearance 0.003
+        strainRateDamping 0.0001
+        integrator HEUN
+        strainLimit 0
+        accelerationLimiter NONE
+        accelerationLimit 20
+        windDirection 1 0 0
+        windAmplitude 0
+        windFrequency 1
+        windPhaseInterval 0.5
+        windSeed 1
+    }
+  \endcode
+*/
+class ClothEngine : public SoEngine {
+  typedef SoEngine inherited;
+  SO_ENGINE_HEADER(ClothEngine);
+
+ public:
+  static void initClass();
+  ClothEngine();
+
+  // --- inputs ---
+  // Rest (unstressed) shape of the garment, which is also where it starts: one point
+  // per cloth node, world frame, m. Default [ ]. Must not be empty.
+  SoMFVec3f restPoints;
+  // Faces of the garment as indices into restPoints, each face ended by -1; faces with
+  // more than three corners are split into triangles as a fan. Default [ ].
+  SoMFInt32 coordIndex;
+  // What the cloth collides with: a MeshFile (its triangles, exactly), a Mannequin (its
+  // posed collision volumes), or NULL for nothing. Default NULL.
+  SoSFNode body;
+  // A named fabric (sim/cloth/MaterialPresets.h: cotton, silk, denim, jersey) that gives
+  // thickness, density, youngsModulus and poissonRatio; any of those four written in
+  // the scene overrides the preset's value. Default "" (the four fields as they are).
+  SoSFString material;
+  // Cloth thickness h, m. Default 0.0005. Must be > 0.
+  SoSFDouble thickness;
+  // Density of the cloth rho, kg/m^3 (areal density = rho * h). Default 300. Must be > 0.
+  SoSFDouble density;
+  // Effective membrane Young's modulus E of the fabric, Pa. Default 1e6. Must be > 0.
+  SoSFDouble youngsModulus;
+  // Poisson's ratio nu, dimensionless. Default 0.3. Must lie in (-1, 0.5).
+  SoSFDouble poissonRatio;
+  // Integration time step dt, s. Default 1.5e-4. Must be > 0.
+  SoSFDouble timeStep;
+  // Upper bound of simulated time, s. Default 5.
+  SoSFDouble maxTime;
+  // The cloth is at rest when every node is slower than this, m/s... Default 0.01.
+  SoSFDouble restSpeed;
+  // ...for this long without interruption, s. Default 0.25.
+  SoSFDouble restWindow;
+  // Acceleration of gravity, m/s^2. Default 0 -9.81 0.
+  SoSFVec3f gravity;
+  // Air drag per unit area per unit speed, N*s/m^3. Default 1.
+  SoSFDouble airResistance;
+  // Coulomb friction coefficient against the body, dimensionless. Default 0.4.
+  SoSFDouble friction;
+  // Distance kept between cloth nodes and the body surface, m. Default 0.003.
+  SoSFDouble clearance;
+  // Kelvin-Voigt relaxation time of the membrane (strain-rate damping), s. Default 1e-4.
+  SoSFDouble strainRateDamping;
+  // How a step advances the cloth: EULER (explicit), SYMPLECTIC (semi-implicit Euler)
+  // or HEUN (improved Euler, the paper's). Default HEUN.
+  SoSFEnum integrator;
+  // Strain clamping (paper §2): each section's strain components are held within
+  // [-strainLimit, strainLimit] when its forces are computed, dimensionless; 0 = off.
+  // Default 0.
+  SoSFDouble strainLimit;
+  // Acceleration limiting (paper §2, Fig. 2.3) of each node's net acceleration: NONE,
+  // CLAMP (hard) or TANH (smooth). Default NONE.
+  SoSFEnum accelerationLimiter;
+  // The acceleration cap, in multiples of |gravity|. Default 20. Must be > 0.
+  SoSFDouble accelerationLimit;
+  // Wind (paper §2, sim/cloth/Wind.h): a pressure p(t) = windAmplitude sin(2 pi windFrequency t
+  // + phi(t)) whose phase phi jumps to a random value at random moments; each section
+  // of area A and normal n is pushed along the wind by p A |n . w| (none when edge-on).
+  // Direction the wind blows to, any length (normalised); 0 0 0 = no wind. Default 1 0 0.
+  SoSFVec3f windDirection;
+  // Pressure amplitude on a section face-on to the wind, Pa; 0 = no wind. Default 0.
+  // Must be >= 0.
+  SoSFDouble windAmplitude;
+  // Frequency of the sinusoid, Hz. Default 1. Must be >= 0.
+  SoSFDouble windFrequency;
+  // Mean time between the random phase changes (a Poisson process), s; 0 = the phase
+  // never changes. Default 0.5. Must be >= 0.
+  SoSFDouble windPhaseInterval;
+  // Seed of the phase changes: equal seeds repeat a run exactly. Default 1. Must be >= 0.
+  SoSFInt32 windSeed;
+
+  enum Integrator { EULER, SYMPLECTIC, HEUN };
+  enum AccelerationLimiter { NONE, CLAMP, TANH };
+
+  // --- output ---
+  // The draped positions, one per rest point, world frame, m (SoMFVec3f).
+  SoEngineOutput positions;
+
+  // What the last simulation did.
+  struct RunStats {
+    int triangles = 0;
+    int iterations = 0;
+    double simulatedSeconds = 0.0;
+    double wallSeconds = 0.0;
+    bool atRest = false;
+    double clampedSectionShare = 0.0;  // of section evaluations whose strain was clamped
+    double limitedNodeShare = 0.0;     // of node accelerations the limiter cut
+  };
+  // Reported about once per second of wall time while a simulation runs.
+  struct Progress {
+    int iterations = 0;
+    double simulatedSeconds = 0.0;
+    double maxTime = 0.0;     // s, the run's upper bound
+    double maxSpeed = 0.0;    // m/s, fastest cloth node now
+    double wallSeconds = 0.0; // since the run began
+  };
+  using ProgressCallback = std::function<void(const ClothEngine&, const Progress&)>;
+
+  // One callback for all engines (figment-view prints progress on stderr); an empty
+  // function removes it. Not for use while an engine is evaluating.
+  static void setProgressCallback(ProgressCallback callback);
+
+  // The last evaluation's error, one line; empty when it succeeded.
+  const std::string& lastError() const;
+  // Statistics of the last evaluation (zeros when it failed before simulating).
+  const RunStats& lastRun() const;
+  // How many times this engine has evaluated (each evaluation is one simulation).
+  int evaluationCount() const;
+  // "ClothEngine 'Name'", or "ClothEngine" when it has no name: how messages name it.
+  std::string label() const;
+
+ protected:
+  ~ClothEngine() override;
+  SbBool readInstance(SoInput* in, unsigned short readFlags) override;
+
+ private:
+  void evaluate() override;
+
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+namespace figment {
+
+// The ClothEngines that feed the scene under `root`, in scene order, each once: engines
+// connected to a field of any node in the graph (inactive Switch children included),
+// of nodes held in node fields, and engines feeding those engines' inputs.
+std::vector<ClothEngine*> findClothEngines(SoNode* root);
+
+}  // namespace figment

@@ -1,0 +1,34 @@
+#pragma once
+// Internal to figment_nodes (not installed): turns a ClothEngine's fields into the
+// simulation's types. Each function throws std::invalid_argument naming the field and
+// value when an input cannot be used.
+
+#include "sim/cloth/ClothParameters.h"
+#include "sim/collision/Collider.h"
+#include "sim/core/TriangleMesh.h"
+
+#include <memory>
+
+class ClothEngine;
+class SoMFInt32;
+class SoMFVec3f;
+class SoSFNode;
+
+namespace figment {
+
+// The garment: restPoints (m) and the faces of coordIndex, -1 separated, polygons split
+// into triangles as a fan (0 1 2, 0 2 3, ...). Empty faces (-1 -1) are skipped.
+TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex);
+
+// The material: a preset named in `material` with the four material fields the scene
+// wrote over it, or those four fields alone. Throws for an unknown preset.
+Material materialFromFields(const ClothEngine& engine);
+
+// Material and run parameters from the engine's fields, validated.
+ClothParameters parametersFromFields(const ClothEngine& engine);
+
+// The collider of the node in `body`: null for NULL; a MeshFile's exact collider, or a
+// Mannequin's posed volumes.
+std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body);
+
+}  // namespace figment

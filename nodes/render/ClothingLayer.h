@@ -1,0 +1,79 @@
+#pragma once
+// ClothingLayer: one layer of clothing, an indexed face set (paper §5).
+
+#include <Inventor/fields/SoSFBool.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+
+#include <memory>
+
+/*!
+  \class ClothingLayer nodes/render/ClothingLayer.h
+  \brief The faces of one cloth mesh; replaces an IndexedFaceSet one for one.
+
+  Paper §5: a Clothing Layer keeps the definition of an indexed face set, so any
+  IndexedFaceSet in a scene can be swapped for one, and adds how the layer is drawn
+  over what lies beneath it. It accepts every IndexedFaceSet field, and picks, bounds,
+  counts and writes exactly as an IndexedFaceSet does.
+
+  Drawing (the hybrid depth-buffer / depth-sort method of §5): every render, each facet
+  is tested against the line from the eye (or the viewing direction of an orthographic
+  camera) to its centre. Facets whose front faces the viewer (or is nearly edge-on to
+  the line of sight: the paper draws as usual only those facing "substantially" away)
+  are taken to enclose
+  whatever was drawn before them on that line of sight, the body or an inner layer:
+  they are drawn with the depth test ALWAYS and depth writes on, so skin that pokes a
+  few millimetres through the cloth stays hidden. Facets facing away (the inside of the
+  garment, seen through a neckline or under a hem) use the usual depth test. All facets
+  are drawn far to near by their centres, so folds of the same mesh cover each other
+  rightly. The front is the counter-clockwise side unless a ShapeHints says CLOCKWISE.
+  When `masked` is TRUE, the facets drawn over are kept off the pixels that a
+  StencilSeparator marked (paper §5: a forearm in front of a shirt).
+
+  What the drawing uses: the coordinates (Coordinate3 or vertexProperty), coordIndex
+  (polygons fan-triangulated), the first material (overall binding) and smooth normals
+  computed from the facets; explicit normals, per-face materials and textures are
+  ignored when drawing. Because the order depends on the view, a ClothingLayer keeps
+  any separator above it from caching its rendering.
+
+  The garment's coordinates come from the Coordinate3 before it, usually connected to
+  a ClothEngine's output:
+  \code
+    Coordinate3 { point = DEF Drape ClothEngine { ... } . positions }
+    ClothingLayer { coordIndex = USE Pattern.coordIndex }
+  \endcode
+
+  <b>FILE FORMAT/DEFAULTS:</b>
+  \code
+    ClothingLayer {
+        vertexProperty NULL
+        coordIndex 0
+        materialIndex -1
+        normalIndex -1
+        textureCoordIndex -1
+        masked FALSE
+    }
+  \endcode
+*/
+class ClothingLayer : public SoIndexedFaceSet {
+  typedef SoIndexedFaceSet inherited;
+  SO_NODE_HEADER(ClothingLayer);
+
+ public:
+  static void initClass();
+  ClothingLayer();
+
+  // Whether the facets that face the viewer are masked by the stencil buffer, so body
+  // parts drawn into it by a StencilSeparator stay in front (paper §5). Default FALSE.
+  SoSFBool masked;
+
+  void GLRender(SoGLRenderAction* action) override;
+
+ protected:
+  ~ClothingLayer() override;
+
+ private:
+  // The facets in drawing order, as vertex arrays, kept while neither the view nor the
+  // geometry changes (a still camera re-draws without sorting again).
+  struct DrawCache;
+  std::unique_ptr<DrawCache> cache_;
+};

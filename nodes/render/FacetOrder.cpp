@@ -1,0 +1,60 @@
+#include "nodes/render/FacetOrder.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace figment {
+
+std::vector<FacetGeometry> describeFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
+                                          int indexCount) {
+  std::vector<FacetGeometry> facets;
+  int start = 0;
+  while (start < indexCount) {
+    int end = start;
+    bool valid = true;
+    while (end < indexCount && coordIndex[end] >= 0) valid &= coordIndex[end] < pointCount, ++end;
+    const int corners = end - start;
+    if (valid && corners >= 3) {
+      // Newell's normal: right for any planar polygon and robust for nearly planar ones.
+      SbVec3f normal(0, 0, 0), centre(0, 0, 0);
+      for (int k = 0; k < corners; ++k) {
+        const SbVec3f& a = points[coordIndex[start + k]];
+        const SbVec3f& b = points[coordIndex[start + (k + 1) % corners]];
+        normal += SbVec3f((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]), (a[0] - b[0]) * (a[1] + b[1]));
+        centre += a;
+      }
+      facets.push_back({start, corners, centre / static_cast<float>(corners), normal});
+    }
+    start = end + 1;
+  }
+  return facets;
+}
+
+std::vector<OrderedFacet> orderFacets(const std::vector<FacetGeometry>& facets, const ViewPoint& view) {
+  std::vector<float> depth(facets.size());  // camera-frame z of each centre (more negative = farther)
+  std::vector<OrderedFacet> marked(facets.size());
+  for (size_t i = 0; i < facets.size(); ++i) {
+    const FacetGeometry& f = facets[i];
+    const SbVec3f normal = view.clockwise ? -f.normal : f.normal;
+    const SbVec3f towardsEye = view.perspective ? view.eye - f.centre : -view.direction;
+    const float cosine = normal.dot(towardsEye) / std::max(normal.length() * towardsEye.length(), 1e-30f);
+    marked[i] = {f.firstIndex, f.corners, cosine > -view.edgeOnCosine};
+    SbVec3f inCamera;
+    view.toCamera.multVecMatrix(f.centre, inCamera);
+    depth[i] = inCamera[2];
+  }
+  std::vector<int> order(facets.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return depth[a] < depth[b]; });
+  std::vector<OrderedFacet> sorted;
+  sorted.reserve(facets.size());
+  for (int i : order) sorted.push_back(marked[i]);
+  return sorted;
+}
+
+std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
+                                      int indexCount, const ViewPoint& view) {
+  return orderFacets(describeFacets(points, pointCount, coordIndex, indexCount), view);
+}
+
+}  // namespace figment

@@ -1,0 +1,61 @@
+#pragma once
+// GLStencilElement: the stencil buffer's use, as Coin state, so a separator undoes it
+// (Coin has depth and colour elements but none for the stencil).
+
+#include <Inventor/elements/SoSubElement.h>
+
+class SoGLRenderAction;
+
+/*!
+  \class GLStencilElement nodes/render/GLStencilElement.h
+  \brief How drawing uses the stencil buffer now (paper §5's stencil mask).
+
+  Two bits of the stencil buffer are used:
+  - the body-part bit (1): set where a StencilSeparator with writeStencil TRUE draws (a
+    body part that must stay in front); a masked ClothingLayer keeps off it;
+  - the layer bit (2): set where a ClothingLayer's facets facing away from the viewer
+    are visible, while that layer draws, and cleared after it (see ClothingLayer).
+  Setting the element issues the GL calls; popping it restores the state below. Enabled
+  for SoGLRenderAction only. The stencil must be cleared at the start of each frame:
+  figment::clearStencilEachFrame() adds that to a render action.
+*/
+class GLStencilElement : public SoElement {
+  typedef SoElement inherited;
+  SO_ELEMENT_HEADER(GLStencilElement);
+
+ public:
+  enum Mode {
+    OFF,           // no stencil test (the default)
+    MARK_PART,     // set the body-part bit where drawn
+    MARK_LAYER,    // set the layer bit where drawn
+    OUTSIDE_LAYER, // draw only where the layer bit is clear
+    OUTSIDE_LAYER_AND_PARTS,  // ... and the body-part bit too (a masked layer)
+    INSIDE_LAYER,  // draw only where the layer bit is set
+  };
+  static constexpr unsigned kPartBit = 1, kLayerBit = 2;
+
+  static void initClass();
+  static void set(SoState* state, Mode mode);
+  static Mode get(SoState* state);
+  // Clears the layer bit everywhere (the body-part bit stays).
+  static void clearLayerBit();
+
+  void init(SoState* state) override;
+  void push(SoState* state) override;
+  void pop(SoState* state, const SoElement* previousTop) override;
+  SbBool matches(const SoElement* element) const override;
+  SoElement* copyMatchInfo() const override;
+
+ protected:
+  ~GLStencilElement() override;
+
+ private:
+  void updateGL() const;
+  Mode mode_ = OFF;
+};
+
+namespace figment {
+// Adds a pre-render callback to `action` that clears the stencil buffer before each
+// frame (SoOffscreenRenderer and viewers clear colour and depth only).
+void clearStencilEachFrame(SoGLRenderAction& action);
+}  // namespace figment

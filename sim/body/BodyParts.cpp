@@ -1,0 +1,211 @@
+#include "sim/body/BodyParts.h"
+
+#include "sim/fitting/AxisSearch.h"
+#include "sim/core/PrincipalAxes.h"
+
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+
+namespace figment {
+
+namespace {
+
+// Vertex indices welded by position (texture seams split vertices that touch).
+std::vector<int> weldedIndices(const std::vector<Vec3>& vertices) {
+  std::map<std::array<long long, 3>, int> first;
+  std::vector<int> welded(vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    const std::array<long long, 3> key = {std::llround(vertices[v].x() * 1e6), std::llround(vertices[v].y() * 1e6),
+                                          std::llround(vertices[v].z() * 1e6)};
+    welded[v] = first.try_emplace(key, static_cast<int>(v)).first->second;
+  }
+  return welded;
+}
+
+// Triangles sharing a (welded) vertex with each triangle.
+std::vector<std::vector<int>> triangleNeighbours(const TriangleMesh& body) {
+  const std::vector<int> welded = weldedIndices(body.vertices);
+  std::vector<std::vector<int>> around(body.vertices.size());
+  for (size_t t = 0; t < body.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) around[welded[body.triangles[t][k]]].push_back(static_cast<int>(t));
+  std::vector<std::vector<int>> neighbours(body.triangles.size());
+  for (size_t t = 0; t < body.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k)
+      for (int u : around[welded[body.triangles[t][k]]])
+        if (u != static_cast<int>(t)) neighbours[t].push_back(u);
+    std::sort(neighbours[t].begin(), neighbours[t].end());
+    neighbours[t].erase(std::unique(neighbours[t].begin(), neighbours[t].end()), neighbours[t].end());
+  }
+  return neighbours;
+}
+
+}  // namespace
+
+std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton) {
+  const size_t n = body.triangles.size(), parts = skeleton.parts.size();
+  std::vector<int> owner(n, 0);
+  for (size_t t = 0; t < n; ++t) {
+    const Vec3 &a = body.vertices[body.triangles[t][0]], &b = body.vertices[body.triangles[t][1]],
+               &c = body.vertices[body.triangles[t][2]];
+    const Vec3 centroid = (a + b + c) / 3.0, normal = (b - a).cross(c - a);
+    double best = std::numeric_limits<double>::infinity(), bestFacing = best;
+    int nearest = 0, facing = -1;
+    for (size_t k = 0; k < parts; ++k) {
+      const Vec3& from = skeleton.joints[skeleton.parts[k].from].position;
+      const Vec3 bone = skeleton.joints[skeleton.parts[k].to].position - from;
+      const double f = std::clamp((centroid - from).dot(bone) / std::max(bone.squaredNorm(), 1e-18), 0.0, 1.0);
+      const Vec3 out = centroid - (from + f * bone);
+      const double d = out.squaredNorm();
+      if (d < best) best = d, nearest = static_cast<int>(k);
+      if (normal.dot(out) >= 0.0 && d < bestFacing) bestFacing = d, facing = static_cast<int>(k);
+    }
+    owner[t] = facing >= 0 ? facing : nearest;
+  }
+  // Islands: every piece of a part but its largest joins its neighbours' part.
+  const std::vector<std::vector<int>> neighbours = triangleNeighbours(body);
+  for (int pass = 0; pass < 10; ++pass) {
+    std::vector<int> piece(n, -1), pieceSize;
+    for (size_t t = 0; t < n; ++t) {
+      if (piece[t] >= 0) continue;
+      const int id = static_cast<int>(pieceSize.size());
+      std::vector<int> stack = {static_cast<int>(t)};
+      piece[t] = id;
+      int size = 0;
+      while (!stack.empty()) {
+        const int u = stack.back();
+        stack.pop_back();
+        ++size;
+        for (int w : neighbours[u])
+          if (piece[w] < 0 && owner[w] == owner[u]) piece[w] = id, stack.push_back(w);
+      }
+      pieceSize.push_back(size);
+    }
+    std::vector<int> largest(parts, -1);
+    for (size_t t = 0; t < n; ++t) {
+      int& l = largest[owner[t]];
+      if (l < 0 || pieceSize[piece[t]] > pieceSize[l]) l = piece[t];
+    }
+    // Votes of each small piece's neighbours.
+    std::map<int, std::vector<int>> votes;
+    for (size_t t = 0; t < n; ++t) {
+      if (piece[t] == largest[owner[t]]) continue;
+      std::vector<int>& v = votes.try_emplace(piece[t], std::vector<int>(parts, 0)).first->second;
+      for (int w : neighbours[t])
+        if (piece[w] != piece[t]) ++v[owner[w]];
+    }
+    if (votes.empty()) break;
+    std::map<int, int> joins;
+    for (const auto& [id, v] : votes) {
+      const int to = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
+      if (v[to] > 0) joins[id] = to;
+    }
+    if (joins.empty()) break;
+    for (size_t t = 0; t < n; ++t)
+      if (const auto j = joins.find(piece[t]); j != joins.end() && piece[t] != largest[owner[t]]) owner[t] = j->second;
+  }
+  return owner;
+}
+
+std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton) {
+  const std::vector<int> owner = assignTriangles(body, skeleton);
+  std::vector<PartMesh> parts;
+  for (const BodyPart& p : skeleton.parts)
+    parts.push_back({p.name, {}, skeleton.joints[p.from].position, skeleton.joints[p.to].position});
+  std::vector<std::vector<int>> local(parts.size(), std::vector<int>(body.vertices.size(), -1));
+  for (size_t t = 0; t < body.triangles.size(); ++t) {
+    PartMesh& part = parts[owner[t]];
+    std::vector<int>& map = local[owner[t]];
+    Triangle kept;
+    for (int k = 0; k < 3; ++k) {
+      const int v = body.triangles[t][k];
+      if (map[v] < 0) map[v] = static_cast<int>(part.mesh.vertices.size()), part.mesh.vertices.push_back(body.vertices[v]);
+      kept[k] = map[v];
+    }
+    part.mesh.triangles.push_back(kept);
+  }
+  return parts;
+}
+
+namespace {
+
+// A radial volume on the line through `origin` along `direction`, spanning the part.
+RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin,
+                           const Vec3& direction, int harmonics, double sectionSpacing) {
+  double low = std::numeric_limits<double>::max(), high = -low;
+  for (const Vec3& v : part.mesh.vertices) {
+    const double s = (v - origin).dot(direction);
+    low = std::min(low, s), high = std::max(high, s);
+  }
+  // A hair beyond the extreme vertices, so the caps enclose them.
+  const double margin = 1e-4;
+  const double length = high - low + 2 * margin;
+  const int sections = std::max(2, static_cast<int>(std::ceil(length / sectionSpacing)) + 1);
+  return fitRadialDepthToPoints(points, part.mesh.vertices, origin + (low - margin) * direction, direction, length,
+                                sections, harmonics);
+}
+
+}  // namespace
+
+double radialGapEstimate(const RadialDepth& volume, const std::vector<Vec3>& vertices) {
+  double total = 0.0;
+  for (const Vec3& v : vertices) {
+    double s, a, rho;
+    volume.toAxis(v, s, a, rho);
+    const double ends = std::min(s, volume.parameters().length - s);
+    total += std::max(0.0, std::min(volume.radius(s, a) - rho, ends));
+  }
+  return total / static_cast<double>(vertices.size());
+}
+
+RadialDepth fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing) {
+  std::vector<Vec3> points = part.mesh.vertices;
+  for (const Triangle& t : part.mesh.triangles)
+    points.push_back((part.mesh.vertices[t[0]] + part.mesh.vertices[t[1]] + part.mesh.vertices[t[2]]) / 3.0);
+  const Vec3 bone = (part.to - part.from).normalized();
+  // Candidates: the bone; the bone's direction through the part's centroid; the part's
+  // principal axis nearest the bone's direction, through its centroid.
+  const PrincipalAxes spread = principalAxes(points);
+  const Vec3& centroid = spread.mean;
+  Vec3 principal = spread.axes.col(2);
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(spread.axes.col(k).dot(bone)) > std::abs(principal.dot(bone))) principal = spread.axes.col(k);
+  if (principal.dot(bone) < 0.0) principal = -principal;
+  const std::vector<std::pair<Vec3, Vec3>> axes = {{part.from, bone}, {centroid, bone}, {centroid, principal}};
+  RadialDepth best = fitAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);
+  double bestGap = radialGapEstimate(best, part.mesh.vertices);
+  size_t start = 0;
+  for (size_t k = 1; k < axes.size(); ++k) {
+    RadialDepth candidate = fitAlong(part, points, axes[k].first, axes[k].second, harmonics, sectionSpacing);
+    const double gap = radialGapEstimate(candidate, part.mesh.vertices);
+    if (gap < bestGap) best = std::move(candidate), bestGap = gap, start = k;
+  }
+  // The genetic search from the best of them (it keeps its best: never worse).
+  const AxisSearchResult searched = searchAxis(
+      {axes[start].first, axes[start].second},
+      [&](const Axis& axis) {
+        return radialGapEstimate(fitAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
+                                 part.mesh.vertices);
+      });
+  if (searched.cost < bestGap)
+    best = fitAlong(part, points, searched.axis.origin, searched.axis.direction, harmonics, sectionSpacing);
+  return best;
+}
+
+std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& triangleParts, size_t partCount) {
+  std::vector<std::vector<int>> votes(body.vertices.size());
+  for (size_t t = 0; t < body.triangles.size(); ++t)
+    for (int v : body.triangles[t]) {
+      if (votes[v].empty()) votes[v].assign(partCount, 0);
+      ++votes[v][triangleParts[t]];
+    }
+  std::vector<int> part(body.vertices.size(), -1);
+  for (size_t v = 0; v < votes.size(); ++v)
+    if (!votes[v].empty()) part[v] = static_cast<int>(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
+  return part;
+}
+
+}  // namespace figment

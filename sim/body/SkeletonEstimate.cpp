@@ -1,0 +1,200 @@
+#include "sim/body/SkeletonEstimate.h"
+
+#include "sim/body/BodySlices.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace figment {
+
+namespace {
+
+constexpr double kHeight = 1.66;  // m: the default body's, where BodySlices' thresholds hold
+
+// How many clusters the points make along their widest horizontal spread, split where
+// consecutive points lie more than `gap` apart (points in a plane, as 2-D).
+int clusterCount(std::vector<Vec2> points, double gap) {
+  if (points.empty()) return 0;
+  Vec2 mean = Vec2::Zero();
+  for (const Vec2& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
+  for (const Vec2& p : points) covariance += (p - mean) * (p - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(covariance);
+  const Vec2 axis = eigen.eigenvectors().col(1);
+  std::vector<double> along;
+  for (const Vec2& p : points) along.push_back((p - mean).dot(axis));
+  std::sort(along.begin(), along.end());
+  int count = 1;
+  for (size_t i = 1; i < along.size(); ++i) count += along[i] - along[i - 1] > gap;
+  return count;
+}
+
+// Points of `vertices` within `slab` of the lowest (or highest) along `up`, in the plane
+// perpendicular to it.
+std::vector<Vec2> slab(const std::vector<Vec3>& vertices, const Vec3& up, double fraction, bool top) {
+  double low = std::numeric_limits<double>::max(), high = -low;
+  for (const Vec3& v : vertices) low = std::min(low, v.dot(up)), high = std::max(high, v.dot(up));
+  const double extent = high - low;
+  const Vec3 e1 = up.unitOrthogonal(), e2 = up.cross(e1);
+  std::vector<Vec2> points;
+  for (const Vec3& v : vertices) {
+    const double h = v.dot(up);
+    if (top ? h >= high - fraction * extent : h <= low + fraction * extent) points.emplace_back(v.dot(e1), v.dot(e2));
+  }
+  return points;
+}
+
+Vec3 findUp(const std::vector<Vec3>& vertices) {
+  const Bounds b = boundsOf(vertices);
+  const double largest = b.size().maxCoeff();
+  for (int axis = 0; axis < 3; ++axis)
+    for (double sign : {1.0, -1.0}) {
+      if (b.size()[axis] < 0.8 * largest) continue;
+      const Vec3 up = sign * Vec3::Unit(axis);
+      const double gap = 0.04 * b.size()[axis];
+      if (clusterCount(slab(vertices, up, 0.04, false), gap) == 2 && clusterCount(slab(vertices, up, 0.04, true), gap) == 1)
+        return up;
+    }
+  throw std::invalid_argument("no up axis with two feet below and one head above: not a standing humanoid");
+}
+
+// The centroid of a cluster's section points, as (x, y, z) at height y.
+Vec3 centroidAt(const XCluster& c, double y) {
+  Vec2 m = Vec2::Zero();
+  for (const Vec2& p : c.points) m += p;
+  m /= static_cast<double>(std::max<size_t>(1, c.points.size()));
+  return {m.x(), y, m.y()};
+}
+
+// The two leg clusters at height y (the torso-band clusters, left = +x first), or none.
+std::vector<XCluster> legsAt(const TriangleMesh& body, double y) {
+  std::vector<XCluster> legs;
+  for (XCluster& c : clusterByX(planeSection(body, SectionAxis::Y, y), 0.02))
+    if (c.maxX > -0.25 && c.minX < 0.25) legs.push_back(std::move(c));
+  if (legs.size() != 2) return {};
+  if (legs[0].minX < legs[1].minX) std::swap(legs[0], legs[1]);
+  return legs;
+}
+
+Vec3 torsoCentre(const TriangleMesh& body, double y) {
+  const TorsoSlice s = sliceTorso(body, y);
+  if (s.empty()) throw std::invalid_argument("no torso section at height " + std::to_string(y));
+  const Vec2 c = s.centroid();
+  return {c.x(), y, c.y()};
+}
+
+}  // namespace
+
+Skeleton estimateSkeleton(const TriangleMesh& input) {
+  if (input.vertices.size() < 100) throw std::invalid_argument("too few vertices for a body");
+  // 1-2. Up, forward, scale: a normalised copy (y up, facing +z, 1.66 m, centred in x).
+  const Vec3 up = findUp(input.vertices);
+  Eigen::Matrix3d R = Eigen::Quaterniond::FromTwoVectors(up, Vec3::UnitY()).toRotationMatrix();
+  std::vector<Vec3> turned;
+  for (const Vec3& v : input.vertices) turned.push_back(R * v);
+  Bounds b = boundsOf(turned);
+  const double height = b.size().y();
+  // Forward: from the legs just above the ankles towards the feet.
+  const double ankleSlab = b.min.y() + 0.08 * height, footSlab = b.min.y() + 0.03 * height;
+  Vec3 legs = Vec3::Zero(), feet = Vec3::Zero();
+  int nLegs = 0, nFeet = 0;
+  for (const Vec3& v : turned) {
+    if (std::abs(v.y() - ankleSlab) < 0.01 * height) legs += v, ++nLegs;
+    if (v.y() < footSlab) feet += v, ++nFeet;
+  }
+  if (nLegs == 0 || nFeet == 0) throw std::invalid_argument("no feet found");
+  Vec3 forward = feet / nFeet - legs / nLegs;
+  forward.y() = 0.0;
+  if (forward.norm() < 1e-9) throw std::invalid_argument("the feet do not point anywhere");
+  forward.normalize();
+  R = Eigen::AngleAxisd(std::atan2(forward.x(), forward.z()), -Vec3::UnitY()).toRotationMatrix() * R;
+  const double scale = kHeight / height;
+  TriangleMesh body = input;
+  for (Vec3& v : body.vertices) v = scale * (R * v);
+  b = boundsOf(body.vertices);
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& v : body.vertices) mean += v;
+  mean /= static_cast<double>(body.vertices.size());
+  const Vec3 shift(-mean.x(), -b.min.y(), 0.0);
+  for (Vec3& v : body.vertices) v += shift;
+
+  // 3. Landmarks.
+  double crotch = -1.0;
+  for (double y = 0.3 * kHeight; y < 0.6 * kHeight; y += 0.005)
+    if (!legsAt(body, y).empty()) crotch = y;
+  if (crotch < 0.0) throw std::invalid_argument("the legs never part: no crotch found");
+  const double armpit = armpitHeight(body);
+  const double neck = neckHeight(body, armpit);
+  double waistY = crotch + 0.1, narrowest = std::numeric_limits<double>::max();
+  for (double y = crotch + 0.1; y < armpit - 0.05; y += 0.005) {
+    const TorsoSlice s = sliceTorso(body, y);
+    if (!s.empty() && s.maxX() - s.minX() < narrowest) narrowest = s.maxX() - s.minX(), waistY = y;
+  }
+  std::array<Vec3, 25> j;
+  auto set = [&](const char* name, const Vec3& p) {
+    const auto& names = humanoidJointNames();
+    j[std::find(names.begin(), names.end(), name) - names.begin()] = p;
+  };
+  set("pelvisFloor", torsoCentre(body, crotch + 0.02) - Vec3(0, 0.02, 0));
+  set("pelvis", torsoCentre(body, crotch + 0.08));
+  set("waist", torsoCentre(body, waistY));
+  set("chest", torsoCentre(body, armpit - 0.03));
+  set("neckBase", torsoCentre(body, neck - 0.04));
+  set("neckTop", torsoCentre(body, neck + 0.03));
+  Vec3 top = body.vertices.front();
+  for (const Vec3& v : body.vertices)
+    if (v.y() > top.y()) top = v;
+  set("headTop", Vec3(0.5 * (j[3].x() + j[4].x()), top.y(), j[4].z()));
+  const double legHeights[3] = {crotch - 0.03, 0.285 * kHeight, 0.045 * kHeight};
+  const char* legJoints[2][3] = {{"hipL", "kneeL", "ankleL"}, {"hipR", "kneeR", "ankleR"}};
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<XCluster> pair = legsAt(body, legHeights[k]);
+    if (pair.empty()) throw std::invalid_argument("no pair of legs at height " + std::to_string(legHeights[k]));
+    for (int side = 0; side < 2; ++side) {
+      Vec3 c = centroidAt(pair[side], legHeights[k]);
+      if (k == 0) c.y() = crotch + 0.04;  // the hip joint sits above the crotch
+      set(legJoints[side][k], c);
+    }
+  }
+  for (int side = 0; side < 2; ++side) {  // toes: each foot's front point
+    Vec3 toe(0, 0, -std::numeric_limits<double>::max());
+    for (const Vec3& v : body.vertices)
+      if (v.y() < 0.04 * kHeight && (side == 0 ? v.x() > 0 : v.x() < 0) && v.z() > toe.z()) toe = v;
+    set(side == 0 ? "toeL" : "toeR", toe);
+  }
+  const TorsoSlice shoulders = sliceTorso(body, armpit + 0.07);
+  const Vec3 chest = torsoCentre(body, armpit + 0.07);
+  const double outline[2] = {shoulders.maxX(), shoulders.minX()};
+  const double torsoEdge[2] = {sliceTorso(body, armpit - 0.03).maxX(), sliceTorso(body, armpit - 0.03).minX()};
+  const char* armJoints[2][5] = {{"shoulderBaseL", "shoulderL", "elbowL", "wristL", "fingertipL"},
+                                 {"shoulderBaseR", "shoulderR", "elbowR", "wristR", "fingertipR"}};
+  for (int side = 0; side < 2; ++side) {
+    const double sign = side == 0 ? 1.0 : -1.0;
+    const Vec3 shoulder(outline[side] - sign * 0.04, armpit + 0.07, chest.z());
+    set(armJoints[side][0], Vec3(chest.x() + sign * 0.05, armpit + 0.09, chest.z()));
+    set(armJoints[side][1], shoulder);
+    // The arm: vertices beside the torso above the crotch; the fingertip the farthest.
+    Vec3 tip = shoulder;
+    for (const Vec3& v : body.vertices)
+      if (v.y() > crotch && sign * v.x() > sign * torsoEdge[side] + 0.02 &&
+          (v - shoulder).squaredNorm() > (tip - shoulder).squaredNorm())
+        tip = v;
+    set(armJoints[side][2], shoulder + 0.42 * (tip - shoulder));
+    set(armJoints[side][3], shoulder + 0.75 * (tip - shoulder));
+    set(armJoints[side][4], tip);
+  }
+
+  // 4. Back into the input's frame and unit.
+  std::vector<Vec3> positions;
+  for (const Vec3& p : j) positions.push_back(R.transpose() * ((p - shift) / scale));
+  return humanoidSkeleton(positions);
+}
+
+}  // namespace figment

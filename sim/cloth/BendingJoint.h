@@ -1,0 +1,43 @@
+#pragma once
+// A joint between two cloth sections (paper §2, Fig. 2.1): the hinge on the shared edge
+// (x0, x1) with the opposite corners x2 (section A = x0 x1 x2) and x3 (section B). Its
+// dihedral angle measures the curvature across the edge; sim/cloth/PlateBending.h turns the
+// angles around each section into the section's curvature and the plate's energy.
+//
+// Angle gradients: Bridson, Marino & Fedkiw, "Simulation of clothing with folds and
+// wrinkles", SCA 2003.
+
+#include "sim/core/TriangleMesh.h"
+
+#include <array>
+#include <vector>
+
+namespace figment {
+
+class BendingJoint {
+ public:
+  // Corners: shared edge (e0, e1), opposite o2 of section A = (e0, e1, o2), o3 of B.
+  BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec3>& rest);
+
+  bool valid() const { return valid_; }
+  const std::array<int, 4>& corners() const { return corners_; }
+  double restAngle() const { return restAngle_; }
+
+  // theta - theta0 at x, wrapped into (-pi, pi] (the shortest way back to rest).
+  double angleChange(const std::vector<Vec3>& x) const;
+  // The forces of a moment M = dW/dtheta about the joint: force -= M dtheta/dx.
+  void addMomentForces(const std::vector<Vec3>& x, double moment, std::vector<Vec3>& force) const;
+
+  // Signed dihedral angle between the section normals: 0 when flat, > 0 when the sections
+  // fold towards A's normal; the same whichever section is A when the winding agrees.
+  static double angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
+  // dtheta/dx for the four corners x0..x3.
+  static std::array<Vec3, 4> angleGradient(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
+
+ private:
+  std::array<int, 4> corners_;
+  double restAngle_ = 0.0;
+  bool valid_ = false;
+};
+
+}  // namespace figment

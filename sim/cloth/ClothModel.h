@@ -1,0 +1,58 @@
+#pragma once
+// The FIGMENT physical model of one garment (paper §2): triangular sections with
+// stretch/shear stresses, plate bending from the angles at the joints between them
+// (sim/cloth/PlateBending.h), gravity, air resistance and wind (sim/cloth/Wind.h), acting on nodes
+// whose masses are lumped from the sections (rho h A / 3 per corner).
+// Collisions and friction are contact events, handled by the solver after each step.
+
+#include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/MembraneElement.h"
+#include "sim/cloth/PlateBending.h"
+#include "sim/core/TriangleMesh.h"
+#include "sim/cloth/Wind.h"
+
+#include <vector>
+
+namespace figment {
+
+class ClothModel {
+ public:
+  // Throws std::invalid_argument for an empty garment, an index out of range or a
+  // garment whose sections are all degenerate.
+  ClothModel(const TriangleMesh& rest, const ClothParameters& parameters);
+
+  // a = F(x, v, t) / m for every node (m/s^2) at simulated time t (s), each then
+  // limited as the parameters say. Only the wind depends on t.
+  void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t, std::vector<Vec3>& a) const;
+
+  // Held (pinned) nodes: sections between them are clamps that do not bend.
+  void hold(const std::vector<char>& heldNodes) { bending_.hold(heldNodes); }
+
+  // How often the stability measures engaged since construction: sections whose strain
+  // was clamped and nodes whose acceleration was limited, counted per force evaluation.
+  struct LimiterCounts {
+    long long evaluations = 0, clampedSections = 0, limitedNodes = 0;
+  };
+  const LimiterCounts& limiterCounts() const { return counts_; }
+
+  const std::vector<double>& masses() const { return masses_; }  // kg
+  const std::vector<MembraneElement>& sections() const { return sections_; }
+  const PlateBending& bending() const { return bending_; }
+  size_t nodeCount() const { return masses_.size(); }
+
+ private:
+  void addWindForces(const std::vector<Vec3>& x, double t) const;
+  void limitAccelerations(std::vector<Vec3>& a) const;
+
+  ClothParameters parameters_;
+  std::vector<MembraneElement> sections_;
+  PlateBending bending_;
+  std::vector<double> masses_;
+  std::vector<double> inverseMasses_;
+  std::vector<double> areas_;  // lumped node area, m^2 (air resistance acts on it)
+  Wind wind_;
+  mutable std::vector<Vec3> force_;
+  mutable LimiterCounts counts_;
+};
+
+}  // namespace figment

@@ -1,0 +1,43 @@
+#include "sim/cloth/ClothParameters.h"
+
+#include "sim/core/ParameterChecks.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace figment {
+
+const char* integratorName(Integrator integrator) {
+  switch (integrator) {
+    case Integrator::ExplicitEuler: return "explicit Euler";
+    case Integrator::SymplecticEuler: return "symplectic Euler";
+    case Integrator::Heun: return "improved Euler (Heun)";
+  }
+  return "unknown";
+}
+
+double ClothParameters::accelerationLimitSI() const {
+  const double g = gravity.norm();
+  return accelerationLimit * (g > 0.0 ? g : 9.81);
+}
+
+void ClothParameters::validate() const {
+  material.validate();
+  requirePositive("timeStep", timeStep);
+  requirePositive("maxTime", maxTime);
+  requireNonNegative("restSpeed", rest.speedThreshold);
+  requireNonNegative("restWindow", rest.window);
+  for (int axis = 0; axis < 3; ++axis) requireFinite("gravity", gravity[axis]);
+  requireNonNegative("airResistance", airResistance);
+  requireNonNegative("friction", friction);
+  requireNonNegative("clearance", clearance);
+  requireNonNegative("strainRateDamping", strainRateDamping);
+  requireNonNegative("strainLimit", strainLimit);
+  requirePositive("accelerationLimit", accelerationLimit);
+  wind.validate();
+  if (timeStep > maxTime)
+    throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
+                                formatNumber(maxTime));
+}
+
+}  // namespace figment

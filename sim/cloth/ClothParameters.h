@@ -1,0 +1,56 @@
+#pragma once
+// Everything that shapes one drape besides the garment and the body (SI units).
+
+#include "sim/cloth/Material.h"
+#include "sim/core/TriangleMesh.h"
+#include "sim/cloth/Wind.h"
+
+namespace figment {
+
+struct RestRule {
+  double speedThreshold = 0.01;  // m/s: the cloth is at rest when every node is slower...
+  double window = 0.25;          // s: ...for this long without interruption
+};
+
+// How a step advances positions and velocities from the accelerations (paper §2).
+enum class Integrator {
+  ExplicitEuler,    // x += dt v(t);  v += dt a(t)                         first order
+  SymplecticEuler,  // v += dt a(t);  x += dt v(t+dt)                      first order
+  Heun,             // improved Euler: mean of the slopes at t and at the
+                    // explicit Euler prediction                            second order
+};
+const char* integratorName(Integrator integrator);  // "explicit Euler", ...
+
+// The paper's second stability measure (§2, Fig. 2.3): a limit on each node's net
+// acceleration, applied when the accelerations of a force evaluation are complete.
+enum class AccelerationLimiter {
+  None,
+  Clamp,  // |a| > a_max  ->  a_max a/|a|           (the paper's choice)
+  Tanh,   // a -> a_max tanh(|a|/a_max) a/|a|       (smooth, a little dearer)
+};
+
+struct ClothParameters {
+  Material material;
+  double timeStep = 1.5e-4;              // dt, s: stable for ~1.5 cm sections of 1 MPa cloth
+  double maxTime = 5.0;                  // s of simulated time, the run's upper bound
+  RestRule rest;
+  Vec3 gravity = Vec3(0.0, -9.81, 0.0);  // m/s^2
+  double airResistance = 1.0;            // N*s/m^3: force per unit area per unit speed
+  double friction = 0.4;                 // Coulomb coefficient against the body
+  double clearance = 0.003;              // m kept between cloth nodes and the body surface
+  double strainRateDamping = 1.0e-4;     // s: Kelvin-Voigt relaxation time of the membrane
+  Integrator integrator = Integrator::Heun;
+  // The paper's first stability measure: each section's Green strain components are
+  // clamped into [-strainLimit, strainLimit] when its forces are computed; 0 = off.
+  double strainLimit = 0.0;
+  AccelerationLimiter accelerationLimiter = AccelerationLimiter::None;
+  double accelerationLimit = 20.0;       // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
+  WindParameters wind;                   // paper §2 wind; amplitude 0 (the default) = none
+  // a_max in m/s^2.
+  double accelerationLimitSI() const;
+
+  // Throws std::invalid_argument naming the field and value when out of range.
+  void validate() const;
+};
+
+}  // namespace figment

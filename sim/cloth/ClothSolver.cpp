@@ -1,0 +1,199 @@
+#include "sim/cloth/ClothSolver.h"
+
+#include "sim/core/ParameterChecks.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace figment {
+
+ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
+                         std::shared_ptr<const Collider> body)
+    : parameters_(parameters), body_(std::move(body)) {
+  parameters_.validate();
+  model_ = std::make_unique<ClothModel>(garment, parameters_);
+  x_ = garment.vertices;
+  v_.assign(x_.size(), Vec3::Zero());
+  pinned_.assign(x_.size(), 0);
+  bodyDistanceBound_.assign(x_.size(), 0.0);
+}
+
+ClothSolver::~ClothSolver() = default;
+
+void ClothSolver::pin(int node) {
+  pinned_.at(node) = 1;
+  model_->hold(pinned_);
+}
+
+const std::vector<Vec3>& ClothSolver::positions() const { return x_; }
+const std::vector<Vec3>& ClothSolver::velocities() const { return v_; }
+double ClothSolver::time() const { return time_; }
+int ClothSolver::iterations() const { return iterations_; }
+
+double ClothSolver::maxSpeed() const {
+  double fastest = 0.0;
+  for (const Vec3& v : v_) fastest = std::max(fastest, v.norm());
+  return fastest;
+}
+
+bool ClothSolver::atRest() const {
+  return restSince_ >= 0.0 && time_ - restSince_ >= parameters_.rest.window - 1e-12;
+}
+
+namespace {
+constexpr double kContactSearchMargin = 0.02;  // m beyond clearance and motion a query looks
+
+// Contact response on one node that ended the step inside the body or within the
+// clearance, at x with the integrator's end-of-step velocity v:
+//  - the velocity takes in the push-out: v + (target - x) / dt, so a node the body
+//    holds in a crease does not keep a velocity that every push-out undoes; its normal
+//    part is then limited to what the node had away from the body (the push-out never
+//    launches a node, and velocity into the body is removed);
+//  - friction (Coulomb) acts on the tangential part, limited by mu times the normal
+//    velocity into the body that the contact removed. Static (|v_t| <= mu dv_n): the
+//    node stops and keeps its tangential place from the start of the step. Sliding:
+//    v_t shrinks by mu dv_n.
+//  - the node ends on the surface + clearance.
+void respondToContact(const Contact& contact, double clearance, double friction, double dt, const Vec3& xPrevious,
+                      Vec3& x, Vec3& v) {
+  const Vec3& n = contact.normal;
+  const Vec3 target = contact.surfacePoint + clearance * n;
+  const double normalSpeedBefore = v.dot(n);
+  const double removedNormalSpeed = std::max(0.0, -normalSpeedBefore);
+  v += (target - x) / dt;
+  const double normalSpeed = std::clamp(v.dot(n), 0.0, std::max(0.0, normalSpeedBefore));
+  const Vec3 tangential = v - v.dot(n) * n;
+  const double tangentialSpeed = tangential.norm();
+  const double frictionLimit = friction * removedNormalSpeed;
+  if (tangentialSpeed <= frictionLimit) {
+    v = normalSpeed * n;
+    x = xPrevious + (target - xPrevious).dot(n) * n;
+  } else {
+    v = normalSpeed * n + tangential * (1.0 - frictionLimit / tangentialSpeed);
+    x = target;
+  }
+}
+}  // namespace
+
+void ClothSolver::integrate(double dt) {
+  const size_t n = x_.size();
+  xStart_ = x_;
+  // Pinned nodes do not accelerate: zero at every evaluation, so a predicted state
+  // (Heun) does not give them a velocity their neighbours would feel.
+  auto holdPins = [&](std::vector<Vec3>& a) {
+    for (size_t i = 0; i < n; ++i)
+      if (pinned_[i]) a[i].setZero();
+  };
+  model_->accelerations(x_, v_, time_, a0_);
+  holdPins(a0_);
+  switch (parameters_.integrator) {
+    case Integrator::ExplicitEuler:
+      for (size_t i = 0; i < n; ++i) {
+        x_[i] += dt * v_[i];
+        v_[i] += dt * a0_[i];
+      }
+      break;
+    case Integrator::SymplecticEuler:
+      for (size_t i = 0; i < n; ++i) {
+        v_[i] += dt * a0_[i];
+        x_[i] += dt * v_[i];
+      }
+      break;
+    case Integrator::Heun:
+      // Predictor: explicit Euler; corrector: the mean of the slopes at t and at the
+      // predicted state.
+      xPredicted_.resize(n);
+      vPredicted_.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        xPredicted_[i] = x_[i] + dt * v_[i];
+        vPredicted_[i] = v_[i] + dt * a0_[i];
+      }
+      model_->accelerations(xPredicted_, vPredicted_, time_ + dt, a1_);
+      holdPins(a1_);
+      for (size_t i = 0; i < n; ++i) {
+        x_[i] += 0.5 * dt * (v_[i] + vPredicted_[i]);
+        v_[i] += 0.5 * dt * (a0_[i] + a1_[i]);
+      }
+      break;
+  }
+}
+
+void ClothSolver::step() {
+  const double dt = parameters_.timeStep;
+  const size_t n = x_.size();
+  integrate(dt);
+  double fastest = 0.0;
+  for (size_t i = 0; i < n; ++i) {
+    if (pinned_[i]) continue;  // held: no acceleration, no velocity
+    const Vec3& previous = xStart_[i];
+    if (body_) {
+      const double moved = (x_[i] - previous).norm();
+      double& bound = bodyDistanceBound_[i];
+      bound -= moved;
+      if (bound <= parameters_.clearance) {
+        // Look well beyond this step's motion so that the bound then lets the next
+        // steps skip the query; on the first step look everywhere, since a garment may
+        // start roughly placed with nodes inside the body (paper §3.3).
+        const double searchRadius = iterations_ == 0 ? std::numeric_limits<double>::infinity()
+                                                     : parameters_.clearance + 2.0 * moved + kContactSearchMargin;
+        Contact contact;
+        if (body_->contact(x_[i], parameters_.clearance, searchRadius, contact)) {
+          respondToContact(contact, parameters_.clearance, parameters_.friction, dt, previous, x_[i], v_[i]);
+          bound = parameters_.clearance;
+        } else {
+          bound = contact.distance;
+        }
+      }
+    }
+    const double speed = v_[i].norm();
+    if (!std::isfinite(speed) || !x_[i].allFinite() || speed > kBlowUpSpeed)
+      throw SimulationError("simulation blew up at step " + std::to_string(iterations_ + 1) + " (t = " +
+                            formatNumber(time_ + dt) + " s): node " + std::to_string(i) + " speed " +
+                            formatNumber(speed) + " m/s; timeStep = " + formatNumber(dt) +
+                            " s, method " + integratorName(parameters_.integrator));
+    fastest = std::max(fastest, speed);
+  }
+  time_ += dt;
+  ++iterations_;
+  if (fastest < parameters_.rest.speedThreshold) {
+    if (restSince_ < 0.0) restSince_ = time_;
+  } else {
+    restSince_ = -1.0;
+  }
+}
+
+DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& progress, double progressInterval) {
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  auto lastReport = start;
+  const int firstIteration = iterations_;
+  const ClothModel::LimiterCounts before = model_->limiterCounts();
+  // Stop at maxTime, counted in steps so that rounding never adds or drops one.
+  const int totalSteps = static_cast<int>(std::ceil(parameters_.maxTime / parameters_.timeStep - 1e-9));
+  while (iterations_ < totalSteps && !atRest()) {
+    step();
+    if (progress && (iterations_ & 63) == 0) {
+      const auto now = Clock::now();
+      if (std::chrono::duration<double>(now - lastReport).count() >= progressInterval) {
+        progress({iterations_, time_, maxSpeed()});
+        lastReport = now;
+      }
+    }
+  }
+  DrapeResult result;
+  result.iterations = iterations_ - firstIteration;
+  result.simulatedTime = time_;
+  result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.atRest = atRest();
+  const ClothModel::LimiterCounts& after = model_->limiterCounts();
+  const double evaluations = static_cast<double>(after.evaluations - before.evaluations);
+  if (evaluations > 0.0) {
+    result.clampedSectionShare =
+        (after.clampedSections - before.clampedSections) / (evaluations * model_->sections().size());
+    result.limitedNodeShare = (after.limitedNodes - before.limitedNodes) / (evaluations * model_->nodeCount());
+  }
+  return result;
+}
+
+}  // namespace figment

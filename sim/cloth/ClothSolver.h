@@ -1,0 +1,98 @@
+#pragma once
+// Drapes one garment: the FIGMENT physical model (paper §2) integrated with improved
+// Euler (Heun) or, for comparison, explicit or symplectic Euler; collisions against a
+// Collider; until the cloth is at rest or maxTime.
+//
+// One step, in order:
+//  1. forces -> accelerations (ClothModel) at the step's time t (Heun's second
+//     evaluation, of the predicted state, at t + dt; only the wind depends on time):
+//     strain clamping acts inside each section's force, the acceleration limiter on
+//     each node's net acceleration; with Heun both happen at each of its two evaluations;
+//  2. the integrator advances positions and velocities (pinned nodes stay);
+//  3. contact response: nodes inside the body or within the clearance are put on the
+//     surface + clearance, their velocity becomes the motion they made, the velocity
+//     into the body is removed and friction acts on the tangential velocity;
+//  4. blow-up check (non-finite values, speed > kBlowUpSpeed), then the at-rest rule.
+
+#include "sim/cloth/ClothModel.h"
+#include "sim/cloth/ClothParameters.h"
+#include "sim/collision/Collider.h"
+#include "sim/core/TriangleMesh.h"
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+namespace figment {
+
+struct DrapeProgress {
+  int iterations;
+  double simulatedTime;  // s
+  double maxSpeed;       // m/s, fastest node now
+};
+
+struct DrapeResult {
+  int iterations = 0;
+  double simulatedTime = 0.0;  // s
+  double wallSeconds = 0.0;
+  bool atRest = false;
+  // Share of section force evaluations whose strain was clamped, and of node
+  // accelerations the limiter cut (sim/cloth/ClothModel.h), over this run.
+  double clampedSectionShare = 0.0;
+  double limitedNodeShare = 0.0;
+};
+
+// Thrown when the simulation blows up (non-finite values): names step, dt and method.
+class SimulationError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ClothSolver {
+ public:
+  // `garment` is the rest (unstressed) shape and also the starting placement, in the
+  // same frame as the collider (the scene's world frame). `body` may be null.
+  ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
+              std::shared_ptr<const Collider> body);
+  ~ClothSolver();
+
+  // Holds a node where it is (a pin): it keeps its position and never moves.
+  void pin(int node);
+
+  // Advances one time step (see the steps above). Throws SimulationError when a
+  // position or velocity stops being finite or a node exceeds kBlowUpSpeed.
+  void step();
+  static constexpr double kBlowUpSpeed = 100.0;  // m/s: far beyond any draping motion
+  // Runs until at rest or maxTime; `progress` (optional) is called about every
+  // `progressInterval` seconds of wall time.
+  DrapeResult run(const std::function<void(const DrapeProgress&)>& progress = {},
+                  double progressInterval = 1.0);
+
+  bool atRest() const;
+  const ClothModel& model() const { return *model_; }
+  const std::vector<Vec3>& positions() const;
+  const std::vector<Vec3>& velocities() const;
+  double time() const;
+  int iterations() const;
+  double maxSpeed() const;
+
+ private:
+  std::unique_ptr<ClothModel> model_;
+  ClothParameters parameters_;
+  std::shared_ptr<const Collider> body_;
+  std::vector<Vec3> x_, v_;
+  double time_ = 0.0;
+  int iterations_ = 0;
+  double restSince_ = -1.0;  // time the cloth became slower than the threshold; -1: moving
+  std::vector<char> pinned_;
+  // Per node, a lower bound of its distance to the body, kept down to date by the
+  // distance it moved since the last query: while it exceeds the clearance the node
+  // cannot touch the body and needs no query (exact, since the body does not move).
+  std::vector<double> bodyDistanceBound_;
+  void integrate(double dt);
+
+  std::vector<Vec3> xStart_, a0_, a1_, xPredicted_, vPredicted_;  // a step's scratch
+};
+
+}  // namespace figment

@@ -1,0 +1,61 @@
+#pragma once
+// One triangular cloth section (paper §2, Fig. 2.1): in-plane stretch (sigma_u, sigma_v)
+// and shear (tau_uv) from the section's distortion against its unstressed shape.
+//
+// Based on: the constant-strain triangle with St. Venant-Kirchhoff plane stress
+// (e.g. Volino, Magnenat-Thalmann & Faure, "A simple approach to nonlinear tensile
+// stiffness for accurate cloth simulation", ACM TOG 2009), which keeps the paper's
+// material parameters (E, nu, h) and its stress components.
+//
+//   rest frame (u, v) in the section's plane;  Dm = [X1-X0, X2-X0] in (u, v)  (2x2)
+//   F   = [x1-x0, x2-x0] Dm^-1                 deformation gradient (3x2)
+//   eps = (F^T F - I) / 2                       Green strain: eps_uu, eps_vv, eps_uv
+//   sigma_u  = E/(1-nu^2) (eps_uu + nu eps_vv)   sigma_v = E/(1-nu^2) (eps_vv + nu eps_uu)
+//   tau_uv   = E/(1+nu) eps_uv                   (= 2 G eps_uv)
+//   forces on corners 1, 2: -A h F S Dm^-T, corner 0: minus their sum (N)
+// A strain-rate term eps' * tauDamping (Kelvin-Voigt) is added to eps in the stress;
+// it damps the fast in-plane modes an explicit integrator cannot resolve and vanishes
+// at rest, so it does not change the draped shape.
+
+#include "sim/cloth/Material.h"
+#include "sim/core/TriangleMesh.h"
+
+#include <Eigen/Core>
+
+namespace figment {
+
+struct PlaneStress {
+  double sigmaU, sigmaV, tauUV;  // Pa
+};
+
+class MembraneElement {
+ public:
+  // Rest corners X0, X1, X2 (m). Returns false through `valid()` for a degenerate section.
+  MembraneElement(const Triangle& corners, const Vec3& X0, const Vec3& X1, const Vec3& X2);
+
+  bool valid() const { return restArea_ > 0.0; }
+  const Triangle& corners() const { return corners_; }
+  double restArea() const { return restArea_; }  // m^2
+
+  // Green strain (eps_uu, eps_vv, eps_uv) of the section at positions x.
+  Eigen::Vector3d strain(const std::vector<Vec3>& x) const;
+  PlaneStress stress(const Eigen::Vector3d& strain, const Material& material) const;
+
+  // Elastic energy A h [E/(2(1-nu^2)) (eps_uu^2 + eps_vv^2 + 2 nu eps_uu eps_vv)
+  //                     + E/(1+nu) eps_uv^2]  (J); its negative gradient is the force.
+  double energy(const std::vector<Vec3>& x, const Material& material) const;
+
+  // Adds the elastic (and strain-rate damping) forces of this section to `force`. With
+  // strainLimit > 0 each strain component is first clamped into [-limit, limit] (the
+  // paper's strain clamping: a section distorted beyond a realistic range pulls no
+  // harder than at the range's edge). Returns whether the clamp changed a strain.
+  bool addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+                 double tauDamping, double strainLimit, std::vector<Vec3>& force) const;
+
+ private:
+  Triangle corners_;
+  Eigen::Matrix2d restInverse_;  // Dm^-1
+  double restArea_ = 0.0;
+};
+
+}  // namespace figment

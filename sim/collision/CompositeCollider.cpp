@@ -1,0 +1,38 @@
+#include "sim/collision/CompositeCollider.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace figment {
+
+CompositeCollider::CompositeCollider(std::vector<std::shared_ptr<const Collider>> parts) {
+  for (auto& part : parts) add(std::move(part));
+}
+
+void CompositeCollider::add(std::shared_ptr<const Collider> part) {
+  if (!part)
+    throw std::invalid_argument("collider part " + std::to_string(parts_.size()) + " is null");
+  parts_.push_back(std::move(part));
+}
+
+bool CompositeCollider::contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const {
+  bool touching = false;
+  double bound = std::numeric_limits<double>::infinity();
+  for (const auto& part : parts_) {
+    Contact candidate;
+    if (part->contact(p, clearance, searchRadius, candidate)) {
+      // Strictly deeper only, so that of equally deep contacts the first part wins.
+      if (!touching || candidate.distance < out.distance) out = candidate;
+      touching = true;
+    } else if (!touching) {
+      bound = std::min(bound, candidate.distance);
+    }
+  }
+  if (!touching) out.distance = bound;
+  return touching;
+}
+
+}  // namespace figment

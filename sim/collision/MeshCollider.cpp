@@ -1,0 +1,71 @@
+#include "sim/collision/MeshCollider.h"
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace figment {
+
+namespace {
+double cornerAngle(const Vec3& corner, const Vec3& next, const Vec3& previous) {
+  const Vec3 u = next - corner, v = previous - corner;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+}  // namespace
+
+MeshCollider::MeshCollider(TriangleMesh surface) : surface_(std::move(surface)), bvh_(surface_) {
+  const auto& V = surface_.vertices;
+  const auto& T = surface_.triangles;
+  faceNormals_.resize(T.size());
+  vertexNormals_.assign(V.size(), Vec3::Zero());
+  edgeNormals_.assign(3 * T.size(), Vec3::Zero());
+  std::map<std::pair<int, int>, Vec3> edgeSums;
+  for (size_t t = 0; t < T.size(); ++t) {
+    const Vec3 &a = V[T[t][0]], &b = V[T[t][1]], &c = V[T[t][2]];
+    const Vec3 cross = (b - a).cross(c - a);
+    const double length = cross.norm();
+    faceNormals_[t] = length > 0.0 ? Vec3(cross / length) : Vec3::Zero();
+    for (int k = 0; k < 3; ++k) {
+      const int i = T[t][k], j = T[t][(k + 1) % 3], l = T[t][(k + 2) % 3];
+      vertexNormals_[i] += cornerAngle(V[i], V[j], V[l]) * faceNormals_[t];
+      // Eigen vectors start uninitialised: insert a zero before summing.
+      edgeSums.try_emplace(std::minmax(i, j), Vec3::Zero()).first->second += faceNormals_[t];
+    }
+  }
+  // Closest-point feature k of triangle t is edge (k, k+1): Edge01, Edge12, Edge20.
+  for (size_t t = 0; t < T.size(); ++t)
+    for (int k = 0; k < 3; ++k) edgeNormals_[3 * t + k] = edgeSums[std::minmax(T[t][k], T[t][(k + 1) % 3])];
+}
+
+bool MeshCollider::contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const {
+  const ClosestPoint closest = bvh_.closest(p, searchRadius);
+  if (closest.triangle < 0) {
+    out.distance = searchRadius;
+    return false;
+  }
+  const Triangle& tri = surface_.triangles[closest.triangle];
+  Vec3 pseudoNormal = faceNormals_[closest.triangle];
+  switch (closest.feature) {
+    case TriangleFeature::Face: pseudoNormal = faceNormals_[closest.triangle]; break;
+    case TriangleFeature::Edge01: pseudoNormal = edgeNormals_[3 * closest.triangle + 0]; break;
+    case TriangleFeature::Edge12: pseudoNormal = edgeNormals_[3 * closest.triangle + 1]; break;
+    case TriangleFeature::Edge20: pseudoNormal = edgeNormals_[3 * closest.triangle + 2]; break;
+    case TriangleFeature::Vertex0: pseudoNormal = vertexNormals_[tri[0]]; break;
+    case TriangleFeature::Vertex1: pseudoNormal = vertexNormals_[tri[1]]; break;
+    case TriangleFeature::Vertex2: pseudoNormal = vertexNormals_[tri[2]]; break;
+  }
+  const Vec3 offset = p - closest.point;
+  const double distance = std::sqrt(closest.distanceSquared);
+  const bool inside = offset.dot(pseudoNormal) < 0.0;
+  out.surfacePoint = closest.point;
+  out.distance = inside ? -distance : distance;
+  // Push-out direction: along the true offset when it is well defined, else the
+  // pseudo-normal (a point on the surface itself).
+  if (distance > 1e-9)
+    out.normal = inside ? Vec3(-offset / distance) : Vec3(offset / distance);
+  else
+    out.normal = pseudoNormal.normalized();
+  return out.distance < clearance;
+}
+
+}  // namespace figment

@@ -1,0 +1,103 @@
+// Welding by position with a uniform grid (spatial hashing, as in Teschner et al. 2003,
+// "Optimized Spatial Hashing for Collision Detection of Deformable Objects": the hash
+// of a cell is the xor of its integer coordinates times three large primes).
+
+#include "sim/core/TriangleMesh.h"
+
+#include "sim/core/ParameterChecks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace figment {
+
+namespace {
+
+using Cell = std::array<int64_t, 3>;
+
+struct CellHash {
+  size_t operator()(const Cell& c) const {
+    // Unsigned arithmetic: wrapping is defined, a signed overflow would not be.
+    const uint64_t h = static_cast<uint64_t>(c[0]) * 73856093u ^ static_cast<uint64_t>(c[1]) * 19349663u ^
+                       static_cast<uint64_t>(c[2]) * 83492791u;
+    return static_cast<size_t>(h);
+  }
+};
+
+// Any cell at least as large as the tolerance finds every partner in the 27 cells around
+// a point; a floor on the size keeps integer cell coordinates in range for tiny tolerances.
+constexpr double kSmallestCell = 1e-9;  // m
+
+}  // namespace
+
+Bounds boundsOf(const std::vector<Vec3>& points) {
+  Bounds bounds;
+  for (const Vec3& p : points) bounds.extend(p);
+  return bounds;
+}
+
+TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance) {
+  requireNonNegative("tolerance", tolerance);
+  const double cell = std::max(tolerance, kSmallestCell);
+  auto cellOf = [cell](const Vec3& p) {
+    return Cell{static_cast<int64_t>(std::floor(p.x() / cell)), static_cast<int64_t>(std::floor(p.y() / cell)),
+                static_cast<int64_t>(std::floor(p.z() / cell))};
+  };
+
+  // Each vertex joins the earliest kept vertex within the tolerance, or is kept itself:
+  // kept vertices stay in the order of their first occurrence, whatever the hash does.
+  std::unordered_map<Cell, std::vector<int>, CellHash> grid;
+  TriangleMesh merged;
+  std::vector<int> remap(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& p = mesh.vertices[i];
+    const Cell c = cellOf(p);
+    int found = -1;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto it = grid.find({c[0] + dx, c[1] + dy, c[2] + dz});
+          if (it == grid.end()) continue;
+          for (const int candidate : it->second)
+            if ((found < 0 || candidate < found) && (merged.vertices[candidate] - p).norm() <= tolerance)
+              found = candidate;
+        }
+    if (found < 0) {
+      found = static_cast<int>(merged.vertices.size());
+      merged.vertices.push_back(p);
+      grid[c].push_back(found);
+    }
+    remap[i] = found;
+  }
+
+  // A triangle whose corners met has no area left: drop it.
+  for (const Triangle& t : mesh.triangles) {
+    const Triangle r{remap[t[0]], remap[t[1]], remap[t[2]]};
+    if (r[0] != r[1] && r[1] != r[2] && r[2] != r[0]) merged.triangles.push_back(r);
+  }
+  return merged;
+}
+
+TriangleMesh croppedToBox(const TriangleMesh& mesh, const Bounds& box) {
+  TriangleMesh part;
+  std::vector<int> remap(mesh.vertices.size(), -1);
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 centroid = (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+    if ((centroid.array() < box.min.array()).any() || (centroid.array() > box.max.array()).any()) continue;
+    Triangle kept;
+    for (int k = 0; k < 3; ++k) {
+      int& index = remap[t[k]];
+      if (index < 0) {
+        index = static_cast<int>(part.vertices.size());
+        part.vertices.push_back(mesh.vertices[t[k]]);
+      }
+      kept[k] = index;
+    }
+    part.triangles.push_back(kept);
+  }
+  return part;
+}
+
+}  // namespace figment

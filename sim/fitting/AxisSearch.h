@@ -1,0 +1,51 @@
+#pragma once
+// The genetic search for a radial depth volume's axis (paper §3.2: "a combination of
+// analytic and iterative (genetic) techniques"): the analytic part fits the harmonics
+// for a given axis; this searches the axis.
+//
+// A member is an axis near a starting one: its direction tilted by (u, v) radians about
+// two directions perpendicular to the start's, its origin moved by (du, dv) m along
+// them. The population starts with the starting axis itself and members spread within
+// the limits; each generation sorts by cost, replaces the worst `mutationShare` with
+// copies of better members with one gene moved by a normal step (within its limit), and
+// the next `crossoverShare` with crossovers (each gene from a parent among the best
+// `parentShare`), parents chosen with a bias to low cost (index of u^2). The best member
+// survives every generation, so the result never costs more than the starting axis.
+// Seeded: a search repeats exactly.
+
+#include "sim/core/TriangleMesh.h"
+
+#include <cstdint>
+#include <functional>
+
+namespace figment {
+
+struct AxisSearchOptions {
+  int population = 10;
+  int generations = 6;
+  double mutationShare = 0.3;
+  double crossoverShare = 0.3;
+  double parentShare = 0.3;
+  double maxTilt = 0.35;    // rad, about each perpendicular
+  double maxShift = 0.02;   // m, along each perpendicular
+  uint32_t seed = 1;
+};
+
+struct Axis {
+  Vec3 origin;
+  Vec3 direction;  // unit
+};
+
+struct AxisSearchResult {
+  Axis axis;
+  double cost = 0.0;
+  int evaluations = 0;
+};
+
+// `cost` of an axis (lower is better; e.g. the gap of the volume fitted along it).
+// Throws std::invalid_argument when the start's direction is zero or the options are
+// out of range.
+AxisSearchResult searchAxis(const Axis& start, const std::function<double(const Axis&)>& cost,
+                            const AxisSearchOptions& options = {});
+
+}  // namespace figment

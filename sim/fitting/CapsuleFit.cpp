@@ -1,0 +1,174 @@
+#include "sim/fitting/CapsuleFit.h"
+
+#include "sim/core/PrincipalAxes.h"
+
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace figment {
+
+namespace {
+
+struct Limits {
+  std::array<double, 12> low, high, step;
+};
+
+// Limits and mutation steps for a part of this size (m) around its centre.
+Limits limitsFor(const CapsuleParameters& start, double size) {
+  Limits l;
+  const Vec3 centre(start.ox, start.oy, start.oz);
+  l.low = {0, 0, -1.5, -1.5, 0.01 * size, 0.01 * size, 0.01 * size, centre.x() - size, centre.y() - size,
+           centre.z() - size, -M_PI, -M_PI};
+  l.high = {1, 1, 1.5, 1.5, 3 * size, 3 * size, 3 * size, centre.x() + size, centre.y() + size, centre.z() + size,
+            M_PI, M_PI};
+  l.step = {0.1, 0.1, 0.1, 0.1, 0.03 * size, 0.03 * size, 0.03 * size, 0.01 * size, 0.01 * size, 0.01 * size, 0.03,
+            0.1};
+  return l;
+}
+
+// The default capsule set on the points: centred, along their principal axis, as big
+// as their extents.
+CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
+  const PrincipalAxes principal = principalAxes(points);
+  const Vec3& mean = principal.mean;
+  Vec3 axis = principal.axes.col(2);  // the largest spread's
+  if (axis.y() < 0.0) axis = -axis;
+  CapsuleParameters c;
+  c.r1 = c.r2 = 0.5;
+  const Vec3 turn = Vec3::UnitY().cross(axis);
+  c.theta = std::atan2(turn.norm(), Vec3::UnitY().dot(axis));
+  c.phi = turn.norm() > 1e-12 ? std::atan2(turn.z(), turn.x()) : 0.0;
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(c.theta, Vec3(std::cos(c.phi), 0.0, std::sin(c.phi))).toRotationMatrix();
+  Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
+  for (const Vec3& p : points) {
+    const Vec3 local = R.transpose() * (p - mean);
+    low = low.cwiseMin(local), high = high.cwiseMax(local);
+  }
+  const Vec3 extent = (high - low).cwiseMax(1e-6);
+  const Vec3 centre = mean + R * (0.5 * (low + high));
+  c.x = extent.x(), c.y = extent.y(), c.z = extent.z();
+  c.ox = centre.x(), c.oy = centre.y(), c.oz = centre.z();
+  return c;
+}
+
+}  // namespace
+
+double growToEnclose(CapsuleParameters& c, const std::vector<Vec3>& points) {
+  auto enclosesAt = [&](double s) {
+    CapsuleParameters grown = c;
+    grown.x *= s, grown.y *= s, grown.z *= s;
+    const Capsule capsule(grown);
+    for (const Vec3& p : points)
+      if (!capsule.contains(p)) return false;
+    return true;
+  };
+  double low = 1.0, high = 1.0;
+  while (!enclosesAt(high)) low = high, high *= 1.25;
+  if (high == 1.0) return 1.0;
+  while (high / low > 1.001) {
+    const double mid = 0.5 * (low + high);
+    (enclosesAt(mid) ? high : low) = mid;
+  }
+  c.x *= high, c.y *= high, c.z *= high;
+  return high;
+}
+
+double capsuleCost(const Capsule& capsule, const std::vector<Vec3>& points, double outsideWeight) {
+  double total = 0.0;
+  for (const Vec3& p : points) {
+    const Vec3 u = capsule.toUnit(p);  // once: the cost runs for every member and vertex
+    const double squared = (capsule.fromUnit(capsule.unitProjection(u)) - p).squaredNorm();
+    total += capsule.containsUnit(u) ? squared : outsideWeight * squared;
+  }
+  return total / static_cast<double>(points.size());
+}
+
+double unitGauge(const Capsule& capsule, const Vec3& u) {
+  const CapsuleParameters& c = capsule.parameters();
+  const double rho = std::sqrt(u.x() * u.x() + u.z() * u.z());
+  const double y = std::abs(u.y());
+  const double h = 0.5 * (u.y() >= 0.0 ? c.r2 : c.r1), top = 0.5 - h;  // the end's half-height, its start
+  const double cylinder = 2.0 * rho;
+  if (y <= top * cylinder) return cylinder;
+  // On the end: (rho / s)^2 / 0.25 + ((y / s - top) / h)^2 = 1, the smallest positive s.
+  if (h <= 0.0) return y / top;
+  const double a = top * top - h * h, b = -2.0 * y * top, k = y * y + 4.0 * h * h * rho * rho;
+  if (std::abs(a) < 1e-12) return k / (-b);
+  const double root = std::sqrt(std::max(0.0, b * b - 4.0 * a * k));
+  const double s1 = (-b - root) / (2.0 * a), s2 = (-b + root) / (2.0 * a);
+  const double low = std::min(s1, s2), high = std::max(s1, s2);
+  return low > 0.0 ? low : high;
+}
+
+double enclosedCapsuleCost(const CapsuleParameters& parameters, const std::vector<Vec3>& points) {
+  // The growth in fixed-point steps: grown by the largest gauge, the taper moves the
+  // points' unit coordinates a little, so measure again (three passes settle it).
+  CapsuleParameters grown = parameters;
+  for (int pass = 0; pass < 3; ++pass) {
+    const Capsule capsule(grown);
+    double grow = 0.0;
+    for (const Vec3& p : points) grow = std::max(grow, unitGauge(capsule, capsule.toUnit(p)));
+    if (!(grow > 0.0) || std::abs(grow - 1.0) < 1e-3) break;
+    grown.x *= grow, grown.y *= grow, grown.z *= grow;
+  }
+  return capsuleCost(Capsule(grown), points, 1.0);
+}
+
+CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options) {
+  if (points.size() < 4) throw std::invalid_argument("a capsule needs at least 4 points to fit");
+  const CapsuleParameters start = startingCapsule(points);
+  const double size = std::max({start.x, start.y, start.z});
+  if (!(size > 1e-6)) throw std::invalid_argument("the points to fit have no extent");
+  const Limits limits = limitsFor(start, size);
+
+  struct Member {
+    std::array<double, 12> values;
+    double cost;
+  };
+  auto costOf = [&](const std::array<double, 12>& v) {
+    const CapsuleParameters c = CapsuleParameters::fromValues(v);
+    return options.costAfterEnclosure ? enclosedCapsuleCost(c, points) : capsuleCost(Capsule(c), points, options.outsideWeight);
+  };
+  std::mt19937 random(options.seed);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const int n = std::max(options.population, 4);
+  std::vector<Member> population(n, Member{start.values(), 0.0});
+  // Biased to low cost: the index of u^2 among the first `count` members.
+  auto pick = [&](int count) { return std::min(count - 1, static_cast<int>(count * std::pow(uniform(random), 2.0))); };
+  const int mutated = static_cast<int>(options.mutationShare * n);
+  const int crossed = static_cast<int>(options.crossoverShare * n);
+  const int parents = std::max(1, static_cast<int>(options.parentShare * n));
+  for (Member& m : population) m.cost = costOf(m.values);
+  for (int generation = 0; generation < options.generations; ++generation) {
+    std::stable_sort(population.begin(), population.end(), [](const Member& a, const Member& b) { return a.cost < b.cost; });
+    // Mutation: the worst `mutated` become copies of better members with one parameter moved.
+    for (int i = n - mutated; i < n; ++i) {
+      Member m = population[pick(n - mutated)];
+      const int k = static_cast<int>(12 * uniform(random)) % 12;
+      m.values[k] = std::clamp(m.values[k] + limits.step[k] * normal(random), limits.low[k], limits.high[k]);
+      m.cost = costOf(m.values);
+      population[i] = m;
+    }
+    // Crossover: the band above them, each parameter from a parent among the best.
+    for (int i = n - mutated - crossed; i < n - mutated; ++i) {
+      Member m;
+      for (int k = 0; k < 12; ++k) m.values[k] = population[pick(parents)].values[k];
+      m.cost = costOf(m.values);
+      population[i] = m;
+    }
+  }
+  const Member& best = *std::min_element(population.begin(), population.end(),
+                                         [](const Member& a, const Member& b) { return a.cost < b.cost; });
+  CapsuleFit fit;
+  fit.parameters = CapsuleParameters::fromValues(best.values);
+  fit.cost = best.cost;
+  if (options.enclose) fit.enclosureScale = growToEnclose(fit.parameters, points);
+  return fit;
+}
+
+}  // namespace figment

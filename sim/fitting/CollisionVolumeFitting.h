@@ -1,0 +1,60 @@
+#pragma once
+// The collision volumes of a whole body (paper §3): capsules (§3.1) or radial depth
+// volumes (§3.2) for every part of its skeleton, each enclosing its part's vertices
+// (§3.3). The body is cut into parts by splitIntoParts (sim/body/BodyParts.h).
+//
+// Capsules: the genetic fit (sim/fitting/CapsuleFit.h) on the part's vertices (at most 300 of
+// them, evenly taken), then grown to enclose all of them. Where one capsule cannot fit
+// (its mean gap over the part's vertices is above 8 mm, as for the feet and the chest)
+// the part is split in two at the median of its vertices along the capsule's axis and
+// each half is fitted the same way (the paper's split of feet and chest, §3.3), up to
+// 4 capsules a part; a split is kept only when it lowers the part's mean gap.
+// Radial depth volumes: fitRadialPart (the best of three axes, least-squares envelope
+// of K harmonics per section, per-section enclosure). A part whose sections are not
+// star-shaped about the axis leaves vertices hidden behind others, deep inside the
+// volume: where the radial volume's mean gap is above 8 mm, the part's capsules are
+// fitted too and, where their mean gap (each vertex's depth in the deepest capsule
+// holding it) is smaller, the part falls back to them (kind Capsule).
+// Sub-volumes share their part's name, so posing by part still works.
+
+#include "sim/body/BodyParts.h"
+#include "sim/collision/Capsule.h"
+#include "sim/collision/RadialDepth.h"
+#include "sim/body/Skeleton.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace figment {
+
+struct CollisionVolumeParameters {
+  std::string part;  // a skeleton part name (humanoidSkeleton's parts); sub-volumes share their part's name
+  enum class Kind { Capsule, Radial } kind = Kind::Capsule;
+  CapsuleParameters capsule;     // when kind == Capsule
+  RadialDepthParameters radial;  // when kind == Radial
+};
+
+struct CollisionVolumeFitOptions {
+  int harmonics = 8;             // K, the default the collision bench's targets are measured at
+  double sectionSpacing = 0.02;  // m
+  uint64_t seed = 1;
+};
+
+// One or more capsules per part (every part of skeleton.parts gets at least one volume);
+// each encloses its vertices.
+std::vector<CollisionVolumeParameters> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
+                                      const CollisionVolumeFitOptions& options = {});
+// Radial depth volumes per part; parts that a radial volume cannot suit fall back to
+// capsules (kind Capsule).
+std::vector<CollisionVolumeParameters> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
+                                           const CollisionVolumeFitOptions& options = {});
+
+// The same, for parts already cut (splitIntoParts); the bench measures these.
+std::vector<CollisionVolumeParameters> fitPartCapsules(const PartMesh& part, const CollisionVolumeFitOptions& options = {});
+std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part, const CollisionVolumeFitOptions& options = {});
+
+// The signed distance of p to one volume (< 0 inside), by its nearest().
+double signedDistance(const CollisionVolumeParameters& volume, const Vec3& p);
+
+}  // namespace figment

@@ -1,0 +1,68 @@
+// Which facets a ClothingLayer draws over what lies beneath, and in which order.
+#include "nodes/render/FacetOrder.h"
+
+#include <gtest/gtest.h>
+
+using figment::OrderedFacet;
+using figment::ViewPoint;
+
+namespace {
+// A camera on +z at distance 5 looking down -z.
+ViewPoint fromFront(bool perspective = true) {
+  ViewPoint view;
+  view.perspective = perspective;
+  view.eye = SbVec3f(0, 0, 5);
+  view.direction = SbVec3f(0, 0, -1);
+  view.toCamera.setTranslate(SbVec3f(0, 0, -5));
+  return view;
+}
+}  // namespace
+
+TEST(FacetOrder, FacetsFacingTheEyeAreDrawnOverTheRest) {
+  // Counter-clockwise seen from +z (faces the eye), and the same square reversed.
+  const SbVec3f points[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const int32_t index[] = {0, 1, 2, 3, -1, 3, 2, 1, 0, -1};
+  for (bool perspective : {true, false}) {
+    const auto facets = figment::orderFacets(points, 4, index, 10, fromFront(perspective));
+    ASSERT_EQ(facets.size(), 2u);
+    for (const OrderedFacet& f : facets) EXPECT_EQ(f.facesViewer, f.firstIndex == 0) << "perspective " << perspective;
+  }
+  ViewPoint clockwise = fromFront();
+  clockwise.clockwise = true;
+  for (const OrderedFacet& f : figment::orderFacets(points, 4, index, 10, clockwise))
+    EXPECT_EQ(f.facesViewer, f.firstIndex == 5) << "CLOCKWISE ordering swaps the front";
+}
+
+TEST(FacetOrder, PerspectiveJudgesEachFacetFromTheEye) {
+  // A facet at x = 3 facing +x: the eye on the z axis lies on its -x side, so it faces
+  // away; an orthographic view straight down -z sees it edge-on, which counts as facing
+  // (only facets facing substantially away keep the depth test).
+  const SbVec3f points[] = {{3, 0, 0}, {3, 0, -1}, {3, 1, -1}, {3, 1, 0}};
+  const int32_t index[] = {0, 1, 2, 3};
+  const auto perspective = figment::orderFacets(points, 4, index, 4, fromFront(true));
+  ASSERT_EQ(perspective.size(), 1u);
+  EXPECT_FALSE(perspective[0].facesViewer);
+  const auto orthographic = figment::orderFacets(points, 4, index, 4, fromFront(false));
+  EXPECT_TRUE(orthographic[0].facesViewer);
+}
+
+TEST(FacetOrder, FacetsAreSortedFarToNearByTheirCentres) {
+  // Three triangles at z = 0, -2 and 1, listed in that order.
+  const SbVec3f points[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -2}, {1, 0, -2},
+                            {0, 1, -2}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+  const int32_t index[] = {0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1};
+  const auto facets = figment::orderFacets(points, 9, index, 12, fromFront());
+  ASSERT_EQ(facets.size(), 3u);
+  EXPECT_EQ(facets[0].firstIndex, 4);  // z = -2, farthest
+  EXPECT_EQ(facets[1].firstIndex, 0);
+  EXPECT_EQ(facets[2].firstIndex, 8);  // z = 1, nearest
+}
+
+TEST(FacetOrder, FacetsWithBadIndicesOrTooFewCornersAreSkipped) {
+  const SbVec3f points[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  const int32_t index[] = {0, 1, 7, -1, 0, 1, -1, 0, 1, 2};  // out of range; two corners; good (no -1)
+  const auto facets = figment::orderFacets(points, 3, index, 10, fromFront());
+  ASSERT_EQ(facets.size(), 1u);
+  EXPECT_EQ(facets[0].firstIndex, 7);
+  EXPECT_EQ(facets[0].corners, 3);
+}
