@@ -2,20 +2,19 @@
 // one aiScene with a root node, one mesh and the one default material the OBJ exporter
 // needs to name (no .mtl file is written for "objnomtl").
 
-#include "MeshExport.h"
+#include "io/MeshExport.h"
+
+#include "io/AtomicFile.h"
 
 #include <assimp/Exporter.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
-#include <filesystem>
 #include <memory>
 #include <stdexcept>
-#include <system_error>
 
 namespace figment {
 
-namespace fs = std::filesystem;
 
 namespace {
 
@@ -68,22 +67,13 @@ void exportObj(const TriangleMesh& mesh, const std::string& path) {
   if (mesh.triangles.empty()) throw std::runtime_error(path + ": nothing to write (no triangles)");
   checkIndices(mesh, path);
 
-  const fs::path target(path);
-  const fs::path temporary = fs::path(path + ".partial");
   const std::unique_ptr<aiScene> scene = sceneOf(mesh);
-  Assimp::Exporter exporter;
-  if (exporter.Export(scene.get(), "objnomtl", temporary.string()) != AI_SUCCESS) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(path + ": " + exporter.GetErrorString());
-  }
-  std::error_code error;
-  fs::rename(temporary, target, error);
-  if (error) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(path + ": " + error.message());
-  }
+  const std::string error = writeAtomically(path, [&scene](const std::string& temporary) -> std::string {
+    Assimp::Exporter exporter;
+    if (exporter.Export(scene.get(), "objnomtl", temporary) != AI_SUCCESS) return exporter.GetErrorString();
+    return "";
+  });
+  if (!error.empty()) throw std::runtime_error(path + ": " + error);
 }
 
 }  // namespace figment

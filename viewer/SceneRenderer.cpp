@@ -2,7 +2,7 @@
 
 #include "nodes/render/GLStencilElement.h"
 #include "nodes/render/StencilRule.h"
-#include "viewer/AtomicFile.h"
+#include "io/AtomicFile.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoOffscreenRenderer.h>

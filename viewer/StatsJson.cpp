@@ -6,7 +6,7 @@
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/body/RadialDepthVolume.h"
-#include "viewer/AtomicFile.h"
+#include "io/AtomicFile.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,10 +1,10 @@
-#include "viewer/AtomicFile.h"
+#include "io/AtomicFile.h"
 
 #include <filesystem>
 #include <system_error>
 #include <unistd.h>
 
-namespace figment::viewer {
+namespace figment {
 
 std::string writeAtomically(const std::string& path,
                             const std::function<std::string(const std::string& temporaryPath)>& write) {
@@ -27,4 +27,4 @@ std::string writeAtomically(const std::string& path,
   return error;
 }
 
-}  // namespace figment::viewer
+}  // namespace figment

@@ -4,7 +4,7 @@
 #include <functional>
 #include <string>
 
-namespace figment::viewer {
+namespace figment {
 
 // Calls `write` with a temporary path in the folder of `path` and renames the result to
 // `path` when `write` returns "" (success). On failure the temporary file is removed,
@@ -12,4 +12,4 @@ namespace figment::viewer {
 std::string writeAtomically(const std::string& path,
                             const std::function<std::string(const std::string& temporaryPath)>& write);
 
-}  // namespace figment::viewer
+}  // namespace figment
