@@ -42,7 +42,10 @@ std::vector<std::vector<int>> triangleNeighbours(const TriangleMesh& body) {
 
 }  // namespace
 
-std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton) {
+namespace {
+
+// Step 1 of the cut: per triangle, the nearest bone it faces away from, else the nearest.
+std::vector<int> nearestFacingBones(const TriangleMesh& body, const Skeleton& skeleton) {
   const size_t n = body.triangles.size(), parts = skeleton.parts.size();
   std::vector<int> owner(n, 0);
   for (size_t t = 0; t < n; ++t) {
@@ -62,48 +65,69 @@ std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skele
     }
     owner[t] = facing >= 0 ? facing : nearest;
   }
+  return owner;
+}
+
+// The connected pieces of one owner each: every triangle's piece, and each piece's size.
+void connectedPieces(const std::vector<int>& owner, const std::vector<std::vector<int>>& neighbours,
+                     std::vector<int>& piece, std::vector<int>& pieceSize) {
+  const size_t n = owner.size();
+  piece.assign(n, -1), pieceSize.clear();
+  for (size_t t = 0; t < n; ++t) {
+    if (piece[t] >= 0) continue;
+    const int id = static_cast<int>(pieceSize.size());
+    std::vector<int> stack = {static_cast<int>(t)};
+    piece[t] = id;
+    int size = 0;
+    while (!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      ++size;
+      for (int w : neighbours[u])
+        if (piece[w] < 0 && owner[w] == owner[u]) piece[w] = id, stack.push_back(w);
+    }
+    pieceSize.push_back(size);
+  }
+}
+
+// Step 2, once: every piece of a part but its largest joins the part most of its
+// neighbouring triangles belong to. False when no piece moved.
+bool joinSmallPieces(std::vector<int>& owner, const std::vector<std::vector<int>>& neighbours, size_t parts) {
+  const size_t n = owner.size();
+  std::vector<int> piece, pieceSize;
+  connectedPieces(owner, neighbours, piece, pieceSize);
+  std::vector<int> largest(parts, -1);
+  for (size_t t = 0; t < n; ++t) {
+    int& l = largest[owner[t]];
+    if (l < 0 || pieceSize[piece[t]] > pieceSize[l]) l = piece[t];
+  }
+  // Votes of each small piece's neighbours.
+  std::map<int, std::vector<int>> votes;
+  for (size_t t = 0; t < n; ++t) {
+    if (piece[t] == largest[owner[t]]) continue;
+    std::vector<int>& v = votes.try_emplace(piece[t], std::vector<int>(parts, 0)).first->second;
+    for (int w : neighbours[t])
+      if (piece[w] != piece[t]) ++v[owner[w]];
+  }
+  std::map<int, int> joins;
+  for (const auto& [id, v] : votes) {
+    const int to = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
+    if (v[to] > 0) joins[id] = to;
+  }
+  if (joins.empty()) return false;
+  for (size_t t = 0; t < n; ++t)
+    if (const auto j = joins.find(piece[t]); j != joins.end() && piece[t] != largest[owner[t]]) owner[t] = j->second;
+  return true;
+}
+
+}  // namespace
+
+std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton) {
+  std::vector<int> owner = nearestFacingBones(body, skeleton);
   // Islands: every piece of a part but its largest joins its neighbours' part.
   const std::vector<std::vector<int>> neighbours = triangleNeighbours(body);
-  for (int pass = 0; pass < 10; ++pass) {
-    std::vector<int> piece(n, -1), pieceSize;
-    for (size_t t = 0; t < n; ++t) {
-      if (piece[t] >= 0) continue;
-      const int id = static_cast<int>(pieceSize.size());
-      std::vector<int> stack = {static_cast<int>(t)};
-      piece[t] = id;
-      int size = 0;
-      while (!stack.empty()) {
-        const int u = stack.back();
-        stack.pop_back();
-        ++size;
-        for (int w : neighbours[u])
-          if (piece[w] < 0 && owner[w] == owner[u]) piece[w] = id, stack.push_back(w);
-      }
-      pieceSize.push_back(size);
-    }
-    std::vector<int> largest(parts, -1);
-    for (size_t t = 0; t < n; ++t) {
-      int& l = largest[owner[t]];
-      if (l < 0 || pieceSize[piece[t]] > pieceSize[l]) l = piece[t];
-    }
-    // Votes of each small piece's neighbours.
-    std::map<int, std::vector<int>> votes;
-    for (size_t t = 0; t < n; ++t) {
-      if (piece[t] == largest[owner[t]]) continue;
-      std::vector<int>& v = votes.try_emplace(piece[t], std::vector<int>(parts, 0)).first->second;
-      for (int w : neighbours[t])
-        if (piece[w] != piece[t]) ++v[owner[w]];
-    }
-    if (votes.empty()) break;
-    std::map<int, int> joins;
-    for (const auto& [id, v] : votes) {
-      const int to = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
-      if (v[to] > 0) joins[id] = to;
-    }
-    if (joins.empty()) break;
-    for (size_t t = 0; t < n; ++t)
-      if (const auto j = joins.find(piece[t]); j != joins.end() && piece[t] != largest[owner[t]]) owner[t] = j->second;
-  }
+  for (int pass = 0; pass < 10; ++pass)
+    if (!joinSmallPieces(owner, neighbours, skeleton.parts.size())) break;
   return owner;
 }
 

@@ -55,6 +55,8 @@ GeneticSchedule scheduleOf(const CapsuleFitOptions& options) {
   return schedule;
 }
 
+}  // namespace
+
 // The default capsule set on the points: centred, along their principal axis, as big
 // as their extents.
 CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
@@ -64,11 +66,8 @@ CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
   if (axis.y() < 0.0) axis = -axis;
   CapsuleParameters c;
   c.r1 = c.r2 = 0.5;
-  const Vec3 turn = Vec3::UnitY().cross(axis);
-  c.theta = std::atan2(turn.norm(), Vec3::UnitY().dot(axis));
-  c.phi = turn.norm() > 1e-12 ? std::atan2(turn.z(), turn.x()) : 0.0;
-  const Eigen::Matrix3d R =
-      Eigen::AngleAxisd(c.theta, Vec3(std::cos(c.phi), 0.0, std::sin(c.phi))).toRotationMatrix();
+  c.tiltOnto(axis);
+  const Eigen::Matrix3d R = c.tilt();
   Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
   for (const Vec3& p : points) {
     const Vec3 local = R.transpose() * (p - mean);
@@ -80,8 +79,6 @@ CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
   c.ox = centre.x(), c.oy = centre.y(), c.oz = centre.z();
   return c;
 }
-
-}  // namespace
 
 double growToEnclose(CapsuleParameters& c, const std::vector<Vec3>& points) {
   auto enclosesAt = [&](double s) {

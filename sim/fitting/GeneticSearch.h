@@ -1,13 +1,15 @@
 #pragma once
-// The genetic algorithm of the paper's fitting (§3.1: capsules "fitted by a genetic
-// algorithm"; §3.2: the radial depth volume's axis, "a combination of analytic and
-// iterative (genetic) techniques"): a real-valued search over N genes within bounds,
-// minimising a cost. One search serves both (sim/fitting/CapsuleFit.h,
-// sim/fitting/AxisSearch.h), which differ only in their problem and schedule.
+// The genetic algorithm of the paper's fitting: §3.1 fits capsules by "a form of genetic
+// optimization algorithm" (sort by cost, mutate the bottom of the population, cross over
+// the band above it, parents biased to low cost), and §3.2 finds the radial depth
+// volume's axis by "a combination of analytic and iterative (genetic) techniques". A
+// real-valued search over N genes within bounds, minimising a cost; one search serves
+// both (sim/fitting/CapsuleFit.h, sim/fitting/AxisSearch.h), which differ only in their
+// problem and schedule.
 //
 // Based on: D. E. Goldberg, Genetic Algorithms in Search, Optimization and Machine
-// Learning, Addison-Wesley 1989 (selection biased to fitness, crossover, mutation,
-// elitism); with real-valued genes and a normal mutation step.
+// Learning, Addison-Wesley 1989 (the paper's [8]); J. Louchet's evolutionary algorithm
+// as the paper adapts it ([16, 17]): real-valued genes, a normal mutation step.
 //
 //   start       member 0 is `start`; the others are copies of it, or, with a `spread`,
 //               start_k + (2u - 1) spread_k per gene (u uniform in [0, 1), member by
