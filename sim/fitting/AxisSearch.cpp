@@ -1,7 +1,5 @@
 #include "sim/fitting/AxisSearch.h"
 
-#include "sim/fitting/GeneticSearch.h"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>

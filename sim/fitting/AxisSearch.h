@@ -13,21 +13,15 @@
 // exactly with its seed.
 
 #include "sim/core/TriangleMesh.h"
+#include "sim/fitting/GeneticSearch.h"
 
-#include <cstdint>
 #include <functional>
 
 namespace figment {
 
-struct AxisSearchOptions {
-  int population = 10;
-  int generations = 6;
-  double mutationShare = 0.3;
-  double crossoverShare = 0.3;
-  double parentShare = 0.3;
+struct AxisSearchOptions : GeneticShares {  // population 10, 6 generations
   double maxTilt = 0.35;    // rad, about each perpendicular
   double maxShift = 0.02;   // m, along each perpendicular
-  uint32_t seed = 1;
 };
 
 struct Axis {

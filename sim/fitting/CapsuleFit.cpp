@@ -1,7 +1,6 @@
 #include "sim/fitting/CapsuleFit.h"
 
 #include "sim/core/PrincipalAxes.h"
-#include "sim/fitting/GeneticSearch.h"
 
 #include <algorithm>
 #include <cmath>

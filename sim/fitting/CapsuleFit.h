@@ -17,20 +17,18 @@
 // and close to the world distance near it, which is where a good fit puts the vertices.
 
 #include "sim/collision/Capsule.h"
+#include "sim/fitting/GeneticSearch.h"
 
-#include <cstdint>
 #include <vector>
 
 namespace figment {
 
-struct CapsuleFitOptions {
-  int population = 60;
-  int generations = 400;
-  double mutationShare = 0.3;
-  double crossoverShare = 0.3;
-  double parentShare = 0.3;
+struct CapsuleFitOptions : GeneticShares {
+  CapsuleFitOptions() {
+    population = 60;
+    generations = 400;
+  }
   double outsideWeight = 10.0;
-  uint32_t seed = 1;
   bool enclose = true;  // grow the result until every vertex is inside
   // The cost of a member: the cost above of the member grown about its centre until it
   // encloses every point (enclosedCapsuleCost: the bias to enclosure taken to its end,

@@ -49,6 +49,17 @@ struct GeneticSchedule {
   uint32_t seed = 1;
 };
 
+// A search's size as the paper gives it, in shares of the population; each fit turns
+// them into a GeneticSchedule's counts by its own rounding.
+struct GeneticShares {
+  int population = 10;
+  int generations = 6;
+  double mutationShare = 0.3;   // of the population, replaced by mutation each generation
+  double crossoverShare = 0.3;  // replaced by crossover each generation
+  double parentShare = 0.3;     // crossover parents among the best
+  uint32_t seed = 1;
+};
+
 struct GeneticResult {
   std::vector<double> genes;
   double cost = 0.0;
