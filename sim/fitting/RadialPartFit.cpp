@@ -15,7 +15,7 @@ namespace {
 
 // A radial volume on the line through `origin` along `direction`, spanning the part.
 RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin,
-                           const Vec3& direction, int harmonics, double sectionSpacing) {
+                     const Vec3& direction, int harmonics, double sectionSpacing) {
   double low = std::numeric_limits<double>::max(), high = -low;
   for (const Vec3& v : part.mesh.vertices) {
     const double s = (v - origin).dot(direction);
