@@ -1,6 +1,7 @@
 #include "CollisionStudy.h"
 
 #include "Statistics.h"
+#include "io/AtomicFile.h"
 #include "io/MeshImport.h"
 #include "sim/body/BodyParts.h"
 #include "sim/fitting/CollisionVolumeFitting.h"
@@ -131,6 +132,94 @@ double nanosecondsPerQuery(const std::vector<Vec3>& points, Query query) {
   return ns;
 }
 
+// One part's rows: its capsules, its radial volume (or the capsules it fell back to),
+// its own triangles.
+struct PartRows {
+  Row capsule, radial, exact;
+  bool fellBack = false;  // the radial fit returned capsules
+};
+
+// The row of `fitted` (fitted in `fitSeconds`) for the part's `vertices`, queried at `points`.
+Row fittedRow(const std::vector<CollisionVolumeParameters>& fitted, double fitSeconds,
+              const std::vector<Vec3>& vertices, const std::vector<Vec3>& points) {
+  Row row;
+  row.fitSeconds = fitSeconds;
+  const std::vector<Volume> volumes(fitted.begin(), fitted.end());
+  row.volumes = static_cast<int>(fitted.size());
+  measureGaps(volumes, vertices, row);
+  row.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return queryVolumes(volumes, p); });
+  return row;
+}
+
+Row exactRow(const PartMesh& part, const std::vector<Vec3>& points) {
+  Row row;
+  const auto start = Clock::now();
+  const MeshCollider exact(part.mesh);
+  row.fitSeconds = secondsSince(start);
+  row.enclosed = 100.0;
+  row.volumes = 1;
+  const double inf = std::numeric_limits<double>::infinity();
+  row.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) {
+    Contact c;
+    exact.contact(p, 0.0, inf, c);
+    return c.distance;
+  });
+  return row;
+}
+
+PartRows studyPart(const PartMesh& part, const CollisionStudyOptions& options) {
+  const std::vector<Vec3>& vertices = part.mesh.vertices;
+  const std::vector<Vec3> points = queryPoints(vertices);
+  // What fitCapsules and fitRadialVolumes return for this part (they loop over the
+  // parts of splitIntoParts with these same calls).
+  CollisionVolumeFitOptions fitOptions;
+  fitOptions.harmonics = options.harmonics;
+  fitOptions.sectionSpacing = options.sectionSpacing;
+  PartRows rows;
+  auto start = Clock::now();
+  const std::vector<CollisionVolumeParameters> capsules = fitPartCapsules(part, fitOptions);
+  rows.capsule = fittedRow(capsules, secondsSince(start), vertices, points);
+  start = Clock::now();
+  const std::vector<CollisionVolumeParameters> radial = fitPartRadial(part, fitOptions);
+  rows.radial = fittedRow(radial, secondsSince(start), vertices, points);
+  rows.fellBack = radial.front().kind == CollisionVolumeParameters::Kind::Capsule;
+  rows.exact = exactRow(part, points);
+  return rows;
+}
+
+// The part's three CSV lines.
+std::string csvLines(const PartMesh& part, const PartRows& rows) {
+  std::string lines;
+  for (const auto& [method, row] : {std::pair<const char*, const Row&>{"capsule", rows.capsule},
+                                    {"radial", rows.radial}, {"exact", rows.exact}}) {
+    char line[256];
+    const char* kind = method == std::string("radial") && rows.fellBack ? "capsule" : method;
+    std::snprintf(line, sizeof line, "%s,%s,%.3f,%.3f,%.2f,%.0f,%.3f,%zu,%d,%s\n", part.name.c_str(), method,
+                  1000 * row.meanGap, 1000 * row.maxGap, row.enclosed, row.queryNs, row.fitSeconds,
+                  part.mesh.vertices.size(), row.volumes, kind);
+    lines += line;
+  }
+  return lines;
+}
+
+void printPart(const PartMesh& part, const PartRows& rows) {
+  const Row &capsule = rows.capsule, &radial = rows.radial;
+  std::printf("%-11s %5zu vertices  capsule x%d gap %5.1f mm (max %5.1f) %4.0f ns  radial%s gap %5.1f mm (max "
+              "%5.1f) %5.0f ns  exact %6.0f ns  enclosed %.0f %% %.0f %%\n",
+              part.name.c_str(), part.mesh.vertices.size(), capsule.volumes, 1000 * capsule.meanGap,
+              1000 * capsule.maxGap, capsule.queryNs, rows.fellBack ? "(capsules)" : "", 1000 * radial.meanGap,
+              1000 * radial.maxGap, radial.queryNs, rows.exact.queryNs, capsule.enclosed, radial.enclosed);
+}
+
+std::string writeText(const std::string& path, const std::string& text) {
+  return writeAtomically(path, [&text](const std::string& temporary) -> std::string {
+    std::ofstream out(temporary);
+    out << text;
+    out.close();
+    return out ? "" : "cannot write " + temporary;
+  });
+}
+
 int collisionStudy(const CollisionStudyOptions& options);
 
 }  // namespace
@@ -159,68 +248,20 @@ int collisionStudy(const CollisionStudyOptions& options) {
 
   std::filesystem::create_directories(options.outDir);
   const std::string csvPath = options.outDir + "/collision.csv";
-  std::ofstream csv(csvPath + ".partial");
-  csv << "part,method,mean_gap_mm,max_gap_mm,enclosed_pct,query_ns,fit_s,vertices,volumes,kind\n";
+  std::string csv = "part,method,mean_gap_mm,max_gap_mm,enclosed_pct,query_ns,fit_s,vertices,volumes,kind\n";
   std::vector<double> capsuleGap, radialGap, capsuleNs, radialNs, exactNs;
   for (const PartMesh& part : parts) {
-    const std::vector<Vec3>& vertices = part.mesh.vertices;
-    const std::vector<Vec3> points = queryPoints(vertices);
-    // What fitCapsules and fitRadialVolumes return for this part (they loop over the
-    // parts of splitIntoParts with these same calls).
-    CollisionVolumeFitOptions fitOptions;
-    fitOptions.harmonics = options.harmonics;
-    fitOptions.sectionSpacing = options.sectionSpacing;
-    Row capsuleRow;
-    auto start = Clock::now();
-    const std::vector<CollisionVolumeParameters> capsules = fitPartCapsules(part, fitOptions);
-    capsuleRow.fitSeconds = secondsSince(start);
-    const std::vector<Volume> capsuleVolumes(capsules.begin(), capsules.end());
-    capsuleRow.volumes = static_cast<int>(capsules.size());
-    measureGaps(capsuleVolumes, vertices, capsuleRow);
-    capsuleRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return queryVolumes(capsuleVolumes, p); });
-
-    Row radialRow;
-    start = Clock::now();
-    const std::vector<CollisionVolumeParameters> radial = fitPartRadial(part, fitOptions);
-    radialRow.fitSeconds = secondsSince(start);
-    const std::vector<Volume> radialVolumes(radial.begin(), radial.end());
-    radialRow.volumes = static_cast<int>(radial.size());
-    const bool fellBack = radial.front().kind == CollisionVolumeParameters::Kind::Capsule;
-    measureGaps(radialVolumes, vertices, radialRow);
-    radialRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) { return queryVolumes(radialVolumes, p); });
-
-    Row exactRow;
-    start = Clock::now();
-    const MeshCollider exact(part.mesh);
-    exactRow.fitSeconds = secondsSince(start);
-    exactRow.enclosed = 100.0;
-    exactRow.volumes = 1;
-    const double inf = std::numeric_limits<double>::infinity();
-    exactRow.queryNs = nanosecondsPerQuery(points, [&](const Vec3& p) {
-      Contact c;
-      exact.contact(p, 0.0, inf, c);
-      return c.distance;
-    });
-
-    for (const auto& [method, row] : {std::pair<const char*, const Row&>{"capsule", capsuleRow},
-                                      {"radial", radialRow}, {"exact", exactRow}}) {
-      char line[256];
-      const char* kind = method == std::string("radial") && fellBack ? "capsule" : method;
-      std::snprintf(line, sizeof line, "%s,%s,%.3f,%.3f,%.2f,%.0f,%.3f,%zu,%d,%s\n", part.name.c_str(), method,
-                    1000 * row.meanGap, 1000 * row.maxGap, row.enclosed, row.queryNs, row.fitSeconds, vertices.size(),
-                    row.volumes, kind);
-      csv << line;
-    }
-    std::printf("%-11s %5zu vertices  capsule x%d gap %5.1f mm (max %5.1f) %4.0f ns  radial%s gap %5.1f mm (max "
-                "%5.1f) %5.0f ns  exact %6.0f ns  enclosed %.0f %% %.0f %%\n",
-                part.name.c_str(), vertices.size(), capsuleRow.volumes, 1000 * capsuleRow.meanGap,
-                1000 * capsuleRow.maxGap, capsuleRow.queryNs, fellBack ? "(capsules)" : "", 1000 * radialRow.meanGap,
-                1000 * radialRow.maxGap, radialRow.queryNs, exactRow.queryNs, capsuleRow.enclosed, radialRow.enclosed);
-    capsuleGap.push_back(1000 * capsuleRow.meanGap), radialGap.push_back(1000 * radialRow.meanGap);
-    capsuleNs.push_back(capsuleRow.queryNs), radialNs.push_back(radialRow.queryNs), exactNs.push_back(exactRow.queryNs);
+    const PartRows rows = studyPart(part, options);
+    csv += csvLines(part, rows);
+    printPart(part, rows);
+    capsuleGap.push_back(1000 * rows.capsule.meanGap), radialGap.push_back(1000 * rows.radial.meanGap);
+    capsuleNs.push_back(rows.capsule.queryNs), radialNs.push_back(rows.radial.queryNs);
+    exactNs.push_back(rows.exact.queryNs);
   }
-  csv.close();
-  std::filesystem::rename(csvPath + ".partial", csvPath);
+  if (const std::string error = writeText(csvPath, csv); !error.empty()) {
+    std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
+    return 1;
+  }
   std::printf("medians over parts: mean gap capsule %.1f mm, radial %.1f mm (K = %d); query capsule %.0f ns, "
               "radial %.0f ns, exact %.0f ns; exact/capsule %.1fx, radial/capsule %.2fx\n",
               median(capsuleGap), median(radialGap), options.harmonics, median(capsuleNs), median(radialNs),

@@ -13,6 +13,7 @@
 // SkeletonJoints and the volume nodes. One summary line on stdout; any error is one
 // line, "figment-fit: <file>: <reason>", exit status 1, and no file.
 
+#include "io/AtomicFile.h"
 #include "io/MeshImport.h"
 #include "nodes/body/CapsuleVolume.h"
 #include "nodes/body/ExactVolume.h"
@@ -31,7 +32,6 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
@@ -95,10 +95,8 @@ std::string writeIv(SoNode* root, const std::string& path, const std::string& he
   return "";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options options;
+// Reads the command line into `options`: -1 to go on, else the exit status.
+int parseCommandLine(int argc, char** argv, Options& options) {
   CLI::App app{"Fits a body's collision volumes and writes them as an .iv file for a Mannequin.", kProgram};
   app.add_option("--body", options.body, "body model file, looked up on the model search path")->capture_default_str();
   app.add_option("-o,--output", options.output, ".iv file to write")->required();
@@ -125,64 +123,82 @@ int main(int argc, char** argv) {
   }
   options.commandLine = kProgram;
   for (int i = 1; i < argc; ++i) options.commandLine += std::string(" ") + argv[i];
+  return -1;
+}
 
+// The first of `names` that is no part of `skeleton`, or "".
+std::string unknownPart(const figment::Skeleton& skeleton, const std::set<std::string>& names) {
+  for (const std::string& name : names)
+    if (std::none_of(skeleton.parts.begin(), skeleton.parts.end(), [&](const auto& p) { return p.name == name; }))
+      return name;
+  return "";
+}
+
+// The volumes of the method, with capsules for the parts in `forcedCapsules`.
+std::vector<figment::CollisionVolumeParameters> fitVolumes(const figment::TriangleMesh& body,
+                                                           const figment::Skeleton& skeleton, const Options& options,
+                                                           const std::set<std::string>& forcedCapsules) {
+  std::vector<figment::CollisionVolumeParameters> volumes;
+  const bool radial = options.method == "radial";
+  if (radial) {
+    for (figment::CollisionVolumeParameters& v : figment::fitRadialVolumes(body, skeleton, options.fit))
+      if (!forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
+  }
+  if (!radial || !forcedCapsules.empty()) {
+    for (figment::CollisionVolumeParameters& v : figment::fitCapsules(body, skeleton, options.fit))
+      if (!radial || forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
+  }
+  return volumes;
+}
+
+// Fits the body at `bodyPath` and writes the file: the exit status.
+int fitAndWrite(const Options& options, const std::string& bodyPath) {
+  const auto start = std::chrono::steady_clock::now();
+  figment::ImportOptions importOptions;
+  importOptions.exclude = options.exclude;
+  const figment::TriangleMesh body = figment::importMesh(bodyPath, importOptions).mesh;
+  const figment::Skeleton skeleton = figment::estimateSkeleton(body);
+  const std::set<std::string> exact(options.exactParts.begin(), options.exactParts.end());
+  const std::set<std::string> forcedCapsules(options.capsuleParts.begin(), options.capsuleParts.end());
+  if (const std::string name = unknownPart(skeleton, exact); !name.empty())
+    return fail("--exact: " + name + " is not a part");
+  if (const std::string name = unknownPart(skeleton, forcedCapsules); !name.empty())
+    return fail("--capsule: " + name + " is not a part");
+
+  const std::vector<figment::CollisionVolumeParameters> volumes = fitVolumes(body, skeleton, options, forcedCapsules);
+  size_t capsules = 0, radials = 0;
+  for (const auto& v : volumes)
+    if (!exact.count(v.part)) (v.kind == figment::CollisionVolumeParameters::Kind::Capsule ? capsules : radials)++;
+  SoGroup* root = volumeNodes(skeleton, volumes, exact);
+  root->ref();
+  const std::string header = "# The collision volumes of " + options.body + ", fitted by\n#   " +
+                             options.commandLine +
+                             "\n# Include it in a Mannequin (nodes/body/Mannequin.h); regenerate, do not edit.";
+  const std::string error = figment::writeAtomically(
+      options.output, [&](const std::string& temporary) { return writeIv(root, temporary, header); });
+  root->unref();
+  if (!error.empty()) return fail(options.output + ": " + error);
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+  std::printf("%s: %s: %zu radial depth volumes, %zu capsules, %zu exact parts, %.1f s\n", kProgram,
+              options.output.c_str(), radials, capsules, exact.size(), wall.count());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const int status = parseCommandLine(argc, argv, options); status >= 0) return status;
   const std::string bodyPath = figment::findModelFile(options.body);
   if (bodyPath.empty())
     return fail(options.body +
                 ": not found (searched the working directory, $FIGMENT_MODEL_PATH, /usr/share/assimp/models)");
   figment::init();
-  const auto start = std::chrono::steady_clock::now();
-  SoGroup* root = nullptr;
-  size_t capsules = 0, radials = 0;
   try {
-    figment::ImportOptions importOptions;
-    importOptions.exclude = options.exclude;
-    const figment::TriangleMesh body = figment::importMesh(bodyPath, importOptions).mesh;
-    const figment::Skeleton skeleton = figment::estimateSkeleton(body);
-    std::set<std::string> exact(options.exactParts.begin(), options.exactParts.end());
-    std::set<std::string> forcedCapsules(options.capsuleParts.begin(), options.capsuleParts.end());
-    for (const std::string& name : exact)
-      if (std::none_of(skeleton.parts.begin(), skeleton.parts.end(), [&](const auto& p) { return p.name == name; }))
-        return fail("--exact: " + name + " is not a part");
-    for (const std::string& name : forcedCapsules)
-      if (std::none_of(skeleton.parts.begin(), skeleton.parts.end(), [&](const auto& p) { return p.name == name; }))
-        return fail("--capsule: " + name + " is not a part");
-
-    std::vector<figment::CollisionVolumeParameters> volumes;
-    const bool radial = options.method == "radial";
-    if (radial) {
-      for (figment::CollisionVolumeParameters& v : figment::fitRadialVolumes(body, skeleton, options.fit))
-        if (!forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
-    }
-    if (!radial || !forcedCapsules.empty()) {
-      for (figment::CollisionVolumeParameters& v : figment::fitCapsules(body, skeleton, options.fit))
-        if (!radial || forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
-    }
-    for (const auto& v : volumes)
-      if (!exact.count(v.part)) (v.kind == figment::CollisionVolumeParameters::Kind::Capsule ? capsules : radials)++;
-    root = volumeNodes(skeleton, volumes, exact);
-    root->ref();
-    const std::string header = "# The collision volumes of " + options.body + ", fitted by\n#   " +
-                               options.commandLine +
-                               "\n# Include it in a Mannequin (nodes/body/Mannequin.h); regenerate, do not edit.";
-    // Written under a temporary name and renamed: the file exists only when complete.
-    const std::string temporary = options.output + ".partial";
-    const std::string error = writeIv(root, temporary, header);
-    root->unref();
-    std::error_code renamed;
-    if (error.empty()) std::filesystem::rename(temporary, options.output, renamed);
-    if (!error.empty() || renamed) {
-      std::filesystem::remove(temporary, renamed);
-      return fail(options.output + ": " + (error.empty() ? "cannot write it" : error));
-    }
-    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-    std::printf("%s: %s: %zu radial depth volumes, %zu capsules, %zu exact parts, %.1f s\n", kProgram,
-                options.output.c_str(), radials, capsules, exact.size(), wall.count());
+    return fitAndWrite(options, bodyPath);
   } catch (const std::runtime_error& error) {  // the importer's message starts with the path
-    if (root) root->unref();
     return fail(error.what());
   } catch (const std::exception& error) {
     return fail(bodyPath + ": " + error.what());
   }
-  return 0;
 }

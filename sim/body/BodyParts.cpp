@@ -1,10 +1,7 @@
 #include "sim/body/BodyParts.h"
 
-#include "sim/fitting/AxisSearch.h"
-#include "sim/core/PrincipalAxes.h"
-
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -45,7 +42,10 @@ std::vector<std::vector<int>> triangleNeighbours(const TriangleMesh& body) {
 
 }  // namespace
 
-std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton) {
+namespace {
+
+// Step 1 of the cut: per triangle, the nearest bone it faces away from, else the nearest.
+std::vector<int> nearestFacingBones(const TriangleMesh& body, const Skeleton& skeleton) {
   const size_t n = body.triangles.size(), parts = skeleton.parts.size();
   std::vector<int> owner(n, 0);
   for (size_t t = 0; t < n; ++t) {
@@ -65,48 +65,69 @@ std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skele
     }
     owner[t] = facing >= 0 ? facing : nearest;
   }
+  return owner;
+}
+
+// The connected pieces of one owner each: every triangle's piece, and each piece's size.
+void connectedPieces(const std::vector<int>& owner, const std::vector<std::vector<int>>& neighbours,
+                     std::vector<int>& piece, std::vector<int>& pieceSize) {
+  const size_t n = owner.size();
+  piece.assign(n, -1), pieceSize.clear();
+  for (size_t t = 0; t < n; ++t) {
+    if (piece[t] >= 0) continue;
+    const int id = static_cast<int>(pieceSize.size());
+    std::vector<int> stack = {static_cast<int>(t)};
+    piece[t] = id;
+    int size = 0;
+    while (!stack.empty()) {
+      const int u = stack.back();
+      stack.pop_back();
+      ++size;
+      for (int w : neighbours[u])
+        if (piece[w] < 0 && owner[w] == owner[u]) piece[w] = id, stack.push_back(w);
+    }
+    pieceSize.push_back(size);
+  }
+}
+
+// Step 2, once: every piece of a part but its largest joins the part most of its
+// neighbouring triangles belong to. False when no piece moved.
+bool joinSmallPieces(std::vector<int>& owner, const std::vector<std::vector<int>>& neighbours, size_t parts) {
+  const size_t n = owner.size();
+  std::vector<int> piece, pieceSize;
+  connectedPieces(owner, neighbours, piece, pieceSize);
+  std::vector<int> largest(parts, -1);
+  for (size_t t = 0; t < n; ++t) {
+    int& l = largest[owner[t]];
+    if (l < 0 || pieceSize[piece[t]] > pieceSize[l]) l = piece[t];
+  }
+  // Votes of each small piece's neighbours.
+  std::map<int, std::vector<int>> votes;
+  for (size_t t = 0; t < n; ++t) {
+    if (piece[t] == largest[owner[t]]) continue;
+    std::vector<int>& v = votes.try_emplace(piece[t], std::vector<int>(parts, 0)).first->second;
+    for (int w : neighbours[t])
+      if (piece[w] != piece[t]) ++v[owner[w]];
+  }
+  std::map<int, int> joins;
+  for (const auto& [id, v] : votes) {
+    const int to = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
+    if (v[to] > 0) joins[id] = to;
+  }
+  if (joins.empty()) return false;
+  for (size_t t = 0; t < n; ++t)
+    if (const auto j = joins.find(piece[t]); j != joins.end() && piece[t] != largest[owner[t]]) owner[t] = j->second;
+  return true;
+}
+
+}  // namespace
+
+std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton) {
+  std::vector<int> owner = nearestFacingBones(body, skeleton);
   // Islands: every piece of a part but its largest joins its neighbours' part.
   const std::vector<std::vector<int>> neighbours = triangleNeighbours(body);
-  for (int pass = 0; pass < 10; ++pass) {
-    std::vector<int> piece(n, -1), pieceSize;
-    for (size_t t = 0; t < n; ++t) {
-      if (piece[t] >= 0) continue;
-      const int id = static_cast<int>(pieceSize.size());
-      std::vector<int> stack = {static_cast<int>(t)};
-      piece[t] = id;
-      int size = 0;
-      while (!stack.empty()) {
-        const int u = stack.back();
-        stack.pop_back();
-        ++size;
-        for (int w : neighbours[u])
-          if (piece[w] < 0 && owner[w] == owner[u]) piece[w] = id, stack.push_back(w);
-      }
-      pieceSize.push_back(size);
-    }
-    std::vector<int> largest(parts, -1);
-    for (size_t t = 0; t < n; ++t) {
-      int& l = largest[owner[t]];
-      if (l < 0 || pieceSize[piece[t]] > pieceSize[l]) l = piece[t];
-    }
-    // Votes of each small piece's neighbours.
-    std::map<int, std::vector<int>> votes;
-    for (size_t t = 0; t < n; ++t) {
-      if (piece[t] == largest[owner[t]]) continue;
-      std::vector<int>& v = votes.try_emplace(piece[t], std::vector<int>(parts, 0)).first->second;
-      for (int w : neighbours[t])
-        if (piece[w] != piece[t]) ++v[owner[w]];
-    }
-    if (votes.empty()) break;
-    std::map<int, int> joins;
-    for (const auto& [id, v] : votes) {
-      const int to = static_cast<int>(std::max_element(v.begin(), v.end()) - v.begin());
-      if (v[to] > 0) joins[id] = to;
-    }
-    if (joins.empty()) break;
-    for (size_t t = 0; t < n; ++t)
-      if (const auto j = joins.find(piece[t]); j != joins.end() && piece[t] != largest[owner[t]]) owner[t] = j->second;
-  }
+  for (int pass = 0; pass < 10; ++pass)
+    if (!joinSmallPieces(owner, neighbours, skeleton.parts.size())) break;
   return owner;
 }
 
@@ -128,71 +149,6 @@ std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& s
     part.mesh.triangles.push_back(kept);
   }
   return parts;
-}
-
-namespace {
-
-// A radial volume on the line through `origin` along `direction`, spanning the part.
-RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin,
-                           const Vec3& direction, int harmonics, double sectionSpacing) {
-  double low = std::numeric_limits<double>::max(), high = -low;
-  for (const Vec3& v : part.mesh.vertices) {
-    const double s = (v - origin).dot(direction);
-    low = std::min(low, s), high = std::max(high, s);
-  }
-  // A hair beyond the extreme vertices, so the caps enclose them.
-  const double margin = 1e-4;
-  const double length = high - low + 2 * margin;
-  const int sections = std::max(2, static_cast<int>(std::ceil(length / sectionSpacing)) + 1);
-  return fitRadialDepthToPoints(points, part.mesh.vertices, origin + (low - margin) * direction, direction, length,
-                                sections, harmonics);
-}
-
-}  // namespace
-
-double radialGapEstimate(const RadialDepth& volume, const std::vector<Vec3>& vertices) {
-  double total = 0.0;
-  for (const Vec3& v : vertices) {
-    double s, a, rho;
-    volume.toAxis(v, s, a, rho);
-    const double ends = std::min(s, volume.parameters().length - s);
-    total += std::max(0.0, std::min(volume.radius(s, a) - rho, ends));
-  }
-  return total / static_cast<double>(vertices.size());
-}
-
-RadialDepth fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing) {
-  std::vector<Vec3> points = part.mesh.vertices;
-  for (const Triangle& t : part.mesh.triangles)
-    points.push_back((part.mesh.vertices[t[0]] + part.mesh.vertices[t[1]] + part.mesh.vertices[t[2]]) / 3.0);
-  const Vec3 bone = (part.to - part.from).normalized();
-  // Candidates: the bone; the bone's direction through the part's centroid; the part's
-  // principal axis nearest the bone's direction, through its centroid.
-  const PrincipalAxes spread = principalAxes(points);
-  const Vec3& centroid = spread.mean;
-  Vec3 principal = spread.axes.col(2);
-  for (int k = 0; k < 3; ++k)
-    if (std::abs(spread.axes.col(k).dot(bone)) > std::abs(principal.dot(bone))) principal = spread.axes.col(k);
-  if (principal.dot(bone) < 0.0) principal = -principal;
-  const std::vector<std::pair<Vec3, Vec3>> axes = {{part.from, bone}, {centroid, bone}, {centroid, principal}};
-  RadialDepth best = fitAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);
-  double bestGap = radialGapEstimate(best, part.mesh.vertices);
-  size_t start = 0;
-  for (size_t k = 1; k < axes.size(); ++k) {
-    RadialDepth candidate = fitAlong(part, points, axes[k].first, axes[k].second, harmonics, sectionSpacing);
-    const double gap = radialGapEstimate(candidate, part.mesh.vertices);
-    if (gap < bestGap) best = std::move(candidate), bestGap = gap, start = k;
-  }
-  // The genetic search from the best of them (it keeps its best: never worse).
-  const AxisSearchResult searched = searchAxis(
-      {axes[start].first, axes[start].second},
-      [&](const Axis& axis) {
-        return radialGapEstimate(fitAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
-                                 part.mesh.vertices);
-      });
-  if (searched.cost < bestGap)
-    best = fitAlong(part, points, searched.axis.origin, searched.axis.direction, harmonics, sectionSpacing);
-  return best;
 }
 
 std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& triangleParts, size_t partCount) {

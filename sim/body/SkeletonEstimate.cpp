@@ -90,19 +90,20 @@ Vec3 torsoCentre(const TriangleMesh& body, double y) {
   return {c.x(), y, c.y()};
 }
 
-}  // namespace
+// The body in the estimate's frame: y up, facing +z, 1.66 m tall, centred in x, feet
+// at y = 0; a point p of it is R^T ((p - shift) / scale) in the input's frame.
+struct NormalisedBody {
+  TriangleMesh body;
+  Eigen::Matrix3d R;
+  double scale;
+  Vec3 shift;
+};
 
-Skeleton estimateSkeleton(const TriangleMesh& input) {
-  if (input.vertices.size() < 100) throw std::invalid_argument("too few vertices for a body");
-  // 1-2. Up, forward, scale: a normalised copy (y up, facing +z, 1.66 m, centred in x).
-  const Vec3 up = findUp(input.vertices);
-  Eigen::Matrix3d R = Eigen::Quaterniond::FromTwoVectors(up, Vec3::UnitY()).toRotationMatrix();
-  std::vector<Vec3> turned;
-  for (const Vec3& v : input.vertices) turned.push_back(R * v);
-  Bounds b = boundsOf(turned);
-  const double height = b.size().y();
-  // Forward: from the legs just above the ankles towards the feet.
-  const double ankleSlab = b.min.y() + 0.08 * height, footSlab = b.min.y() + 0.03 * height;
+// Forward (horizontal, unit) of a body already turned y up, `bounds` its bounds: from the
+// legs just above the ankles towards the feet.
+Vec3 forwardOf(const std::vector<Vec3>& turned, const Bounds& bounds) {
+  const double height = bounds.size().y();
+  const double ankleSlab = bounds.min.y() + 0.08 * height, footSlab = bounds.min.y() + 0.03 * height;
   Vec3 legs = Vec3::Zero(), feet = Vec3::Zero();
   int nLegs = 0, nFeet = 0;
   for (const Vec3& v : turned) {
@@ -113,87 +114,136 @@ Skeleton estimateSkeleton(const TriangleMesh& input) {
   Vec3 forward = feet / nFeet - legs / nLegs;
   forward.y() = 0.0;
   if (forward.norm() < 1e-9) throw std::invalid_argument("the feet do not point anywhere");
-  forward.normalize();
-  R = Eigen::AngleAxisd(std::atan2(forward.x(), forward.z()), -Vec3::UnitY()).toRotationMatrix() * R;
-  const double scale = kHeight / height;
-  TriangleMesh body = input;
-  for (Vec3& v : body.vertices) v = scale * (R * v);
-  b = boundsOf(body.vertices);
-  Vec3 mean = Vec3::Zero();
-  for (const Vec3& v : body.vertices) mean += v;
-  mean /= static_cast<double>(body.vertices.size());
-  const Vec3 shift(-mean.x(), -b.min.y(), 0.0);
-  for (Vec3& v : body.vertices) v += shift;
+  return forward.normalized();
+}
 
-  // 3. Landmarks.
-  double crotch = -1.0;
+// Steps 1-2: up, forward, scale.
+NormalisedBody normalise(const TriangleMesh& input) {
+  const Vec3 up = findUp(input.vertices);
+  NormalisedBody n;
+  n.R = Eigen::Quaterniond::FromTwoVectors(up, Vec3::UnitY()).toRotationMatrix();
+  std::vector<Vec3> turned;
+  for (const Vec3& v : input.vertices) turned.push_back(n.R * v);
+  Bounds b = boundsOf(turned);
+  const double height = b.size().y();
+  const Vec3 forward = forwardOf(turned, b);
+  n.R = Eigen::AngleAxisd(std::atan2(forward.x(), forward.z()), -Vec3::UnitY()).toRotationMatrix() * n.R;
+  n.scale = kHeight / height;
+  n.body = input;
+  for (Vec3& v : n.body.vertices) v = n.scale * (n.R * v);
+  b = boundsOf(n.body.vertices);
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& v : n.body.vertices) mean += v;
+  mean /= static_cast<double>(n.body.vertices.size());
+  n.shift = Vec3(-mean.x(), -b.min.y(), 0.0);
+  for (Vec3& v : n.body.vertices) v += n.shift;
+  return n;
+}
+
+struct Landmarks {
+  double crotch, armpit, neck, waist;  // heights, m
+};
+
+// Step 3a: the heights the joints are placed at.
+Landmarks landmarksOf(const TriangleMesh& body) {
+  Landmarks l;
+  l.crotch = -1.0;
   for (double y = 0.3 * kHeight; y < 0.6 * kHeight; y += 0.005)
-    if (!legsAt(body, y).empty()) crotch = y;
-  if (crotch < 0.0) throw std::invalid_argument("the legs never part: no crotch found");
-  const double armpit = armpitHeight(body);
-  const double neck = neckHeight(body, armpit);
-  double waistY = crotch + 0.1, narrowest = std::numeric_limits<double>::max();
-  for (double y = crotch + 0.1; y < armpit - 0.05; y += 0.005) {
+    if (!legsAt(body, y).empty()) l.crotch = y;
+  if (l.crotch < 0.0) throw std::invalid_argument("the legs never part: no crotch found");
+  l.armpit = armpitHeight(body);
+  l.neck = neckHeight(body, l.armpit);
+  l.waist = l.crotch + 0.1;
+  double narrowest = std::numeric_limits<double>::max();
+  for (double y = l.crotch + 0.1; y < l.armpit - 0.05; y += 0.005) {
     const TorsoSlice s = sliceTorso(body, y);
-    if (!s.empty() && s.maxX() - s.minX() < narrowest) narrowest = s.maxX() - s.minX(), waistY = y;
+    if (!s.empty() && s.maxX() - s.minX() < narrowest) narrowest = s.maxX() - s.minX(), l.waist = y;
   }
-  std::array<Vec3, 25> j;
-  auto set = [&](const char* name, const Vec3& p) {
+  return l;
+}
+
+// The humanoid's joint positions (humanoidJointNames' order), set by name.
+struct Joints {
+  std::array<Vec3, 25> at;
+  void set(const char* name, const Vec3& p) {
     const auto& names = humanoidJointNames();
-    j[std::find(names.begin(), names.end(), name) - names.begin()] = p;
-  };
-  set("pelvisFloor", torsoCentre(body, crotch + 0.02) - Vec3(0, 0.02, 0));
-  set("pelvis", torsoCentre(body, crotch + 0.08));
-  set("waist", torsoCentre(body, waistY));
-  set("chest", torsoCentre(body, armpit - 0.03));
-  set("neckBase", torsoCentre(body, neck - 0.04));
-  set("neckTop", torsoCentre(body, neck + 0.03));
+    at[std::find(names.begin(), names.end(), name) - names.begin()] = p;
+  }
+};
+
+// Step 3b: the spine and the head.
+void placeSpine(const TriangleMesh& body, const Landmarks& l, Joints& j) {
+  j.set("pelvisFloor", torsoCentre(body, l.crotch + 0.02) - Vec3(0, 0.02, 0));
+  j.set("pelvis", torsoCentre(body, l.crotch + 0.08));
+  j.set("waist", torsoCentre(body, l.waist));
+  j.set("chest", torsoCentre(body, l.armpit - 0.03));
+  j.set("neckBase", torsoCentre(body, l.neck - 0.04));
+  j.set("neckTop", torsoCentre(body, l.neck + 0.03));
   Vec3 top = body.vertices.front();
   for (const Vec3& v : body.vertices)
     if (v.y() > top.y()) top = v;
-  set("headTop", Vec3(0.5 * (j[3].x() + j[4].x()), top.y(), j[4].z()));
-  const double legHeights[3] = {crotch - 0.03, 0.285 * kHeight, 0.045 * kHeight};
+  j.set("headTop", Vec3(0.5 * (j.at[3].x() + j.at[4].x()), top.y(), j.at[4].z()));
+}
+
+// Step 3c: hips, knees, ankles from the leg sections; toes, each foot's front point.
+void placeLegs(const TriangleMesh& body, const Landmarks& l, Joints& j) {
+  const double legHeights[3] = {l.crotch - 0.03, 0.285 * kHeight, 0.045 * kHeight};
   const char* legJoints[2][3] = {{"hipL", "kneeL", "ankleL"}, {"hipR", "kneeR", "ankleR"}};
   for (int k = 0; k < 3; ++k) {
     const std::vector<XCluster> pair = legsAt(body, legHeights[k]);
     if (pair.empty()) throw std::invalid_argument("no pair of legs at height " + std::to_string(legHeights[k]));
     for (int side = 0; side < 2; ++side) {
       Vec3 c = centroidAt(pair[side], legHeights[k]);
-      if (k == 0) c.y() = crotch + 0.04;  // the hip joint sits above the crotch
-      set(legJoints[side][k], c);
+      if (k == 0) c.y() = l.crotch + 0.04;  // the hip joint sits above the crotch
+      j.set(legJoints[side][k], c);
     }
   }
-  for (int side = 0; side < 2; ++side) {  // toes: each foot's front point
+  for (int side = 0; side < 2; ++side) {
     Vec3 toe(0, 0, -std::numeric_limits<double>::max());
     for (const Vec3& v : body.vertices)
       if (v.y() < 0.04 * kHeight && (side == 0 ? v.x() > 0 : v.x() < 0) && v.z() > toe.z()) toe = v;
-    set(side == 0 ? "toeL" : "toeR", toe);
+    j.set(side == 0 ? "toeL" : "toeR", toe);
   }
-  const TorsoSlice shoulders = sliceTorso(body, armpit + 0.07);
-  const Vec3 chest = torsoCentre(body, armpit + 0.07);
+}
+
+// Step 3d: shoulders from the section above the armpits; elbow and wrist along the line
+// to the fingertip, the arm's vertex (beside the torso, above the crotch) farthest away.
+void placeArms(const TriangleMesh& body, const Landmarks& l, Joints& j) {
+  const TorsoSlice shoulders = sliceTorso(body, l.armpit + 0.07);
+  const Vec3 chest = torsoCentre(body, l.armpit + 0.07);
   const double outline[2] = {shoulders.maxX(), shoulders.minX()};
-  const double torsoEdge[2] = {sliceTorso(body, armpit - 0.03).maxX(), sliceTorso(body, armpit - 0.03).minX()};
+  const double torsoEdge[2] = {sliceTorso(body, l.armpit - 0.03).maxX(), sliceTorso(body, l.armpit - 0.03).minX()};
   const char* armJoints[2][5] = {{"shoulderBaseL", "shoulderL", "elbowL", "wristL", "fingertipL"},
                                  {"shoulderBaseR", "shoulderR", "elbowR", "wristR", "fingertipR"}};
   for (int side = 0; side < 2; ++side) {
     const double sign = side == 0 ? 1.0 : -1.0;
-    const Vec3 shoulder(outline[side] - sign * 0.04, armpit + 0.07, chest.z());
-    set(armJoints[side][0], Vec3(chest.x() + sign * 0.05, armpit + 0.09, chest.z()));
-    set(armJoints[side][1], shoulder);
-    // The arm: vertices beside the torso above the crotch; the fingertip the farthest.
+    const Vec3 shoulder(outline[side] - sign * 0.04, l.armpit + 0.07, chest.z());
+    j.set(armJoints[side][0], Vec3(chest.x() + sign * 0.05, l.armpit + 0.09, chest.z()));
+    j.set(armJoints[side][1], shoulder);
     Vec3 tip = shoulder;
     for (const Vec3& v : body.vertices)
-      if (v.y() > crotch && sign * v.x() > sign * torsoEdge[side] + 0.02 &&
+      if (v.y() > l.crotch && sign * v.x() > sign * torsoEdge[side] + 0.02 &&
           (v - shoulder).squaredNorm() > (tip - shoulder).squaredNorm())
         tip = v;
-    set(armJoints[side][2], shoulder + 0.42 * (tip - shoulder));
-    set(armJoints[side][3], shoulder + 0.75 * (tip - shoulder));
-    set(armJoints[side][4], tip);
+    j.set(armJoints[side][2], shoulder + 0.42 * (tip - shoulder));
+    j.set(armJoints[side][3], shoulder + 0.75 * (tip - shoulder));
+    j.set(armJoints[side][4], tip);
   }
+}
 
+}  // namespace
+
+Skeleton estimateSkeleton(const TriangleMesh& input) {
+  if (input.vertices.size() < 100) throw std::invalid_argument("too few vertices for a body");
+  const NormalisedBody n = normalise(input);
+  const Landmarks landmarks = landmarksOf(n.body);
+  Joints joints;
+  placeSpine(n.body, landmarks, joints);
+  placeLegs(n.body, landmarks, joints);
+  placeArms(n.body, landmarks, joints);
   // 4. Back into the input's frame and unit.
   std::vector<Vec3> positions;
-  for (const Vec3& p : j) positions.push_back(R.transpose() * ((p - shift) / scale));
+  for (const Vec3& p : joints.at) positions.push_back(n.R.transpose() * ((p - n.shift) / n.scale));
   return humanoidSkeleton(positions);
 }
 

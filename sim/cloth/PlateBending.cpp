@@ -5,6 +5,33 @@
 
 namespace figment {
 
+namespace {
+
+// Triangle t's bending form (false for a triangle of no area), from its edges' in-plane
+// normals t_k and weights w_k = l_k / 2A: (tr dS)^2 = (sum_i w_i d_i)^2 and
+// |dS|^2 = sum_ij w_i w_j d_i d_j (t_i . t_j)^2.
+bool bendingForm(const TriangleMesh& rest, const Triangle& t, double stiffness, double poissonRatio,
+                 Eigen::Matrix3d& form) {
+  const Vec3 normal = (rest.vertices[t[1]] - rest.vertices[t[0]]).cross(rest.vertices[t[2]] - rest.vertices[t[0]]);
+  const double area = 0.5 * normal.norm();
+  if (!(area > 0.0)) return false;
+  std::array<Vec3, 3> edgeNormal;
+  std::array<double, 3> weight;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 edge = rest.vertices[t[(k + 1) % 3]] - rest.vertices[t[k]];
+    edgeNormal[k] = edge.cross(normal).normalized();
+    weight[k] = edge.norm() / (2.0 * area);
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double c = edgeNormal[i].dot(edgeNormal[j]);
+      form(i, j) = stiffness * area * weight[i] * weight[j] * (poissonRatio + (1.0 - poissonRatio) * c * c);
+    }
+  return true;
+}
+
+}  // namespace
+
 PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double poissonRatio) {
   // Each undirected edge -> the sections that run along it, as (from, to, opposite).
   struct EdgeUse {
@@ -40,26 +67,9 @@ PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double po
     }
   }
   for (size_t s = 0; s < rest.triangles.size(); ++s) {
-    const Triangle& t = rest.triangles[s];
-    const Vec3 normal = (rest.vertices[t[1]] - rest.vertices[t[0]]).cross(rest.vertices[t[2]] - rest.vertices[t[0]]);
-    const double area = 0.5 * normal.norm();
-    if (!(area > 0.0)) continue;
-    // Edge k's in-plane normal t_k and weight l_k / 2A.
-    std::array<Vec3, 3> edgeNormal;
-    std::array<double, 3> weight;
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 edge = rest.vertices[t[(k + 1) % 3]] - rest.vertices[t[k]];
-      edgeNormal[k] = edge.cross(normal).normalized();
-      weight[k] = edge.norm() / (2.0 * area);
-    }
     SectionForm section{static_cast<int>(s), jointOf[s], neighbourOf[s], signOf[s], signOf[s], false,
                         Eigen::Matrix3d::Zero()};
-    // (tr dS)^2 = (sum_i w_i d_i)^2 and |dS|^2 = sum_ij w_i w_j d_i d_j (t_i . t_j)^2.
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        const double c = edgeNormal[i].dot(edgeNormal[j]);
-        section.form(i, j) = stiffness * area * weight[i] * weight[j] * (poissonRatio + (1.0 - poissonRatio) * c * c);
-      }
+    if (!bendingForm(rest, rest.triangles[s], stiffness, poissonRatio, section.form)) continue;
     if (section.joints != std::array<int, 3>{-1, -1, -1}) sections_.push_back(section);
   }
   triangles_ = rest.triangles;

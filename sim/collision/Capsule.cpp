@@ -23,6 +23,16 @@ CapsuleParameters CapsuleParameters::fromValues(const std::array<double, 12>& v)
   return p;
 }
 
+void CapsuleParameters::tiltOnto(const Vec3& axis) {
+  const Vec3 turn = Vec3::UnitY().cross(axis);
+  theta = std::atan2(turn.norm(), Vec3::UnitY().dot(axis));
+  phi = turn.norm() > 1e-12 ? std::atan2(turn.z(), turn.x()) : 0.0;
+}
+
+Eigen::Matrix3d CapsuleParameters::tilt() const {
+  return Eigen::AngleAxisd(theta, Vec3(std::cos(phi), 0.0, std::sin(phi))).toRotationMatrix();
+}
+
 void CapsuleParameters::validate() const {
   const char* names[12] = {"r1", "r2", "tx", "tz", "x", "y", "z", "ox", "oy", "oz", "theta", "phi"};
   const std::array<double, 12> v = values();
@@ -39,8 +49,7 @@ void CapsuleParameters::validate() const {
 
 Capsule::Capsule(const CapsuleParameters& parameters) : parameters_(parameters) {
   parameters_.validate();
-  const Vec3 axis(std::cos(parameters_.phi), 0.0, std::sin(parameters_.phi));
-  rotation_ = Eigen::AngleAxisd(parameters_.theta, axis).toRotationMatrix();
+  rotation_ = parameters_.tilt();
   inverseRotation_ = rotation_.transpose();
   bottom_ = -0.5 + 0.5 * parameters_.r1;
   top_ = 0.5 - 0.5 * parameters_.r2;

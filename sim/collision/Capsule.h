@@ -32,6 +32,10 @@ struct CapsuleParameters {
   // The 12 values in the paper's order: r1 r2 tx tz x y z ox oy oz theta phi.
   std::array<double, 12> values() const;
   static CapsuleParameters fromValues(const std::array<double, 12>& v);
+  // Sets the tilt (theta, phi) that takes the unit capsule's y axis onto the unit `axis`.
+  void tiltOnto(const Vec3& axis);
+  // The tilt as a rotation: by theta about (cos phi, 0, sin phi).
+  Eigen::Matrix3d tilt() const;
   // Throws std::invalid_argument naming the parameter and value when out of range.
   void validate() const;
 };

@@ -1,9 +1,7 @@
 #include "sim/fitting/AxisSearch.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -11,16 +9,25 @@ namespace figment {
 
 namespace {
 
-using Genes = std::array<double, 4>;  // tilt u, tilt v (rad), shift du, dv (m)
-
-struct Member {
-  Genes genes{};
-  double cost = 0.0;
-};
-
-Axis axisOf(const Axis& start, const Vec3& e1, const Vec3& e2, const Genes& g) {
+// Genes: tilt u, tilt v (rad), shift du, dv (m).
+Axis axisOf(const Axis& start, const Vec3& e1, const Vec3& e2, const std::vector<double>& g) {
   const Vec3 direction = (start.direction + std::tan(g[0]) * e1 + std::tan(g[1]) * e2).normalized();
   return {start.origin + g[2] * e1 + g[3] * e2, direction};
+}
+
+// The options' shares as counts of members (rounded to nearest; at least one mutant and
+// one parent; the best member always kept).
+GeneticSchedule scheduleOf(const AxisSearchOptions& options) {
+  GeneticSchedule schedule;
+  const int n = options.population;
+  schedule.population = n;
+  schedule.generations = options.generations;
+  schedule.mutants = std::max(1, static_cast<int>(std::lround(options.mutationShare * n)));
+  schedule.crossovers = std::min(n - 1 - schedule.mutants, static_cast<int>(std::lround(options.crossoverShare * n)));
+  schedule.parents = std::max(1, static_cast<int>(std::lround(options.parentShare * n)));
+  schedule.mutationDeviation = 0.3;  // of the limit
+  schedule.seed = options.seed;
+  return schedule;
 }
 
 }  // namespace
@@ -35,52 +42,14 @@ AxisSearchResult searchAxis(const Axis& start, const std::function<double(const 
   const Vec3 helper = std::abs(base.direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
   const Vec3 e1 = base.direction.cross(helper).normalized();
   const Vec3 e2 = base.direction.cross(e1);
-  const Genes limit = {options.maxTilt, options.maxTilt, options.maxShift, options.maxShift};
-
-  std::mt19937 random(options.seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::normal_distribution<double> step(0.0, 0.3);
-  AxisSearchResult result;
-  auto evaluate = [&](Member& m) {
-    m.cost = cost(axisOf(base, e1, e2, m.genes));
-    ++result.evaluations;
-  };
-
-  std::vector<Member> population(options.population);
-  for (size_t i = 1; i < population.size(); ++i)
-    for (int k = 0; k < 4; ++k) population[i].genes[k] = (2.0 * unit(random) - 1.0) * limit[k];
-  for (Member& m : population) evaluate(m);
-
-  const int n = options.population;
-  const int mutants = std::max(1, static_cast<int>(std::lround(options.mutationShare * n)));
-  const int crossovers = std::min(n - 1 - mutants, static_cast<int>(std::lround(options.crossoverShare * n)));
-  const int parents = std::max(1, static_cast<int>(std::lround(options.parentShare * n)));
-  auto byCost = [](const Member& a, const Member& b) { return a.cost < b.cost; };
-  // A parent among the first `among`, biased to the better ones.
-  auto pick = [&](int among) {
-    const double u = unit(random);
-    return std::min(among - 1, static_cast<int>(u * u * among));
-  };
-  for (int generation = 0; generation < options.generations; ++generation) {
-    std::stable_sort(population.begin(), population.end(), byCost);
-    for (int i = n - mutants; i < n; ++i) {
-      Member child = population[pick(n - mutants)];
-      const int gene = static_cast<int>(unit(random) * 4) % 4;
-      child.genes[gene] = std::clamp(child.genes[gene] + step(random) * limit[gene], -limit[gene], limit[gene]);
-      population[i] = child;
-      evaluate(population[i]);
-    }
-    for (int i = n - mutants - crossovers; i < n - mutants; ++i) {
-      Member child;
-      for (int k = 0; k < 4; ++k) child.genes[k] = population[pick(parents)].genes[k];
-      population[i] = child;
-      evaluate(population[i]);
-    }
-  }
-  const Member& best = *std::min_element(population.begin(), population.end(), byCost);
-  result.axis = axisOf(base, e1, e2, best.genes);
-  result.cost = best.cost;
-  return result;
+  const std::vector<double> limit = {options.maxTilt, options.maxTilt, options.maxShift, options.maxShift};
+  GeneticProblem problem;
+  problem.start.assign(4, 0.0);
+  for (double l : limit) problem.low.push_back(-l);
+  problem.high = problem.step = problem.spread = limit;
+  problem.cost = [&](const std::vector<double>& genes) { return cost(axisOf(base, e1, e2, genes)); };
+  const GeneticResult found = geneticSearch(problem, scheduleOf(options));
+  return {axisOf(base, e1, e2, found.genes), found.cost, found.evaluations};
 }
 
 }  // namespace figment

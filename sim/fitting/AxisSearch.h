@@ -5,30 +5,23 @@
 //
 // A member is an axis near a starting one: its direction tilted by (u, v) radians about
 // two directions perpendicular to the start's, its origin moved by (du, dv) m along
-// them. The population starts with the starting axis itself and members spread within
-// the limits; each generation sorts by cost, replaces the worst `mutationShare` with
-// copies of better members with one gene moved by a normal step (within its limit), and
-// the next `crossoverShare` with crossovers (each gene from a parent among the best
-// `parentShare`), parents chosen with a bias to low cost (index of u^2). The best member
-// survives every generation, so the result never costs more than the starting axis.
-// Seeded: a search repeats exactly.
+// them, each within its limit. The search is geneticSearch (sim/fitting/GeneticSearch.h):
+// the starting axis and members spread uniformly within the limits; the shares of the
+// population rounded to the nearest count (at least one mutant and one parent, the best
+// member always kept); a mutation moves its gene by 0.3 times its limit times a standard
+// normal draw. The result never costs more than the starting axis; a search repeats
+// exactly with its seed.
 
 #include "sim/core/TriangleMesh.h"
+#include "sim/fitting/GeneticSearch.h"
 
-#include <cstdint>
 #include <functional>
 
 namespace figment {
 
-struct AxisSearchOptions {
-  int population = 10;
-  int generations = 6;
-  double mutationShare = 0.3;
-  double crossoverShare = 0.3;
-  double parentShare = 0.3;
+struct AxisSearchOptions : GeneticShares {  // population 10, 6 generations
   double maxTilt = 0.35;    // rad, about each perpendicular
   double maxShift = 0.02;   // m, along each perpendicular
-  uint32_t seed = 1;
 };
 
 struct Axis {

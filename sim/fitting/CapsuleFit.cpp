@@ -2,32 +2,59 @@
 
 #include "sim/core/PrincipalAxes.h"
 
-
 #include <algorithm>
 #include <cmath>
-#include <random>
+#include <array>
 #include <stdexcept>
 
 namespace figment {
 
 namespace {
 
-struct Limits {
-  std::array<double, 12> low, high, step;
-};
-
-// Limits and mutation steps for a part of this size (m) around its centre.
-Limits limitsFor(const CapsuleParameters& start, double size) {
-  Limits l;
-  const Vec3 centre(start.ox, start.oy, start.oz);
-  l.low = {0, 0, -1.5, -1.5, 0.01 * size, 0.01 * size, 0.01 * size, centre.x() - size, centre.y() - size,
-           centre.z() - size, -M_PI, -M_PI};
-  l.high = {1, 1, 1.5, 1.5, 3 * size, 3 * size, 3 * size, centre.x() + size, centre.y() + size, centre.z() + size,
-            M_PI, M_PI};
-  l.step = {0.1, 0.1, 0.1, 0.1, 0.03 * size, 0.03 * size, 0.03 * size, 0.01 * size, 0.01 * size, 0.01 * size, 0.03,
-            0.1};
-  return l;
+CapsuleParameters parametersOf(const std::vector<double>& genes) {
+  std::array<double, 12> values;
+  std::copy(genes.begin(), genes.end(), values.begin());
+  return CapsuleParameters::fromValues(values);
 }
+
+// The capsule's 12 values as genes from `start`: their limits and mutation steps for a
+// part of this size (m) around its centre, and the cost of the options.
+GeneticProblem capsuleProblem(const CapsuleParameters& start, double size, const std::vector<Vec3>& points,
+                              const CapsuleFitOptions& options) {
+  const std::array<double, 12> values = start.values();
+  const Vec3 centre(start.ox, start.oy, start.oz);
+  GeneticProblem problem;
+  problem.start.assign(values.begin(), values.end());
+  problem.low = {0, 0, -1.5, -1.5, 0.01 * size, 0.01 * size, 0.01 * size, centre.x() - size, centre.y() - size,
+                 centre.z() - size, -M_PI, -M_PI};
+  problem.high = {1, 1, 1.5, 1.5, 3 * size, 3 * size, 3 * size, centre.x() + size, centre.y() + size,
+                  centre.z() + size, M_PI, M_PI};
+  problem.step = {0.1, 0.1, 0.1, 0.1, 0.03 * size, 0.03 * size, 0.03 * size, 0.01 * size, 0.01 * size, 0.01 * size,
+                  0.03, 0.1};
+  problem.cost = [&points, options](const std::vector<double>& genes) {
+    const CapsuleParameters c = parametersOf(genes);
+    return options.costAfterEnclosure ? enclosedCapsuleCost(c, points)
+                                      : capsuleCost(Capsule(c), points, options.outsideWeight);
+  };
+  return problem;
+}
+
+// The options' shares as counts of members (rounded down; at least 4 members and one
+// parent).
+GeneticSchedule scheduleOf(const CapsuleFitOptions& options) {
+  GeneticSchedule schedule;
+  const int n = std::max(options.population, 4);
+  schedule.population = n;
+  schedule.generations = options.generations;
+  schedule.mutants = static_cast<int>(options.mutationShare * n);
+  schedule.crossovers = static_cast<int>(options.crossoverShare * n);
+  schedule.parents = std::max(1, static_cast<int>(options.parentShare * n));
+  schedule.mutationDeviation = 1.0;  // of the step
+  schedule.seed = options.seed;
+  return schedule;
+}
+
+}  // namespace
 
 // The default capsule set on the points: centred, along their principal axis, as big
 // as their extents.
@@ -38,11 +65,8 @@ CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
   if (axis.y() < 0.0) axis = -axis;
   CapsuleParameters c;
   c.r1 = c.r2 = 0.5;
-  const Vec3 turn = Vec3::UnitY().cross(axis);
-  c.theta = std::atan2(turn.norm(), Vec3::UnitY().dot(axis));
-  c.phi = turn.norm() > 1e-12 ? std::atan2(turn.z(), turn.x()) : 0.0;
-  const Eigen::Matrix3d R =
-      Eigen::AngleAxisd(c.theta, Vec3(std::cos(c.phi), 0.0, std::sin(c.phi))).toRotationMatrix();
+  c.tiltOnto(axis);
+  const Eigen::Matrix3d R = c.tilt();
   Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
   for (const Vec3& p : points) {
     const Vec3 local = R.transpose() * (p - mean);
@@ -54,8 +78,6 @@ CapsuleParameters startingCapsule(const std::vector<Vec3>& points) {
   c.ox = centre.x(), c.oy = centre.y(), c.oz = centre.z();
   return c;
 }
-
-}  // namespace
 
 double growToEnclose(CapsuleParameters& c, const std::vector<Vec3>& points) {
   auto enclosesAt = [&](double s) {
@@ -123,49 +145,9 @@ CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& 
   const CapsuleParameters start = startingCapsule(points);
   const double size = std::max({start.x, start.y, start.z});
   if (!(size > 1e-6)) throw std::invalid_argument("the points to fit have no extent");
-  const Limits limits = limitsFor(start, size);
-
-  struct Member {
-    std::array<double, 12> values;
-    double cost;
-  };
-  auto costOf = [&](const std::array<double, 12>& v) {
-    const CapsuleParameters c = CapsuleParameters::fromValues(v);
-    return options.costAfterEnclosure ? enclosedCapsuleCost(c, points) : capsuleCost(Capsule(c), points, options.outsideWeight);
-  };
-  std::mt19937 random(options.seed);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  const int n = std::max(options.population, 4);
-  std::vector<Member> population(n, Member{start.values(), 0.0});
-  // Biased to low cost: the index of u^2 among the first `count` members.
-  auto pick = [&](int count) { return std::min(count - 1, static_cast<int>(count * std::pow(uniform(random), 2.0))); };
-  const int mutated = static_cast<int>(options.mutationShare * n);
-  const int crossed = static_cast<int>(options.crossoverShare * n);
-  const int parents = std::max(1, static_cast<int>(options.parentShare * n));
-  for (Member& m : population) m.cost = costOf(m.values);
-  for (int generation = 0; generation < options.generations; ++generation) {
-    std::stable_sort(population.begin(), population.end(), [](const Member& a, const Member& b) { return a.cost < b.cost; });
-    // Mutation: the worst `mutated` become copies of better members with one parameter moved.
-    for (int i = n - mutated; i < n; ++i) {
-      Member m = population[pick(n - mutated)];
-      const int k = static_cast<int>(12 * uniform(random)) % 12;
-      m.values[k] = std::clamp(m.values[k] + limits.step[k] * normal(random), limits.low[k], limits.high[k]);
-      m.cost = costOf(m.values);
-      population[i] = m;
-    }
-    // Crossover: the band above them, each parameter from a parent among the best.
-    for (int i = n - mutated - crossed; i < n - mutated; ++i) {
-      Member m;
-      for (int k = 0; k < 12; ++k) m.values[k] = population[pick(parents)].values[k];
-      m.cost = costOf(m.values);
-      population[i] = m;
-    }
-  }
-  const Member& best = *std::min_element(population.begin(), population.end(),
-                                         [](const Member& a, const Member& b) { return a.cost < b.cost; });
+  const GeneticResult best = geneticSearch(capsuleProblem(start, size, points, options), scheduleOf(options));
   CapsuleFit fit;
-  fit.parameters = CapsuleParameters::fromValues(best.values);
+  fit.parameters = parametersOf(best.genes);
   fit.cost = best.cost;
   if (options.enclose) fit.enclosureScale = growToEnclose(fit.parameters, points);
   return fit;

@@ -1,41 +1,34 @@
 #pragma once
 // Fitting a capsule to a body part's vertices by the paper's genetic algorithm (§3.1).
 //
-// A population of capsules starts from one default capsule set on the part (centred on
-// its vertices, its axis along their principal direction, its dimensions their extents).
-// Each generation:
-//   1. every capsule's cost is evaluated: the mean over the vertices of their squared
-//      distance to its surface, a vertex outside weighing `outsideWeight` times one
-//      inside (draping is decided by convexities: a capsule should enclose the part);
-//   2. the population is sorted by cost;
-//   3. the worst `mutationShare` are replaced by mutated copies of better members: one
-//      parameter of each, chosen at random, moves by a normal step within its limits;
-//   4. the next `crossoverShare` above them are replaced by crossovers: each parameter
-//      from a parent chosen among the best `parentShare`.
-// Parents are chosen with a bias to low cost (the index of u^2 for u uniform in [0, 1)).
-// A seeded generator makes a fit repeat exactly. Finally the best capsule is grown about
-// its centre until it encloses every vertex (§3.3: the volume, not the mesh, is the
-// body's shape for the cloth).
+// The search is geneticSearch (sim/fitting/GeneticSearch.h) over the capsule's 12
+// parameters: a population of identical capsules starts from one default capsule set on
+// the part (startingCapsule); the shares of the population rounded down to counts (at
+// least 4 members and one parent); a mutation moves its parameter by a normal step of
+// its scale, within limits set by the part's size. The cost of a member is the mean over
+// the vertices of their squared distance to its surface, a vertex outside weighing
+// `outsideWeight` times one inside (draping is decided by convexities: a capsule should
+// enclose the part). A seeded generator makes a fit repeat exactly. Finally the best
+// capsule is grown about its centre until it encloses every vertex (§3.3: the volume,
+// not the mesh, is the body's shape for the cloth).
 //
 // The cost uses a cheap distance: the unit-capsule distance of the vertex, scaled by
 // the capsule's dimensions in its direction. It is exact at the surface (zero there)
 // and close to the world distance near it, which is where a good fit puts the vertices.
 
 #include "sim/collision/Capsule.h"
+#include "sim/fitting/GeneticSearch.h"
 
-#include <cstdint>
 #include <vector>
 
 namespace figment {
 
-struct CapsuleFitOptions {
-  int population = 60;
-  int generations = 400;
-  double mutationShare = 0.3;
-  double crossoverShare = 0.3;
-  double parentShare = 0.3;
+struct CapsuleFitOptions : GeneticShares {
+  CapsuleFitOptions() {
+    population = 60;
+    generations = 400;
+  }
   double outsideWeight = 10.0;
-  uint32_t seed = 1;
   bool enclose = true;  // grow the result until every vertex is inside
   // The cost of a member: the cost above of the member grown about its centre until it
   // encloses every point (enclosedCapsuleCost: the bias to enclosure taken to its end,
@@ -51,6 +44,10 @@ struct CapsuleFit {
 
 // Throws std::invalid_argument when `points` has fewer than 4 points or no extent.
 CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options = {});
+
+// The default capsule set on the points, where a fit starts: centred on them, along
+// their principal axis (pointing up), as big as their extents, ends half rounded.
+CapsuleParameters startingCapsule(const std::vector<Vec3>& points);
 
 // Grows `capsule` about its centre by the smallest factor (to 0.1 %) that puts every
 // point inside; returns the factor (1: it already enclosed them).

@@ -1,6 +1,7 @@
 #include "sim/fitting/CollisionVolumeFitting.h"
 
 #include "sim/fitting/CapsuleFit.h"
+#include "sim/fitting/RadialPartFit.h"
 
 #include <algorithm>
 #include <cmath>
