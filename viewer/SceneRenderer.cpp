@@ -1,13 +1,11 @@
 #include "viewer/SceneRenderer.h"
 
-#include "nodes/render/GLStencilElement.h"
-#include "nodes/render/StencilRule.h"
+#include "nodes/render/StencilRuleElement.h"
 #include "io/AtomicFile.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoOffscreenRenderer.h>
-#include <Inventor/actions/SoSearchAction.h>
-#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/actions/SoGLRenderAction.h>
 
 namespace figment::viewer {
 
@@ -16,30 +14,19 @@ SceneRenderer::SceneRenderer(const ImageSize& size)
       renderer_(std::make_unique<SoOffscreenRenderer>(SbViewportRegion(short(size.width), short(size.height)))) {
   renderer_->setComponents(SoOffscreenRenderer::RGB);
   renderer_->setBackgroundColor(background());
-  clearStencilEachFrame(*renderer_->getGLRenderAction());
 }
 
 SceneRenderer::~SceneRenderer() = default;
 
 SbColor SceneRenderer::background() { return SbColor(0.8f, 0.8f, 0.8f); }
 
-namespace {
-// The view volume of the first camera under `root`, for this viewport; false if none.
-bool cameraView(SoNode* root, const SbViewportRegion& viewport, SbViewVolume& view) {
-  SoSearchAction search;
-  search.setType(SoCamera::getClassTypeId());
-  search.apply(root);
-  if (!search.getPath()) return false;
-  view = static_cast<SoCamera*>(search.getPath()->getTail())->getViewVolume(viewport.getViewportAspectRatio());
-  return true;
-}
-}  // namespace
-
 std::string SceneRenderer::render(SoNode* root, bool keepStencilFields) {
-  const SbViewportRegion& viewport = renderer_->getViewportRegion();
-  SbViewVolume view;
-  if (!keepStencilFields && cameraView(root, viewport, view)) applyStencilRule(root, viewport, view);
+  // The stencil rule runs inside the render (StencilSeparator, ClothingLayer); it is
+  // only switched off here.
+  SoGLRenderAction& action = *renderer_->getGLRenderAction();
+  if (keepStencilFields) figment::keepStencilFields(action, true);
   rendered_ = renderer_->render(root) == TRUE;
+  if (keepStencilFields) figment::keepStencilFields(action, false);
   return rendered_ ? "" : "could not render: no off-screen OpenGL context";
 }
 

@@ -22,9 +22,11 @@ class SceneRenderer {
   static SbColor background();
 
   // Renders `root` (holding its camera and lights, see stageScene) through the OSMesa
-  // context initHeadless() registered. Unless `keepStencilFields`, first sets which
+  // context initHeadless() registered. The stencil rule decides, in the render, which
   // StencilSeparators write the stencil and which ClothingLayers are masked for the
-  // root's camera (figment::applyStencilRule). Returns "" on success, else the error.
+  // root's camera; `keepStencilFields` switches it off for this render, so their own
+  // writeStencil and masked values decide (figment::keepStencilFields). Returns "" on
+  // success, else the error.
   std::string render(SoNode* root, bool keepStencilFields = false);
   // The last image: RGB, 3 bytes per pixel, bottom row first (OpenGL's order).
   const unsigned char* pixels() const;

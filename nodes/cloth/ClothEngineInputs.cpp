@@ -4,6 +4,7 @@
 #include "nodes/cloth/FieldValues.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
+#include "nodes/CoordIndexFaces.h"
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/core/ParameterChecks.h"
@@ -35,25 +36,23 @@ TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coo
     mesh.vertices.emplace_back(p[0], p[1], p[2]);
   }
 
-  // One face at a time: [first, end) holds its corners, end is a -1 or the last index.
+  // One face at a time, its corners checked before the index that ends it (only -1
+  // may), then its corner count, so the first error along the list is the one reported.
   const int numIndices = coordIndex.getNum();
-  int first = 0;
-  for (int i = 0; i <= numIndices; ++i) {
-    const bool endOfFace = i == numIndices || coordIndex[i] == -1;
-    if (!endOfFace) {
-      const int v = coordIndex[i];
-      if (v < 0 || v >= numPoints)
-        throw std::invalid_argument(at(i, v) + " is not a vertex: restPoints has " +
-                                    std::to_string(numPoints) + " points");
-      continue;
-    }
-    const int corners = i - first;
-    if (corners > 0 && corners < 3)
-      throw std::invalid_argument("coordIndex: the face at [" + std::to_string(first) + "] has " +
-                                  std::to_string(corners) + " corners, fewer than 3");
-    for (int k = first + 1; k + 1 < i; ++k)
-      mesh.triangles.push_back({coordIndex[first], coordIndex[k], coordIndex[k + 1]});
-    first = i + 1;
+  const int32_t* index = coordIndex.getValues(0);
+  auto notAVertex = [&](int i) {
+    return std::invalid_argument(at(i, index[i]) + " is not a vertex: restPoints has " + std::to_string(numPoints) +
+                                 " points");
+  };
+  for (const CoordIndexFace& face : coordIndexFaces(index, numIndices)) {
+    for (int i = face.first; i < face.end; ++i)
+      if (index[i] >= numPoints) throw notAVertex(i);
+    if (face.end < numIndices && index[face.end] != -1) throw notAVertex(face.end);
+    if (face.corners() > 0 && face.corners() < 3)
+      throw std::invalid_argument("coordIndex: the face at [" + std::to_string(face.first) + "] has " +
+                                  std::to_string(face.corners()) + " corners, fewer than 3");
+    for (int k = face.first + 1; k + 1 < face.end; ++k)
+      mesh.triangles.push_back({index[face.first], index[k], index[k + 1]});
   }
   if (mesh.triangles.empty()) throw std::invalid_argument("coordIndex has no faces");
   return mesh;

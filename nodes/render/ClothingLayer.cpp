@@ -1,7 +1,10 @@
 #include "nodes/render/ClothingLayer.h"
 
+#include "nodes/CoordIndexFaces.h"
 #include "nodes/render/FacetOrder.h"
 #include "nodes/render/GLStencilElement.h"
+#include "nodes/render/StencilRule.h"
+#include "nodes/render/StencilRuleElement.h"
 
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -25,12 +28,14 @@ SO_NODE_SOURCE(ClothingLayer);
 void ClothingLayer::initClass() {
   if (classTypeId != SoType::badType()) return;
   GLStencilElement::initClass();
+  StencilRuleElement::initClass();
   SO_NODE_INIT_CLASS(ClothingLayer, SoIndexedFaceSet, "IndexedFaceSet");
 }
 
 ClothingLayer::ClothingLayer() {
   SO_NODE_CONSTRUCTOR(ClothingLayer);
   SO_NODE_ADD_FIELD(masked, (FALSE));
+  SO_NODE_ADD_FIELD(stencilRule, (TRUE));
 }
 
 ClothingLayer::~ClothingLayer() = default;
@@ -55,16 +60,13 @@ figment::ViewPoint viewPoint(SoState* state) {
 // them for the facets seen from behind.
 std::vector<SbVec3f> vertexNormals(const SbVec3f* points, int count, const int32_t* index, int indexCount) {
   std::vector<SbVec3f> normals(count, SbVec3f(0, 0, 0));
-  int start = 0;
-  while (start < indexCount) {
-    int end = start;
-    bool valid = true;
-    while (end < indexCount && index[end] >= 0) valid &= index[end] < count, ++end;
-    for (int k = start + 1; valid && k + 1 < end; ++k) {
+  for (const figment::CoordIndexFace& face : figment::coordIndexFaces(index, indexCount)) {
+    if (!figment::cornersBelow(face, index, count)) continue;
+    const int start = face.first;
+    for (int k = start + 1; k + 1 < face.end; ++k) {
       const SbVec3f n = (points[index[k]] - points[index[start]]).cross(points[index[k + 1]] - points[index[start]]);
       for (int corner : {index[start], index[k], index[k + 1]}) normals[corner] += n;
     }
-    start = end + 1;
   }
   for (SbVec3f& n : normals)
     if (n.sqrLength() > 0.0f) n.normalize();
@@ -92,53 +94,75 @@ struct ClothingLayer::DrawCache {
     return built && view.toCamera == toCamera && view.eye == eye && view.direction == direction &&
            view.perspective == perspective && view.clockwise == clockwise;
   }
+
+  // Takes the coordinates, smooth normals and facets, when they changed.
+  void takeGeometry(const SoCoordinateElement* coordinates, const ClothingLayer& layer) {
+    if (coordinates->getNodeId() == coordinatesId && layer.getNodeId() == layerId) return;
+    const int32_t* index = layer.coordIndex.getValues(0);
+    const int indexCount = layer.coordIndex.getNum();
+    const int pointCount = coordinates->getNum();
+    points.resize(pointCount);
+    for (int i = 0; i < pointCount; ++i) points[i] = coordinates->get3(i);
+    smooth = vertexNormals(points.data(), pointCount, index, indexCount);
+    facets = figment::describeFacets(points.data(), pointCount, index, indexCount);
+    coordinatesId = coordinates->getNodeId();
+    layerId = layer.getNodeId();
+    built = false;
+  }
+
+  // Classifies each facet as facing the viewer or away and sorts them far to near
+  // (figment::orderFacets), then lays out the arrays: away, then facing.
+  void arrangeForView(const figment::ViewPoint& view, const int32_t* index) {
+    if (sameView(view)) return;
+    positions.clear(), normals.clear();
+    const std::vector<figment::OrderedFacet> ordered = figment::orderFacets(facets, view);
+    for (bool facing : {false, true}) {
+      const size_t before = positions.size();
+      for (const figment::OrderedFacet& facet : ordered)
+        if (facet.facesViewer == facing) addTriangles(facet, index);
+      (facing ? facingCorners : awayCorners) = static_cast<int>((positions.size() - before) / 3);
+    }
+    toCamera = view.toCamera, eye = view.eye, direction = view.direction;
+    perspective = view.perspective, clockwise = view.clockwise;
+    built = true;
+  }
+
+  // The facet's fan of triangles, corner by corner.
+  void addTriangles(const figment::OrderedFacet& facet, const int32_t* index) {
+    for (int k = 1; k + 1 < facet.corners; ++k)
+      for (int corner : {index[facet.firstIndex], index[facet.firstIndex + k], index[facet.firstIndex + k + 1]}) {
+        positions.insert(positions.end(), points[corner].getValue(), points[corner].getValue() + 3);
+        normals.insert(normals.end(), smooth[corner].getValue(), smooth[corner].getValue() + 3);
+      }
+  }
 };
+
+bool ClothingLayer::maskedNow(SoGLRenderAction* action) {
+  if (!stencilRule.getValue() || !StencilRuleElement::get(action->getState())) return masked.getValue();
+  return figment::decideStencil(action).masks(this);
+}
 
 void ClothingLayer::GLRender(SoGLRenderAction* action) {
   if (!shouldGLRender(action)) return;
   SoState* state = action->getState();
   // The order depends on the view: no render cache may keep it.
   SoCacheElement::invalidate(state);
+  GLStencilElement::clearEachFrame(action);
+  const bool maskedByParts = maskedNow(action);
   state->push();
   if (auto* properties = static_cast<SoVertexProperty*>(vertexProperty.getValue())) properties->GLRender(action);
-  const SoCoordinateElement* coordinates = SoCoordinateElement::getInstance(state);
-  const figment::ViewPoint view = viewPoint(state);
   if (!cache_) cache_ = std::make_unique<DrawCache>();
-  DrawCache& c = *cache_;
-  const int32_t* index = coordIndex.getValues(0);
-  const int indexCount = coordIndex.getNum();
-  if (coordinates->getNodeId() != c.coordinatesId || getNodeId() != c.layerId) {
-    const int pointCount = coordinates->getNum();
-    c.points.resize(pointCount);
-    for (int i = 0; i < pointCount; ++i) c.points[i] = coordinates->get3(i);
-    c.smooth = vertexNormals(c.points.data(), pointCount, index, indexCount);
-    c.facets = figment::describeFacets(c.points.data(), pointCount, index, indexCount);
-    c.coordinatesId = coordinates->getNodeId();
-    c.layerId = getNodeId();
-    c.built = false;
-  }
-  if (!c.sameView(view)) {
-    c.positions.clear(), c.normals.clear();
-    const std::vector<figment::OrderedFacet> facets = figment::orderFacets(c.facets, view);
-    for (bool facing : {false, true}) {
-      const size_t before = c.positions.size();
-      for (const figment::OrderedFacet& facet : facets) {
-        if (facet.facesViewer != facing) continue;
-        for (int k = 1; k + 1 < facet.corners; ++k)
-          for (int corner : {index[facet.firstIndex], index[facet.firstIndex + k], index[facet.firstIndex + k + 1]}) {
-            c.positions.insert(c.positions.end(), c.points[corner].getValue(), c.points[corner].getValue() + 3);
-            c.normals.insert(c.normals.end(), c.smooth[corner].getValue(), c.smooth[corner].getValue() + 3);
-          }
-      }
-      (facing ? c.facingCorners : c.awayCorners) = static_cast<int>((c.positions.size() - before) / 3);
-    }
-    c.toCamera = view.toCamera, c.eye = view.eye, c.direction = view.direction;
-    c.perspective = view.perspective, c.clockwise = view.clockwise;
-    c.built = true;
-  }
-
+  cache_->takeGeometry(SoCoordinateElement::getInstance(state), *this);
+  cache_->arrangeForView(viewPoint(state), coordIndex.getValues(0));
   SoMaterialBundle material(action);
   material.sendFirst();
+  drawArranged(state, maskedByParts);
+  state->pop();
+}
+
+// Three draws, each one state change, not one per change of facing along the depth
+// order (hundreds on a draped garment, and each costs a pipeline flush).
+void ClothingLayer::drawArranged(SoState* state, bool maskedByParts) {
   SbBool depthTest, depthWrite;
   SoDepthBufferElement::DepthWriteFunction usualTest;
   SbVec2f depthRange;
@@ -147,37 +171,27 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   glEnableClientState(GL_NORMAL_ARRAY);
   glVertexPointer(3, GL_FLOAT, 0, cache_->positions.data());
   glNormalPointer(GL_FLOAT, 0, cache_->normals.data());
-  auto depth = [&](SoDepthBufferElement::DepthWriteFunction function) {
-    SoDepthBufferElement::set(state, TRUE, TRUE, function, depthRange);
+  auto draw = [&](SoDepthBufferElement::DepthWriteFunction test, GLStencilElement::Mode stencil, int first,
+                  int count) {
+    SoDepthBufferElement::set(state, TRUE, TRUE, test, depthRange);
+    GLStencilElement::set(state, stencil);
+    glDrawArrays(GL_TRIANGLES, first, count);
   };
   const int away = cache_->awayCorners, facing = cache_->facingCorners;
-  // Three draws, each one state change, not one per change of facing along the depth
-  // order (hundreds on a draped garment, and each costs a pipeline flush):
-  // 1. facets facing away, with the usual depth test, marking the layer bit where they
-  //    show;
-  if (away > 0) {
-    depth(usualTest);
-    GLStencilElement::set(state, GLStencilElement::MARK_LAYER);
-    glDrawArrays(GL_TRIANGLES, 0, away);
-  }
-  // 2. facets facing the viewer, far to near, over everything drawn before them (depth
-  //    test ALWAYS, depth written), except where a facet of this layer facing away
-  //    shows (and, when masked, where a body part marked the stencil);
-  if (facing > 0) {
-    depth(SoDepthBufferElement::ALWAYS);
-    GLStencilElement::set(state, masked.getValue() ? GLStencilElement::OUTSIDE_LAYER_AND_PARTS
-                                                   : GLStencilElement::OUTSIDE_LAYER);
-    glDrawArrays(GL_TRIANGLES, away, facing);
-  }
-  // 3. there, the layer's own facets meet: the depth test decides between them, as it
-  //    would have in a single far-to-near pass for cloth that does not cross itself.
-  if (facing > 0 && away > 0) {
-    depth(usualTest);
-    GLStencilElement::set(state, GLStencilElement::INSIDE_LAYER);
-    glDrawArrays(GL_TRIANGLES, away, facing);
-  }
+  // 1. Depth-tested: facets facing away, with the usual depth test, marking the layer
+  //    bit where they show.
+  if (away > 0) draw(usualTest, GLStencilElement::MARK_LAYER, 0, away);
+  // 2. Over: facets facing the viewer, far to near, over everything drawn before them
+  //    (depth test ALWAYS, depth written), except where a facet of this layer facing
+  //    away shows (and, when masked, where a body part marked the stencil).
+  if (facing > 0)
+    draw(SoDepthBufferElement::ALWAYS,
+         maskedByParts ? GLStencilElement::OUTSIDE_LAYER_AND_PARTS : GLStencilElement::OUTSIDE_LAYER, away, facing);
+  // 3. Where the layer meets itself: there the depth test decides between its own
+  //    facets, as it would have in a single far-to-near pass for cloth that does not
+  //    cross itself.
+  if (facing > 0 && away > 0) draw(usualTest, GLStencilElement::INSIDE_LAYER, away, facing);
   if (away > 0) GLStencilElement::clearLayerBit();
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisableClientState(GL_VERTEX_ARRAY);
-  state->pop();
 }

@@ -26,8 +26,13 @@
   garment, seen through a neckline or under a hem) use the usual depth test. All facets
   are drawn far to near by their centres, so folds of the same mesh cover each other
   rightly. The front is the counter-clockwise side unless a ShapeHints says CLOCKWISE.
-  When `masked` is TRUE, the facets drawn over are kept off the pixels that a
-  StencilSeparator marked (paper §5: a forearm in front of a shirt).
+  When the layer is masked, the facets drawn over are kept off the pixels that a
+  StencilSeparator marked (paper §5: a forearm in front of a shirt). With `stencilRule`
+  TRUE (the default) the stencil rule (figment::decideStencil, nodes/render/StencilRule.h)
+  decides at each render, for the view being rendered: the layer is masked when a
+  StencilSeparator lies in front of it. The answer is render state, not a field. With
+  `stencilRule` FALSE, or in a render that keeps the scene's fields
+  (figment::keepStencilFields, figment-view --keep-stencil-fields), `masked` decides.
 
   What the drawing uses: the coordinates (Coordinate3 or vertexProperty), coordIndex
   (polygons fan-triangulated), the first material (overall binding) and smooth normals
@@ -51,6 +56,7 @@
         normalIndex -1
         textureCoordIndex -1
         masked FALSE
+        stencilRule TRUE
     }
   \endcode
 */
@@ -63,8 +69,11 @@ class ClothingLayer : public SoIndexedFaceSet {
   ClothingLayer();
 
   // Whether the facets that face the viewer are masked by the stencil buffer, so body
-  // parts drawn into it by a StencilSeparator stay in front (paper §5). Default FALSE.
+  // parts drawn into it by a StencilSeparator stay in front (paper §5), when
+  // `stencilRule` is FALSE or the render keeps the scene's fields. Default FALSE.
   SoSFBool masked;
+  // Whether the stencil rule decides, per view, in place of `masked`. Default TRUE.
+  SoSFBool stencilRule;
 
   void GLRender(SoGLRenderAction* action) override;
 
@@ -76,4 +85,9 @@ class ClothingLayer : public SoIndexedFaceSet {
   // geometry changes (a still camera re-draws without sorting again).
   struct DrawCache;
   std::unique_ptr<DrawCache> cache_;
+
+  // Whether this render masks the layer: the rule's answer or `masked`.
+  bool maskedNow(SoGLRenderAction* action);
+  // The three draws of the arranged facets (see the class comment).
+  void drawArranged(SoState* state, bool maskedByParts);
 };

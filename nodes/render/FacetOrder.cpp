@@ -1,5 +1,7 @@
 #include "nodes/render/FacetOrder.h"
 
+#include "nodes/CoordIndexFaces.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -8,24 +10,18 @@ namespace figment {
 std::vector<FacetGeometry> describeFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
                                           int indexCount) {
   std::vector<FacetGeometry> facets;
-  int start = 0;
-  while (start < indexCount) {
-    int end = start;
-    bool valid = true;
-    while (end < indexCount && coordIndex[end] >= 0) valid &= coordIndex[end] < pointCount, ++end;
-    const int corners = end - start;
-    if (valid && corners >= 3) {
-      // Newell's normal: right for any planar polygon and robust for nearly planar ones.
-      SbVec3f normal(0, 0, 0), centre(0, 0, 0);
-      for (int k = 0; k < corners; ++k) {
-        const SbVec3f& a = points[coordIndex[start + k]];
-        const SbVec3f& b = points[coordIndex[start + (k + 1) % corners]];
-        normal += SbVec3f((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]), (a[0] - b[0]) * (a[1] + b[1]));
-        centre += a;
-      }
-      facets.push_back({start, corners, centre / static_cast<float>(corners), normal});
+  for (const CoordIndexFace& face : coordIndexFaces(coordIndex, indexCount)) {
+    const int corners = face.corners();
+    if (corners < 3 || !cornersBelow(face, coordIndex, pointCount)) continue;
+    // Newell's normal: right for any planar polygon and robust for nearly planar ones.
+    SbVec3f normal(0, 0, 0), centre(0, 0, 0);
+    for (int k = 0; k < corners; ++k) {
+      const SbVec3f& a = points[coordIndex[face.first + k]];
+      const SbVec3f& b = points[coordIndex[face.first + (k + 1) % corners]];
+      normal += SbVec3f((a[1] - b[1]) * (a[2] + b[2]), (a[2] - b[2]) * (a[0] + b[0]), (a[0] - b[0]) * (a[1] + b[1]));
+      centre += a;
     }
-    start = end + 1;
+    facets.push_back({face.first, corners, centre / static_cast<float>(corners), normal});
   }
   return facets;
 }

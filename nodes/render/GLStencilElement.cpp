@@ -18,6 +18,7 @@ GLStencilElement::~GLStencilElement() = default;
 void GLStencilElement::init(SoState* state) {
   inherited::init(state);
   mode_ = OFF;
+  clearedEachFrame_ = false;
 }
 
 void GLStencilElement::push(SoState* state) {
@@ -93,7 +94,6 @@ void GLStencilElement::clearLayerBit() {
   glStencilMask(static_cast<GLuint>(written));
 }
 
-namespace figment {
 namespace {
 void clearStencil(void*, SoGLRenderAction*) {
   glClearStencil(0);
@@ -101,5 +101,12 @@ void clearStencil(void*, SoGLRenderAction*) {
 }
 }  // namespace
 
-void clearStencilEachFrame(SoGLRenderAction& action) { action.addPreRenderCallback(clearStencil, nullptr); }
-}  // namespace figment
+void GLStencilElement::clearEachFrame(SoGLRenderAction* action) {
+  // The flag lives in the bottom element, which lasts as long as the action's state.
+  const auto* element = static_cast<const GLStencilElement*>(action->getState()->getConstElement(classStackIndex));
+  while (element->getNextInStack()) element = static_cast<const GLStencilElement*>(element->getNextInStack());
+  if (element->clearedEachFrame_) return;
+  const_cast<GLStencilElement*>(element)->clearedEachFrame_ = true;
+  clearStencil(nullptr, action);  // this frame: nothing has used the stencil yet
+  action->addPreRenderCallback(clearStencil, nullptr);
+}

@@ -16,8 +16,9 @@ class SoGLRenderAction;
   - the layer bit (2): set where a ClothingLayer's facets facing away from the viewer
     are visible, while that layer draws, and cleared after it (see ClothingLayer).
   Setting the element issues the GL calls; popping it restores the state below. Enabled
-  for SoGLRenderAction only. The stencil must be cleared at the start of each frame:
-  figment::clearStencilEachFrame() adds that to a render action.
+  for SoGLRenderAction only. The stencil is cleared at the start of each frame (a
+  pre-render callback that clearEachFrame() adds to the render action the first time a
+  StencilSeparator or ClothingLayer renders with it), so no application has to.
 */
 class GLStencilElement : public SoElement {
   typedef SoElement inherited;
@@ -39,6 +40,12 @@ class GLStencilElement : public SoElement {
   static Mode get(SoState* state);
   // Clears the layer bit everywhere (the body-part bit stays).
   static void clearLayerBit();
+  // Makes sure `action` clears the stencil before every frame (SoOffscreenRenderer and
+  // viewers clear colour and depth only): the first call for an action's state clears
+  // it now, before anything used it this frame, and adds a pre-render callback for the
+  // frames after. Later calls do nothing; a new state (Coin makes one when the set of
+  // enabled elements changes) adds the callback again, which only clears twice.
+  static void clearEachFrame(SoGLRenderAction* action);
 
   void init(SoState* state) override;
   void push(SoState* state) override;
@@ -52,10 +59,5 @@ class GLStencilElement : public SoElement {
  private:
   void updateGL() const;
   Mode mode_ = OFF;
+  bool clearedEachFrame_ = false;  // bottom element only: the callback is in place
 };
-
-namespace figment {
-// Adds a pre-render callback to `action` that clears the stencil buffer before each
-// frame (SoOffscreenRenderer and viewers clear colour and depth only).
-void clearStencilEachFrame(SoGLRenderAction& action);
-}  // namespace figment

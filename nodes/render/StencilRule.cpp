@@ -1,16 +1,21 @@
 #include "nodes/render/StencilRule.h"
 
-#include "nodes/render/ClothingLayer.h"
 #include "nodes/SceneSearch.h"
+#include "nodes/render/ClothingLayer.h"
 #include "nodes/render/StencilSeparator.h"
 
 #include <Inventor/SbBox2f.h>
-#include <Inventor/SoPath.h>
+#include <Inventor/SoFullPath.h>
+#include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/elements/SoViewVolumeElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
+#include <Inventor/lists/SoPathList.h>
+#include <Inventor/misc/SoState.h>
+#include <Inventor/nodes/SoFile.h>
 
 #include <algorithm>
 #include <limits>
-#include <vector>
 
 namespace figment {
 
@@ -47,38 +52,104 @@ Extent extentOf(SoPath* path, const SbViewportRegion& viewport, const SbViewVolu
   return extent;
 }
 
+// In front: the part's centre lies in the front half of the garment's depth, nearer
+// than halfway from the garment's centre to its nearest point. A part the garment
+// encloses (a torso) sits about its centre; one outside and nearer (a forearm across a
+// shirt, the near arm from the side) is well in front of it.
+bool inFront(const Extent& part, const Extent& garment) {
+  if (part.empty || garment.empty || !part.screen.intersect(garment.screen)) return false;
+  return part.centre < garment.centre - 0.5f * (garment.centre - garment.nearest);
+}
+
+// Paths to every node of `type` under `root`, inside File nodes too: the render draws
+// a File's children, which Coin's search skips unless told (SoFile::setSearchOK).
+SoPathList findDrawn(SoNode* root, SoType type) {
+  const SbBool searchedFiles = SoFile::getSearchOK();
+  SoFile::setSearchOK(TRUE);
+  SoPathList paths = findAll(root, type);
+  SoFile::setSearchOK(searchedFiles);
+  return paths;
+}
+
+// The node a path leads to, when it passes a File's (hidden) children too.
+const SoNode* tailOf(SoPath* path) { return static_cast<SoFullPath*>(path)->getTail(); }
+
+void addOnce(std::vector<const SoNode*>& nodes, const SoNode* node) {
+  if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
+}
+
+// The node a render was applied to: its scene's root.
+SoNode* appliedRoot(SoAction* action) {
+  switch (action->getWhatAppliedTo()) {
+    case SoAction::NODE:
+      return action->getNodeAppliedTo();
+    case SoAction::PATH:
+      return action->getPathAppliedTo()->getHead();
+    case SoAction::PATH_LIST:
+      return action->getPathListAppliedTo()->getLength() > 0 ? (*action->getPathListAppliedTo())[0]->getHead()
+                                                              : nullptr;
+  }
+  return nullptr;
+}
+
+// What a decision was made for.
+struct DecisionKey {
+  const SoNode* root = nullptr;
+  SbUniqueId rootId = 0;
+  SbMatrix affine, projection;
+  SbViewportRegion viewport;
+
+  bool operator==(const DecisionKey& other) const {
+    return root == other.root && rootId == other.rootId && affine == other.affine &&
+           projection == other.projection && viewport == other.viewport;
+  }
+};
+
 }  // namespace
 
-StencilSettings applyStencilRule(SoNode* root, const SbViewportRegion& viewport, const SbViewVolume& view) {
-  StencilSettings settings;
-  const SoPathList parts = findAll(root, StencilSeparator::getClassTypeId());
-  const SoPathList layers = findAll(root, ClothingLayer::getClassTypeId());
+bool StencilDecision::writes(const SoNode* separator) const {
+  return std::find(writers.begin(), writers.end(), separator) != writers.end();
+}
+
+bool StencilDecision::masks(const SoNode* layer) const {
+  return std::find(masked.begin(), masked.end(), layer) != masked.end();
+}
+
+StencilDecision decideStencil(SoNode* root, const SbViewportRegion& viewport, const SbViewVolume& view) {
+  StencilDecision decision;
+  const SoPathList parts = findDrawn(root, StencilSeparator::getClassTypeId());
+  const SoPathList layers = findDrawn(root, ClothingLayer::getClassTypeId());
   std::vector<Extent> layerExtents;
   for (int l = 0; l < layers.getLength(); ++l) layerExtents.push_back(extentOf(layers[l], viewport, view));
-  std::vector<bool> masked(layers.getLength(), false);
   for (int i = 0; i < parts.getLength(); ++i) {
-    SoPath* part = parts[i];
-    const Extent p = extentOf(part, viewport, view);
-    bool writes = false;
+    const Extent part = extentOf(parts[i], viewport, view);
     for (size_t l = 0; l < layerExtents.size(); ++l) {
-      const Extent& garment = layerExtents[l];
-      if (p.empty || garment.empty || !p.screen.intersect(garment.screen)) continue;
-      // In front: the part's centre lies in the front half of the garment's depth,
-      // nearer than halfway from the garment's centre to its nearest point. A part the
-      // garment encloses (a torso) sits about its centre; one outside and nearer (a
-      // forearm across a shirt, the near arm from the side) is well in front of it.
-      if (p.centre < garment.centre - 0.5f * (garment.centre - garment.nearest)) writes = true, masked[l] = true;
+      if (!inFront(part, layerExtents[l])) continue;
+      addOnce(decision.writers, tailOf(parts[i]));
+      addOnce(decision.masked, tailOf(layers[static_cast<int>(l)]));
     }
-    auto* separator = static_cast<StencilSeparator*>(part->getTail());
-    if (separator->writeStencil.getValue() != writes) separator->writeStencil.setValue(writes);
-    settings.writers += writes;
   }
-  for (int l = 0; l < layers.getLength(); ++l) {
-    auto* layer = static_cast<ClothingLayer*>(layers[l]->getTail());
-    if (layer->masked.getValue() != masked[l]) layer->masked.setValue(masked[l]);
-    settings.masked += masked[l];
+  return decision;
+}
+
+const StencilDecision& decideStencil(SoGLRenderAction* action) {
+  // One decision, for the last view and scene rendered: the usual case is one scene
+  // rendered again and again, and a change of either only costs a new decision.
+  static DecisionKey decidedFor;
+  static StencilDecision decision;
+  SoState* state = action->getState();
+  SoNode* root = appliedRoot(action);
+  const SbViewVolume& view = SoViewVolumeElement::get(state);
+  DecisionKey key;
+  key.root = root;
+  key.rootId = root ? root->getNodeId() : 0;
+  view.getMatrices(key.affine, key.projection);
+  key.viewport = SoViewportRegionElement::get(state);
+  if (!(key == decidedFor)) {
+    decision = root ? decideStencil(root, key.viewport, view) : StencilDecision{};
+    decidedFor = key;
   }
-  return settings;
+  return decision;
 }
 
 }  // namespace figment

@@ -3,6 +3,7 @@
 // flat colour.
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/render/DepthSortedGroup.h"
+#include "nodes/render/StencilRule.h"
 #include "nodes/render/StencilSeparator.h"
 #include "support/Pixels.h"
 #include "support/TempDir.h"
@@ -13,7 +14,9 @@
 #include "viewer/SceneStaging.h"
 
 #include <Inventor/SoPath.h>
+#include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -77,6 +80,16 @@ class View {
     return image;
   }
   SoSeparator* root() const { return root_; }
+  // What the stencil rule decides for this view's camera (as the render does).
+  figment::StencilDecision stencilRule() const {
+    SoSearchAction search;
+    search.setType(SoCamera::getClassTypeId());
+    search.apply(root_);
+    EXPECT_NE(search.getPath(), nullptr);
+    const SbViewportRegion viewport(short(kSize.width), short(kSize.height));
+    auto* camera = static_cast<SoCamera*>(search.getPath()->getTail());
+    return figment::decideStencil(root_, viewport, camera->getViewVolume(viewport.getViewportAspectRatio()));
+  }
 
  private:
   SoPath* find(const char* name) const {
@@ -153,19 +166,24 @@ TEST_F(HybridRendering, AForearmInFrontOfTheShirtKeepsItsPixels) {
   ASSERT_GT(expected, 1000);
   // Without the stencil (the fields as written: FALSE) the shirt paints over the forearm.
   EXPECT_LT(hybrid.render({}, true).count(figment::test::kGreen), expected / 2);
-  // The rule switches the forearm's stencil and the shirt's mask on for this camera.
+  // The rule switches the forearm's stencil and the shirt's mask on for this camera,
+  // in the render: the fields keep the values written in the scene.
   EXPECT_GE(hybrid.render().count(figment::test::kGreen), expected);
-  EXPECT_TRUE(hybrid.node<StencilSeparator>("Forearm")->writeStencil.getValue());
+  auto* forearm = hybrid.node<StencilSeparator>("Forearm");
+  ASSERT_NE(forearm, nullptr);
+  EXPECT_TRUE(hybrid.stencilRule().writes(forearm));
+  EXPECT_FALSE(forearm->writeStencil.getValue());
   auto* shirt = hybrid.node<SoGroup>("Shirt");
   ASSERT_NE(shirt, nullptr);
   auto* layer = dynamic_cast<ClothingLayer*>(shirt->getChild(shirt->getNumChildren() - 1));
   ASSERT_NE(layer, nullptr);
-  EXPECT_TRUE(layer->masked.getValue());
+  EXPECT_TRUE(hybrid.stencilRule().masks(layer));
+  EXPECT_FALSE(layer->masked.getValue());
   // From behind the forearm is behind the shirt: the rule switches both off, and the
   // forearm stays hidden as with the depth buffer.
   const View behind("forearm", 180.0), plainBehind("forearm-plain", 180.0);
   EXPECT_EQ(behind.render().count(figment::test::kGreen), plainBehind.render().count(figment::test::kGreen));
-  EXPECT_FALSE(behind.node<StencilSeparator>("Forearm")->writeStencil.getValue());
+  EXPECT_FALSE(behind.stencilRule().writes(behind.node<StencilSeparator>("Forearm")));
 }
 
 TEST_F(HybridRendering, DepthBufferOnlyDrawsAsThePlainScene) {
@@ -183,24 +201,27 @@ TEST_F(HybridRendering, DepthBufferOnlyDrawsAsThePlainScene) {
   }
 }
 
-TEST_F(HybridRendering, SeparatorsUndoTheDepthAndStencilState) {
-  // After a StencilSeparator that writes the stencil and a ClothingLayer drawn over
-  // everything, a later square behind the cloth is hidden (the depth test is back to
-  // LESS) and the layer after it is not masked by it (nothing outside the separator
-  // marked the stencil).
-  figment::test::TempDir dir;
-  const std::string path = dir.file("undo.iv", R"(#Inventor V2.1 ascii
+// After a StencilSeparator that writes the stencil and a ClothingLayer drawn over
+// everything, a later square behind the cloth is hidden (the depth test is back to
+// LESS) and the layer after it is not masked by it (nothing outside the separator
+// marked the stencil).
+static void expectSeparatorsUndoTheState(bool ruleOffInScene) {
+  std::string text = R"(#Inventor V2.1 ascii
 Separator {
   LightModel { model BASE_COLOR }
-  StencilSeparator { writeStencil TRUE  BaseColor { rgb 0 1 0 }
+  StencilSeparator { writeStencil TRUE STENCIL_RULE BaseColor { rgb 0 1 0 }
     Coordinate3 { point [ -1 -1 0.5, -0.6 -1 0.5, -0.6 1 0.5, -1 1 0.5 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }
   Separator { BaseColor { rgb 0 0 1 }
-    Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] } ClothingLayer { coordIndex [ 0 1 2 3 -1 ] masked TRUE } }
+    Coordinate3 { point [ -1 -1 0, 1 -1 0, 1 1 0, -1 1 0 ] } ClothingLayer { coordIndex [ 0 1 2 3 -1 ] masked TRUE STENCIL_RULE } }
   DEF Behind Separator { BaseColor { rgb 1 0 0 }
     Coordinate3 { point [ 0.2 -0.5 -0.5, 0.8 -0.5 -0.5, 0.8 0.5 -0.5, 0.2 0.5 -0.5 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }
   Separator { BaseColor { rgb 1 1 0 }
     Coordinate3 { point [ 0.2 -1 0.2, 1 -1 0.2, 1 -0.6 0.2, 0.2 -0.6 0.2 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }
-})");
+})";
+  const std::string rule = ruleOffInScene ? " stencilRule FALSE " : " ";
+  for (size_t at; (at = text.find(" STENCIL_RULE ")) != std::string::npos;) text.replace(at, 14, rule);
+  figment::test::TempDir dir;
+  const std::string path = dir.file("undo.iv", text);
   std::string error;
   SoSeparator* scene = readSceneFile(path, error);
   ASSERT_NE(scene, nullptr) << error;
@@ -208,7 +229,7 @@ Separator {
   SoSeparator* root = stageScene(scene, kSize, ViewDirection{0.0, 0.0});
   root->ref();
   SceneRenderer renderer(kSize);
-  ASSERT_EQ(renderer.render(root, true), "");
+  ASSERT_EQ(renderer.render(root, !ruleOffInScene), "");
   Image image{kSize.width, kSize.height, {}};
   image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kSize.width * kSize.height);
   EXPECT_GT(image.count(figment::test::kGreen), 500) << "the marked part stays in front of the masked cloth";
@@ -217,4 +238,13 @@ Separator {
   EXPECT_GT(image.count(figment::test::kBlue), 1000);
   root->unref();
   scene->unref();
+}
+
+TEST_F(HybridRendering, SeparatorsUndoTheDepthAndStencilState) {
+  // The scene sets both fields by hand: rendered keeping the scene's fields, and with
+  // the rule switched off in the scene itself (stencilRule FALSE), the same way.
+  for (const bool inScene : {false, true}) {
+    SCOPED_TRACE(inScene ? "stencilRule FALSE in the scene" : "keepStencilFields");
+    expectSeparatorsUndoTheState(inScene);
+  }
 }

@@ -45,6 +45,7 @@ TEST_F(ClothingLayerTest, IsAnIndexedFaceSetWithAMaskedField) {
   layer->ref();
   EXPECT_TRUE(layer->isOfType(SoIndexedFaceSet::getClassTypeId()));
   EXPECT_FALSE(layer->masked.getValue());
+  EXPECT_TRUE(layer->stencilRule.getValue()) << "default TRUE: the rule decides";
   EXPECT_EQ(SoType::fromName("ClothingLayer"), ClothingLayer::getClassTypeId());
   layer->unref();
 }

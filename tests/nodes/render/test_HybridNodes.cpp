@@ -90,5 +90,6 @@ TEST(StencilSeparatorTest, WritesAndReadsWriteStencil) {
   auto* fresh = new StencilSeparator;
   fresh->ref();
   EXPECT_FALSE(fresh->writeStencil.getValue()) << "default FALSE";
+  EXPECT_TRUE(fresh->stencilRule.getValue()) << "default TRUE: the rule decides";
   fresh->unref();
 }

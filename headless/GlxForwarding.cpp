@@ -8,8 +8,9 @@
 // -rdynamic, makes Coin's look-up find OSMesa's real functions instead.
 //
 // This file is compiled into every executable that renders (figment-view, the viewer
-// tests) through figment_viewer's INTERFACE sources: an archive member nobody calls
-// would otherwise be left out by the linker, silently bringing the bug back.
+// tests, the plain-Coin rendering test) through figment_headless's INTERFACE sources:
+// an archive member nobody calls would otherwise be left out by the linker, silently
+// bringing the bug back.
 
 #include <GL/osmesa.h>
 

@@ -1,0 +1,23 @@
+#include "nodes/CoordIndexFaces.h"
+
+namespace figment {
+
+std::vector<CoordIndexFace> coordIndexFaces(const int32_t* coordIndex, int count) {
+  std::vector<CoordIndexFace> faces;
+  int first = 0;
+  while (first < count) {
+    int end = first;
+    while (end < count && coordIndex[end] >= 0) ++end;
+    faces.push_back({first, end});
+    first = end + 1;
+  }
+  return faces;
+}
+
+bool cornersBelow(const CoordIndexFace& face, const int32_t* coordIndex, int pointCount) {
+  for (int k = face.first; k < face.end; ++k)
+    if (coordIndex[k] >= pointCount) return false;
+  return true;
+}
+
+}  // namespace figment
