@@ -1,15 +1,14 @@
 #include "DrapeStudy.h"
 
 #include "Statistics.h"
+#include "io/AtomicFile.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/Init.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/SceneSearch.h"
+#include "viewer/SceneSession.h"
 
-#include <Inventor/SoDB.h>
-#include <Inventor/SoInput.h>
-#include <Inventor/SbViewportRegion.h>
-#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoFile.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -50,81 +49,89 @@ SoNode* bodyFor(const std::string& method, SoNode* root, std::string& error) {
   return other;
 }
 
+// One CSV row and one line on stdout for a drape.
+void report(const std::string& method, int run, const viewer::EngineDrape& drape, std::ostream& csv) {
+  const ClothEngine::RunStats& stats = drape.run;
+  const double perSecond = stats.iterations / stats.wallSeconds;
+  const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
+  csv << method << ',' << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
+      << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0) << ',' << perSecond
+      << '\n';
+  std::cout << method << " run " << run << ": " << drape.label << " " << stats.triangles << " triangles, "
+            << stats.iterations << " iterations, " << stats.simulatedSeconds << " s simulated in "
+            << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest") << "\n";
+}
+
 // Runs every engine options.repeat times against the body they have now; one CSV row
 // per run and engine. On an engine's error sets `error`.
-void timeDrapes(const std::string& method, const DrapeStudyOptions& options, SoNode* root,
-                const std::vector<ClothEngine*>& engines, std::ofstream& csv, std::string& error) {
+void timeDrapes(const std::string& method, const DrapeStudyOptions& options, viewer::SceneSession& session,
+                std::ostream& csv, std::string& error) {
   std::vector<double> wall, rate;
   for (int run = 0; run < options.repeat; ++run) {
-    for (ClothEngine* engine : engines) engine->restPoints.touch();  // inputs changed: simulate again
-    SoGetBoundingBoxAction bbox(SbViewportRegion(640, 480));
-    bbox.apply(root);  // reading the garment's coordinates evaluates its engine
-    for (ClothEngine* engine : engines) {
-      if (!engine->lastError().empty()) {
-        error = engine->lastError();
+    for (ClothEngine* engine : session.engines()) engine->restPoints.touch();  // inputs changed: simulate again
+    for (const viewer::EngineDrape& drape : session.drape()) {
+      if (!drape.error.empty()) {
+        error = drape.error;
         return;
       }
-      const ClothEngine::RunStats& stats = engine->lastRun();
-      const double perSecond = stats.iterations / stats.wallSeconds;
-      const std::string garment = engine->getName().getLength() ? engine->getName().getString() : "unnamed";
-      csv << method << ',' << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
-          << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0) << ',' << perSecond
-          << '\n';
-      wall.push_back(stats.wallSeconds);
-      rate.push_back(perSecond);
-      std::cout << method << " run " << run << ": " << engine->label() << " " << stats.triangles << " triangles, "
-                << stats.iterations << " iterations, " << stats.simulatedSeconds << " s simulated in "
-                << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest") << "\n";
+      report(method, run, drape, csv);
+      wall.push_back(drape.run.wallSeconds);
+      rate.push_back(drape.run.iterations / drape.run.wallSeconds);
     }
   }
   std::cout << method << ": median wall " << median(wall) << " s, median " << median(rate) << " iterations/s\n";
+}
+
+// Times the engines against each body of options.bodies in turn; "" or the error.
+std::string timeEveryBody(const DrapeStudyOptions& options, viewer::SceneSession& session, std::ostream& csv) {
+  csv << "body,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s\n";
+  const std::vector<ClothEngine*>& engines = session.engines();
+  std::vector<SoNode*> sceneBodies;
+  for (ClothEngine* engine : engines) sceneBodies.push_back(engine->body.getValue());
+  for (const std::string& method : options.bodies) {
+    std::string error;
+    SoNode* body = bodyFor(method, session.scene(), error);
+    if (error.empty()) {
+      for (size_t e = 0; e < engines.size(); ++e) engines[e]->body = body ? body : sceneBodies[e];
+      timeDrapes(method, options, session, csv, error);
+    }
+    if (!error.empty()) return error;
+  }
+  return "";
 }
 
 }  // namespace
 
 int runDrapeStudy(const DrapeStudyOptions& options) {
   figment::init();
-  SoInput input;
-  if (!input.openFile(options.scene.c_str())) {
-    std::cerr << "figment-bench: " << options.scene << ": cannot open the scene\n";
+  viewer::SceneSession session;
+  if (!session.load(options.scene)) {
+    std::cerr << "figment-bench: " << options.scene << ": " << session.loadError() << "\n";
     return 1;
   }
-  SoSeparator* root = SoDB::readAll(&input);
-  if (!root) {
-    std::cerr << "figment-bench: " << options.scene << ": cannot read the scene\n";
-    return 1;
-  }
-  root->ref();
-  const std::vector<ClothEngine*> engines = findClothEngines(root);
-  if (engines.empty()) {
+  if (session.engines().empty()) {
     std::cerr << "figment-bench: " << options.scene << ": no ClothEngine to time\n";
-    root->unref();
     return 1;
   }
   std::filesystem::create_directories(options.outDir);
   const std::string csvPath = options.outDir + "/drape.csv";
-  const std::string partialPath = csvPath + ".partial";
-  std::ofstream csv(partialPath);
-  csv << "body,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s\n";
-  std::vector<SoNode*> sceneBodies;
-  for (ClothEngine* engine : engines) sceneBodies.push_back(engine->body.getValue());
-  for (const std::string& method : options.bodies) {
-    std::string error;
-    SoNode* body = bodyFor(method, root, error);
-    if (error.empty()) {
-      for (size_t e = 0; e < engines.size(); ++e) engines[e]->body = body ? body : sceneBodies[e];
-      timeDrapes(method, options, root, engines, csv, error);
-    }
-    if (!error.empty()) {
-      std::cerr << "figment-bench: " << options.scene << ": " << error << "\n";
-      root->unref();
-      return 1;
-    }
+  std::string drapeError;
+  const std::string error = writeAtomically(csvPath, [&](const std::string& temporary) -> std::string {
+    std::ofstream csv(temporary);
+    drapeError = timeEveryBody(options, session, csv);
+    if (!drapeError.empty()) return drapeError;
+    csv.close();
+    return csv ? "" : "cannot write the file";
+  });
+  if (!drapeError.empty()) {
+    std::cerr << "figment-bench: " << options.scene << ": " << drapeError << "\n";
+    return 1;
   }
-  csv.close();
-  std::filesystem::rename(partialPath, csvPath);
+  if (!error.empty()) {
+    std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
+    return 1;
+  }
   std::cout << csvPath << "\n";
-  root->unref();
   return 0;
 }
 

@@ -1,71 +1,79 @@
 #include "SceneGarment.h"
 
 #include "nodes/Init.h"
+#include "nodes/cloth/ClothEngineInputs.h"
+#include "sim/core/TriangleMesh.h"
 
-#include <Inventor/SoDB.h>
-#include <Inventor/SoInput.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoEngineOutput.h>
+#include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 
 namespace figment::bench {
 
-bool SceneGarment::load(const std::string& scene, std::string& error) {
-  figment::init();
-  SoInput input;
-  if (!input.openFile(scene.c_str())) {
-    error = scene + ": cannot open the scene";
-    return false;
-  }
-  root = SoDB::readAll(&input);
-  if (!root) {
-    error = scene + ": cannot read the scene";
-    return false;
-  }
-  root->ref();
-  const std::vector<ClothEngine*> engines = findClothEngines(root);
-  if (engines.empty()) {
-    error = scene + ": no ClothEngine";
-    return false;
-  }
-  engine = engines.front();
+namespace {
+
+// The Coordinate3 whose points `engine` feeds, or null.
+SoCoordinate3* coordinatesFedBy(SoNode* root, const ClothEngine* engine) {
   SoSearchAction search;
   search.setType(SoCoordinate3::getClassTypeId());
   search.setInterest(SoSearchAction::ALL);
   search.apply(root);
-  for (int i = 0; i < search.getPaths().getLength() && !coordinates; ++i) {
+  for (int i = 0; i < search.getPaths().getLength(); ++i) {
     auto* candidate = static_cast<SoCoordinate3*>(search.getPaths()[i]->getTail());
     SoEngineOutput* output = nullptr;
-    if (candidate->point.getConnectedEngine(output) && output == &engine->positions) coordinates = candidate;
+    if (candidate->point.getConnectedEngine(output) && output == &engine->positions) return candidate;
   }
+  return nullptr;
+}
+
+// Each edge of the garment's triangles once, as (smaller, larger) vertex index.
+std::vector<std::array<int, 2>> uniqueEdges(const TriangleMesh& garment) {
+  std::set<std::array<int, 2>> unique;
+  for (const auto& triangle : garment.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = triangle[k], b = triangle[(k + 1) % 3];
+      unique.insert({std::min(a, b), std::max(a, b)});
+    }
+  return {unique.begin(), unique.end()};
+}
+
+}  // namespace
+
+bool SceneGarment::load(const std::string& scene, std::string& error) {
+  figment::init();
+  if (!session.load(scene)) {
+    error = scene + ": " + session.loadError();
+    return false;
+  }
+  if (session.engines().empty()) {
+    error = scene + ": no ClothEngine";
+    return false;
+  }
+  engine = session.engines().front();
+  coordinates = coordinatesFedBy(session.scene(), engine);
   if (!coordinates) {
     error = scene + ": no Coordinate3 fed by " + engine->label();
     return false;
   }
   rest.assign(engine->restPoints.getValues(0), engine->restPoints.getValues(0) + engine->restPoints.getNum());
-  std::set<std::array<int, 2>> unique;
-  std::vector<int> face;
-  for (int i = 0; i < engine->coordIndex.getNum(); ++i) {
-    const int index = engine->coordIndex[i];
-    if (index >= 0) face.push_back(index);
-    if (index < 0 || i + 1 == engine->coordIndex.getNum()) {
-      for (size_t k = 0; k < face.size(); ++k) {
-        const int a = face[k], b = face[(k + 1) % face.size()];
-        unique.insert({std::min(a, b), std::max(a, b)});
-      }
-      face.clear();
-    }
+  try {
+    edges = uniqueEdges(garmentFromFields(engine->restPoints, engine->coordIndex));
+  } catch (const std::invalid_argument& e) {
+    error = scene + ": " + engine->label() + ": " + e.what();
+    return false;
   }
-  edges.assign(unique.begin(), unique.end());
   return true;
 }
 
 void SceneGarment::release() {
-  if (root) root->unref();
-  root = nullptr;
+  session.clear();
+  engine = nullptr;
+  coordinates = nullptr;
 }
 
 std::vector<SbVec3f> SceneGarment::drape() {

@@ -3,9 +3,9 @@
 // settings: the engine, the Coordinate3 it feeds, and its rest shape.
 
 #include "nodes/cloth/ClothEngine.h"
+#include "viewer/SceneSession.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
-#include <Inventor/nodes/SoSeparator.h>
 
 #include <array>
 #include <string>
@@ -14,11 +14,11 @@
 namespace figment::bench {
 
 struct SceneGarment {
-  SoSeparator* root = nullptr;  // referenced; release() unrefs it
+  viewer::SceneSession session;  // holds the scene; release() empties it
   ClothEngine* engine = nullptr;
   SoCoordinate3* coordinates = nullptr;
   std::vector<SbVec3f> rest;
-  std::vector<std::array<int, 2>> edges;  // each cloth edge once
+  std::vector<std::array<int, 2>> edges;  // each edge of the garment's triangles once
 
   // Reads `scene`; on failure returns false and sets `error` to one line.
   bool load(const std::string& scene, std::string& error);

@@ -1,6 +1,7 @@
 #include "StabilityStudy.h"
 
 #include "SceneGarment.h"
+#include "io/AtomicFile.h"
 
 #include <Inventor/errors/SoDebugError.h>
 
@@ -72,46 +73,54 @@ Deviation deviation(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b
   return d;
 }
 
-}  // namespace
+void configure(ClothEngine& engine, const StabilityStudyOptions& options, const Configuration& c, double dt) {
+  engine.integrator.setValue(c.integrator);
+  engine.strainLimit.setValue(c.strainClamp ? options.strainLimit : 0.0);
+  engine.accelerationLimiter.setValue(c.limiter);
+  engine.accelerationLimit.setValue(options.accelerationLimit);
+  engine.timeStep.setValue(dt);
+}
 
-int runStabilityStudy(const StabilityStudyOptions& options) {
-  SceneGarment garment;
-  std::string error;
-  if (!garment.load(options.scene, error)) {
-    std::cerr << "figment-bench: " << error << "\n";
-    garment.release();
-    return 1;
-  }
-  SoDebugError::setHandlerCallback(silence, nullptr);
-  ClothEngine& engine = *garment.engine;
-  if (options.quick) engine.maxTime.setValue(0.3);
+// The garment's rest height, m.
+double restHeight(const std::vector<SbVec3f>& rest) {
   float low = std::numeric_limits<float>::max(), high = -low;
-  for (const SbVec3f& p : garment.rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
-  const double height = high - low;
+  for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
+  return high - low;
+}
 
-  std::vector<double> steps = options.timeSteps.empty() ? timeSteps(options.quick) : options.timeSteps;
-  std::sort(steps.begin(), steps.end());
-  auto configure = [&](const Configuration& c, double dt) {
-    engine.integrator.setValue(c.integrator);
-    engine.strainLimit.setValue(c.strainClamp ? options.strainLimit : 0.0);
-    engine.accelerationLimiter.setValue(c.limiter);
-    engine.accelerationLimit.setValue(options.accelerationLimit);
-    engine.timeStep.setValue(dt);
-  };
-  // The converged reference: the paper's method, no stability measures, the smallest step.
-  configure({ClothEngine::HEUN, false, ClothEngine::NONE}, steps.front());
-  const std::vector<SbVec3f> reference = garment.drape();
-  if (!engine.lastError().empty()) {
-    std::cerr << "figment-bench: the reference run failed: " << engine.lastError() << "\n";
-    garment.release();
-    return 1;
-  }
-  std::cout << "reference: Heun at dt " << steps.front() << " s, " << engine.lastRun().simulatedSeconds
-            << " s simulated, " << engine.lastRun().wallSeconds << " s wall\n";
+// What the sweep compares every run with.
+struct Reference {
+  std::vector<SbVec3f> positions;
+  double height = 0.0;  // m, of the rest shape
+};
 
-  std::filesystem::create_directories(options.outDir);
-  const std::string csvPath = options.outDir + "/stability.csv";
-  std::ofstream csv(csvPath + ".partial");
+// Drapes configuration `c` at `dt` and writes its CSV line; whether it stayed stable,
+// and its deviation from the reference.
+std::pair<bool, Deviation> runOne(SceneGarment& garment, const StabilityStudyOptions& options, const Configuration& c,
+                                  double dt, const Reference& reference, std::ostream& csv) {
+  ClothEngine& engine = *garment.engine;
+  configure(engine, options, c, dt);
+  const std::vector<SbVec3f> draped = garment.drape();
+  const ClothEngine::RunStats& run = engine.lastRun();
+  const bool failed = !engine.lastError().empty();
+  const double strain = failed ? std::numeric_limits<double>::infinity() : garment.maxEdgeStrain(draped);
+  const bool stable = !failed && strain < 0.2;
+  const Deviation d = failed ? Deviation{NAN, NAN} : deviation(draped, reference.positions);
+  char line[512];
+  std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g,%.4g,%.4g\n",
+                integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), dt, stable ? 1 : 0,
+                run.atRest ? 1 : 0, run.wallSeconds, d.mean, d.max, reference.height, strain, run.iterations,
+                run.simulatedSeconds, c.strainClamp ? options.strainLimit : 0.0,
+                c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit, run.clampedSectionShare,
+                run.limitedNodeShare);
+  csv << line;
+  csv.flush();
+  return {stable, d};
+}
+
+// Every configuration over every step: the CSV, and a summary line per configuration.
+void sweep(SceneGarment& garment, const StabilityStudyOptions& options, const std::vector<double>& steps,
+           const Reference& reference, std::ostream& csv) {
   csv << "integrator,strain_clamp,limiter,dt,stable,at_rest,wall_s,mean_dev_m,max_dev_m,garment_height_m,"
          "max_edge_strain,iterations,simulated_s,strain_limit,acceleration_limit_g,clamped_section_share,"
          "limited_node_share\n";
@@ -119,39 +128,62 @@ int runStabilityStudy(const StabilityStudyOptions& options) {
     double largestStable = 0.0;
     Deviation atLargest;
     for (double dt : steps) {
-      configure(c, dt);
-      const std::vector<SbVec3f> draped = garment.drape();
-      const ClothEngine::RunStats& run = engine.lastRun();
-      const bool failed = !engine.lastError().empty();
-      const double strain = failed ? std::numeric_limits<double>::infinity() : garment.maxEdgeStrain(draped);
-      const bool stable = !failed && strain < 0.2;
-      const Deviation d = failed ? Deviation{NAN, NAN} : deviation(draped, reference);
+      const auto [stable, d] = runOne(garment, options, c, dt, reference, csv);
       if (stable && dt > largestStable) largestStable = dt, atLargest = d;
-      char line[512];
-      std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g,%.4g,%.4g\n",
-                    integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), dt, stable ? 1 : 0,
-                    run.atRest ? 1 : 0, run.wallSeconds, d.mean, d.max, height, strain, run.iterations,
-                    run.simulatedSeconds, c.strainClamp ? options.strainLimit : 0.0,
-                    c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit, run.clampedSectionShare,
-                    run.limitedNodeShare);
-      csv << line;
-      csv.flush();
     }
     std::printf("%-10s clamp %d limiter %-5s  largest stable dt %-7g mean dev %.3g mm (%.3f %% of height)\n",
                 integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), largestStable,
-                1000 * atLargest.mean, 100 * atLargest.mean / height);
+                1000 * atLargest.mean, 100 * atLargest.mean / reference.height);
   }
-  csv.close();
-  std::filesystem::rename(csvPath + ".partial", csvPath);
+}
+
+void plot(const StabilityStudyOptions& options, const std::string& csvPath) {
+  if (options.plotScript.empty() || !std::filesystem::exists(options.plotScript)) return;
+  const std::string png = options.outDir + "/stability.png";
+  const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + csvPath + "' '" + png + "'";
+  if (std::system(command.c_str()) == 0) std::cout << png << "\n";
+  else std::cerr << "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n";
+}
+
+}  // namespace
+
+int runStabilityStudy(const StabilityStudyOptions& options) {
+  SceneGarment garment;
+  std::string error;
+  if (!garment.load(options.scene, error)) {
+    std::cerr << "figment-bench: " << error << "\n";
+    return 1;
+  }
+  SoDebugError::setHandlerCallback(silence, nullptr);
+  ClothEngine& engine = *garment.engine;
+  if (options.quick) engine.maxTime.setValue(0.3);
+  std::vector<double> steps = options.timeSteps.empty() ? timeSteps(options.quick) : options.timeSteps;
+  std::sort(steps.begin(), steps.end());
+  // The converged reference: the paper's method, no stability measures, the smallest step.
+  configure(engine, options, {ClothEngine::HEUN, false, ClothEngine::NONE}, steps.front());
+  const Reference reference{garment.drape(), restHeight(garment.rest)};
+  if (!engine.lastError().empty()) {
+    std::cerr << "figment-bench: the reference run failed: " << engine.lastError() << "\n";
+    return 1;
+  }
+  std::cout << "reference: Heun at dt " << steps.front() << " s, " << engine.lastRun().simulatedSeconds
+            << " s simulated, " << engine.lastRun().wallSeconds << " s wall\n";
+
+  std::filesystem::create_directories(options.outDir);
+  const std::string csvPath = options.outDir + "/stability.csv";
+  error = writeAtomically(csvPath, [&](const std::string& temporary) -> std::string {
+    std::ofstream csv(temporary);
+    sweep(garment, options, steps, reference, csv);
+    csv.close();
+    return csv ? "" : "cannot write the file";
+  });
+  if (!error.empty()) {
+    std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
+    return 1;
+  }
   std::cout << csvPath << "\n";
   garment.release();
-
-  if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
-    const std::string png = options.outDir + "/stability.png";
-    const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + csvPath + "' '" + png + "'";
-    if (std::system(command.c_str()) == 0) std::cout << png << "\n";
-    else std::cerr << "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n";
-  }
+  plot(options, csvPath);
   return 0;
 }
 

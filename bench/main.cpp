@@ -6,11 +6,11 @@
 
 #include <CLI/CLI.hpp>
 
-int main(int argc, char** argv) {
-  CLI::App app{"FIGMENT benchmarks: studies that write CSV"};
-  app.require_subcommand(1);
+namespace {
 
-  figment::bench::DrapeStudyOptions drape;
+using namespace figment::bench;
+
+CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
   CLI::App* drapeCommand = app.add_subcommand("drape", "time the drape of every garment in a scene");
   drapeCommand->add_option("--scene", drape.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
   drapeCommand->add_option("--repeat", drape.repeat, "runs per garment")->capture_default_str()->check(CLI::PositiveNumber);
@@ -19,9 +19,10 @@ int main(int argc, char** argv) {
                            "what the garments collide with, each timed: scene, exact (the Mannequin's body "
                            "triangles) or a volumes .iv file")
       ->capture_default_str();
+  return drapeCommand;
+}
 
-  figment::bench::StabilityStudyOptions stability;
-  stability.plotScript = FIGMENT_PLOT_STABILITY;
+CLI::App* addStabilityCommand(CLI::App& app, StabilityStudyOptions& stability) {
   CLI::App* stabilityCommand =
       app.add_subcommand("stability", "integrators x strain clamping x limiters over time steps: stability and accuracy");
   stabilityCommand->add_option("--scene", stability.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
@@ -34,8 +35,10 @@ int main(int argc, char** argv) {
   stabilityCommand->add_option("--strain-limit", stability.strainLimit, "strain clamping range")->capture_default_str();
   stabilityCommand->add_option("--acceleration-limit", stability.accelerationLimit, "limiter cap, multiples of g")
       ->capture_default_str();
+  return stabilityCommand;
+}
 
-  figment::bench::RenderStudyOptions render;
+CLI::App* addRenderCommand(CLI::App& app, RenderStudyOptions& render) {
   CLI::App* renderCommand =
       app.add_subcommand("render", "render time with the hybrid nodes and with plain depth buffering");
   renderCommand->add_option("--scene", render.scenes, "scenes to render (repeat the option)")
@@ -47,9 +50,10 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   renderCommand->add_option("--out", render.outDir, "folder for render.csv")->capture_default_str();
+  return renderCommand;
+}
 
-  figment::bench::CollisionStudyOptions collision;
-  collision.plotScript = FIGMENT_PLOT_COLLISION;
+CLI::App* addCollisionCommand(CLI::App& app, CollisionStudyOptions& collision) {
   CLI::App* collisionCommand = app.add_subcommand(
       "collision", "per body part: capsule and radial depth volumes against the body (gap, enclosure, query cost)");
   collisionCommand->add_option("--body", collision.body, "body mesh (model search path)")->capture_default_str();
@@ -60,11 +64,29 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.002, 0.2));
   collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")->capture_default_str();
+  return collisionCommand;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"FIGMENT benchmarks: studies that write CSV"};
+  app.require_subcommand(1);
+  DrapeStudyOptions drape;
+  StabilityStudyOptions stability;
+  stability.plotScript = FIGMENT_PLOT_STABILITY;
+  RenderStudyOptions render;
+  CollisionStudyOptions collision;
+  collision.plotScript = FIGMENT_PLOT_COLLISION;
+  CLI::App* drapeCommand = addDrapeCommand(app, drape);
+  CLI::App* stabilityCommand = addStabilityCommand(app, stability);
+  CLI::App* renderCommand = addRenderCommand(app, render);
+  CLI::App* collisionCommand = addCollisionCommand(app, collision);
 
   CLI11_PARSE(app, argc, argv);
-  if (drapeCommand->parsed()) return figment::bench::runDrapeStudy(drape);
-  if (stabilityCommand->parsed()) return figment::bench::runStabilityStudy(stability);
-  if (renderCommand->parsed()) return figment::bench::runRenderStudy(render);
-  if (collisionCommand->parsed()) return figment::bench::runCollisionStudy(collision);
+  if (drapeCommand->parsed()) return runDrapeStudy(drape);
+  if (stabilityCommand->parsed()) return runStabilityStudy(stability);
+  if (renderCommand->parsed()) return runRenderStudy(render);
+  if (collisionCommand->parsed()) return runCollisionStudy(collision);
   return 1;
 }

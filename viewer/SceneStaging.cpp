@@ -94,12 +94,18 @@ SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view
   return camera;
 }
 
-SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view) {
-  const SbViewportRegion viewport(short(size.width), short(size.height));
-  SoGetBoundingBoxAction boxAction(viewport);
+SbBox3f sceneBox(SoNode* scene, const ImageSize& size) {
+  SoGetBoundingBoxAction boxAction(SbViewportRegion(short(size.width), short(size.height)));
   boxAction.apply(scene);  // evaluates the engines that feed shapes
-  const SbBox3f box = boxAction.getBoundingBox();
+  return boxAction.getBoundingBox();
+}
 
+SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view) {
+  return stageScene(scene, size, view, sceneBox(scene, size));
+}
+
+SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view,
+                        const SbBox3f& box) {
   auto* root = new SoSeparator;
   SbVec3f lookDirection(0.0f, 0.0f, -1.0f);
   SoPathList cameras;

@@ -29,5 +29,12 @@ SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view
 // Its bounding-box pass reads every shape's coordinates, so the ClothEngines feeding
 // them are evaluated here, before anything is drawn. The root is not referenced.
 SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view);
+// The same, framing `box`, the scene's bounding box (sceneBox) already computed.
+SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view,
+                        const SbBox3f& box);
+
+// The bounding box of `scene` in a viewport of `size`. Reading every shape's
+// coordinates evaluates the ClothEngines that feed them.
+SbBox3f sceneBox(SoNode* scene, const ImageSize& size);
 
 }  // namespace figment::viewer

@@ -7,15 +7,13 @@
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
 // exit status (2: bad command line, 1: anything else); no image is written then.
 
-#include "nodes/cloth/ClothEngine.h"
 #include "nodes/body/Mannequin.h"
+#include "nodes/cloth/ClothEngine.h"
 #include "nodes/SceneSearch.h"
-#include "viewer/CoinMessages.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneFile.h"
 #include "viewer/SceneRenderer.h"
-#include "viewer/SceneStaging.h"
+#include "viewer/SceneSession.h"
 #include "viewer/StatsJson.h"
 #include "viewer/ViewOptions.h"
 
@@ -27,7 +25,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <memory>
 #include <optional>
 #include <string>
 
@@ -55,42 +52,41 @@ void reportProgress(const ClothEngine& engine, const ClothEngine::Progress& p) {
                engine.label().c_str(), p.simulatedSeconds, p.maxTime, p.iterations, p.wallSeconds, p.maxSpeed);
 }
 
-void reportFinished(const ClothEngine& engine) {
-  const ClothEngine::RunStats& run = engine.lastRun();
+void reportFinished(const figment::viewer::EngineDrape& drape) {
+  const ClothEngine::RunStats& run = drape.run;
   if (run.wallSeconds < 1.0) return;  // short runs stay quiet
-  std::fprintf(stderr, "figment-view: %s: %s after %.3g s simulated (%d steps, %.1f s)\n", engine.label().c_str(),
+  std::fprintf(stderr, "figment-view: %s: %s after %.3g s simulated (%d steps, %.1f s)\n", drape.label.c_str(),
                run.atRest ? "at rest" : "stopped at maxTime", run.simulatedSeconds, run.iterations,
                run.wallSeconds);
+}
+
+// Before anything simulates: a Mannequin's fields feed the engines that use it.
+void showVolumes(SoNode* scene) {
+  const SoPathList mannequins = figment::findAll(scene, Mannequin::getClassTypeId());
+  for (int i = 0; i < mannequins.getLength(); ++i)
+    static_cast<Mannequin*>(mannequins[i]->getTail())->showVolumes = TRUE;
+}
+
+// Drapes every engine; its errors come before any image. "" or the first error.
+std::string drapeAll(figment::viewer::SceneSession& session) {
+  ClothEngine::setProgressCallback(reportProgress);
+  for (const figment::viewer::EngineDrape& drape : session.drape()) {
+    if (!drape.error.empty()) return drape.error;
+    reportFinished(drape);
+  }
+  return "";
 }
 
 int render(const Options& options, const figment::viewer::ImageSize& size,
            const std::optional<figment::viewer::ViewDirection>& view) {
   using namespace figment::viewer;
   initHeadless();
-  std::string error;
-  SoSeparator* scene = readSceneFile(options.scene, error);
-  if (!scene) return fail(options.scene, error);
-  // Before anything simulates: a Mannequin's fields feed the engines that use it.
-  if (options.showVolumes) {
-    const SoPathList mannequins = figment::findAll(scene, Mannequin::getClassTypeId());
-    for (int i = 0; i < mannequins.getLength(); ++i)
-      static_cast<Mannequin*>(mannequins[i]->getTail())->showVolumes = TRUE;
-  }
-
-  const std::vector<ClothEngine*> engines = figment::findClothEngines(scene);
-  ClothEngine::setProgressCallback(reportProgress);
-  SoSeparator* root = stageScene(scene, size, view);  // simulates, through the bounding box
-  root->ref();
-  scene->unref();  // the staged root holds the scene, and with it the engines
-  const std::unique_ptr<SoSeparator, void (*)(SoSeparator*)> holder(root, [](SoSeparator* r) { r->unref(); });
-  for (ClothEngine* engine : engines) {
-    // An engine no bounding box reads (one feeding a colour, say) simulates now, so
-    // its errors too come before any image.
-    if (engine->evaluationCount() == 0 && engine->positions.getNumConnections() > 0)
-      engine->positions[0]->evaluate();
-    if (!engine->lastError().empty()) return fail(options.scene, engine->lastError());
-    reportFinished(*engine);
-  }
+  SceneSession session;
+  if (!session.load(options.scene)) return fail(options.scene, session.loadError());
+  if (options.showVolumes) showVolumes(session.scene());
+  std::string error = drapeAll(session);
+  if (!error.empty()) return fail(options.scene, error);
+  SoSeparator* root = session.stage(size, view);
 
   DepthBufferOnly plain(root);
   plain.use(options.depthBufferOnly);
@@ -102,7 +98,7 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
   error = renderer.writePng(options.output);
   if (!error.empty()) return fail(options.output, error);
   if (!options.stats.empty()) {
-    error = writeStatsJson(options.stats, options.scene, engines, renderWall.count(), size);
+    error = writeStatsJson(options.stats, options.scene, session.drapes(), renderWall.count(), size);
     if (!error.empty()) {
       std::filesystem::remove(options.output);  // an error leaves no image behind
       return fail(options.stats, error);

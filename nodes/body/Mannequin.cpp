@@ -1,8 +1,10 @@
 #include "nodes/body/Mannequin.h"
 
+#include "nodes/body/CapsuleVolume.h"
 #include "nodes/body/CollisionVolumeNode.h"
 #include "nodes/body/ExactVolume.h"
 #include "nodes/body/MeshFile.h"
+#include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
 #include "sim/body/BodyParts.h"
 #include "sim/collision/CollisionVolume.h"
@@ -177,6 +179,20 @@ std::shared_ptr<const figment::Collider> Mannequin::collider() const {
   }
   collider_ = std::make_shared<const figment::VolumeSetCollider>(std::move(posed));
   return collider_;
+}
+
+figment::CollisionBody::Description Mannequin::describeBody() const {
+  int capsules = 0, radial = 0, exact = 0;
+  try {
+    for (const VolumeEntry& v : volumes()) {
+      capsules += v.node->isOfType(CapsuleVolume::getClassTypeId());
+      radial += v.node->isOfType(RadialDepthVolume::getClassTypeId());
+      exact += v.node->isOfType(ExactVolume::getClassTypeId());
+    }
+  } catch (const std::exception&) {
+    // An unusable mannequin fails the drape, which is reported before any statistics.
+  }
+  return {"mannequin", {{"capsule_volumes", capsules}, {"radial_volumes", radial}, {"exact_parts", exact}}};
 }
 
 const figment::TriangleMesh& Mannequin::posedBody() const {

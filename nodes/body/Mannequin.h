@@ -10,6 +10,8 @@
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSubNode.h>
 
+#include "nodes/body/CollisionBody.h"
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -75,7 +77,7 @@ struct TriangleMesh;
     }
   \endcode
 */
-class Mannequin : public SoGroup {
+class Mannequin : public SoGroup, public figment::CollisionBody {
   typedef SoGroup inherited;
   SO_NODE_HEADER(Mannequin);
 
@@ -103,6 +105,11 @@ class Mannequin : public SoGroup {
   // changes). Throws std::invalid_argument with one line naming this node, the field
   // and the value when the data or the fields are unusable.
   std::shared_ptr<const figment::Collider> collider() const;
+  // As a ClothEngine's body (figment::CollisionBody): collider(). Described as kind
+  // "mannequin" with its capsule_volumes, radial_volumes and exact_parts (all 0 when
+  // the volumes cannot be read).
+  std::shared_ptr<const figment::Collider> bodyCollider() const override { return collider(); }
+  Description describeBody() const override;
   // The skeleton of the SkeletonJoints child (rest frame); throws as collider().
   const figment::Skeleton& skeleton() const;
   // Rest frame -> posed frame, one per skeleton part; throws as collider().

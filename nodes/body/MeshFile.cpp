@@ -225,6 +225,17 @@ std::shared_ptr<const figment::MeshCollider> MeshFile::collider() const {
   return impl_->collider;
 }
 
+std::shared_ptr<const figment::Collider> MeshFile::bodyCollider() const {
+  std::shared_ptr<const figment::MeshCollider> exact = collider();
+  if (!exact) {
+    const std::string name = getName().getLength() ? " '" + std::string(getName().getString()) + "'" : "";
+    throw std::invalid_argument("MeshFile" + name + " has no mesh");
+  }
+  return exact;
+}
+
+figment::CollisionBody::Description MeshFile::describeBody() const { return {"mesh", {}}; }
+
 // --- reading the mesh -------------------------------------------------------------
 
 bool MeshFile::isLoadOption(const SoField* field) const {

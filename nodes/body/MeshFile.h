@@ -11,6 +11,8 @@
 #include <Inventor/fields/SoSFVec3f.h>
 #include <Inventor/nodes/SoSubNode.h>
 
+#include "nodes/body/CollisionBody.h"
+
 #include <memory>
 
 class SoChildList;
@@ -67,7 +69,7 @@ class MeshCollider;
     }
   \endcode
 */
-class MeshFile : public SoNode {
+class MeshFile : public SoNode, public figment::CollisionBody {
   typedef SoNode inherited;
   SO_NODE_HEADER(MeshFile);
 
@@ -115,6 +117,12 @@ class MeshFile : public SoNode {
   // mesh changes (building its bounding-volume hierarchy is not free). Null when the
   // collision surface is empty. Include "sim/collision/MeshCollider.h" to use it.
   std::shared_ptr<const figment::MeshCollider> collider() const;
+
+  // As a ClothEngine's body (figment::CollisionBody): collider(); throws
+  // std::invalid_argument ("MeshFile 'Body' has no mesh") when it is null. Described
+  // as kind "mesh".
+  std::shared_ptr<const figment::Collider> bodyCollider() const override;
+  Description describeBody() const override;
 
   // Actions reach the hidden mesh the way SoFile reaches its children.
   void doAction(SoAction* action) override;

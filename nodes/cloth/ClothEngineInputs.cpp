@@ -2,12 +2,12 @@
 
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/FieldValues.h"
-#include "nodes/body/Mannequin.h"
-#include "nodes/body/MeshFile.h"
+#include "nodes/body/CollisionBody.h"
 #include "nodes/CoordIndexFaces.h"
 #include "sim/cloth/MaterialPresets.h"
-#include "sim/collision/MeshCollider.h"
 #include "sim/core/ParameterChecks.h"
+
+#include <Inventor/nodes/SoNode.h>
 
 #include <optional>
 #include <sstream>
@@ -118,20 +118,17 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
 std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body) {
   SoNode* node = body.getValue();
   if (!node) return nullptr;
-  const std::string name = node->getName().getLength() ? " '" + std::string(node->getName().getString()) + "'" : "";
-  if (node->isOfType(Mannequin::getClassTypeId())) {
-    try {
-      return static_cast<Mannequin*>(node)->collider();
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(std::string("body: ") + e.what());
-    }
-  }
-  if (!node->isOfType(MeshFile::getClassTypeId()))
+  const CollisionBody* collisionBody = asCollisionBody(node);
+  if (!collisionBody) {
+    const std::string name = node->getName().getLength() ? " '" + std::string(node->getName().getString()) + "'" : "";
     throw std::invalid_argument(std::string("body: ") + node->getTypeId().getName().getString() + name +
                                 " is not a collision body (use a MeshFile or a Mannequin)");
-  std::shared_ptr<const MeshCollider> collider = static_cast<MeshFile*>(node)->collider();
-  if (!collider) throw std::invalid_argument("body: MeshFile" + name + " has no mesh");
-  return collider;
+  }
+  try {
+    return collisionBody->bodyCollider();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("body: ") + e.what());
+  }
 }
 
 }  // namespace figment

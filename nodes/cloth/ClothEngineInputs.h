@@ -27,8 +27,8 @@ Material materialFromFields(const ClothEngine& engine);
 // Material and run parameters from the engine's fields, validated.
 ClothParameters parametersFromFields(const ClothEngine& engine);
 
-// The collider of the node in `body`: null for NULL; a MeshFile's exact collider, or a
-// Mannequin's posed volumes.
+// The collider of the node in `body` (a figment::CollisionBody: a MeshFile's exact
+// collider, a Mannequin's posed volumes); null for NULL.
 std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body);
 
 }  // namespace figment

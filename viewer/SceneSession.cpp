@@ -1,0 +1,87 @@
+#include "viewer/SceneSession.h"
+
+#include "viewer/SceneFile.h"
+#include "viewer/SceneStaging.h"
+
+#include <Inventor/nodes/SoSeparator.h>
+
+namespace figment::viewer {
+
+namespace {
+
+// A field's value as the .iv file spells it (enum names, numbers).
+std::string fieldText(SoField& field) {
+  SbString text;
+  field.get(text);
+  return text.getString();
+}
+
+CollisionBody::Description describe(SoNode* body) {
+  const CollisionBody* collisionBody = asCollisionBody(body);
+  return collisionBody ? collisionBody->describeBody() : CollisionBody::Description{"none", {}};
+}
+
+EngineDrape resultOf(ClothEngine& engine) {
+  EngineDrape drape;
+  drape.engine = &engine;
+  drape.name = engine.getName().getString();
+  drape.label = engine.label();
+  drape.run = engine.lastRun();
+  drape.error = engine.lastError();
+  drape.method = {fieldText(engine.integrator), engine.timeStep.getValue(), engine.strainLimit.getValue(),
+                  fieldText(engine.accelerationLimiter), engine.accelerationLimit.getValue()};
+  drape.body = describe(engine.body.getValue());
+  return drape;
+}
+
+}  // namespace
+
+SceneSession::~SceneSession() { clear(); }
+
+void SceneSession::clear() {
+  if (staged_) staged_->unref();
+  if (scene_) scene_->unref();
+  staged_ = scene_ = nullptr;
+  engines_.clear();
+  drapes_.clear();
+}
+
+bool SceneSession::load(const std::string& path) {
+  clear();
+  scene_ = readSceneFile(path, loadError_);
+  if (!scene_) return false;
+  engines_ = findClothEngines(scene_);
+  return true;
+}
+
+const std::vector<EngineDrape>& SceneSession::drape() {
+  std::vector<int> before;
+  for (const ClothEngine* engine : engines_) before.push_back(engine->evaluationCount());
+  for (size_t i = 0; i < engines_.size(); ++i) {
+    ClothEngine* engine = engines_[i];
+    // Reading the output simulates when an input changed; skipped when reading an
+    // engine before it (one it feeds) has simulated it already. An engine whose output
+    // nothing reads does not simulate (its run stays zeros).
+    if (engine->evaluationCount() == before[i] && engine->positions.getNumConnections() > 0)
+      engine->positions[0]->evaluate();
+  }
+  drapes_.clear();
+  for (ClothEngine* engine : engines_) drapes_.push_back(resultOf(*engine));
+  return drapes_;
+}
+
+std::string SceneSession::firstError() const {
+  for (const EngineDrape& drape : drapes_)
+    if (!drape.error.empty()) return drape.error;
+  return "";
+}
+
+SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view) {
+  if (staged_) staged_->unref();
+  stagedBox_ = sceneBox(scene_, size);
+  staged_ = stageScene(scene_, size, view, stagedBox_);
+  staged_->ref();
+  return staged_;
+}
+
+}  // namespace figment::viewer

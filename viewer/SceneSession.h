@@ -1,0 +1,86 @@
+#pragma once
+// One scene, from file to staged root: load -> drape every engine -> stage, written once
+// for figment-view and figment-bench. Rendering the staged root is SceneRenderer's.
+
+#include "nodes/body/CollisionBody.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "viewer/ViewOptions.h"
+
+#include <Inventor/SbBox3f.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+class SoSeparator;
+
+namespace figment::viewer {
+
+// How an engine integrated its drape: the fields the statistics report.
+struct DrapeMethod {
+  std::string integrator;           // EULER, SYMPLECTIC or HEUN, as the .iv file spells it
+  double timeStep = 0.0;            // s
+  double strainLimit = 0.0;         // 0 = no strain clamping
+  std::string accelerationLimiter;  // NONE, CLAMP or TANH
+  double accelerationLimit = 0.0;   // multiples of |g|
+};
+
+// One engine's drape, kept by the session.
+struct EngineDrape {
+  ClothEngine* engine = nullptr;  // held through the session's scene
+  std::string name;               // its DEF name; "" when unnamed
+  std::string label;              // how messages name it: "ClothEngine 'Drape'"
+  ClothEngine::RunStats run;      // zeros when it failed before simulating
+  std::string error;              // one line; "" when it succeeded
+  DrapeMethod method;
+  CollisionBody::Description body;  // kind "none" when it has no body (or not a usable one)
+};
+
+// The session holds the scene (and, once staged, the staged root) until it is cleared or
+// destroyed. Coin must be initialised first (initHeadless() to render; figment::init()
+// is enough to drape); read errors come as one line only after initHeadless().
+class SceneSession {
+ public:
+  SceneSession() = default;
+  ~SceneSession();
+  SceneSession(const SceneSession&) = delete;
+  SceneSession& operator=(const SceneSession&) = delete;
+
+  // Reads the scene in `path` (see readSceneFile) and finds its ClothEngines (in scene
+  // order, figment::findClothEngines); nothing simulates yet. Returns false, with
+  // loadError() one line ("no such file", "line 12: Unknown class \"Foo\""), on failure.
+  bool load(const std::string& path);
+  const std::string& loadError() const { return loadError_; }
+
+  // Simulates every engine whose output something reads, one after another in scene
+  // order (an engine another one feeds from simulates when that one does), and keeps
+  // each one's result. Again after an engine's input changed: simulates those again.
+  const std::vector<EngineDrape>& drape();
+  const std::vector<EngineDrape>& drapes() const { return drapes_; }
+  // The first engine's error, in scene order; "" when every drape succeeded.
+  std::string firstError() const;
+
+  // Puts the scene under a root with the camera and light it lacks (see stageScene),
+  // looking from `view` (the scene's own camera when none is given). Drape first: the
+  // bounding box read here then shows the draped garments.
+  SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view);
+
+  // Unreferences the scene and the staged root; the session is empty again.
+  void clear();
+
+  SoSeparator* scene() const { return scene_; }
+  SoSeparator* stagedRoot() const { return staged_; }
+  // The scene's bounding box when it was staged (what the framing camera frames).
+  const SbBox3f& stagedBox() const { return stagedBox_; }
+  const std::vector<ClothEngine*>& engines() const { return engines_; }
+
+ private:
+  SoSeparator* scene_ = nullptr;   // referenced
+  SoSeparator* staged_ = nullptr;  // referenced
+  SbBox3f stagedBox_;
+  std::string loadError_;
+  std::vector<ClothEngine*> engines_;
+  std::vector<EngineDrape> drapes_;
+};
+
+}  // namespace figment::viewer
