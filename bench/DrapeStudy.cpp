@@ -1,7 +1,7 @@
 #include "DrapeStudy.h"
 
+#include "CsvFile.h"
 #include "Statistics.h"
-#include "io/AtomicFile.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/Init.h"
 #include "nodes/body/Mannequin.h"
@@ -15,7 +15,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 namespace figment::bench {
@@ -114,24 +113,11 @@ int runDrapeStudy(const DrapeStudyOptions& options) {
     return 1;
   }
   std::filesystem::create_directories(options.outDir);
-  const std::string csvPath = options.outDir + "/drape.csv";
-  std::string drapeError;
-  const std::string error = writeAtomically(csvPath, [&](const std::string& temporary) -> std::string {
-    std::ofstream csv(temporary);
-    drapeError = timeEveryBody(options, session, csv);
-    if (!drapeError.empty()) return drapeError;
-    csv.close();
-    return csv ? "" : "cannot write the file";
+  const bool written = writeCsv(options.outDir + "/drape.csv", [&](std::ostream& csv) -> std::string {
+    const std::string error = timeEveryBody(options, session, csv);
+    return error.empty() ? "" : options.scene + ": " + error;
   });
-  if (!drapeError.empty()) {
-    std::cerr << "figment-bench: " << options.scene << ": " << drapeError << "\n";
-    return 1;
-  }
-  if (!error.empty()) {
-    std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
-    return 1;
-  }
-  std::cout << csvPath << "\n";
+  if (!written) return 1;
   return 0;
 }
 

@@ -1,7 +1,7 @@
 #include "RenderStudy.h"
 
+#include "CsvFile.h"
 #include "Statistics.h"
-#include "io/AtomicFile.h"
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/SceneSearch.h"
 #include "viewer/DepthBufferOnly.h"
@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -127,27 +126,15 @@ std::string studyScene(const std::string& scenePath, const RenderStudyOptions& o
 int runRenderStudy(const RenderStudyOptions& options) {
   viewer::initHeadless();
   std::filesystem::create_directories(options.outDir);
-  const std::string csvPath = options.outDir + "/render.csv";
-  std::string studyError;
-  const std::string error = writeAtomically(csvPath, [&](const std::string& temporary) -> std::string {
-    std::ofstream csv(temporary);
+  const bool written = writeCsv(options.outDir + "/render.csv", [&](std::ostream& csv) -> std::string {
     csv << "scene,mode,view,width,height,cloth_triangles,renders,median_ms,overhead_pct\n";
     for (const std::string& scenePath : options.scenes) {
-      studyError = studyScene(scenePath, options, csv);
-      if (!studyError.empty()) return studyError;
+      const std::string error = studyScene(scenePath, options, csv);
+      if (!error.empty()) return error;
     }
-    csv.close();
-    return csv ? "" : "cannot write the file";
+    return "";
   });
-  if (!studyError.empty()) {
-    std::cerr << "figment-bench: " << studyError << "\n";
-    return 1;
-  }
-  if (!error.empty()) {
-    std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
-    return 1;
-  }
-  std::cout << csvPath << "\n";
+  if (!written) return 1;
   return 0;
 }
 

@@ -1,7 +1,7 @@
 #include "StabilityStudy.h"
 
+#include "CsvFile.h"
 #include "SceneGarment.h"
-#include "io/AtomicFile.h"
 
 #include <Inventor/errors/SoDebugError.h>
 
@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <map>
@@ -171,17 +170,11 @@ int runStabilityStudy(const StabilityStudyOptions& options) {
 
   std::filesystem::create_directories(options.outDir);
   const std::string csvPath = options.outDir + "/stability.csv";
-  error = writeAtomically(csvPath, [&](const std::string& temporary) -> std::string {
-    std::ofstream csv(temporary);
+  const bool written = writeCsv(csvPath, [&](std::ostream& csv) -> std::string {
     sweep(garment, options, steps, reference, csv);
-    csv.close();
-    return csv ? "" : "cannot write the file";
+    return "";
   });
-  if (!error.empty()) {
-    std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
-    return 1;
-  }
-  std::cout << csvPath << "\n";
+  if (!written) return 1;
   garment.release();
   plot(options, csvPath);
   return 0;

@@ -22,6 +22,7 @@
 #include "nodes/body/SkeletonJoints.h"
 #include "sim/fitting/CollisionVolumeFitting.h"
 #include "sim/body/SkeletonEstimate.h"
+#include "ToolMain.h"
 
 #include <CLI/CLI.hpp>
 #include <Inventor/SoOutput.h>
@@ -31,7 +32,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <exception>
 #include <map>
 #include <set>
 #include <string>
@@ -39,12 +39,7 @@
 
 namespace {
 
-constexpr const char* kProgram = "figment-fit";
-
-int fail(const std::string& message) {
-  std::fprintf(stderr, "%s: %s\n", kProgram, message.c_str());
-  return 1;
-}
+const figment::tools::ToolMain kTool{"figment-fit"};
 
 struct Options {
   std::string body = "human.zae";
@@ -97,7 +92,7 @@ std::string writeIv(SoNode* root, const std::string& path, const std::string& he
 
 // Reads the command line into `options`: -1 to go on, else the exit status.
 int parseCommandLine(int argc, char** argv, Options& options) {
-  CLI::App app{"Fits a body's collision volumes and writes them as an .iv file for a Mannequin.", kProgram};
+  CLI::App app{"Fits a body's collision volumes and writes them as an .iv file for a Mannequin.", kTool.program()};
   app.add_option("--body", options.body, "body model file, looked up on the model search path")->capture_default_str();
   app.add_option("-o,--output", options.output, ".iv file to write")->required();
   app.add_option("--exclude", options.exclude, "meshes of the body file to leave out (name or part of it)")
@@ -114,14 +109,8 @@ int parseCommandLine(int argc, char** argv, Options& options) {
       ->check(CLI::Range(0.002, 0.5))
       ->capture_default_str();
   app.add_option("--seed", options.fit.seed, "seed of the genetic algorithm")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& help) {
-    return app.exit(help);
-  } catch (const CLI::ParseError& error) {
-    return fail(error.what());
-  }
-  options.commandLine = kProgram;
+  if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+  options.commandLine = kTool.program();
   for (int i = 1; i < argc; ++i) options.commandLine += std::string(" ") + argv[i];
   return -1;
 }
@@ -161,9 +150,9 @@ int fitAndWrite(const Options& options, const std::string& bodyPath) {
   const std::set<std::string> exact(options.exactParts.begin(), options.exactParts.end());
   const std::set<std::string> forcedCapsules(options.capsuleParts.begin(), options.capsuleParts.end());
   if (const std::string name = unknownPart(skeleton, exact); !name.empty())
-    return fail("--exact: " + name + " is not a part");
+    return kTool.fail("--exact: " + name + " is not a part");
   if (const std::string name = unknownPart(skeleton, forcedCapsules); !name.empty())
-    return fail("--capsule: " + name + " is not a part");
+    return kTool.fail("--capsule: " + name + " is not a part");
 
   const std::vector<figment::CollisionVolumeParameters> volumes = fitVolumes(body, skeleton, options, forcedCapsules);
   size_t capsules = 0, radials = 0;
@@ -177,9 +166,9 @@ int fitAndWrite(const Options& options, const std::string& bodyPath) {
   const std::string error = figment::writeAtomically(
       options.output, [&](const std::string& temporary) { return writeIv(root, temporary, header); });
   root->unref();
-  if (!error.empty()) return fail(options.output + ": " + error);
+  if (!error.empty()) return kTool.fail(options.output + ": " + error);
   const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-  std::printf("%s: %s: %zu radial depth volumes, %zu capsules, %zu exact parts, %.1f s\n", kProgram,
+  std::printf("%s: %s: %zu radial depth volumes, %zu capsules, %zu exact parts, %.1f s\n", kTool.program().c_str(),
               options.output.c_str(), radials, capsules, exact.size(), wall.count());
   return 0;
 }
@@ -189,16 +178,6 @@ int fitAndWrite(const Options& options, const std::string& bodyPath) {
 int main(int argc, char** argv) {
   Options options;
   if (const int status = parseCommandLine(argc, argv, options); status >= 0) return status;
-  const std::string bodyPath = figment::findModelFile(options.body);
-  if (bodyPath.empty())
-    return fail(options.body +
-                ": not found (searched the working directory, $FIGMENT_MODEL_PATH, /usr/share/assimp/models)");
   figment::init();
-  try {
-    return fitAndWrite(options, bodyPath);
-  } catch (const std::runtime_error& error) {  // the importer's message starts with the path
-    return fail(error.what());
-  } catch (const std::exception& error) {
-    return fail(bodyPath + ": " + error.what());
-  }
+  return kTool.withBody(options.body, [&](const std::string& bodyPath) { return fitAndWrite(options, bodyPath); });
 }

@@ -7,27 +7,37 @@
 #include "io/MeshExport.h"
 #include "io/MeshImport.h"
 #include "sim/garment/StrapDress.h"
+#include "ToolMain.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <exception>
 #include <string>
 #include <vector>
 
 namespace {
 
-constexpr const char* kProgram = "figment-make-dress";
+const figment::tools::ToolMain kTool{"figment-make-dress"};
 
-int fail(const std::string& message) {
-  std::fprintf(stderr, "%s: %s\n", kProgram, message.c_str());
-  return 1;
+// Makes the dress around the body at `bodyPath` and writes it: the exit status.
+int makeAndWrite(const std::string& bodyPath, const std::vector<std::string>& exclude,
+                 const figment::StrapDressOptions& options, const std::string& output) {
+  figment::ImportOptions importOptions;
+  importOptions.exclude = exclude;
+  const figment::ImportedMesh body = figment::importMesh(bodyPath, importOptions);
+  const figment::StrapDress dress = figment::makeStrapDress(body.mesh, options);
+  figment::exportObj(dress.mesh, output);
+  std::printf("%s: %s: %zu vertices, %zu triangles, top %.3f m (%.3f m between the straps), hem %.3f m, "
+              "straps at x = %.3f, %.3f m\n",
+              kTool.program().c_str(), output.c_str(), dress.mesh.vertices.size(), dress.mesh.triangles.size(),
+              dress.topHeight, dress.necklineHeight, dress.hemHeight, dress.strapX[0], dress.strapX[1]);
+  return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Generates a strap dress around a body and writes it as a Wavefront OBJ.", kProgram};
+  CLI::App app{"Generates a strap dress around a body and writes it as a Wavefront OBJ.", kTool.program()};
   std::string bodyName = "human.zae";
   std::string output;
   std::vector<std::string> exclude = {"eyes"};
@@ -40,37 +50,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--neckline-rise", options.necklineRise, "rise of the top edge between the straps, m")
       ->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& help) {
-    return app.exit(help);
-  } catch (const CLI::ParseError& error) {
-    return fail(error.what());
-  }
-
-  const std::string bodyPath = figment::findModelFile(bodyName);
-  if (bodyPath.empty())
-    return fail(bodyName + ": not found (searched the working directory, $FIGMENT_MODEL_PATH, /usr/share/assimp/models)");
-  figment::StrapDress dress;
-  try {
-    figment::ImportOptions importOptions;
-    importOptions.exclude = exclude;
-    const figment::ImportedMesh body = figment::importMesh(bodyPath, importOptions);
-    dress = figment::makeStrapDress(body.mesh, options);
-  } catch (const std::runtime_error& error) {  // the importer's message starts with the path
-    return fail(error.what());
-  } catch (const std::exception& error) {
-    return fail(bodyPath + ": " + error.what());
-  }
-  try {
-    figment::exportObj(dress.mesh, output);
-  } catch (const std::exception& error) {
-    return fail(error.what());
-  }
-  std::printf("%s: %s: %zu vertices, %zu triangles, top %.3f m (%.3f m between the straps), hem %.3f m, "
-              "straps at x = %.3f, %.3f m\n",
-              kProgram, output.c_str(), dress.mesh.vertices.size(), dress.mesh.triangles.size(), dress.topHeight,
-              dress.necklineHeight, dress.hemHeight,
-              dress.strapX[0], dress.strapX[1]);
-  return 0;
+  if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+  return kTool.withBody(bodyName, [&](const std::string& bodyPath) {
+    return makeAndWrite(bodyPath, exclude, options, output);
+  });
 }
