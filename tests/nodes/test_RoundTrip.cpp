@@ -102,6 +102,19 @@ SceneRoot writtenAndReadAgain(SoNode* scene, const TempDir& dir, const std::stri
   return readFile(dir.file(name, text));
 }
 
+// A scene's text saved as `dir`/scene.iv, read, written next to it (so it finds the same
+// files) and read again.
+struct WrittenScene {
+  SceneRoot first, second;
+  std::string text;  // what was written
+};
+WrittenScene readWriteAndReadAgain(const TempDir& dir, const std::string& sceneText) {
+  WrittenScene scene;
+  scene.first = readFile(dir.file("scene.iv", sceneText));
+  if (scene.first) scene.second = writtenAndReadAgain(scene.first.get(), dir, "written.iv", scene.text);
+  return scene;
+}
+
 }  // namespace
 
 TEST(RoundTrip, EveryNodeTypeComesBackWithItsFieldValues) {
@@ -109,8 +122,8 @@ TEST(RoundTrip, EveryNodeTypeComesBackWithItsFieldValues) {
   TempDir dir;
   dir.file("cube.obj", cubeObj());
   const Grid g = grid(4, 0.6, 1.05, 0.5, 0.5);
-  const std::string path = dir.file(
-      "scene.iv",
+  const WrittenScene scene = readWriteAndReadAgain(
+      dir,
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  DEF Body MeshFile { fileName \"cube.obj\" metresPerUnit 1 upAxis Y exclude \"nothing\" }\n"
       "  Switch { whichChild -1  DEF Pattern Coordinate3 { point [ " + g.points + " ] } }\n"
@@ -124,22 +137,19 @@ TEST(RoundTrip, EveryNodeTypeComesBackWithItsFieldValues) {
       "  } . positions }\n"
       "  DEF Layer ClothingLayer { coordIndex [ " + g.coordIndex + " ] masked TRUE }\n"
       "}\n");
-  SceneRoot first = readFile(path);
-  ASSERT_TRUE(first);
-  std::string text;
-  // Written next to the original, so the MeshFile finds cube.obj the same way.
-  SceneRoot second = writtenAndReadAgain(first.get(), dir, "written.iv", text);
-  ASSERT_TRUE(second) << text;
+  ASSERT_TRUE(scene.first);
+  ASSERT_TRUE(scene.second) << scene.text;
+  SoSeparator* const second = scene.second.get();
 
-  expectSameScene(first.get(), second.get(), text);
-  const std::vector<ClothEngine*> eb = figment::findClothEngines(second.get());
+  expectSameScene(scene.first.get(), second, scene.text);
+  const std::vector<ClothEngine*> eb = figment::findClothEngines(second);
   ASSERT_EQ(eb.size(), 1u);
   EXPECT_STREQ(eb[0]->getName().getString(), "Drape");
   // The connections survive, not only the values they carried.
   SoField* master = nullptr;
   ASSERT_TRUE(eb[0]->restPoints.getConnectedField(master));
   EXPECT_STREQ(static_cast<SoNode*>(master->getContainer())->getName().getString(), "Pattern");
-  EXPECT_EQ(eb[0]->body.getValue(), find<MeshFile>(second.get(), "Body"));
+  EXPECT_EQ(eb[0]->body.getValue(), find<MeshFile>(second, "Body"));
 }
 
 TEST(RoundTrip, EverySceneFileComesBackWithItsFieldValues) {
@@ -178,20 +188,18 @@ TEST(RoundTrip, ConnectedInputTakesItsMastersValueNotTheWrittenCopy) {
   initCoin();
   TempDir dir;
   ScopedModelPath modelPath(FIGMENT_SOURCE_DIR "/scenes");
-  const std::string path = dir.file(
-      "scene.iv",
+  const WrittenScene scene = readWriteAndReadAgain(
+      dir,
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  Switch { whichChild -1  DEF Pattern MeshFile { fileName \"dress.obj\" } }\n"
       "  Coordinate3 { point = DEF Drape ClothEngine {\n"
       "    restPoints = USE Pattern.point  coordIndex = USE Pattern.coordIndex  maxTime 0.001\n"
       "  } . positions }\n"
       "}\n");
-  SceneRoot first = readFile(path);
-  ASSERT_TRUE(first);
-  std::string text;
-  SceneRoot second = writtenAndReadAgain(first.get(), dir, "written.iv", text);
-  ASSERT_TRUE(second) << text;
-  const auto* pattern = find<MeshFile>(second.get(), "Pattern");
+  ASSERT_TRUE(scene.first);
+  ASSERT_TRUE(scene.second) << scene.text;
+  SoSeparator* const second = scene.second.get();
+  const auto* pattern = find<MeshFile>(second, "Pattern");
   ASSERT_NE(pattern, nullptr);
   // The case this test is about: some float does not survive 8 digits.
   bool someFloatRounds = false;
@@ -202,7 +210,7 @@ TEST(RoundTrip, ConnectedInputTakesItsMastersValueNotTheWrittenCopy) {
       someFloatRounds |= std::strtof(written, nullptr) != pattern->point[i][k];
     }
   ASSERT_TRUE(someFloatRounds);
-  const std::vector<ClothEngine*> engines = figment::findClothEngines(second.get());
+  const std::vector<ClothEngine*> engines = figment::findClothEngines(second);
   ASSERT_EQ(engines.size(), 1u);
   EXPECT_TRUE(engines[0]->restPoints.isSame(pattern->point));
 }

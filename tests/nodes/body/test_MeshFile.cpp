@@ -2,6 +2,7 @@
 // errors as read errors, draws through hidden nodes and offers its collision surface.
 
 #include "nodes/body/MeshFile.h"
+#include "support/ActionChecks.h"
 #include "support/SceneTestSupport.h"
 #include "io/MeshImport.h"
 #include "sim/collision/MeshCollider.h"
@@ -144,22 +145,15 @@ TEST_F(MeshFileTest, DrawsThroughHiddenNodes) {
   dir.file("cube.obj", cubeObj());
   SceneRoot root = readFile(scene("fileName \"cube.obj\""));
   ASSERT_TRUE(root);
-  const SbViewportRegion viewport(100, 100);
+  const SbBox3f box = boundingBoxOf(root.get());
+  EXPECT_NEAR((box.getMin() - SbVec3f(0, 0, 0)).length(), 0.0f, 1e-6f);
+  EXPECT_NEAR((box.getMax() - SbVec3f(1, 1, 1)).length(), 0.0f, 1e-6f);
+  EXPECT_EQ(triangleCountOf(root.get()), 12);
 
-  SoGetBoundingBoxAction box(viewport);
-  box.apply(root.get());
-  EXPECT_NEAR((box.getBoundingBox().getMin() - SbVec3f(0, 0, 0)).length(), 0.0f, 1e-6f);
-  EXPECT_NEAR((box.getBoundingBox().getMax() - SbVec3f(1, 1, 1)).length(), 0.0f, 1e-6f);
-
-  SoGetPrimitiveCountAction count;
-  count.apply(root.get());
-  EXPECT_EQ(count.getTriangleCount(), 12);
-
-  SoRayPickAction pick(viewport);
-  pick.setRay(SbVec3f(0.5f, 0.5f, 5.0f), SbVec3f(0.0f, 0.0f, -1.0f));
-  pick.apply(root.get());
-  ASSERT_NE(pick.getPickedPoint(), nullptr);
-  EXPECT_NEAR(pick.getPickedPoint()->getPoint()[2], 1.0f, 1e-5f);
+  SoRayPickAction pick(kActionViewport);
+  const SoPickedPoint* picked = pickAlongMinusZ(pick, root.get(), SbVec3f(0.5f, 0.5f, 5.0f));
+  ASSERT_NE(picked, nullptr);
+  EXPECT_NEAR(picked->getPoint()[2], 1.0f, 1e-5f);
 
   // Searches find the MeshFile, never the face set inside it.
   EXPECT_NE(find<MeshFile>(root.get()), nullptr);

@@ -1,6 +1,7 @@
 // ClothingLayer: an IndexedFaceSet in every respect, plus `masked`.
 
 #include "nodes/render/ClothingLayer.h"
+#include "support/ActionChecks.h"
 #include "support/SceneTestSupport.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -78,23 +79,12 @@ TEST_F(ClothingLayerTest, ActsLikeAnIndexedFaceSetInEveryAction) {
   SceneRoot faceSet = readString(squares("IndexedFaceSet"));
   SceneRoot layer = readString(squares("ClothingLayer"));
   ASSERT_TRUE(faceSet && layer);
-  const SbViewportRegion viewport(100, 100);
+  EXPECT_EQ(boundingBoxOf(layer.get()).getMin(), boundingBoxOf(faceSet.get()).getMin());
+  EXPECT_EQ(boundingBoxOf(layer.get()).getMax(), boundingBoxOf(faceSet.get()).getMax());
+  EXPECT_EQ(triangleCountOf(layer.get()), 4);
 
-  SoGetBoundingBoxAction box(viewport);
-  box.apply(faceSet.get());
-  const SbBox3f expected = box.getBoundingBox();
-  box.apply(layer.get());
-  EXPECT_EQ(box.getBoundingBox().getMin(), expected.getMin());
-  EXPECT_EQ(box.getBoundingBox().getMax(), expected.getMax());
-
-  SoGetPrimitiveCountAction count;
-  count.apply(layer.get());
-  EXPECT_EQ(count.getTriangleCount(), 4);
-
-  SoRayPickAction pick(viewport);
-  pick.setRay(SbVec3f(1.5f, 0.5f, 1.0f), SbVec3f(0.0f, 0.0f, -1.0f));
-  pick.apply(layer.get());
-  const SoPickedPoint* picked = pick.getPickedPoint();
+  SoRayPickAction pick(kActionViewport);
+  const SoPickedPoint* picked = pickAlongMinusZ(pick, layer.get(), SbVec3f(1.5f, 0.5f, 1.0f));
   ASSERT_NE(picked, nullptr);
   EXPECT_TRUE(picked->getPath()->getTail()->isOfType(ClothingLayer::getClassTypeId()));
   const auto* face = static_cast<const SoFaceDetail*>(picked->getDetail());

@@ -2,6 +2,7 @@
 // every other action (bounding box, picking, primitive count, search, write and read).
 #include "nodes/render/DepthSortedGroup.h"
 #include "nodes/render/StencilSeparator.h"
+#include "support/ActionChecks.h"
 #include "support/SceneTestSupport.h"
 
 #include <Inventor/SbViewportRegion.h>
@@ -44,24 +45,15 @@ TEST_P(HybridNodes, ActsLikeItsBaseInEveryOtherAction) {
   ASSERT_NE(node, nullptr);
   EXPECT_STREQ(node->getTypeId().getName().getString(), type.c_str());
 
-  const SbViewportRegion viewport(100, 100);
-  SoGetBoundingBoxAction box(viewport);
-  box.apply(plain.get());
-  const SbBox3f expected = box.getBoundingBox();
-  box.apply(ours.get());
-  EXPECT_EQ(box.getBoundingBox().getMin(), expected.getMin());
-  EXPECT_EQ(box.getBoundingBox().getMax(), expected.getMax());
-
-  SoGetPrimitiveCountAction count;
-  count.apply(ours.get());
-  EXPECT_EQ(count.getTriangleCount(), 4);
+  EXPECT_EQ(boundingBoxOf(ours.get()).getMin(), boundingBoxOf(plain.get()).getMin());
+  EXPECT_EQ(boundingBoxOf(ours.get()).getMax(), boundingBoxOf(plain.get()).getMax());
+  EXPECT_EQ(triangleCountOf(ours.get()), 4);
 
   // Picking goes through in scene order and finds the nearest piece.
-  SoRayPickAction pick(viewport);
-  pick.setRay(SbVec3f(0.5f, 0.5f, 5.0f), SbVec3f(0.0f, 0.0f, -1.0f));
-  pick.apply(ours.get());
-  ASSERT_NE(pick.getPickedPoint(), nullptr);
-  EXPECT_TRUE(pick.getPickedPoint()->getPath()->containsNode(find<SoNode>(ours.get(), "Near")));
+  SoRayPickAction pick(kActionViewport);
+  const SoPickedPoint* picked = pickAlongMinusZ(pick, ours.get(), SbVec3f(0.5f, 0.5f, 5.0f));
+  ASSERT_NE(picked, nullptr);
+  EXPECT_TRUE(picked->getPath()->containsNode(find<SoNode>(ours.get(), "Near")));
 
   SoSearchAction search;
   search.setName("Far");

@@ -18,6 +18,15 @@ RadialDepth frustum(double r0, double r1, double length) {
   return RadialDepth(p);
 }
 
+// A wavy volume along y: 2 harmonics over 3 sections, 0.4 m long.
+RadialDepthParameters wavyVolume() {
+  RadialDepthParameters p;
+  p.length = 0.4;
+  p.harmonics = 2;
+  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
+  return p;
+}
+
 }  // namespace
 
 TEST(RadialDepth, AConesNearestPointAndNormalAreExact) {
@@ -66,12 +75,9 @@ TEST(RadialDepth, BadParametersAreNamed) {
 }
 
 TEST(RadialDepth, AnalyticTangentsMatchFiniteDifferences) {
-  RadialDepthParameters p;
+  RadialDepthParameters p = wavyVolume();
   p.direction = Vec3(0.2, 1.0, -0.1).normalized();
   p.reference = p.direction.unitOrthogonal();
-  p.length = 0.4;
-  p.harmonics = 2;
-  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
   const RadialDepth v(p);
   for (double s : {0.05, 0.13, 0.27, 0.36})
     for (double a : {0.3, 2.2, 5.0}) {
@@ -86,11 +92,7 @@ TEST(RadialDepth, AnalyticTangentsMatchFiniteDifferences) {
 
 TEST(RadialDepth, TheFastPathStaysCloseToTheExactNearestPoint) {
   // A wavy volume (2 harmonics, 3 sections); points within 1 cm of its side.
-  RadialDepthParameters p;
-  p.length = 0.4;
-  p.harmonics = 2;
-  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
-  const RadialDepth v(p);
+  const RadialDepth v(wavyVolume());
   double worst = 0.0;
   for (int i = 0; i < 300; ++i) {
     const double s = 0.02 + 0.36 * ((i * 37) % 300) / 300.0, a = 2 * M_PI * ((i * 91) % 300) / 300.0;
@@ -104,11 +106,7 @@ TEST(RadialDepth, TheFastPathPushesADeepPointStraightOut) {
   // Points up to 4 cm deep in a wavy volume: the push-out from p to point + clearance
   // normal runs along the normal (else a contact response turns its sideways part into
   // velocity).
-  RadialDepthParameters p;
-  p.length = 0.4;
-  p.harmonics = 2;
-  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
-  const RadialDepth v(p);
+  const RadialDepth v(wavyVolume());
   int tested = 0;
   for (int i = 0; i < 1000; ++i) {
     const double s = 0.01 + 0.38 * ((i * 37) % 1000) / 1000.0, a = 2 * M_PI * ((i * 91) % 1000) / 1000.0;

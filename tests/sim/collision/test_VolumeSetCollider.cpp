@@ -29,6 +29,15 @@ Eigen::Affine3d stretchedMap() {
   return map;
 }
 
+// A shape's surface samples (point and tangents) carried through `map`.
+template <class Shape>
+auto mappedSurface(const Shape& shape, const Eigen::Affine3d& map) {
+  return [&shape, map](double t, double a) {
+    const SurfaceSample x = shape.sample(t, a);
+    return SurfaceSample{map * x.w, map.linear() * x.dt, map.linear() * x.da};
+  };
+}
+
 Eigen::Affine3d scaling(double x, double y, double z) {
   Eigen::Affine3d map = Eigen::Affine3d::Identity();
   map.linear() = Vec3(x, y, z).asDiagonal();
@@ -139,15 +148,12 @@ TEST(CollisionVolume, StretchedCapsuleMatchesDenseSampling) {
   c.r1 = 0.6, c.r2 = 0.9, c.tx = 0.2, c.tz = -0.1, c.x = 0.1, c.y = 0.35, c.z = 0.08;
   c.ox = 0.01, c.oy = 0.02, c.oz = -0.03, c.theta = 0.3, c.phi = 0.7;
   const Capsule capsule(c);
-  const Eigen::Affine3d map = stretchedMap();
-  const auto world = transformedVolume(makeVolume(c), map);
-  const auto sample = [&](double t, double a) {
-    const SurfaceSample s = capsule.sample(t, a);
-    return SurfaceSample{map * s.w, map.linear() * s.dt, map.linear() * s.da};
-  };
+  const auto world = transformedVolume(makeVolume(c), stretchedMap());
+  const auto sample = mappedSurface(capsule, stretchedMap());
   std::vector<Vec3> samples;
   std::vector<std::array<double, 2>> parameters;
   sampleGrid(sample, 3.0, 400, 250, samples, parameters);
+  // Queries within 2 cm of the side.
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Vec3> queries;
@@ -170,10 +176,7 @@ TEST(CollisionVolume, StretchedRadialVolumeMatchesDenseSampling) {
   const RadialDepth volume(r);
   const Eigen::Affine3d map = stretchedMap();
   const auto world = transformedVolume(makeVolume(r), map);
-  const auto sample = [&](double s, double a) {
-    const SurfaceSample x = volume.sample(s, a);
-    return SurfaceSample{map * x.w, map.linear() * x.dt, map.linear() * x.da};
-  };
+  const auto sample = mappedSurface(volume, map);
   std::vector<Vec3> samples;
   std::vector<std::array<double, 2>> parameters;
   sampleGrid(sample, r.length, 300, 250, samples, parameters);
