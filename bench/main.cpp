@@ -1,6 +1,7 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
 #include "CollisionStudy.h"
 #include "DrapeStudy.h"
+#include "MethodStudy.h"
 #include "RenderStudy.h"
 #include "StabilityStudy.h"
 
@@ -67,6 +68,23 @@ CLI::App* addCollisionCommand(CLI::App& app, CollisionStudyOptions& collision) {
   return collisionCommand;
 }
 
+CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
+  CLI::App* command = app.add_subcommand(
+      "methods", "a garment by each method and time step: steps, wall to rest, deviation, strain, nodes inside");
+  command->add_option("--scene", methods.scenes, "scenes whose first garment is draped (repeat the option)")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  command->add_option("--method", methods.methods, "INTEGRATOR:DT[:LIMITER:LIMIT_G], e.g. heun:1.5e-4:clamp:30 (repeat)")
+      ->capture_default_str();
+  command->add_option("--reference", methods.reference, "the converged run deviations are measured against")
+      ->capture_default_str();
+  command->add_option("--repeat", methods.repeat, "runs per method (median wall time)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--out", methods.outDir, "folder for methods.csv")->capture_default_str();
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -77,16 +95,19 @@ int main(int argc, char** argv) {
   stability.plotScript = FIGMENT_PLOT_STABILITY;
   RenderStudyOptions render;
   CollisionStudyOptions collision;
+  MethodStudyOptions methods;
   collision.plotScript = FIGMENT_PLOT_COLLISION;
   CLI::App* drapeCommand = addDrapeCommand(app, drape);
   CLI::App* stabilityCommand = addStabilityCommand(app, stability);
   CLI::App* renderCommand = addRenderCommand(app, render);
   CLI::App* collisionCommand = addCollisionCommand(app, collision);
+  CLI::App* methodCommand = addMethodCommand(app, methods);
 
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return runDrapeStudy(drape);
   if (stabilityCommand->parsed()) return runStabilityStudy(stability);
   if (renderCommand->parsed()) return runRenderStudy(render);
   if (collisionCommand->parsed()) return runCollisionStudy(collision);
+  if (methodCommand->parsed()) return runMethodStudy(methods);
   return 1;
 }

@@ -1,0 +1,199 @@
+#include "MethodStudy.h"
+
+#include "CsvFile.h"
+#include "SceneGarment.h"
+#include "Statistics.h"
+#include "nodes/body/CollisionBody.h"
+#include "sim/collision/Collider.h"
+
+#include <Inventor/SbName.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+
+namespace figment::bench {
+
+namespace {
+
+struct Method {
+  std::string text;  // as given
+  std::string integrator, limiter = "NONE";
+  double timeStep = 0.0, limit = 30.0;
+};
+
+std::string upper(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::toupper(c); });
+  return s;
+}
+
+// "heun:1.5e-4[:clamp:30]"; throws std::invalid_argument naming the text.
+Method parseMethod(const std::string& text) {
+  std::vector<std::string> parts;
+  std::stringstream in(text);
+  for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
+  if (parts.size() != 2 && parts.size() != 4)
+    throw std::invalid_argument("method \"" + text + "\": expected INTEGRATOR:DT[:LIMITER:LIMIT_G]");
+  Method m{text, upper(parts[0])};
+  try {
+    m.timeStep = std::stod(parts[1]);
+    if (parts.size() == 4) m.limiter = upper(parts[2]), m.limit = std::stod(parts[3]);
+  } catch (const std::exception&) {
+    throw std::invalid_argument("method \"" + text + "\": a time step or limit is not a number");
+  }
+  return m;
+}
+
+// Sets `field` to the value named `name`; false when it has no such value.
+bool setByName(SoSFEnum& field, const std::string& name) {
+  for (int i = 0; i < field.getNumEnums(); ++i) {
+    SbName candidate;
+    const int value = field.getEnum(i, candidate);
+    if (name == candidate.getString()) {
+      field.setValue(value);
+      return true;
+    }
+  }
+  return false;
+}
+
+// Sets the engine's method fields; "" or what is wrong.
+std::string configure(ClothEngine& engine, const Method& m) {
+  if (!setByName(engine.integrator, m.integrator)) return "method \"" + m.text + "\": no integrator " + m.integrator;
+  if (!setByName(engine.accelerationLimiter, m.limiter))
+    return "method \"" + m.text + "\": no acceleration limiter " + m.limiter;
+  engine.accelerationLimit.setValue(m.limit);
+  engine.timeStep.setValue(m.timeStep);
+  return "";
+}
+
+// What one method's drape came to.
+struct Outcome {
+  ClothEngine::RunStats run;  // of the last repeat
+  double medianWall = 0.0;
+  std::vector<SbVec3f> positions;
+  std::string error;
+};
+
+Outcome drape(SceneGarment& garment, const Method& m, int repeat) {
+  Outcome out;
+  out.error = configure(*garment.engine, m);
+  std::vector<double> wall;
+  for (int i = 0; i < repeat && out.error.empty(); ++i) {
+    garment.engine->restPoints.touch();  // simulate again
+    out.positions = garment.drape();
+    out.error = garment.engine->lastError();
+    out.run = garment.engine->lastRun();
+    wall.push_back(out.run.wallSeconds);
+  }
+  if (out.error.empty()) out.medianWall = median(wall);
+  return out;
+}
+
+struct Measures {
+  double meanDeviation = NAN;  // m, against the reference
+  double maxStrain = NAN;
+  int inside = 0;              // nodes inside the body
+  double topHeight = NAN;      // m, mean height of the rest shape's top ring
+};
+
+// The nodes of the rest shape's top centimetre: a skirt's waistband, a dress's top.
+std::vector<int> topRing(const std::vector<SbVec3f>& rest) {
+  float top = -std::numeric_limits<float>::max();
+  for (const SbVec3f& p : rest) top = std::max(top, p[1]);
+  std::vector<int> ring;
+  for (size_t i = 0; i < rest.size(); ++i)
+    if (rest[i][1] > top - 0.01f) ring.push_back(static_cast<int>(i));
+  return ring;
+}
+
+Measures measure(const SceneGarment& garment, const std::vector<SbVec3f>& x, const std::vector<SbVec3f>& reference) {
+  Measures m;
+  m.maxStrain = garment.maxEdgeStrain(x);
+  m.meanDeviation = 0.0;
+  for (size_t i = 0; i < x.size(); ++i) m.meanDeviation += (x[i] - reference[i]).length();
+  m.meanDeviation /= static_cast<double>(x.size());
+  const std::vector<int> ring = topRing(garment.rest);
+  m.topHeight = 0.0;
+  for (int i : ring) m.topHeight += x[i][1];
+  m.topHeight /= static_cast<double>(ring.size());
+  if (const CollisionBody* body = asCollisionBody(garment.engine->body.getValue())) {
+    const std::shared_ptr<const Collider> collider = body->bodyCollider();
+    Contact contact;
+    for (const SbVec3f& p : x)
+      if (collider->contact(Vec3(p[0], p[1], p[2]), 0.0, 0.05, contact) && contact.distance < 0.0) ++m.inside;
+  }
+  return m;
+}
+
+double height(const std::vector<SbVec3f>& rest) {
+  float low = std::numeric_limits<float>::max(), high = -low;
+  for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
+  return high - low;
+}
+
+void report(const std::string& scene, const Method& m, const Outcome& o, const Measures& s, double garmentHeight,
+            std::ostream& csv) {
+  char line[512];
+  std::snprintf(line, sizeof line, "%s,%s,%s,%g,%s,%g,%d,%.5g,%d,%.4f,%.6g,%.4f,%.4g,%d,%.4f\n", scene.c_str(),
+                m.integrator.c_str(), m.limiter.c_str(), m.limiter == "NONE" ? 0.0 : m.limit, m.text.c_str(),
+                m.timeStep, o.run.iterations, o.run.simulatedSeconds, o.run.atRest ? 1 : 0, o.medianWall,
+                s.meanDeviation, 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside, s.topHeight);
+  csv << line;
+  csv.flush();
+  std::printf("%-26s %7d steps %7.3f s sim %8.3f s wall %-7s dev %6.3f %% strain %5.3f inside %4d top %.3f m\n",
+              m.text.c_str(), o.run.iterations, o.run.simulatedSeconds, o.medianWall,
+              o.run.atRest ? "rest" : "moving", 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
+              s.topHeight);
+}
+
+// Every method on one scene; "" or the error.
+std::string studyScene(const std::string& scene, const MethodStudyOptions& options, std::ostream& csv) {
+  SceneGarment garment;
+  std::string error;
+  if (!garment.load(scene, error)) return error;
+  const Outcome reference = drape(garment, parseMethod(options.reference), 1);
+  if (!reference.error.empty()) return scene + ": the reference " + options.reference + ": " + reference.error;
+  const double garmentHeight = height(garment.rest);
+  std::printf("%s: reference %s, %d steps, %.3f s simulated, %s\n", scene.c_str(), options.reference.c_str(),
+              reference.run.iterations, reference.run.simulatedSeconds, reference.run.atRest ? "at rest" : "moving");
+  for (const std::string& text : options.methods) {
+    const Method m = parseMethod(text);
+    const Outcome o = drape(garment, m, options.repeat);
+    if (!o.error.empty()) {
+      std::printf("%-26s failed: %s\n", text.c_str(), o.error.c_str());
+      csv << scene << ',' << m.integrator << ',' << m.limiter << ",,\"" << text << "\"," << m.timeStep
+          << ",,,,,,,,,\n";
+      continue;
+    }
+    report(scene, m, o, measure(garment, o.positions, reference.positions), garmentHeight, csv);
+  }
+  return "";
+}
+
+}  // namespace
+
+int runMethodStudy(const MethodStudyOptions& options) {
+  try {
+    parseMethod(options.reference);
+    for (const std::string& text : options.methods) parseMethod(text);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "figment-bench: %s\n", e.what());
+    return 2;
+  }
+  std::filesystem::create_directories(options.outDir);
+  const bool written = writeCsv(options.outDir + "/methods.csv", [&](std::ostream& csv) -> std::string {
+    csv << "scene,integrator,limiter,limit_g,method,dt,steps,simulated_s,at_rest,median_wall_s,mean_dev_m,"
+           "mean_dev_pct_height,max_edge_strain,nodes_inside,top_height_m\n";
+    for (const std::string& scene : options.scenes)
+      if (std::string error = studyScene(scene, options, csv); !error.empty()) return error;
+    return "";
+  });
+  return written ? 0 : 1;
+}
+
+}  // namespace figment::bench
