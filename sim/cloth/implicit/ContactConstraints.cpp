@@ -37,7 +37,9 @@ void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector
     const Vec3& normal = contact.normal;
     filter.kind[i] = NodeFilter::Sliding;
     filter.normal[i] = normal;
-    const double targetSpeed = (clearance_ - contact.distance) / dt;  // ends the step at the clearance
+    // Out to the clearance by the step's end; a node in the band above it keeps its
+    // height (pulled down, it would read as lifting off, a pull, and be let go).
+    const double targetSpeed = std::max(0.0, clearance_ - contact.distance) / dt;
     filter.prescribed[i] = (targetSpeed - v[i].dot(normal)) * normal;
   }
 }
@@ -46,6 +48,7 @@ void ContactConstraints::applyFriction(const NodeFilter& filter, const std::vect
                                        const std::vector<double>& masses, std::vector<Vec3>& v) {
   const int n = static_cast<int>(v.size());
   for (int i = 0; i < n; ++i) {
+    released_[i] = 0;  // a release lasts one step
     if (filter.kind[i] != NodeFilter::Sliding) continue;
     const Vec3& normal = filter.normal[i];
     const double push = impulse[i].dot(normal);

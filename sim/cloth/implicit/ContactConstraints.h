@@ -5,9 +5,9 @@
 //  1. before the solve (constrain): a node within clearance + band of the body at the
 //     step's start is held on the surface: its velocity change along the body's normal
 //     is prescribed so that it ends the step at the clearance (an outward push for a
-//     node inside), and it moves freely along the surface. A node whose constraint
-//     pulled it towards the body in the last step is let go (it is lifting off), unless
-//     it is inside the clearance.
+//     node inside; none for a node in the band above), and it moves freely along the
+//     surface. A node whose constraint pulled it towards the body in the last step is
+//     let go for one step (it is lifting off), unless it is inside the clearance.
 //  2. after the solve (applyFriction): the constraint's impulse A y - b along the
 //     normal, j >= 0, limits the tangential velocity change friction can make:
 //     |v_t| <= mu j / m stops the node (static), else v_t shrinks by mu j / m (sliding).
