@@ -11,10 +11,12 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoFile.h>
+#include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 
 namespace figment::bench {
@@ -99,6 +101,28 @@ std::string timeEveryBody(const DrapeStudyOptions& options, viewer::SceneSession
   return "";
 }
 
+// The scene's method replaced where the options say so.
+void overrideMethod(const DrapeStudyOptions& options, viewer::SceneSession& session) {
+  for (ClothEngine* engine : session.engines()) {
+    if (!options.integrator.empty()) engine->integrator.setValue(SbName(options.integrator.c_str()));
+    if (options.timeStep > 0.0) engine->timeStep = options.timeStep;
+  }
+}
+
+bool writePositions(const std::string& path, viewer::SceneSession& session) {
+  return writeCsv(path, [&](std::ostream& csv) -> std::string {
+    csv << std::setprecision(9) << "garment,node,x,y,z\n";
+    for (ClothEngine* engine : session.engines()) {
+      SoMFVec3f positions;
+      positions.connectFrom(&engine->positions);
+      const std::string name = engine->getName().getLength() ? engine->getName().getString() : "unnamed";
+      for (int i = 0; i < positions.getNum(); ++i)
+        csv << name << ',' << i << ',' << positions[i][0] << ',' << positions[i][1] << ',' << positions[i][2] << '\n';
+    }
+    return "";
+  });
+}
+
 }  // namespace
 
 int runDrapeStudy(const DrapeStudyOptions& options) {
@@ -112,12 +136,14 @@ int runDrapeStudy(const DrapeStudyOptions& options) {
     std::cerr << "figment-bench: " << options.scene << ": no ClothEngine to time\n";
     return 1;
   }
+  overrideMethod(options, session);
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/drape.csv", [&](std::ostream& csv) -> std::string {
     const std::string error = timeEveryBody(options, session, csv);
     return error.empty() ? "" : options.scene + ": " + error;
   });
   if (!written) return 1;
+  if (!options.positionsFile.empty() && !writePositions(options.positionsFile, session)) return 1;
   return 0;
 }
 

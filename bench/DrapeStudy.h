@@ -14,6 +14,11 @@ struct DrapeStudyOptions {
   // (the triangles of the scene's Mannequin body), or a volumes file (.iv, as
   // figment-fit writes) that replaces the Mannequin's children.
   std::vector<std::string> bodies = {"scene"};
+  // Overrides of every engine's method: "" and 0 keep the scene's.
+  std::string integrator;  // EULER, SYMPLECTIC, HEUN or IMPLICIT
+  double timeStep = 0.0;   // s
+  // When set: the last drape's node positions, CSV garment,node,x,y,z (m).
+  std::string positionsFile;
 };
 
 // Reads the scene, re-runs every ClothEngine `repeat` times against each body, writes

@@ -20,6 +20,11 @@ CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
                            "what the garments collide with, each timed: scene, exact (the Mannequin's body "
                            "triangles) or a volumes .iv file")
       ->capture_default_str();
+  drapeCommand->add_option("--integrator", drape.integrator, "every engine's integrator instead of the scene's")
+      ->check(CLI::IsMember({"EULER", "SYMPLECTIC", "HEUN", "IMPLICIT"}));
+  drapeCommand->add_option("--time-step", drape.timeStep, "every engine's time step instead of the scene's, s")
+      ->check(CLI::PositiveNumber);
+  drapeCommand->add_option("--positions", drape.positionsFile, "CSV of the last drape's node positions");
   return drapeCommand;
 }
 

@@ -18,7 +18,7 @@ namespace figment::viewer {
 
 // How an engine integrated its drape: the fields the statistics report.
 struct DrapeMethod {
-  std::string integrator;           // EULER, SYMPLECTIC or HEUN, as the .iv file spells it
+  std::string integrator;           // EULER, SYMPLECTIC, HEUN or IMPLICIT, as the .iv file spells it
   double timeStep = 0.0;            // s
   double strainLimit = 0.0;         // 0 = no strain clamping
   std::string accelerationLimiter;  // NONE, CLAMP or TANH

@@ -65,6 +65,7 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, EULER);
   SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, SYMPLECTIC);
   SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, HEUN);
+  SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, IMPLICIT);
   SO_ENGINE_SET_SF_ENUM_TYPE(integrator, Integrator);
   SO_ENGINE_ADD_INPUT(strainLimit, (defaults.strainLimit));
   SO_ENGINE_ADD_INPUT(accelerationLimiter, (NONE));

@@ -133,8 +133,11 @@ class ClothEngine : public SoEngine {
   SoSFDouble clearance;
   // Kelvin-Voigt relaxation time of the membrane (strain-rate damping), s. Default 1e-4.
   SoSFDouble strainRateDamping;
-  // How a step advances the cloth: EULER (explicit), SYMPLECTIC (semi-implicit Euler)
-  // or HEUN (improved Euler, the paper's). Default HEUN.
+  // How a step advances the cloth: EULER (explicit), SYMPLECTIC (semi-implicit Euler),
+  // HEUN (improved Euler, the paper's) or IMPLICIT (backward Euler with the contacts in
+  // its solve, sim/cloth/implicit/ImplicitEuler.h: stable at steps of 1/100 s and more;
+  // it ignores strainLimit and accelerationLimiter, which only explicit steps need; its
+  // assembly and solve use OMP_NUM_THREADS threads). Default HEUN.
   SoSFEnum integrator;
   // Strain clamping (paper §2): each section's strain components are held within
   // [-strainLimit, strainLimit] when its forces are computed, dimensionless; 0 = off.
@@ -161,7 +164,7 @@ class ClothEngine : public SoEngine {
   // Seed of the phase changes: equal seeds repeat a run exactly. Default 1. Must be >= 0.
   SoSFInt32 windSeed;
 
-  enum Integrator { EULER, SYMPLECTIC, HEUN };
+  enum Integrator { EULER, SYMPLECTIC, HEUN, IMPLICIT };
   enum AccelerationLimiter { NONE, CLAMP, TANH };
 
   // --- output ---

@@ -94,6 +94,7 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
   switch (engine.integrator.getValue()) {
     case ClothEngine::EULER: p.integrator = Integrator::ExplicitEuler; break;
     case ClothEngine::SYMPLECTIC: p.integrator = Integrator::SymplecticEuler; break;
+    case ClothEngine::IMPLICIT: p.integrator = Integrator::Implicit; break;
     default: p.integrator = Integrator::Heun; break;
   }
   p.strainLimit = engine.strainLimit.getValue();

@@ -68,16 +68,13 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
 }
 
 void ClothModel::addWindForces(const std::vector<Vec3>& x, double t) const {
-  // F = p(t) A |n . w| w per section, a third to each corner (sim/cloth/Wind.h). With
-  // c = (x1 - x0) x (x2 - x0) = 2 A n, A |n . w| = |c . w| / 2: a section edge-on to the
-  // wind (n perpendicular to w) catches none. Every section feels the full wind (no
-  // shadowing).
+  // F = p(t) A |n . w| w per section, a third to each corner (sim/cloth/Wind.h). Every
+  // section feels the full wind (no shadowing).
   const double pressure = wind_.pressure(t);
   const Vec3& w = wind_.direction();
   for (const MembraneElement& section : sections_) {
     const Triangle& c = section.corners();
-    const Vec3 doubleAreaNormal = (x[c[1]] - x[c[0]]).cross(x[c[2]] - x[c[0]]);
-    const Vec3 cornerForce = (pressure * std::abs(doubleAreaNormal.dot(w)) / 6.0) * w;
+    const Vec3 cornerForce = windCornerForce(x[c[0]], x[c[1]], x[c[2]], pressure, w);
     for (int i : c) force_[i] += cornerForce;
   }
 }

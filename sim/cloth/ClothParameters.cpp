@@ -12,6 +12,7 @@ const char* integratorName(Integrator integrator) {
     case Integrator::ExplicitEuler: return "explicit Euler";
     case Integrator::SymplecticEuler: return "symplectic Euler";
     case Integrator::Heun: return "improved Euler (Heun)";
+    case Integrator::Implicit: return "implicit";
   }
   return "unknown";
 }
@@ -35,6 +36,8 @@ void ClothParameters::validate() const {
   requireNonNegative("strainLimit", strainLimit);
   requirePositive("accelerationLimit", accelerationLimit);
   wind.validate();
+  requireOpenRange("implicitTolerance", implicitSolver.tolerance, 0.0, 1.0);
+  requirePositive("implicitMaxIterations", implicitSolver.maxIterations);
   if (timeStep > maxTime)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
                                 formatNumber(maxTime));

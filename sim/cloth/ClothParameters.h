@@ -18,6 +18,11 @@ enum class Integrator {
   SymplecticEuler,  // v += dt a(t);  x += dt v(t+dt)                      first order
   Heun,             // improved Euler: mean of the slopes at t and at the
                     // explicit Euler prediction                            second order
+  Implicit,         // backward Euler, linearised (Baraff & Witkin 1998): one Newton
+                    // step on M dv = dt f(x + dt (v + dv), v + dv), solved by
+                    // filtered PCG with the contacts as constraints
+                    // (sim/cloth/implicit/ImplicitEuler.h)          first order,
+                    // stable at any step; ignores the limiters and strainLimit
 };
 const char* integratorName(Integrator integrator);  // "explicit Euler", ...
 
@@ -27,6 +32,12 @@ enum class AccelerationLimiter {
   None,
   Clamp,  // |a| > a_max  ->  a_max a/|a|           (the paper's choice)
   Tanh,   // a -> a_max tanh(|a|/a_max) a/|a|       (smooth, a little dearer)
+};
+
+// The linear solve of the implicit integrator (sim/cloth/implicit/FilteredPcg.h).
+struct ImplicitSolverParameters {
+  double tolerance = 1e-3;  // PCG stops when |residual| <= tolerance |right-hand side|
+  int maxIterations = 300;  // PCG iterations per time step, at most
 };
 
 struct ClothParameters {
@@ -46,6 +57,7 @@ struct ClothParameters {
   AccelerationLimiter accelerationLimiter = AccelerationLimiter::None;
   double accelerationLimit = 20.0;       // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
   WindParameters wind;                   // paper §2 wind; amplitude 0 (the default) = none
+  ImplicitSolverParameters implicitSolver;  // used by Integrator::Implicit only
   // a_max in m/s^2.
   double accelerationLimitSI() const;
 

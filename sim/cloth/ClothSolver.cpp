@@ -1,5 +1,7 @@
 #include "sim/cloth/ClothSolver.h"
 
+#include "sim/cloth/ContactResponse.h"
+#include "sim/cloth/implicit/ImplicitEuler.h"
 #include "sim/core/ParameterChecks.h"
 
 #include <chrono>
@@ -17,6 +19,8 @@ ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& par
   v_.assign(x_.size(), Vec3::Zero());
   pinned_.assign(x_.size(), 0);
   bodyDistanceBound_.assign(x_.size(), 0.0);
+  if (parameters_.integrator == Integrator::Implicit)
+    implicit_ = std::make_unique<ImplicitEuler>(*model_, parameters_, body_);
 }
 
 ClothSolver::~ClothSolver() = default;
@@ -44,36 +48,6 @@ bool ClothSolver::atRest() const {
 namespace {
 constexpr double kContactSearchMargin = 0.02;  // m beyond clearance and motion a query looks
 
-// Contact response on one node that ended the step inside the body or within the
-// clearance, at x with the integrator's end-of-step velocity v:
-//  - the velocity takes in the push-out: v + (target - x) / dt, so a node the body
-//    holds in a crease does not keep a velocity that every push-out undoes; its normal
-//    part is then limited to what the node had away from the body (the push-out never
-//    launches a node, and velocity into the body is removed);
-//  - friction (Coulomb) acts on the tangential part, limited by mu times the normal
-//    velocity into the body that the contact removed. Static (|v_t| <= mu dv_n): the
-//    node stops and keeps its tangential place from the start of the step. Sliding:
-//    v_t shrinks by mu dv_n.
-//  - the node ends on the surface + clearance.
-void respondToContact(const Contact& contact, double clearance, double friction, double dt, const Vec3& xPrevious,
-                      Vec3& x, Vec3& v) {
-  const Vec3& n = contact.normal;
-  const Vec3 target = contact.surfacePoint + clearance * n;
-  const double normalSpeedBefore = v.dot(n);
-  const double removedNormalSpeed = std::max(0.0, -normalSpeedBefore);
-  v += (target - x) / dt;
-  const double normalSpeed = std::clamp(v.dot(n), 0.0, std::max(0.0, normalSpeedBefore));
-  const Vec3 tangential = v - v.dot(n) * n;
-  const double tangentialSpeed = tangential.norm();
-  const double frictionLimit = friction * removedNormalSpeed;
-  if (tangentialSpeed <= frictionLimit) {
-    v = normalSpeed * n;
-    x = xPrevious + (target - xPrevious).dot(n) * n;
-  } else {
-    v = normalSpeed * n + tangential * (1.0 - frictionLimit / tangentialSpeed);
-    x = target;
-  }
-}
 }  // namespace
 
 void ClothSolver::integrate(double dt) {
@@ -116,10 +90,13 @@ void ClothSolver::integrate(double dt) {
         v_[i] += 0.5 * dt * (a0_[i] + a1_[i]);
       }
       break;
+    case Integrator::Implicit:  // stepImplicit(): never here
+      break;
   }
 }
 
 void ClothSolver::step() {
+  if (implicit_) return stepImplicit();
   const double dt = parameters_.timeStep;
   const size_t n = x_.size();
   integrate(dt);
@@ -147,20 +124,45 @@ void ClothSolver::step() {
       }
     }
     const double speed = v_[i].norm();
-    if (!std::isfinite(speed) || !x_[i].allFinite() || speed > kBlowUpSpeed)
-      throw SimulationError("simulation blew up at step " + std::to_string(iterations_ + 1) + " (t = " +
-                            formatNumber(time_ + dt) + " s): node " + std::to_string(i) + " speed " +
-                            formatNumber(speed) + " m/s; timeStep = " + formatNumber(dt) +
-                            " s, method " + integratorName(parameters_.integrator));
+    checkFinite(i, speed);
     fastest = std::max(fastest, speed);
   }
-  time_ += dt;
+  endStep(fastest);
+}
+
+void ClothSolver::checkFinite(size_t i, double speed) const {
+  if (!std::isfinite(speed) || !x_[i].allFinite() || speed > kBlowUpSpeed)
+    throw SimulationError("simulation blew up at step " + std::to_string(iterations_ + 1) + " (t = " +
+                          formatNumber(time_ + parameters_.timeStep) + " s): node " + std::to_string(i) + " speed " +
+                          formatNumber(speed) + " m/s; timeStep = " + formatNumber(parameters_.timeStep) +
+                          " s, method " + integratorName(parameters_.integrator));
+}
+
+void ClothSolver::endStep(double fastest) {
+  time_ += parameters_.timeStep;
   ++iterations_;
   if (fastest < parameters_.rest.speedThreshold) {
     if (restSince_ < 0.0) restSince_ = time_;
   } else {
     restSince_ = -1.0;
   }
+}
+
+void ClothSolver::stepImplicit() {
+  const double dt = parameters_.timeStep;
+  xStart_ = x_;
+  implicit_->step(x_, v_, time_, pinned_);
+  // The at-rest rule's speed is displacement per simulated second, |x' - x| / dt: the
+  // velocity itself in backward Euler (x' = x + dt v') except where a contact moved the
+  // node, and a speed at any step size (never a displacement per step, which would let
+  // a large step's creep pass for rest).
+  double fastest = 0.0;
+  for (size_t i = 0; i < x_.size(); ++i) {
+    const double speed = std::max(v_[i].norm(), (x_[i] - xStart_[i]).norm() / dt);
+    checkFinite(i, speed);
+    fastest = std::max(fastest, (x_[i] - xStart_[i]).norm() / dt);
+  }
+  endStep(fastest);
 }
 
 DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& progress, double progressInterval) {

@@ -13,6 +13,8 @@
 //     surface + clearance, their velocity becomes the motion they made, the velocity
 //     into the body is removed and friction acts on the tangential velocity;
 //  4. blow-up check (non-finite values, speed > kBlowUpSpeed), then the at-rest rule.
+// Integrator::Implicit replaces steps 1-3 with one backward Euler step whose solve holds
+// the contacts (sim/cloth/implicit/ImplicitEuler.h); its at-rest speed is |x' - x| / dt.
 
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/ClothParameters.h"
@@ -25,6 +27,8 @@
 #include <vector>
 
 namespace figment {
+
+class ImplicitEuler;
 
 struct DrapeProgress {
   int iterations;
@@ -91,6 +95,10 @@ class ClothSolver {
   // cannot touch the body and needs no query (exact, since the body does not move).
   std::vector<double> bodyDistanceBound_;
   void integrate(double dt);
+  void stepImplicit();                             // Integrator::Implicit's step
+  void checkFinite(size_t node, double speed) const;  // throws SimulationError
+  void endStep(double fastest);                    // the clock and the at-rest rule
+  std::unique_ptr<ImplicitEuler> implicit_;        // set for Integrator::Implicit only
 
   std::vector<Vec3> xStart_, a0_, a1_, xPredicted_, vPredicted_;  // a step's scratch
 };

@@ -36,6 +36,7 @@ class MembraneElement {
   bool valid() const { return restArea_ > 0.0; }
   const Triangle& corners() const { return corners_; }
   double restArea() const { return restArea_; }  // m^2
+  const Eigen::Matrix2d& restInverse() const { return restInverse_; }  // Dm^-1, 1/m
 
   // Green strain (eps_uu, eps_vv, eps_uv) of the section at positions x.
   Eigen::Vector3d strain(const std::vector<Vec3>& x) const;

@@ -46,7 +46,6 @@ class PlateBending {
 
   const std::vector<BendingJoint>& joints() const { return joints_; }
 
- private:
   // A section's quadratic form over the angle changes of its (up to three) joints.
   struct SectionForm {
     int triangle;                   // index in the rest mesh
@@ -57,7 +56,10 @@ class PlateBending {
     bool held = false;              // a clamp: all corners held
     Eigen::Matrix3d form;           // W = 1/2 d^T form d, d_i = scale_i (theta_i - theta0_i)
   };
+  // Every section with a joint; the implicit integrator's Hessian reads them.
+  const std::vector<SectionForm>& sectionForms() const { return sections_; }
 
+ private:
   void measureAngles(const std::vector<Vec3>& x) const;
   Eigen::Vector3d angleChanges(const SectionForm& s) const;
 

@@ -20,6 +20,7 @@
 
 #include "sim/core/TriangleMesh.h"
 
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -37,6 +38,14 @@ struct WindParameters {
   // direction finite, amplitude, frequency and meanPhaseInterval >= 0.
   void validate() const;
 };
+
+// The force on each corner of the section (x0, x1, x2) at pressure p (Pa) and unit
+// direction w: p A |n . w| w / 3 (N). With c = (x1 - x0) x (x2 - x0) = 2 A n,
+// A |n . w| = |c . w| / 2: a section edge-on to the wind catches none.
+inline Vec3 windCornerForce(const Vec3& x0, const Vec3& x1, const Vec3& x2, double pressure, const Vec3& w) {
+  const Vec3 doubleAreaNormal = (x1 - x0).cross(x2 - x0);
+  return (pressure * std::abs(doubleAreaNormal.dot(w)) / 6.0) * w;
+}
 
 class Wind {
  public:

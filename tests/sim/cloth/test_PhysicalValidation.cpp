@@ -3,10 +3,11 @@
 //    with the weight below each cross-section) and narrows by Poisson's ratio;
 //  - a cantilevered strip droops as the small-deflection beam formula delta = q L^4 / 8D
 //    says, on right-triangle and equilateral meshes, for several thicknesses.
-// Both runs use symplectic Euler: the equilibrium does not depend on the integrator, and it
+// Both run with symplectic Euler: the equilibrium does not depend on the integrator, and it
 // stays stable for the undamped high modes at the step sizes used here with one force
 // evaluation per step. Air resistance (mass-proportional damping) settles every mode and
-// vanishes at rest.
+// vanishes at rest. Both run again with the implicit integrator at dt = 1/100 s, far
+// beyond the explicit limit, to the same tolerances.
 #include "support/TestMeshes.h"
 #include "sim/cloth/ClothSolver.h"
 
@@ -18,23 +19,28 @@ using namespace figment;
 
 namespace {
 constexpr double kG = 9.81;  // m/s^2, |gravity| in ClothParameters
+constexpr double kImplicitStep = 0.01;  // s
 
-ClothParameters settling(const Material& material, double lowestFrequency, double timeStep, double restSpeed) {
+// `explicitStep`: symplectic Euler's stable step; with Integrator::Implicit the step is
+// kImplicitStep instead.
+ClothParameters settling(const Material& material, double lowestFrequency, double explicitStep, double restSpeed,
+                         Integrator integrator) {
   ClothParameters p;
   p.material = material;
-  p.integrator = Integrator::SymplecticEuler;
+  p.integrator = integrator;
   p.strainRateDamping = 0.0;
   // Critical damping of the slowest mode: a = -(k / rho h) v with k / rho h = 2 omega_1.
   p.airResistance = 2.0 * lowestFrequency * p.material.arealDensity();
-  p.timeStep = timeStep;
-  p.maxTime = 40.0 / lowestFrequency;
+  p.timeStep = integrator == Integrator::Implicit ? kImplicitStep : explicitStep;
+  p.maxTime = std::max(40.0 / lowestFrequency, 500 * p.timeStep);  // implicit: 500 steps at most
   p.rest.speedThreshold = restSpeed;
   p.rest.window = 2.0 / lowestFrequency;
   return p;
 }
 }  // namespace
 
-TEST(PhysicalValidation, HangingStripStretchesAndNarrowsAsHookeSays) {
+namespace {
+void expectHookesHangingStrip(Integrator integrator) {
   // 1 m x 5 cm, 4 x 80 sections of 1.25 cm, pinned along its top edge (y = 0). At depth s
   // the section carries the weight below it: sigma(s) = rho g (L - s), eps = sigma / E, so
   //   elongation  dL = rho g L^2 / (2 E)  and relative narrowing  nu eps(s).
@@ -48,7 +54,7 @@ TEST(PhysicalValidation, HangingStripStretchesAndNarrowsAsHookeSays) {
   const double waveSpeed = std::sqrt(m.youngsModulus / m.density);          // 58 m/s
   const double omega1 = M_PI * waveSpeed / (2.0 * length);                  // fixed-free bar
   const double expectedElongation = m.density * kG * length * length / (2.0 * m.youngsModulus);
-  const ClothParameters p = settling(m, omega1, 5e-5, 1e-3 * expectedElongation * omega1);
+  const ClothParameters p = settling(m, omega1, 5e-5, 1e-3 * expectedElongation * omega1, integrator);
   const TriangleMesh strip = meshes::grid(across, along, width, length);
   ClothSolver solver(strip, p, nullptr);
   for (int i = 0; i <= across; ++i) solver.pin(i);
@@ -69,13 +75,23 @@ TEST(PhysicalValidation, HangingStripStretchesAndNarrowsAsHookeSays) {
     EXPECT_NEAR(narrowing, m.poissonRatio * strain, 0.05 * m.poissonRatio * strain) << "s = " << s << " m";
   }
 }
+}  // namespace
+
+TEST(PhysicalValidation, HangingStripStretchesAndNarrowsAsHookeSays) {
+  expectHookesHangingStrip(Integrator::SymplecticEuler);
+}
+
+TEST(PhysicalValidation, ImplicitHangingStripStretchesAndNarrowsAsHookeSays) {
+  expectHookesHangingStrip(Integrator::Implicit);
+}
 
 namespace {
 // Tip droop (m) of a strip L x b lying in the x-z plane, clamped along its short edge at
 // x = 0 by pinning the nodes at x = -L/n and x = 0 (so the edge cannot rotate), sagging
 // under its own weight along -y. `mesh` builds n sections along x and 4 across.
 double cantileverDroop(const TriangleMesh& mesh, const std::vector<int>& clamped, const std::vector<int>& tip,
-                       double youngsModulus, double thickness, double length, double spacing) {
+                       double youngsModulus, double thickness, double length, double spacing,
+                       Integrator integrator) {
   Material m;
   m.youngsModulus = youngsModulus;
   m.thickness = thickness;
@@ -88,7 +104,7 @@ double cantileverDroop(const TriangleMesh& mesh, const std::vector<int>& clamped
   const double fastest = std::max(3.0 * waveSpeed / spacing, std::sqrt(500.0 * stiffnessPerMass) / (spacing * spacing));
   const double omega1 = 3.516 * std::sqrt(stiffnessPerMass) / (length * length);  // first cantilever mode
   const double beamDroop = m.arealDensity() * kG * std::pow(length, 4) / (8.0 * D);
-  const ClothParameters p = settling(m, omega1, 1.0 / fastest, 1e-4 * beamDroop * omega1);
+  const ClothParameters p = settling(m, omega1, 1.0 / fastest, 1e-4 * beamDroop * omega1, integrator);
   ClothSolver solver(mesh, p, nullptr);
   for (int i : clamped) solver.pin(i);
   const DrapeResult result = solver.run();
@@ -99,7 +115,8 @@ double cantileverDroop(const TriangleMesh& mesh, const std::vector<int>& clamped
 }
 }  // namespace
 
-TEST(PhysicalValidation, CantileverDroopsAsTheBeamFormulaSays) {
+namespace {
+void expectBeamFormulaDroop(Integrator integrator) {
   // q = rho g h per area, D = E h^3 / 12 (nu = 0: a strip is free to curve across, so the
   // plate's 1 - nu^2 would not apply); delta = q L^4 / 8D. E = 4 MPa, L = 10 cm, b = 2 cm;
   // h = 4, 6, 8 mm keep delta / L at 0.069, 0.031, 0.017 (small deflection). The clamp
@@ -133,7 +150,14 @@ TEST(PhysicalValidation, CantileverDroopsAsTheBeamFormulaSays) {
     for (double h : {0.004, 0.006, 0.008}) {
       const double q = cloth.density * kG * h, D = E * h * h * h / 12.0;
       const double expected = q * std::pow(L, 4) / (8.0 * D);
-      const double droop = cantileverDroop(strip.mesh, strip.clamp, strip.tip, E, h, L, dx);
+      const double droop = cantileverDroop(strip.mesh, strip.clamp, strip.tip, E, h, L, dx, integrator);
       EXPECT_NEAR(droop, expected, 0.10 * expected) << strip.name << ", h = " << h << " m";
     }
+}
+}  // namespace
+
+TEST(PhysicalValidation, CantileverDroopsAsTheBeamFormulaSays) { expectBeamFormulaDroop(Integrator::SymplecticEuler); }
+
+TEST(PhysicalValidation, ImplicitCantileverDroopsAsTheBeamFormulaSays) {
+  expectBeamFormulaDroop(Integrator::Implicit);
 }

@@ -1,0 +1,57 @@
+#pragma once
+// Conjugate gradients with constraints, after Baraff & Witkin, "Large steps in cloth
+// simulation" (SIGGRAPH 1998), section 5.3: solve A y = b for the nodes' velocity
+// changes where some nodes are constrained. Each node's filter S_i projects onto the
+// directions it is free to move in: I (free), I - n n^T (held on a surface of normal n),
+// 0 (pinned). The answer is y = z + w with z the prescribed part (in the constrained
+// directions) and w = S w solving S (A (z + w) - b) = 0.
+//
+// Preconditioner: the inverse of A's 3x3 diagonal blocks, filtered on both sides
+// (S P^-1 S: symmetric, positive definite on the free directions). Stops when
+// r^T P^-1 r <= tolerance^2 (S b)^T P^-1 (S b), or after maxIterations.
+// Products run in parallel (rows); the dot products are summed over fixed chunks in a
+// fixed order, so the result does not depend on the thread count.
+
+#include "sim/cloth/implicit/BlockSparseMatrix.h"
+
+#include <vector>
+
+namespace figment {
+
+struct NodeFilter {
+  enum Kind : char { Free, Sliding, Fixed };
+  std::vector<char> kind;      // per node
+  std::vector<Vec3> normal;    // per node, unit: the constrained direction of a Sliding node
+  std::vector<Vec3> prescribed;  // z per node: Sliding along normal, Fixed any; Free zero
+
+  void reset(size_t nodes);
+  Vec3 apply(int i, const Vec3& v) const {
+    switch (kind[i]) {
+      case Free: return v;
+      case Sliding: return v - normal[i].dot(v) * normal[i];
+      default: return Vec3::Zero();
+    }
+  }
+};
+
+struct PcgReport {
+  int iterations = 0;
+  bool converged = false;
+};
+
+class FilteredPcg {
+ public:
+  // Solves for y (resized; its start value is ignored).
+  PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
+                  double tolerance, int maxIterations, std::vector<Vec3>& y);
+
+ private:
+  double dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
+  void precondition(const NodeFilter& filter, const std::vector<Vec3>& r, std::vector<Vec3>& s) const;
+
+  std::vector<Block3> inverseDiagonal_;
+  std::vector<Vec3> r_, c_, q_, s_;
+  std::vector<double> partial_;
+};
+
+}  // namespace figment

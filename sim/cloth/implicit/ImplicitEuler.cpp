@@ -1,0 +1,50 @@
+#include "sim/cloth/implicit/ImplicitEuler.h"
+
+namespace figment {
+
+ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& parameters,
+                             std::shared_ptr<const Collider> body)
+    : parameters_(parameters), system_(model, parameters), contacts_(std::move(body), parameters, model.nodeCount()) {}
+
+void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
+  const std::vector<double>& m = system_.masses();
+  filter_.reset(m.size());
+  for (size_t i = 0; i < m.size(); ++i) {
+    if (pinned[i]) {
+      filter_.kind[i] = NodeFilter::Fixed;  // keeps its (zero) velocity
+    } else if (m[i] <= 0.0) {
+      // A node of degenerate sections only: nothing acts on it but gravity.
+      filter_.kind[i] = NodeFilter::Fixed;
+      filter_.prescribed[i] = dt * parameters_.gravity;
+    }
+  }
+}
+
+void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned) {
+  const double dt = parameters_.timeStep;
+  const size_t n = x.size();
+  const bool firstStep = steps_++ == 0;
+  xStart_ = x;
+  vStart_ = v;
+  fixNodes(pinned, dt);
+  contacts_.constrain(x, v, dt, firstStep, filter_);
+  system_.assemble(x, v, t, SystemWeights{1.0, dt, dt * dt});
+  rhs_.resize(n);
+  const std::vector<Vec3>& f = system_.forces();
+  const std::vector<Vec3>& Kv = system_.stiffnessTimesVelocity();
+  for (size_t i = 0; i < n; ++i) rhs_[i] = dt * (f[i] - dt * Kv[i]);
+  lastSolve_ = pcg_.solve(system_.matrix(), rhs_, filter_, parameters_.implicitSolver.tolerance,
+                          parameters_.implicitSolver.maxIterations, change_);
+  // The constraints' impulses: what the solve added beyond the forces.
+  system_.matrix().multiply(change_, impulse_);
+  for (size_t i = 0; i < n; ++i) {
+    impulse_[i] -= rhs_[i];
+    v[i] += change_[i];
+  }
+  contacts_.applyFriction(filter_, impulse_, system_.masses(), v);
+  for (size_t i = 0; i < n; ++i)
+    if (!pinned[i]) x[i] += dt * v[i];
+  contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
+}
+
+}  // namespace figment

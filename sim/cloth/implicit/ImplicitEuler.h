@@ -1,0 +1,44 @@
+#pragma once
+// Backward Euler for the garment, linearised once per step (Baraff & Witkin, "Large
+// steps in cloth simulation", SIGGRAPH 1998): with K = -df/dx, C = -df/dv at the step's
+// start (ImplicitSystem.h), the velocity change y solves
+//
+//   (M + dt C + dt^2 K) y = dt (f(x, v, t) - dt K v),   v' = v + y,   x' = x + dt v'
+//
+// by filtered PCG (FilteredPcg.h), with pinned nodes fixed and the body's contacts as
+// constraints (ContactConstraints.h). One Newton step of the implicit equations: stable
+// for any step (the matrix is positive definite: K projected, C >= 0), first order in
+// time, and at rest it leaves exactly the explicit model's equilibrium f = 0.
+
+#include "sim/cloth/implicit/ContactConstraints.h"
+#include "sim/cloth/implicit/FilteredPcg.h"
+#include "sim/cloth/implicit/ImplicitSystem.h"
+
+#include <memory>
+#include <vector>
+
+namespace figment {
+
+class ImplicitEuler {
+ public:
+  ImplicitEuler(const ClothModel& model, const ClothParameters& parameters, std::shared_ptr<const Collider> body);
+
+  // Advances x and v by one step from time t. Nodes with pinned[i] != 0 stay.
+  void step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned);
+
+  const PcgReport& lastSolve() const { return lastSolve_; }
+
+ private:
+  void fixNodes(const std::vector<char>& pinned, double dt);
+
+  ClothParameters parameters_;
+  ImplicitSystem system_;
+  ContactConstraints contacts_;
+  FilteredPcg pcg_;
+  NodeFilter filter_;
+  PcgReport lastSolve_;
+  int steps_ = 0;
+  std::vector<Vec3> xStart_, vStart_, rhs_, change_, impulse_;
+};
+
+}  // namespace figment

@@ -1,0 +1,57 @@
+#pragma once
+// The garment's forces and their derivatives at one state, assembled for a backward
+// Euler step (sim/cloth/implicit/ImplicitEuler.h): the same physical model as
+// sim/cloth/ClothModel.h (membrane with strain-rate damping, plate bending, gravity,
+// air resistance, wind), without its explicit stability measures (strain clamping,
+// acceleration limiting).
+//
+//   forces()                  f(x, v, t) per node, N
+//   stiffnessTimesVelocity()  K v per node, N/s (K = -df/dx, projected: MembraneHessian.h,
+//                             BendingHessian.h)
+//   matrix()                  A = mass M + damping C + stiffness K, C = -df/dv (strain-rate
+//                             damping and air resistance); the wind's derivative is left out
+//
+// Parallel (OpenMP, OMP_NUM_THREADS threads): every element's terms are computed into
+// its own slots, then summed per node in a fixed order (AssemblyPlan.h): the result
+// does not depend on the thread count.
+
+#include "sim/cloth/ClothModel.h"
+#include "sim/cloth/implicit/AssemblyPlan.h"
+#include "sim/cloth/implicit/BendingHessian.h"
+
+#include <vector>
+
+namespace figment {
+
+class ImplicitSystem {
+ public:
+  // `model` (kept by reference) gives the sections, bending forms, held nodes and masses.
+  ImplicitSystem(const ClothModel& model, const ClothParameters& parameters);
+
+  void assemble(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t, const SystemWeights& weights);
+
+  const std::vector<Vec3>& forces() const { return force_; }
+  const std::vector<Vec3>& stiffnessTimesVelocity() const { return stiffnessVelocity_; }
+  const BlockSparseMatrix& matrix() const { return matrix_; }
+  const std::vector<double>& masses() const { return model_.masses(); }  // kg
+
+ private:
+  void computeElements(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t,
+                       const SystemWeights& weights);
+  ElementOutput slots(int element);
+
+  const ClothModel& model_;
+  ClothParameters parameters_;
+  Wind wind_;
+  AssemblyPlan plan_;  // elements: the membrane sections, then the bending sections
+  std::vector<BendingStencil> stencils_;
+  std::vector<double> nodeArea_;  // m^2, a third of each section's rest area
+  std::vector<JointAngle> angles_;
+  std::vector<Vec3> forceSlots_, stiffnessVelocitySlots_;
+  std::vector<Block3> blockSlots_;
+  std::vector<double> diagonal_;
+  std::vector<Vec3> force_, stiffnessVelocity_;
+  BlockSparseMatrix matrix_;
+};
+
+}  // namespace figment

@@ -1,0 +1,113 @@
+// The implicit integrator as a drape: large steps onto a body end outside it and at
+// rest, pins hold, and the thread count does not change the result.
+#include "support/TestMeshes.h"
+#include "sim/cloth/ClothSolver.h"
+#include "sim/collision/MeshCollider.h"
+
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+#include <limits>
+
+using namespace figment;
+
+namespace {
+constexpr double kRadius = 0.15;  // m, the ball
+
+ClothParameters implicitDrape(double timeStep) {
+  ClothParameters p;
+  p.integrator = Integrator::Implicit;
+  p.timeStep = timeStep;
+  p.maxTime = 6.0;
+  return p;
+}
+
+std::shared_ptr<const MeshCollider> ball() { return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24)); }
+
+// A 50 cm sheet of 16 x 16 quads, 2 cm above the ball, falling onto it.
+TriangleMesh sheetAboveBall() {
+  return meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
+}
+
+// The nodes' worst signed distance to the body beyond the clearance (m; < 0: too close).
+double worstClearance(const Collider& body, const std::vector<Vec3>& x, double clearance) {
+  double worst = std::numeric_limits<double>::infinity();
+  for (const Vec3& xi : x) {
+    Contact contact;
+    if (body.contact(xi, clearance, std::numeric_limits<double>::infinity(), contact))
+      worst = std::min(worst, contact.distance - clearance);
+  }
+  return worst;
+}
+
+std::vector<Vec3> drapeWithThreads(int threads) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  ClothParameters p = implicitDrape(1.0 / 30.0);
+  p.maxTime = 1.0;
+  ClothSolver solver(sheetAboveBall(), p, ball());
+  solver.run();
+  omp_set_num_threads(before);
+  return solver.positions();
+}
+}  // namespace
+
+TEST(ImplicitEuler, SheetDroppedOnABallAtAThirtiethOfASecondEndsOutsideItAtRest) {
+  const ClothParameters p = implicitDrape(1.0 / 30.0);
+  auto body = ball();
+  ClothSolver solver(sheetAboveBall(), p, body);
+  const DrapeResult result = solver.run();
+  EXPECT_TRUE(result.atRest) << "t = " << result.simulatedTime << " s";
+  RecordProperty("steps", result.iterations);
+  EXPECT_GT(worstClearance(*body, solver.positions(), p.clearance), -1e-6);
+  double highest = -std::numeric_limits<double>::infinity();
+  for (const Vec3& x : solver.positions()) highest = std::max(highest, x.y());
+  // The ball holds the middle of the sheet up; the corners fall past it.
+  EXPECT_NEAR(highest, kRadius + p.clearance, 0.01);
+  EXPECT_LT(solver.positions()[0].y(), 0.0);
+}
+
+TEST(ImplicitEuler, EveryStepEndsOutsideTheBall) {
+  const ClothParameters p = implicitDrape(0.01);
+  auto body = ball();
+  ClothSolver solver(sheetAboveBall(), p, body);
+  for (int step = 0; step < 100; ++step) {
+    solver.step();
+    ASSERT_GT(worstClearance(*body, solver.positions(), p.clearance), -1e-6) << "step " << step;
+  }
+}
+
+TEST(ImplicitEuler, PinnedStripHangsAtRestWithItsPinsInPlace) {
+  ClothParameters p = implicitDrape(0.01);
+  const TriangleMesh strip = meshes::grid(2, 20, 0.05, 0.5);
+  ClothSolver solver(strip, p, nullptr);
+  for (int i = 0; i <= 2; ++i) solver.pin(i);
+  const DrapeResult result = solver.run();
+  EXPECT_TRUE(result.atRest);
+  for (int i = 0; i <= 2; ++i) EXPECT_EQ(solver.positions()[i], strip.vertices[i]);
+  const Vec3 bottom = solver.positions()[strip.vertices.size() - 2];
+  EXPECT_NEAR(bottom.x(), 0.025, 1e-3);
+  EXPECT_LT(bottom.y(), -0.5);
+  EXPECT_GT(bottom.y(), -0.51);
+}
+
+TEST(ImplicitEuler, OneThreadGivesTheResultOfTwo) {
+  const std::vector<Vec3> one = drapeWithThreads(1), two = drapeWithThreads(2);
+  ASSERT_EQ(one.size(), two.size());
+  for (size_t i = 0; i < one.size(); ++i) EXPECT_LT((one[i] - two[i]).norm(), 1e-12) << "node " << i;
+}
+
+TEST(ImplicitEuler, RejectsABadSolverToleranceNamingTheField) {
+  ClothParameters p = implicitDrape(0.01);
+  p.implicitSolver.tolerance = 0.0;
+  try {
+    ClothSolver solver(meshes::grid(2, 2, 0.1, 0.1), p, nullptr);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_STREQ(error.what(), "implicitTolerance = 0 must be in (0, 1)");
+  }
+  p.implicitSolver.tolerance = 1e-3;
+  p.implicitSolver.maxIterations = 0;
+  EXPECT_THROW(ClothSolver(meshes::grid(2, 2, 0.1, 0.1), p, nullptr), std::invalid_argument);
+}
