@@ -171,6 +171,7 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   auto lastReport = start;
   const int firstIteration = iterations_;
   const ClothModel::LimiterCounts before = model_->limiterCounts();
+  const ImplicitStepCosts costsBefore = implicit_ ? implicit_->costs() : ImplicitStepCosts{};
   // Stop at maxTime, counted in steps so that rounding never adds or drops one.
   const int totalSteps = static_cast<int>(std::ceil(parameters_.maxTime / parameters_.timeStep - 1e-9));
   while (iterations_ < totalSteps && !atRest()) {
@@ -188,6 +189,7 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   result.simulatedTime = time_;
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   result.atRest = atRest();
+  if (implicit_) result.implicitCosts = implicit_->costs().since(costsBefore);
   const ClothModel::LimiterCounts& after = model_->limiterCounts();
   const double evaluations = static_cast<double>(after.evaluations - before.evaluations);
   if (evaluations > 0.0) {

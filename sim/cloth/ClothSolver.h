@@ -18,6 +18,7 @@
 
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/implicit/ImplicitStepCosts.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
 
@@ -45,6 +46,7 @@ struct DrapeResult {
   // accelerations the limiter cut (sim/cloth/ClothModel.h), over this run.
   double clampedSectionShare = 0.0;
   double limitedNodeShare = 0.0;
+  ImplicitStepCosts implicitCosts;  // Integrator::Implicit's steps; zeros for the others
 };
 
 // Thrown when the simulation blows up (non-finite values): names step, dt and method.

@@ -1,5 +1,7 @@
 #include "sim/cloth/implicit/ImplicitEuler.h"
 
+#include <chrono>
+
 namespace figment {
 
 ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& parameters,
@@ -20,7 +22,19 @@ void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
   }
 }
 
+namespace {
+using Clock = std::chrono::steady_clock;
+// Seconds since `since`, and `since` moved on to now.
+double lap(Clock::time_point& since) {
+  const Clock::time_point now = Clock::now();
+  const double seconds = std::chrono::duration<double>(now - since).count();
+  since = now;
+  return seconds;
+}
+}  // namespace
+
 void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned) {
+  Clock::time_point clock = Clock::now();
   const double dt = parameters_.timeStep;
   const size_t n = x.size();
   const bool firstStep = steps_++ == 0;
@@ -28,13 +42,19 @@ void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, c
   vStart_ = v;
   fixNodes(pinned, dt);
   contacts_.constrain(x, v, dt, firstStep, filter_);
+  costs_.contactSeconds += lap(clock);
   system_.assemble(x, v, t, SystemWeights{1.0, dt, dt * dt});
+  costs_.assemblySeconds += lap(clock);
   rhs_.resize(n);
   const std::vector<Vec3>& f = system_.forces();
   const std::vector<Vec3>& Kv = system_.stiffnessTimesVelocity();
   for (size_t i = 0; i < n; ++i) rhs_[i] = dt * (f[i] - dt * Kv[i]);
   lastSolve_ = pcg_.solve(system_.matrix(), rhs_, filter_, parameters_.implicitSolver.tolerance,
                           parameters_.implicitSolver.maxIterations, change_);
+  costs_.solveSeconds += lap(clock);
+  ++costs_.steps;
+  costs_.solverIterations += lastSolve_.iterations;
+  costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
   // The constraints' impulses: what the solve added beyond the forces.
   system_.matrix().multiply(change_, impulse_);
   for (size_t i = 0; i < n; ++i) {
@@ -45,6 +65,7 @@ void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, c
   for (size_t i = 0; i < n; ++i)
     if (!pinned[i]) x[i] += dt * v[i];
   contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
+  costs_.contactSeconds += lap(clock);
 }
 
 }  // namespace figment

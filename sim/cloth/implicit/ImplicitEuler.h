@@ -12,6 +12,7 @@
 
 #include "sim/cloth/implicit/ContactConstraints.h"
 #include "sim/cloth/implicit/FilteredPcg.h"
+#include "sim/cloth/implicit/ImplicitStepCosts.h"
 #include "sim/cloth/implicit/ImplicitSystem.h"
 
 #include <memory>
@@ -27,6 +28,7 @@ class ImplicitEuler {
   void step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned);
 
   const PcgReport& lastSolve() const { return lastSolve_; }
+  const ImplicitStepCosts& costs() const { return costs_; }
 
  private:
   void fixNodes(const std::vector<char>& pinned, double dt);
@@ -37,6 +39,7 @@ class ImplicitEuler {
   FilteredPcg pcg_;
   NodeFilter filter_;
   PcgReport lastSolve_;
+  ImplicitStepCosts costs_;
   int steps_ = 0;
   std::vector<Vec3> xStart_, vStart_, rhs_, change_, impulse_;
 };

@@ -1,0 +1,23 @@
+#pragma once
+// What the implicit integrator's steps cost, for the benchmarks' breakdown of a step.
+
+namespace figment {
+
+// Where the implicit steps' time went, summed over the steps since construction.
+struct ImplicitStepCosts {
+  // `this` less `earlier`: the costs of the steps in between.
+  ImplicitStepCosts since(const ImplicitStepCosts& earlier) const {
+    return {steps - earlier.steps, solverIterations - earlier.solverIterations,
+            unconvergedSolves - earlier.unconvergedSolves, assemblySeconds - earlier.assemblySeconds,
+            solveSeconds - earlier.solveSeconds, contactSeconds - earlier.contactSeconds};
+  }
+
+  long steps = 0;
+  long solverIterations = 0;   // PCG iterations
+  long unconvergedSolves = 0;  // solves stopped by maxIterations
+  double assemblySeconds = 0.0;  // forces, K v and the matrix A
+  double solveSeconds = 0.0;     // filtered PCG
+  double contactSeconds = 0.0;   // constraints before, friction and push-out after
+};
+
+}  // namespace figment
