@@ -36,7 +36,7 @@ enum class AccelerationLimiter {
 
 // The linear solve of the implicit integrator (sim/cloth/implicit/FilteredPcg.h).
 struct ImplicitSolverParameters {
-  double tolerance = 1e-3;  // PCG stops when |residual| <= tolerance |right-hand side|
+  double tolerance = 1e-4;  // PCG stops when |residual| <= tolerance |right-hand side|
   int maxIterations = 300;  // PCG iterations per time step, at most
 };
 

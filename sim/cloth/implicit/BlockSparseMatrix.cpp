@@ -1,5 +1,7 @@
 #include "sim/cloth/implicit/BlockSparseMatrix.h"
 
+#include "sim/cloth/implicit/ParallelLoops.h"
+
 #include <algorithm>
 
 namespace figment {
@@ -30,7 +32,7 @@ int BlockSparseMatrix::find(int row, int column) const {
 void BlockSparseMatrix::multiply(const std::vector<Vec3>& x, std::vector<Vec3>& y) const {
   const int n = rows();
   y.resize(n);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelSolveNodes)
   for (int i = 0; i < n; ++i) {
     Vec3 sum = Vec3::Zero();
     for (int k = rowStart_[i]; k < rowStart_[i + 1]; ++k) sum.noalias() += blocks_[k] * x[column_[k]];

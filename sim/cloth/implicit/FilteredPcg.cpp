@@ -1,5 +1,7 @@
 #include "sim/cloth/implicit/FilteredPcg.h"
 
+#include "sim/cloth/implicit/ParallelLoops.h"
+
 #include <algorithm>
 
 namespace figment {
@@ -18,7 +20,7 @@ double FilteredPcg::dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b) 
   const int n = static_cast<int>(a.size());
   const int chunks = (n + kChunk - 1) / kChunk;
   partial_.resize(chunks);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelSolveNodes)
   for (int k = 0; k < chunks; ++k) {
     double sum = 0.0;
     for (int i = k * kChunk; i < std::min(n, (k + 1) * kChunk); ++i) sum += a[i].dot(b[i]);
@@ -31,7 +33,7 @@ double FilteredPcg::dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b) 
 
 void FilteredPcg::precondition(const NodeFilter& filter, const std::vector<Vec3>& r, std::vector<Vec3>& s) const {
   const int n = static_cast<int>(r.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kParallelSolveNodes)
   for (int i = 0; i < n; ++i) s[i] = filter.apply(i, inverseDiagonal_[i] * filter.apply(i, r[i]));
 }
 
