@@ -138,17 +138,27 @@ double height(const std::vector<SbVec3f>& rest) {
 
 void report(const std::string& scene, const Method& m, const Outcome& o, const Measures& s, double garmentHeight,
             std::ostream& csv) {
-  char line[512];
-  std::snprintf(line, sizeof line, "%s,%s,%s,%g,%s,%g,%d,%.5g,%d,%.4f,%.6g,%.4f,%.4g,%d,%.4f\n", scene.c_str(),
-                m.integrator.c_str(), m.limiter.c_str(), m.limiter == "NONE" ? 0.0 : m.limit, m.text.c_str(),
-                m.timeStep, o.run.iterations, o.run.simulatedSeconds, o.run.atRest ? 1 : 0, o.medianWall,
-                s.meanDeviation, 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside, s.topHeight);
+  // One step's breakdown (the implicit integrator's; zeros for the explicit ones), ms.
+  const ImplicitStepCosts& c = o.run.implicitCosts;
+  const double steps = std::max(1L, c.steps);
+  char line[640];
+  std::snprintf(line, sizeof line, "%s,%s,%s,%g,%s,%g,%d,%.5g,%d,%.4f,%.6g,%.4f,%.4g,%d,%.4f,%.1f,%.4f,%.4f,%.4f\n",
+                scene.c_str(), m.integrator.c_str(), m.limiter.c_str(), m.limiter == "NONE" ? 0.0 : m.limit,
+                m.text.c_str(), m.timeStep, o.run.iterations, o.run.simulatedSeconds, o.run.atRest ? 1 : 0,
+                o.medianWall, s.meanDeviation, 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
+                s.topHeight, c.solverIterations / steps, 1000 * c.assemblySeconds / steps,
+                1000 * c.solveSeconds / steps, 1000 * c.contactSeconds / steps);
   csv << line;
   csv.flush();
-  std::printf("%-26s %7d steps %7.3f s sim %8.3f s wall %-7s dev %6.3f %% strain %5.3f inside %4d top %.3f m\n",
+  std::printf("%-24s %6d steps %6.3f s sim %7.3f s wall %-6s dev %6.3f %% strain %5.3f inside %3d top %.3f m",
               m.text.c_str(), o.run.iterations, o.run.simulatedSeconds, o.medianWall,
               o.run.atRest ? "rest" : "moving", 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
               s.topHeight);
+  if (c.steps > 0)
+    std::printf("  | step: %.0f PCG its, %.2f ms forces+matrix, %.2f ms solve, %.2f ms contacts",
+                c.solverIterations / steps, 1000 * c.assemblySeconds / steps, 1000 * c.solveSeconds / steps,
+                1000 * c.contactSeconds / steps);
+  std::printf("\n");
 }
 
 // Every method on one scene; "" or the error.
@@ -167,7 +177,7 @@ std::string studyScene(const std::string& scene, const MethodStudyOptions& optio
     if (!o.error.empty()) {
       std::printf("%-26s failed: %s\n", text.c_str(), o.error.c_str());
       csv << scene << ',' << m.integrator << ',' << m.limiter << ",,\"" << text << "\"," << m.timeStep
-          << ",,,,,,,,,\n";
+          << ",,,,,,,,,,,,,\n";
       continue;
     }
     report(scene, m, o, measure(garment, o.positions, reference.positions), garmentHeight, csv);
@@ -188,7 +198,8 @@ int runMethodStudy(const MethodStudyOptions& options) {
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/methods.csv", [&](std::ostream& csv) -> std::string {
     csv << "scene,integrator,limiter,limit_g,method,dt,steps,simulated_s,at_rest,median_wall_s,mean_dev_m,"
-           "mean_dev_pct_height,max_edge_strain,nodes_inside,top_height_m\n";
+           "mean_dev_pct_height,max_edge_strain,nodes_inside,top_height_m,solver_iterations_per_step,"
+           "assembly_ms_per_step,solve_ms_per_step,contact_ms_per_step\n";
     for (const std::string& scene : options.scenes)
       if (std::string error = studyScene(scene, options, csv); !error.empty()) return error;
     return "";

@@ -1,6 +1,8 @@
 #pragma once
 // ClothEngine: drapes one garment on a body; its output feeds the garment's coordinates.
 
+#include "sim/cloth/implicit/ImplicitStepCosts.h"
+
 #include <Inventor/engines/SoSubEngine.h>
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFVec3f.h>
@@ -180,6 +182,7 @@ class ClothEngine : public SoEngine {
     bool atRest = false;
     double clampedSectionShare = 0.0;  // of section evaluations whose strain was clamped
     double limitedNodeShare = 0.0;     // of node accelerations the limiter cut
+    figment::ImplicitStepCosts implicitCosts;  // IMPLICIT's solves and where its time went
   };
   // Reported about once per second of wall time while a simulation runs.
   struct Progress {

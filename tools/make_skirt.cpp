@@ -1,0 +1,58 @@
+// figment-make-skirt: generates the flared skirt (scenes/skirt.obj) around a body.
+//   figment-make-skirt [--body human.zae] -o scenes/skirt.obj
+// The body is found through the model search path and read in metres, y up, without its
+// eyes; on success one summary line goes to stdout. Any error is one line,
+// "figment-make-skirt: <file>: <reason>", on stderr and exit status 1, with no output file.
+
+#include "io/MeshExport.h"
+#include "io/MeshImport.h"
+#include "sim/garment/FlaredSkirt.h"
+#include "ToolMain.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace {
+
+const figment::tools::ToolMain kTool{"figment-make-skirt"};
+
+// Makes the skirt around the body at `bodyPath` and writes it: the exit status.
+int makeAndWrite(const std::string& bodyPath, const std::vector<std::string>& exclude,
+                 const figment::FlaredSkirtOptions& options, const std::string& output) {
+  figment::ImportOptions importOptions;
+  importOptions.exclude = exclude;
+  const figment::ImportedMesh body = figment::importMesh(bodyPath, importOptions);
+  const figment::FlaredSkirt skirt = figment::makeFlaredSkirt(body.mesh, options);
+  figment::exportObj(skirt.mesh, output);
+  std::printf("%s: %s: %zu vertices, %zu triangles, %.3f m^2; waist at %.3f m (%.3f m round, waistband %.3f m), "
+              "hem at %.3f m\n",
+              kTool.program().c_str(), output.c_str(), skirt.mesh.vertices.size(), skirt.mesh.triangles.size(),
+              skirt.area, skirt.waistHeight, skirt.waistPerimeter, skirt.waistbandPerimeter, skirt.hemHeight);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Generates a flared skirt around a body's waist and writes it as a Wavefront OBJ.", kTool.program()};
+  std::string bodyName = "human.zae";
+  std::string output;
+  std::vector<std::string> exclude = {"eyes"};
+  figment::FlaredSkirtOptions options;
+  app.add_option("--body", bodyName, "body model file, looked up on the model search path")->capture_default_str();
+  app.add_option("-o,--output", output, "OBJ file to write")->required();
+  app.add_option("--exclude", exclude, "meshes of the body file to leave out (name or part of it)")
+      ->capture_default_str();
+  app.add_option("--waist-clearance", options.waistClearance, "gap between waistband and waist, m")
+      ->capture_default_str();
+  app.add_option("--length", options.length, "waistband to hem, m")->capture_default_str();
+  app.add_option("--flare", options.flare, "how much further out the hem lies than the waistband, m")
+      ->capture_default_str();
+  app.add_option("--rows", options.rows, "rings of quads")->capture_default_str();
+  app.add_option("--columns", options.columns, "vertices around a ring")->capture_default_str();
+  if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+  return kTool.withBody(bodyName, [&](const std::string& bodyPath) {
+    return makeAndWrite(bodyPath, exclude, options, output);
+  });
+}
