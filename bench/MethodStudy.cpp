@@ -139,8 +139,8 @@ double height(const std::vector<SbVec3f>& rest) {
 void report(const std::string& scene, const Method& m, const Outcome& o, const Measures& s, double garmentHeight,
             std::ostream& csv) {
   // One step's breakdown (the implicit integrator's; zeros for the explicit ones), ms.
-  const ImplicitStepCosts& c = o.run.implicitCosts;
-  const double steps = std::max(1L, c.steps);
+  const ClothEngine::RunStats& c = o.run;
+  const double steps = std::max(1L, c.implicitSteps);
   char line[640];
   std::snprintf(line, sizeof line, "%s,%s,%s,%g,%s,%g,%d,%.5g,%d,%.4f,%.6g,%.4f,%.4g,%d,%.4f,%.1f,%.4f,%.4f,%.4f\n",
                 scene.c_str(), m.integrator.c_str(), m.limiter.c_str(), m.limiter == "NONE" ? 0.0 : m.limit,
@@ -154,7 +154,7 @@ void report(const std::string& scene, const Method& m, const Outcome& o, const M
               m.text.c_str(), o.run.iterations, o.run.simulatedSeconds, o.medianWall,
               o.run.atRest ? "rest" : "moving", 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
               s.topHeight);
-  if (c.steps > 0)
+  if (c.implicitSteps > 0)
     std::printf("  | step: %.0f PCG its, %.2f ms forces+matrix, %.2f ms solve, %.2f ms contacts",
                 c.solverIterations / steps, 1000 * c.assemblySeconds / steps, 1000 * c.solveSeconds / steps,
                 1000 * c.contactSeconds / steps);

@@ -150,7 +150,11 @@ void ClothEngine::evaluate() {
     impl_->stats.atRest = run.atRest;
     impl_->stats.clampedSectionShare = run.clampedSectionShare;
     impl_->stats.limitedNodeShare = run.limitedNodeShare;
-    impl_->stats.implicitCosts = run.implicitCosts;
+    impl_->stats.implicitSteps = run.implicitCosts.steps;
+    impl_->stats.solverIterations = run.implicitCosts.solverIterations;
+    impl_->stats.assemblySeconds = run.implicitCosts.assemblySeconds;
+    impl_->stats.solveSeconds = run.implicitCosts.solveSeconds;
+    impl_->stats.contactSeconds = run.implicitCosts.contactSeconds;
     const std::vector<figment::Vec3>& x = solver.positions();
     for (size_t i = 0; i < x.size() && i < result.size(); ++i)
       result[i].setValue(float(x[i].x()), float(x[i].y()), float(x[i].z()));

@@ -1,8 +1,6 @@
 #pragma once
 // ClothEngine: drapes one garment on a body; its output feeds the garment's coordinates.
 
-#include "sim/cloth/implicit/ImplicitStepCosts.h"
-
 #include <Inventor/engines/SoSubEngine.h>
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFVec3f.h>
@@ -145,7 +143,8 @@ class ClothEngine : public SoEngine {
   // [-strainLimit, strainLimit] when its forces are computed, dimensionless; 0 = off.
   // Default 0.
   SoSFDouble strainLimit;
-  // Acceleration limiting (paper §2, Fig. 2.3) of each node's net acceleration: NONE,
+  // Acceleration limiting (paper §2, Fig. 2.3) of each node's elastic acceleration
+  // (gravity, air, wind and damping pass it): NONE,
   // CLAMP (hard) or TANH (smooth). Default NONE.
   SoSFEnum accelerationLimiter;
   // The acceleration cap, in multiples of |gravity|. Default 20. Must be > 0.
@@ -182,7 +181,10 @@ class ClothEngine : public SoEngine {
     bool atRest = false;
     double clampedSectionShare = 0.0;  // of section evaluations whose strain was clamped
     double limitedNodeShare = 0.0;     // of node accelerations the limiter cut
-    figment::ImplicitStepCosts implicitCosts;  // IMPLICIT's solves and where its time went
+    // IMPLICIT's steps: linear-solver iterations, and seconds spent assembling the
+    // forces and matrix, solving, and on contacts (zeros for the other integrators).
+    long implicitSteps = 0, solverIterations = 0;
+    double assemblySeconds = 0.0, solveSeconds = 0.0, contactSeconds = 0.0;
   };
   // Reported about once per second of wall time while a simulation runs.
   struct Progress {

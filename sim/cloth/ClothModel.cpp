@@ -47,14 +47,25 @@ ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& paramete
 void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t,
                                std::vector<Vec3>& a) const {
   const size_t n = masses_.size();
+  const bool limited = parameters_.accelerationLimiter != AccelerationLimiter::None;
   std::fill(force_.begin(), force_.end(), Vec3::Zero());
   ++counts_.evaluations;
+  // With a limiter, the elastic pull (membrane and bending) is limited on its own and
+  // the strain-rate damping is added after it; without, one pass adds both.
+  const double damping = limited ? 0.0 : parameters_.strainRateDamping;
   for (const MembraneElement& section : sections_)
     counts_.clampedSections +=
-        section.addForces(x, v, parameters_.material, parameters_.strainRateDamping, parameters_.strainLimit, force_);
+        section.addForces(x, v, parameters_.material, damping, parameters_.strainLimit, force_);
   bending_.addForces(x, force_);
+  a.assign(n, Vec3::Zero());
+  if (limited) {
+    for (size_t i = 0; i < n; ++i) a[i] = force_[i] * inverseMasses_[i];
+    limitAccelerations(a);
+    std::fill(force_.begin(), force_.end(), Vec3::Zero());
+    for (const MembraneElement& section : sections_)
+      section.addDampingForces(x, v, parameters_.material, parameters_.strainRateDamping, force_);
+  }
   if (wind_.blows()) addWindForces(x, t);
-  a.resize(n);
   for (size_t i = 0; i < n; ++i) {
     if (inverseMasses_[i] == 0.0) {  // a node of degenerate sections only: it floats with gravity
       a[i] = parameters_.gravity;
@@ -62,9 +73,8 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     }
     // Air resistance opposes the node's velocity, in proportion to its share of cloth area.
     force_[i] -= parameters_.airResistance * areas_[i] * v[i];
-    a[i] = force_[i] * inverseMasses_[i] + parameters_.gravity;
+    a[i] += force_[i] * inverseMasses_[i] + parameters_.gravity;
   }
-  limitAccelerations(a);
 }
 
 void ClothModel::addWindForces(const std::vector<Vec3>& x, double t) const {

@@ -21,8 +21,11 @@ class ClothModel {
   // garment whose sections are all degenerate.
   ClothModel(const TriangleMesh& rest, const ClothParameters& parameters);
 
-  // a = F(x, v, t) / m for every node (m/s^2) at simulated time t (s), each then
-  // limited as the parameters say. Only the wind depends on t.
+  // a = F(x, v, t) / m for every node (m/s^2) at simulated time t (s). With an
+  // acceleration limiter, the elastic part (membrane and bending) of each node's
+  // acceleration is limited before gravity, air, wind and the strain-rate damping are
+  // added: cutting the damping too let Heun amplify the fast membrane modes, and a
+  // sliding skirt shredded. Only the wind depends on t.
   void accelerations(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t, std::vector<Vec3>& a) const;
 
   // Held (pinned) nodes: sections between them are clamps that do not bend.

@@ -26,8 +26,9 @@ enum class Integrator {
 };
 const char* integratorName(Integrator integrator);  // "explicit Euler", ...
 
-// The paper's second stability measure (§2, Fig. 2.3): a limit on each node's net
-// acceleration, applied when the accelerations of a force evaluation are complete.
+// The paper's second stability measure (§2, Fig. 2.3): a limit on the acceleration each
+// node gets from the cloth's elastic forces (membrane and bending), applied before
+// gravity, air, wind and the strain-rate damping are added (sim/cloth/ClothModel.h).
 enum class AccelerationLimiter {
   None,
   Clamp,  // |a| > a_max  ->  a_max a/|a|           (the paper's choice)

@@ -7,7 +7,8 @@
 //  1. forces -> accelerations (ClothModel) at the step's time t (Heun's second
 //     evaluation, of the predicted state, at t + dt; only the wind depends on time):
 //     strain clamping acts inside each section's force, the acceleration limiter on
-//     each node's net acceleration; with Heun both happen at each of its two evaluations;
+//     each node's elastic acceleration; with Heun both happen at each of its two
+//     evaluations;
 //  2. the integrator advances positions and velocities (pinned nodes stay);
 //  3. contact response: nodes inside the body or within the clearance are put on the
 //     surface + clearance, their velocity becomes the motion they made, the velocity

@@ -74,4 +74,19 @@ bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Ve
   return clamped;
 }
 
+void MembraneElement::addDampingForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                                       const Material& material, double tauDamping, std::vector<Vec3>& force) const {
+  if (!(tauDamping > 0.0)) return;
+  const Matrix32 F = edgeMatrix(corners_, x) * restInverse_;
+  const Matrix32 Fdot = edgeMatrix(corners_, v) * restInverse_;
+  const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);
+  const PlaneStress s = stress(tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1)), material);
+  Eigen::Matrix2d S;
+  S << s.sigmaU, s.tauUV, s.tauUV, s.sigmaV;
+  const Matrix32 H = -(restArea_ * material.thickness) * F * S * restInverse_.transpose();
+  force[corners_[1]] += H.col(0);
+  force[corners_[2]] += H.col(1);
+  force[corners_[0]] -= H.col(0) + H.col(1);
+}
+
 }  // namespace figment

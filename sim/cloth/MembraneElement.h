@@ -52,6 +52,10 @@ class MembraneElement {
   // harder than at the range's edge). Returns whether the clamp changed a strain.
   bool addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
                  double tauDamping, double strainLimit, std::vector<Vec3>& force) const;
+  // Adds the strain-rate damping forces alone (addForces with tauDamping adds them too):
+  // for an acceleration limiter that must cut the elastic pull, never the damping.
+  void addDampingForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+                        double tauDamping, std::vector<Vec3>& force) const;
 
  private:
   Triangle corners_;
