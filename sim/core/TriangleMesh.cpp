@@ -100,4 +100,21 @@ TriangleMesh croppedToBox(const TriangleMesh& mesh, const Bounds& box) {
   return part;
 }
 
+TriangleMesh numberedByFirstUse(const TriangleMesh& mesh) {
+  std::vector<int> renumbered(mesh.vertices.size(), -1);
+  TriangleMesh out;
+  for (const Triangle& t : mesh.triangles) {
+    Triangle r{};
+    for (int k = 0; k < 3; ++k) {
+      if (renumbered[t[k]] < 0) {
+        renumbered[t[k]] = static_cast<int>(out.vertices.size());
+        out.vertices.push_back(mesh.vertices[t[k]]);
+      }
+      r[k] = renumbered[t[k]];
+    }
+    out.triangles.push_back(r);
+  }
+  return out;
+}
+
 }  // namespace figment

@@ -36,4 +36,9 @@ TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance = 1e-6);
 // with only the vertices they use (numbered as first used): one part of a body, say.
 TriangleMesh croppedToBox(const TriangleMesh& mesh, const Bounds& box);
 
+// The mesh with its vertices renumbered in the order the triangles first use them, the
+// order an OBJ written by assimp lists them: a generated garment and its file then agree
+// index for index.
+TriangleMesh numberedByFirstUse(const TriangleMesh& mesh);
+
 }  // namespace figment

@@ -3,6 +3,7 @@
 #include "sim/body/BodySlices.h"
 #include "sim/core/ParameterChecks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -40,17 +41,24 @@ TorsoSlice naturalWaist(const TriangleMesh& body, const SliceOptions& slicing) {
 }
 
 // Ring vertices first, then two triangles per quad, counter-clockwise seen from outside:
-// around each ring the angle grows from +x towards +z, rings go down.
-void addCone(const TorsoSlice& waist, const FlaredSkirtOptions& options, TriangleMesh& mesh) {
+// around each ring the angle grows from +x towards +z, rings go down. A ring that would
+// cut into the body (the seat bulges further out than the flare) is pushed out to the
+// body's section there, plus the waist clearance.
+void addCone(const TriangleMesh& body, const TorsoSlice& waist, const FlaredSkirtOptions& options,
+             const SliceOptions& slicing, TriangleMesh& mesh) {
   const Vec2 centre = waist.centroid();
   for (int row = 0; row <= options.rows; ++row) {
     const double t = static_cast<double>(row) / options.rows;
+    const double height = waist.height - t * options.length;
+    const TorsoSlice section = row == 0 ? waist : sliceTorso(body, height, slicing);
+    const bool around = !section.empty() && section.contains(centre);
     for (int column = 0; column < options.columns; ++column) {
       const double angle = 2.0 * M_PI * column / options.columns;
       const Vec2 direction(std::cos(angle), std::sin(angle));
-      const double radius = waist.reach(centre, direction, options.waistClearance) + t * options.flare;
+      double radius = waist.reach(centre, direction, options.waistClearance) + t * options.flare;
+      if (around) radius = std::max(radius, section.reach(centre, direction, options.waistClearance));
       const Vec2 p = centre + radius * direction;
-      mesh.vertices.emplace_back(p.x(), waist.height - t * options.length, p.y());
+      mesh.vertices.emplace_back(p.x(), height, p.y());
     }
   }
   const int c = options.columns;
@@ -86,14 +94,16 @@ FlaredSkirt makeFlaredSkirt(const TriangleMesh& body, const FlaredSkirtOptions& 
   const TorsoSlice waist = naturalWaist(body, slicing);
 
   FlaredSkirt skirt;
-  addCone(waist, options, skirt.mesh);
+  addCone(body, waist, options, slicing, skirt.mesh);
+  skirt.mesh = numberedByFirstUse(skirt.mesh);
   skirt.waistHeight = waist.height;
   skirt.waistPerimeter = perimeter(waist.hull);
   skirt.hemHeight = waist.height - options.length;
-  for (int column = 0; column < options.columns; ++column) {
-    const Vec3 d = skirt.mesh.vertices[(column + 1) % options.columns] - skirt.mesh.vertices[column];
-    skirt.waistbandPerimeter += d.norm();
-  }
+  for (const Triangle& t : skirt.mesh.triangles)  // the waistband: the edges along y = waist
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 &a = skirt.mesh.vertices[t[k]], &b = skirt.mesh.vertices[t[(k + 1) % 3]];
+      if (a.y() == waist.height && b.y() == waist.height) skirt.waistbandPerimeter += (b - a).norm();
+    }
   for (const Triangle& t : skirt.mesh.triangles) {
     const Vec3& a = skirt.mesh.vertices[t[0]];
     skirt.area += 0.5 * (skirt.mesh.vertices[t[1]] - a).cross(skirt.mesh.vertices[t[2]] - a).norm();

@@ -303,25 +303,6 @@ void appendStrap(const TriangleMesh& body, const StrapLanes& strap, const StrapD
       addQuad(mesh.triangles, lane[k][i], lane[k + 1][i], lane[k + 1][i + 1], lane[k][i + 1], (i + k) % 2 == 1);
 }
 
-// Renumbers vertices in the order the triangles first use them, the order an OBJ written by
-// assimp lists them: the generated mesh and its file then agree index for index.
-TriangleMesh numberedByFirstUse(const TriangleMesh& mesh) {
-  std::vector<int> renumbered(mesh.vertices.size(), -1);
-  TriangleMesh out;
-  for (const Triangle& t : mesh.triangles) {
-    Triangle r{};
-    for (int k = 0; k < 3; ++k) {
-      if (renumbered[t[k]] < 0) {
-        renumbered[t[k]] = static_cast<int>(out.vertices.size());
-        out.vertices.push_back(mesh.vertices[t[k]]);
-      }
-      r[k] = renumbered[t[k]];
-    }
-    out.triangles.push_back(r);
-  }
-  return out;
-}
-
 }  // namespace
 
 void StrapDressOptions::validate() const {

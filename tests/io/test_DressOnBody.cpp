@@ -39,26 +39,7 @@ class DressOnBody : public ::testing::Test {
   static const TriangleMesh& body() { return *body_; }
   static const StrapDress& dress() { return *dress_; }
 
-  // Ray parity: a point is inside a closed surface when a ray from it crosses the surface an
-  // odd number of times (Moeller-Trumbore ray/triangle test; a skew direction misses edges).
-  static bool insideBody(const Vec3& p) {
-    const Vec3 direction = Vec3(0.1234, 0.9876, 0.0567).normalized();
-    int crossings = 0;
-    for (const Triangle& t : body().triangles) {
-      const Vec3 &a = body().vertices[t[0]], &b = body().vertices[t[1]], &c = body().vertices[t[2]];
-      const Vec3 e1 = b - a, e2 = c - a, q = direction.cross(e2);
-      const double det = e1.dot(q);
-      if (std::abs(det) < 1e-15) continue;
-      const Vec3 s = p - a;
-      const double u = s.dot(q) / det;
-      if (u < 0 || u > 1) continue;
-      const Vec3 r = s.cross(e1);
-      const double v = direction.dot(r) / det;
-      if (v < 0 || u + v > 1) continue;
-      if (e2.dot(r) / det > 0) ++crossings;
-    }
-    return crossings % 2 == 1;
-  }
+  static bool insideBody(const Vec3& p) { return checks::insideClosedSurface(body(), p); }
 
  private:
   static inline TriangleMesh* body_ = nullptr;

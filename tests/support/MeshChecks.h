@@ -4,6 +4,7 @@
 #include "sim/core/TriangleMesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <utility>
@@ -76,6 +77,27 @@ inline Vec3 normalOf(const TriangleMesh& mesh, const Triangle& t) {
 
 inline Vec3 centroidOf(const TriangleMesh& mesh, const Triangle& t) {
   return (mesh.vertices[t[0]] + mesh.vertices[t[1]] + mesh.vertices[t[2]]) / 3.0;
+}
+
+// Ray parity: a point is inside a closed surface when a ray from it crosses the surface an
+// odd number of times (Moeller-Trumbore ray/triangle test; a skew direction misses edges).
+inline bool insideClosedSurface(const TriangleMesh& surface, const Vec3& p) {
+  const Vec3 direction = Vec3(0.1234, 0.9876, 0.0567).normalized();
+  int crossings = 0;
+  for (const Triangle& t : surface.triangles) {
+    const Vec3 &a = surface.vertices[t[0]], &b = surface.vertices[t[1]], &c = surface.vertices[t[2]];
+    const Vec3 e1 = b - a, e2 = c - a, q = direction.cross(e2);
+    const double det = e1.dot(q);
+    if (std::abs(det) < 1e-15) continue;
+    const Vec3 s = p - a;
+    const double u = s.dot(q) / det;
+    if (u < 0 || u > 1) continue;
+    const Vec3 r = s.cross(e1);
+    const double v = direction.dot(r) / det;
+    if (v < 0 || u + v > 1) continue;
+    if (e2.dot(r) / det > 0) ++crossings;
+  }
+  return crossings % 2 == 1;
 }
 
 }  // namespace figment::checks
