@@ -248,4 +248,13 @@ double neckHeight(const TriangleMesh& body, double armpit, const SliceOptions& o
   return neck;
 }
 
+SliceOptions centredSlicing(const TriangleMesh& body, double clusterGap, double torsoHalfWidth) {
+  const Bounds bounds = boundsOf(body.vertices);
+  SliceOptions slicing;
+  slicing.clusterGap = clusterGap;
+  slicing.torsoHalfWidth = torsoHalfWidth;
+  slicing.torsoCentreX = 0.5 * (bounds.min.x() + bounds.max.x());
+  return slicing;
+}
+
 }  // namespace figment

@@ -59,6 +59,10 @@ struct TorsoSlice {
 
 TorsoSlice sliceTorso(const TriangleMesh& body, double height, const SliceOptions& options = {});
 
+// Slicing options for `body` (not empty) centred on its bounding box in x, as garment
+// generators use them.
+SliceOptions centredSlicing(const TriangleMesh& body, double clusterGap, double torsoHalfWidth);
+
 // The height (m) just below which the arms part from the torso: the highest height, below
 // the widest torso section between 50% and 90% of the body's height (there the arms join
 // it), at which torso-band clusters have a separate cluster on each side. Found to 1 mm.

@@ -64,6 +64,12 @@ bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Ve
     const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);
     e += tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1));
   }
+  addStressForces(F, e, material, force);
+  return clamped;
+}
+
+void MembraneElement::addStressForces(const Matrix32& F, const Eigen::Vector3d& e, const Material& material,
+                                      std::vector<Vec3>& force) const {
   const PlaneStress s = stress(e, material);
   Eigen::Matrix2d S;
   S << s.sigmaU, s.tauUV, s.tauUV, s.sigmaV;
@@ -71,7 +77,6 @@ bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Ve
   force[corners_[1]] += H.col(0);
   force[corners_[2]] += H.col(1);
   force[corners_[0]] -= H.col(0) + H.col(1);
-  return clamped;
 }
 
 void MembraneElement::addDampingForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
@@ -80,13 +85,7 @@ void MembraneElement::addDampingForces(const std::vector<Vec3>& x, const std::ve
   const Matrix32 F = edgeMatrix(corners_, x) * restInverse_;
   const Matrix32 Fdot = edgeMatrix(corners_, v) * restInverse_;
   const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);
-  const PlaneStress s = stress(tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1)), material);
-  Eigen::Matrix2d S;
-  S << s.sigmaU, s.tauUV, s.tauUV, s.sigmaV;
-  const Matrix32 H = -(restArea_ * material.thickness) * F * S * restInverse_.transpose();
-  force[corners_[1]] += H.col(0);
-  force[corners_[2]] += H.col(1);
-  force[corners_[0]] -= H.col(0) + H.col(1);
+  addStressForces(F, tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1)), material, force);
 }
 
 }  // namespace figment

@@ -58,6 +58,10 @@ class MembraneElement {
                         double tauDamping, std::vector<Vec3>& force) const;
 
  private:
+  // Adds the forces of the stress that strain `e` gives, at deformation gradient F.
+  void addStressForces(const Eigen::Matrix<double, 3, 2>& F, const Eigen::Vector3d& e, const Material& material,
+                       std::vector<Vec3>& force) const;
+
   Triangle corners_;
   Eigen::Matrix2d restInverse_;  // Dm^-1
   double restArea_ = 0.0;

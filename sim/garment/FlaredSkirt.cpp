@@ -86,11 +86,7 @@ void FlaredSkirtOptions::validate() const {
 FlaredSkirt makeFlaredSkirt(const TriangleMesh& body, const FlaredSkirtOptions& options) {
   options.validate();
   if (body.triangles.empty()) throw std::invalid_argument("body: no triangles");
-  const Bounds bounds = boundsOf(body.vertices);
-  SliceOptions slicing;
-  slicing.clusterGap = options.clusterGap;
-  slicing.torsoHalfWidth = options.torsoHalfWidth;
-  slicing.torsoCentreX = 0.5 * (bounds.min.x() + bounds.max.x());
+  const SliceOptions slicing = centredSlicing(body, options.clusterGap, options.torsoHalfWidth);
   const TorsoSlice waist = naturalWaist(body, slicing);
 
   FlaredSkirt skirt;

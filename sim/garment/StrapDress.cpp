@@ -330,10 +330,7 @@ StrapDress makeStrapDress(const TriangleMesh& body, const StrapDressOptions& opt
   options.validate();
   if (body.triangles.empty()) throw std::invalid_argument("body: no triangles");
   const Bounds bounds = boundsOf(body.vertices);
-  SliceOptions slicing;
-  slicing.clusterGap = options.clusterGap;
-  slicing.torsoHalfWidth = options.torsoHalfWidth;
-  slicing.torsoCentreX = 0.5 * (bounds.min.x() + bounds.max.x());
+  const SliceOptions slicing = centredSlicing(body, options.clusterGap, options.torsoHalfWidth);
 
   StrapDress dress;
   dress.armpitHeight = armpitHeight(body, slicing);

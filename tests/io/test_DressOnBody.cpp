@@ -3,7 +3,7 @@
 // piece, and carry its straps over the shoulders.
 #include "support/DressChecks.h"
 #include "support/MeshChecks.h"
-#include "support/IoTestSupport.h"
+#include "support/DefaultBody.h"
 #include "io/MeshImport.h"
 #include "sim/garment/StrapDress.h"
 #include "sim/collision/TriangleBvh.h"
@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 using namespace figment;
 
@@ -20,30 +21,16 @@ namespace {
 class DressOnBody : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const std::string path = test::defaultBodyPath();
-    if (path.empty()) return;
-    ImportOptions options;
-    options.exclude = {"eyes"};
-    body_ = new TriangleMesh(importMesh(path, options).mesh);
-    dress_ = new StrapDress(makeStrapDress(*body_));
-  }
-  static void TearDownTestSuite() {
-    delete dress_;
-    delete body_;
-    dress_ = nullptr;
-    body_ = nullptr;
+    if (const TriangleMesh* body = test::defaultBodyWithoutEyes()) dress_.emplace(makeStrapDress(*body));
   }
   void SetUp() override {
-    if (!body_) GTEST_SKIP() << "human.zae (assimp-testmodels) is not installed";
+    if (!dress_) GTEST_SKIP() << "human.zae (assimp-testmodels) is not installed";
   }
-  static const TriangleMesh& body() { return *body_; }
+  static const TriangleMesh& body() { return *test::defaultBodyWithoutEyes(); }
   static const StrapDress& dress() { return *dress_; }
 
-  static bool insideBody(const Vec3& p) { return checks::insideClosedSurface(body(), p); }
-
  private:
-  static inline TriangleMesh* body_ = nullptr;
-  static inline StrapDress* dress_ = nullptr;
+  static inline std::optional<StrapDress> dress_;
 };
 
 }  // namespace
@@ -132,7 +119,7 @@ TEST_F(DressOnBody, EveryVertexStartsOutsideWithClearance) {
   const double clearance = StrapDressOptions{}.clearance;
   double nearest = 1e9;
   for (const Vec3& v : dress().mesh.vertices) {
-    EXPECT_FALSE(insideBody(v)) << v.transpose();
+    EXPECT_FALSE(checks::insideClosedSurface(body(), v)) << v.transpose();
     nearest = std::min(nearest, std::sqrt(bvh.closest(v).distanceSquared));
   }
   EXPECT_GE(nearest, 0.9 * clearance);

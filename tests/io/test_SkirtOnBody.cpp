@@ -1,7 +1,7 @@
 // The flared skirt on the default body (human.zae): the garment figment-make-skirt writes to
 // scenes/skirt.obj. An open cone of about 1,600 triangles and 0.7 m^2, wound outward, its
 // waistband 5 mm outside the natural waist, every vertex outside the body.
-#include "support/IoTestSupport.h"
+#include "support/DefaultBody.h"
 #include "support/MeshChecks.h"
 #include "io/MeshImport.h"
 #include "sim/collision/TriangleBvh.h"
@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <map>
 
 using namespace figment;
@@ -20,28 +21,16 @@ namespace {
 class SkirtOnBody : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const std::string path = test::defaultBodyPath();
-    if (path.empty()) return;
-    ImportOptions options;
-    options.exclude = {"eyes"};
-    body_ = new TriangleMesh(importMesh(path, options).mesh);
-    skirt_ = new FlaredSkirt(makeFlaredSkirt(*body_));
-  }
-  static void TearDownTestSuite() {
-    delete skirt_;
-    delete body_;
-    skirt_ = nullptr;
-    body_ = nullptr;
+    if (const TriangleMesh* body = test::defaultBodyWithoutEyes()) skirt_.emplace(makeFlaredSkirt(*body));
   }
   void SetUp() override {
-    if (!body_) GTEST_SKIP() << "human.zae (assimp-testmodels) is not installed";
+    if (!skirt_) GTEST_SKIP() << "human.zae (assimp-testmodels) is not installed";
   }
-  static const TriangleMesh& body() { return *body_; }
+  static const TriangleMesh& body() { return *test::defaultBodyWithoutEyes(); }
   static const FlaredSkirt& skirt() { return *skirt_; }
 
  private:
-  static inline TriangleMesh* body_ = nullptr;
-  static inline FlaredSkirt* skirt_ = nullptr;
+  static inline std::optional<FlaredSkirt> skirt_;
 };
 
 }  // namespace
