@@ -32,6 +32,11 @@ class ImplicitEuler {
 
  private:
   void fixNodes(const std::vector<char>& pinned, double dt);
+  // Solves for change_ from rhs_ and the contacts' friction, again while the contacts
+  // change between sticking and sliding (ContactConstraints.h), kMaxSolves times at most.
+  void solveWithFriction(const std::vector<Vec3>& v);
+
+  static constexpr int kMaxSolves = 4;
 
   ClothParameters parameters_;
   ImplicitSystem system_;
@@ -41,7 +46,7 @@ class ImplicitEuler {
   PcgReport lastSolve_;
   ImplicitStepCosts costs_;
   int steps_ = 0;
-  std::vector<Vec3> xStart_, vStart_, rhs_, change_, impulse_;
+  std::vector<Vec3> xStart_, vStart_, rhs_, b_, change_, impulse_;
 };
 
 }  // namespace figment
