@@ -9,6 +9,9 @@ namespace figment {
 
 namespace {
 constexpr double kSearchMargin = 0.02;  // m a query looks beyond what it must, so later steps may skip
+// A sticking node slides when |J_t| > (1 + this) mu j_n: a node at the cone's edge does
+// not switch back and forth.
+constexpr double kReleaseMargin = 0.05;
 
 Vec3 tangential(const Vec3& v, const Vec3& normal) { return v - v.dot(normal) * normal; }
 }  // namespace
@@ -24,6 +27,7 @@ ContactConstraints::ContactConstraints(std::shared_ptr<const Collider> body, con
       distanceBound_(nodes, 0.0),
       released_(nodes, 0),
       held_(nodes, 0),
+      switched_(nodes, 0),
       sticking_(nodes, 0),
       normalImpulse_(nodes, 0.0),
       normalChange_(nodes, Vec3::Zero()),
@@ -50,7 +54,7 @@ void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector
   const int n = static_cast<int>(x.size());
   for (int i = 0; i < n; ++i) {
     const bool released = released_[i];
-    released_[i] = held_[i] = 0;  // a release lasts one step
+    released_[i] = held_[i] = switched_[i] = 0;  // a release lasts one step
     friction_[i] = Vec3::Zero();
     if (filter.kind[i] == NodeFilter::Fixed || distanceBound_[i] > reach) {
       sticking_[i] = 0;
@@ -82,40 +86,47 @@ void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector
   }
 }
 
-bool ContactConstraints::updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart,
-                                    NodeFilter& filter) {
+double ContactConstraints::updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart,
+                                      double mass, NodeFilter& filter) {
   const Vec3& normal = filter.normal[i];
   const double jn = impulse.dot(normal);
   normalImpulse_[i] = jn;
   released_[i] = jn < 0.0;
   const double limit = mu_ * std::max(0.0, jn);
-  if (sticking_[i]) {
+  if (sticking_[i] && filter.kind[i] == NodeFilter::Fixed) {
     // Held by J_t: it slides when that leaves the cone, with friction along J_t.
     const Vec3 held = tangential(impulse, normal);
     const double force = held.norm();
-    if (force <= limit) return false;
+    if (force <= (1.0 + kReleaseMargin) * limit || switched_[i]) return 0.0;
+    switched_[i] = 1;
     slide(i, filter);
     friction_[i] = (limit / force) * held;
-    return true;
+    return force - limit;
   }
   const Vec3 vt = tangential(vEnd, normal);
   const double speed = vt.norm();
   const bool hadFriction = friction_[i].squaredNorm() > 0.0;
   if (hadFriction && vt.dot(friction_[i]) >= 0.0) {
-    stick(i, vStart, filter);  // friction turned it around: it stops
-    return true;
+    // Friction turned it around: it stops. Once a step: a node that slid off this step
+    // stops at the step's end (finish()) and sticks from the next.
+    sticking_[i] = 1;
+    if (switched_[i]) return 0.0;
+    switched_[i] = 1;
+    stick(i, vStart, filter);
+    return mass * speed;
   }
   friction_[i] = speed > 0.0 ? Vec3((-limit / speed) * vt) : Vec3(Vec3::Zero());
-  return !hadFriction && limit > 0.0 && speed > 0.0;
+  return hadFriction ? 0.0 : std::min(limit, mass * speed);
 }
 
-bool ContactConstraints::update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v,
-                                const std::vector<Vec3>& y, NodeFilter& filter) {
-  if (!body_) return false;
-  bool changed = false;
+double ContactConstraints::update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v,
+                                  const std::vector<Vec3>& y, const std::vector<double>& masses,
+                                  NodeFilter& filter) {
+  if (!body_) return 0.0;
+  double changed = 0.0;
   const int n = static_cast<int>(v.size());
   for (int i = 0; i < n; ++i)
-    if (held_[i]) changed = updateNode(i, impulse[i], v[i] + y[i], v[i], filter) || changed;
+    if (held_[i]) changed += updateNode(i, impulse[i], v[i] + y[i], v[i], masses[i], filter);
   return changed;
 }
 
@@ -128,6 +139,7 @@ void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3
     if (filter.kind[i] == NodeFilter::Fixed && !held_[i]) continue;
     if (held_[i]) {
       const Vec3& normal = filter.normal[i];
+      if (sticking_[i]) v[i] = v[i].dot(normal) * normal;
       const double normalSpeed = v[i].dot(normal);
       v[i] += (std::min(normalSpeed, std::max(0.0, vStart[i].dot(normal))) - normalSpeed) * normal;
     }

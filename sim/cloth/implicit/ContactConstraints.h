@@ -47,10 +47,12 @@ class ContactConstraints {
   // N s per node: the friction impulses to add to the solve's right-hand side.
   const std::vector<Vec3>& friction() const { return friction_; }
   // After a solve: `impulse` = A y - b (b with the friction), `v` the velocities at the
-  // step's start, `y` the solve's change. Returns whether a node changed between
-  // sticking and sliding, or got its first friction (then the step should solve again).
-  bool update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v, const std::vector<Vec3>& y,
-              NodeFilter& filter);
+  // step's start, `y` the solve's change. Each node changes between sticking and
+  // sliding once a step at most. Returns the sum over the nodes that changed (or got
+  // their first friction) of how much their tangential impulse changed, N s, as far
+  // as the node alone tells (the step may solve again when it is large).
+  double update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v, const std::vector<Vec3>& y,
+              const std::vector<double>& masses, NodeFilter& filter);
   void finish(const NodeFilter& filter, const std::vector<Vec3>& xStart, const std::vector<Vec3>& vStart, double dt,
               bool firstStep, std::vector<Vec3>& x, std::vector<Vec3>& v);
 
@@ -60,12 +62,13 @@ class ContactConstraints {
  private:
   void stick(int i, const Vec3& v, NodeFilter& filter);
   void slide(int i, NodeFilter& filter);
-  bool updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart, NodeFilter& filter);
+  double updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart, double mass,
+                    NodeFilter& filter);
 
   std::shared_ptr<const Collider> body_;
   double clearance_, mu_, band_;
   std::vector<double> distanceBound_;  // m, per node, at its current position
-  std::vector<char> released_, held_, sticking_;
+  std::vector<char> released_, held_, switched_, sticking_;
   std::vector<double> normalImpulse_;  // N s, per node: j_n of the last solve
   std::vector<Vec3> normalChange_;     // the prescribed velocity change along the normal
   std::vector<Vec3> friction_;         // N s, per node

@@ -26,6 +26,8 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
   const size_t n = v.size();
   const std::vector<Vec3>& friction = contacts_.friction();
   b_.resize(n);
+  double total = 0.0;  // N s: the step's impulses, summed over the nodes
+  for (size_t i = 0; i < n; ++i) total += rhs_[i].norm();
   for (int solve = 0;; ++solve) {
     for (size_t i = 0; i < n; ++i) b_[i] = rhs_[i] + friction[i];
     // A solve after the first starts from the last one's answer.
@@ -36,7 +38,8 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
     // The constraints' impulses: what the solve added beyond the forces and the friction.
     system_.matrix().multiply(change_, impulse_);
     for (size_t i = 0; i < n; ++i) impulse_[i] -= b_[i];
-    if (!contacts_.update(impulse_, v, change_, filter_) || solve + 1 >= kMaxSolves) break;
+    const double changed = contacts_.update(impulse_, v, change_, system_.masses(), filter_);
+    if (changed <= kResolveShare * total || solve + 1 >= kMaxSolves) break;
   }
 }
 

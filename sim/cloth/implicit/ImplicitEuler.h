@@ -33,10 +33,13 @@ class ImplicitEuler {
  private:
   void fixNodes(const std::vector<char>& pinned, double dt);
   // Solves for change_ from rhs_ and the contacts' friction, again while the contacts
-  // change between sticking and sliding (ContactConstraints.h), kMaxSolves times at most.
+  // that change between sticking and sliding (ContactConstraints.h) change more than
+  // kResolveShare of the step's impulses, kMaxSolves times at most. Changes below that
+  // (a few nodes at the friction cone's edge) act from the next step.
   void solveWithFriction(const std::vector<Vec3>& v);
 
-  static constexpr int kMaxSolves = 4;
+  static constexpr int kMaxSolves = 3;
+  static constexpr double kResolveShare = 0.01;
 
   ClothParameters parameters_;
   ImplicitSystem system_;
