@@ -39,7 +39,7 @@ class ImplicitEuler {
   void solveWithFriction(const std::vector<Vec3>& v);
 
   static constexpr int kMaxSolves = 3;
-  static constexpr double kResolveShare = 0.01;
+  static constexpr double kResolveShare = 0.03;
 
   ClothParameters parameters_;
   ImplicitSystem system_;
