@@ -6,7 +6,9 @@
 //   (M + dt C + dt^2 K) y = dt (f(x, v, t) - dt K v),   v' = v + y,   x' = x + dt v'
 //
 // by filtered PCG (FilteredPcg.h), with pinned nodes fixed and the body's contacts as
-// constraints (ContactConstraints.h). One Newton step of the implicit equations: stable
+// constraints with Coulomb friction in the right-hand side (ContactConstraints.h); when
+// contacts switch between sticking and sliding the same system is solved again (up to
+// kMaxSolves times, warm-started). One Newton step of the implicit equations: stable
 // for any step (the matrix is positive definite: K projected, C >= 0), first order in
 // time, and at rest it leaves exactly the explicit model's equilibrium f = 0.
 
