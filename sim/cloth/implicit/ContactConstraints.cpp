@@ -9,18 +9,42 @@ namespace figment {
 
 namespace {
 constexpr double kSearchMargin = 0.02;  // m a query looks beyond what it must, so later steps may skip
-}
+// A sticking node slides when |J_t| > (1 + this) mu j_n: a node at the cone's edge does
+// not switch back and forth.
+constexpr double kReleaseMargin = 0.05;
+
+Vec3 tangential(const Vec3& v, const Vec3& normal) { return v - v.dot(normal) * normal; }
+}  // namespace
 
 ContactConstraints::ContactConstraints(std::shared_ptr<const Collider> body, const ClothParameters& parameters,
                                        size_t nodes)
     : body_(std::move(body)),
       clearance_(parameters.clearance),
-      friction_(parameters.friction),
+      mu_(parameters.friction),
       // A node resting on a curved surface drifts off it by a fraction of a millimetre
       // as it slides; within this band it is still held.
       band_(0.25 * parameters.clearance + 1e-5),
       distanceBound_(nodes, 0.0),
-      released_(nodes, 0) {}
+      released_(nodes, 0),
+      held_(nodes, 0),
+      switched_(nodes, 0),
+      sticking_(nodes, 0),
+      normalImpulse_(nodes, 0.0),
+      normalChange_(nodes, Vec3::Zero()),
+      friction_(nodes, Vec3::Zero()) {}
+
+void ContactConstraints::stick(int i, const Vec3& v, NodeFilter& filter) {
+  sticking_[i] = 1;
+  friction_[i] = Vec3::Zero();
+  filter.kind[i] = NodeFilter::Fixed;
+  filter.prescribed[i] = normalChange_[i] - tangential(v, filter.normal[i]);
+}
+
+void ContactConstraints::slide(int i, NodeFilter& filter) {
+  sticking_[i] = 0;
+  filter.kind[i] = NodeFilter::Sliding;
+  filter.prescribed[i] = normalChange_[i];
+}
 
 void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt,
                                    bool firstStep, NodeFilter& filter) {
@@ -29,35 +53,81 @@ void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector
   const double search = firstStep ? std::numeric_limits<double>::infinity() : reach + kSearchMargin;
   const int n = static_cast<int>(x.size());
   for (int i = 0; i < n; ++i) {
-    if (filter.kind[i] == NodeFilter::Fixed || distanceBound_[i] > reach) continue;
+    const bool released = released_[i];
+    released_[i] = held_[i] = switched_[i] = 0;  // a release lasts one step
+    friction_[i] = Vec3::Zero();
+    if (filter.kind[i] == NodeFilter::Fixed || distanceBound_[i] > reach) {
+      sticking_[i] = 0;
+      continue;
+    }
     Contact contact;
     const bool touching = body_->contact(x[i], reach, search, contact);
     distanceBound_[i] = contact.distance;
-    if (!touching || (released_[i] && contact.distance >= clearance_)) continue;
+    if (!touching || (released && contact.distance >= clearance_)) {
+      sticking_[i] = 0;
+      continue;
+    }
     const Vec3& normal = contact.normal;
-    filter.kind[i] = NodeFilter::Sliding;
+    held_[i] = 1;
     filter.normal[i] = normal;
     // Out to the clearance by the step's end; a node in the band above it keeps its
     // height (pulled down, it would read as lifting off, a pull, and be let go).
     const double targetSpeed = std::max(0.0, clearance_ - contact.distance) / dt;
-    filter.prescribed[i] = (targetSpeed - v[i].dot(normal)) * normal;
+    normalChange_[i] = (targetSpeed - v[i].dot(normal)) * normal;
+    if (sticking_[i]) {
+      stick(i, v[i], filter);
+      continue;
+    }
+    slide(i, filter);
+    // Sliding on: friction against the motion, as large as the last step's normal impulse allows.
+    const Vec3 vt = tangential(v[i], normal);
+    const double speed = vt.norm();
+    if (speed > 0.0) friction_[i] = (-mu_ * std::max(0.0, normalImpulse_[i]) / speed) * vt;
   }
 }
 
-void ContactConstraints::applyFriction(const NodeFilter& filter, const std::vector<Vec3>& impulse,
-                                       const std::vector<double>& masses, std::vector<Vec3>& v) {
-  const int n = static_cast<int>(v.size());
-  for (int i = 0; i < n; ++i) {
-    released_[i] = 0;  // a release lasts one step
-    if (filter.kind[i] != NodeFilter::Sliding) continue;
-    const Vec3& normal = filter.normal[i];
-    const double push = impulse[i].dot(normal);
-    released_[i] = push < 0.0;
-    if (push <= 0.0 || masses[i] <= 0.0) continue;
-    const Vec3 tangential = v[i] - v[i].dot(normal) * normal;
-    const double speed = tangential.norm(), limit = friction_ * push / masses[i];
-    v[i] -= speed <= limit ? tangential : Vec3(tangential * (limit / speed));
+double ContactConstraints::updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart,
+                                      double mass, NodeFilter& filter) {
+  const Vec3& normal = filter.normal[i];
+  const double jn = impulse.dot(normal);
+  normalImpulse_[i] = jn;
+  released_[i] = jn < 0.0;
+  const double limit = mu_ * std::max(0.0, jn);
+  if (sticking_[i] && filter.kind[i] == NodeFilter::Fixed) {
+    // Held by J_t: it slides when that leaves the cone, with friction along J_t.
+    const Vec3 held = tangential(impulse, normal);
+    const double force = held.norm();
+    if (force <= (1.0 + kReleaseMargin) * limit || switched_[i]) return 0.0;
+    switched_[i] = 1;
+    slide(i, filter);
+    friction_[i] = (limit / force) * held;
+    return force - limit;
   }
+  const Vec3 vt = tangential(vEnd, normal);
+  const double speed = vt.norm();
+  const bool hadFriction = friction_[i].squaredNorm() > 0.0;
+  if (hadFriction && vt.dot(friction_[i]) >= 0.0) {
+    // Friction turned it around: it stops. Once a step: a node that slid off this step
+    // stops at the step's end (finish()) and sticks from the next.
+    sticking_[i] = 1;
+    if (switched_[i]) return 0.0;
+    switched_[i] = 1;
+    stick(i, vStart, filter);
+    return mass * speed;
+  }
+  friction_[i] = speed > 0.0 ? Vec3((-limit / speed) * vt) : Vec3(Vec3::Zero());
+  return hadFriction ? 0.0 : std::min(limit, mass * speed);
+}
+
+double ContactConstraints::update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v,
+                                  const std::vector<Vec3>& y, const std::vector<double>& masses,
+                                  NodeFilter& filter) {
+  if (!body_) return 0.0;
+  double changed = 0.0;
+  const int n = static_cast<int>(v.size());
+  for (int i = 0; i < n; ++i)
+    if (held_[i]) changed += updateNode(i, impulse[i], v[i] + y[i], v[i], masses[i], filter);
+  return changed;
 }
 
 void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3>& xStart,
@@ -66,9 +136,10 @@ void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3
   if (!body_) return;
   const int n = static_cast<int>(x.size());
   for (int i = 0; i < n; ++i) {
-    if (filter.kind[i] == NodeFilter::Fixed) continue;
-    if (filter.kind[i] == NodeFilter::Sliding) {
+    if (filter.kind[i] == NodeFilter::Fixed && !held_[i]) continue;
+    if (held_[i]) {
       const Vec3& normal = filter.normal[i];
+      if (sticking_[i]) v[i] = v[i].dot(normal) * normal;
       const double normalSpeed = v[i].dot(normal);
       v[i] += (std::min(normalSpeed, std::max(0.0, vStart[i].dot(normal))) - normalSpeed) * normal;
     }
@@ -80,7 +151,7 @@ void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3
         firstStep ? std::numeric_limits<double>::infinity() : clearance_ + 2.0 * moved + kSearchMargin;
     Contact contact;
     if (body_->contact(x[i], clearance_, search, contact)) {
-      respondToContact(contact, clearance_, friction_, dt, xStart[i], x[i], v[i]);
+      respondToContact(contact, clearance_, mu_, dt, xStart[i], x[i], v[i]);
       bound = clearance_;
     } else {
       bound = contact.distance;

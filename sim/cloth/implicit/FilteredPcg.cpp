@@ -38,7 +38,7 @@ void FilteredPcg::precondition(const NodeFilter& filter, const std::vector<Vec3>
 }
 
 PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                             double tolerance, int maxIterations, std::vector<Vec3>& y) {
+                             double tolerance, int maxIterations, std::vector<Vec3>& y, bool warmStart) {
   const int n = A.rows();
   inverseDiagonal_.resize(n);
   r_.resize(n), c_.resize(n), q_.resize(n), s_.resize(n);
@@ -46,7 +46,11 @@ PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>
     const Block3& D = A.diagonal(i);
     inverseDiagonal_[i] = D.determinant() > 0.0 ? Block3(D.inverse()) : Block3(Block3::Zero());
   }
-  y = filter.prescribed;
+  if (warmStart && y.size() == static_cast<size_t>(n)) {
+    for (int i = 0; i < n; ++i) y[i] = filter.prescribed[i] + filter.apply(i, y[i]);
+  } else {
+    y = filter.prescribed;
+  }
   A.multiply(y, q_);
   for (int i = 0; i < n; ++i) r_[i] = filter.apply(i, b[i] - q_[i]);
   for (int i = 0; i < n; ++i) q_[i] = filter.apply(i, b[i]);

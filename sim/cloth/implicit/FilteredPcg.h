@@ -41,9 +41,10 @@ struct PcgReport {
 
 class FilteredPcg {
  public:
-  // Solves for y (resized; its start value is ignored).
+  // Solves for y (resized). The iterations start from the prescribed part, plus y's
+  // free part when warmStart (y then holds a guess of the answer).
   PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                  double tolerance, int maxIterations, std::vector<Vec3>& y);
+                  double tolerance, int maxIterations, std::vector<Vec3>& y, bool warmStart = false);
 
  private:
   double dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b);

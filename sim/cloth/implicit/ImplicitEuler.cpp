@@ -22,6 +22,27 @@ void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
   }
 }
 
+void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
+  const size_t n = v.size();
+  const std::vector<Vec3>& friction = contacts_.friction();
+  b_.resize(n);
+  double total = 0.0;  // N s: the step's impulses, summed over the nodes
+  for (size_t i = 0; i < n; ++i) total += rhs_[i].norm();
+  for (int solve = 0;; ++solve) {
+    for (size_t i = 0; i < n; ++i) b_[i] = rhs_[i] + friction[i];
+    // A solve after the first starts from the last one's answer.
+    lastSolve_ = pcg_.solve(system_.matrix(), b_, filter_, parameters_.implicitSolver.tolerance,
+                            parameters_.implicitSolver.maxIterations, change_, solve > 0);
+    costs_.solverIterations += lastSolve_.iterations;
+    costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
+    // The constraints' impulses: what the solve added beyond the forces and the friction.
+    system_.matrix().multiply(change_, impulse_);
+    for (size_t i = 0; i < n; ++i) impulse_[i] -= b_[i];
+    const double changed = contacts_.update(impulse_, v, change_, system_.masses(), filter_);
+    if (changed <= kResolveShare * total || solve + 1 >= kMaxSolves) break;
+  }
+}
+
 namespace {
 using Clock = std::chrono::steady_clock;
 // Seconds since `since`, and `since` moved on to now.
@@ -49,19 +70,10 @@ void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, c
   const std::vector<Vec3>& f = system_.forces();
   const std::vector<Vec3>& Kv = system_.stiffnessTimesVelocity();
   for (size_t i = 0; i < n; ++i) rhs_[i] = dt * (f[i] - dt * Kv[i]);
-  lastSolve_ = pcg_.solve(system_.matrix(), rhs_, filter_, parameters_.implicitSolver.tolerance,
-                          parameters_.implicitSolver.maxIterations, change_);
+  solveWithFriction(v);
   costs_.solveSeconds += lap(clock);
   ++costs_.steps;
-  costs_.solverIterations += lastSolve_.iterations;
-  costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
-  // The constraints' impulses: what the solve added beyond the forces.
-  system_.matrix().multiply(change_, impulse_);
-  for (size_t i = 0; i < n; ++i) {
-    impulse_[i] -= rhs_[i];
-    v[i] += change_[i];
-  }
-  contacts_.applyFriction(filter_, impulse_, system_.masses(), v);
+  for (size_t i = 0; i < n; ++i) v[i] += change_[i];
   for (size_t i = 0; i < n; ++i)
     if (!pinned[i]) x[i] += dt * v[i];
   contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);

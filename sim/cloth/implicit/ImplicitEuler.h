@@ -6,7 +6,9 @@
 //   (M + dt C + dt^2 K) y = dt (f(x, v, t) - dt K v),   v' = v + y,   x' = x + dt v'
 //
 // by filtered PCG (FilteredPcg.h), with pinned nodes fixed and the body's contacts as
-// constraints (ContactConstraints.h). One Newton step of the implicit equations: stable
+// constraints with Coulomb friction in the right-hand side (ContactConstraints.h); when
+// contacts switch between sticking and sliding the same system is solved again (up to
+// kMaxSolves times, warm-started). One Newton step of the implicit equations: stable
 // for any step (the matrix is positive definite: K projected, C >= 0), first order in
 // time, and at rest it leaves exactly the explicit model's equilibrium f = 0.
 
@@ -32,6 +34,14 @@ class ImplicitEuler {
 
  private:
   void fixNodes(const std::vector<char>& pinned, double dt);
+  // Solves for change_ from rhs_ and the contacts' friction, again while the contacts
+  // that change between sticking and sliding (ContactConstraints.h) change more than
+  // kResolveShare of the step's impulses, kMaxSolves times at most. Changes below that
+  // (a few nodes at the friction cone's edge) act from the next step.
+  void solveWithFriction(const std::vector<Vec3>& v);
+
+  static constexpr int kMaxSolves = 3;
+  static constexpr double kResolveShare = 0.03;
 
   ClothParameters parameters_;
   ImplicitSystem system_;
@@ -41,7 +51,7 @@ class ImplicitEuler {
   PcgReport lastSolve_;
   ImplicitStepCosts costs_;
   int steps_ = 0;
-  std::vector<Vec3> xStart_, vStart_, rhs_, change_, impulse_;
+  std::vector<Vec3> xStart_, vStart_, rhs_, b_, change_, impulse_;
 };
 
 }  // namespace figment

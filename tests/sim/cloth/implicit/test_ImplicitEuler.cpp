@@ -53,22 +53,26 @@ std::vector<Vec3> drapeWithThreads(int threads) {
 }
 }  // namespace
 
-// At 1/30 s the sheet does not come to rest: a fold keeps moving at about 0.3 m/s while
-// the dozen nodes on the ball only take energy out (an open defect of the linearised
-// step with these projected Hessians); at 1/50 s it rests.
-TEST(ImplicitEuler, SheetDroppedOnABallAtAFiftiethOfASecondEndsOutsideItAtRest) {
-  const ClothParameters p = implicitDrape(1.0 / 50.0);
-  auto body = ball();
-  ClothSolver solver(sheetAboveBall(), p, body);
-  const DrapeResult result = solver.run();
-  EXPECT_TRUE(result.atRest) << "t = " << result.simulatedTime << " s";
-  RecordProperty("steps", result.iterations);
-  EXPECT_GT(worstClearance(*body, solver.positions(), p.clearance), -1e-6);
-  double highest = -std::numeric_limits<double>::infinity();
-  for (const Vec3& x : solver.positions()) highest = std::max(highest, x.y());
-  // The ball holds the middle of the sheet up; the corners fall past it.
-  EXPECT_NEAR(highest, kRadius + p.clearance, 0.01);
-  EXPECT_LT(solver.positions()[0].y(), 0.0);
+// Caught a defect: at 1/30 s the sheet never came to rest (a fold kept moving at about
+// 0.3 m/s) while friction, judged on each node's bare mass, was far too strong for nodes
+// coupled to stiff neighbours; with Coulomb friction inside the solve
+// (ContactConstraints.h) it rests at 1/30 s as at 1/50 s.
+TEST(ImplicitEuler, SheetDroppedOnABallEndsOutsideItAtRest) {
+  for (const double timeStep : {1.0 / 30.0, 1.0 / 50.0}) {
+    SCOPED_TRACE(testing::Message() << "dt = " << timeStep << " s");
+    const ClothParameters p = implicitDrape(timeStep);
+    auto body = ball();
+    ClothSolver solver(sheetAboveBall(), p, body);
+    const DrapeResult result = solver.run();
+    EXPECT_TRUE(result.atRest) << "t = " << result.simulatedTime << " s";
+    RecordProperty(timeStep > 0.025 ? "steps at 1/30 s" : "steps at 1/50 s", result.iterations);
+    EXPECT_GT(worstClearance(*body, solver.positions(), p.clearance), -1e-6);
+    double highest = -std::numeric_limits<double>::infinity();
+    for (const Vec3& x : solver.positions()) highest = std::max(highest, x.y());
+    // The ball holds the middle of the sheet up; the corners fall past it.
+    EXPECT_NEAR(highest, kRadius + p.clearance, 0.01);
+    EXPECT_LT(solver.positions()[0].y(), 0.0);
+  }
 }
 
 TEST(ImplicitEuler, EveryStepEndsOutsideTheBall) {
