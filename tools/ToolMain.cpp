@@ -24,13 +24,15 @@ int ToolMain::parse(CLI::App& app, int argc, char** argv) const {
   return -1;
 }
 
-int ToolMain::withBody(const std::string& bodyName,
-                       const std::function<int(const std::string& bodyPath)>& work) const {
+int ToolMain::withBody(const std::string& bodyName, const std::vector<std::string>& exclude,
+                       const std::function<int(const TriangleMesh& body, const std::string& bodyPath)>& work) const {
   const std::string bodyPath = findModelFile(bodyName);
   if (bodyPath.empty())
     return fail(bodyName + ": not found (searched the working directory, $FIGMENT_MODEL_PATH, /usr/share/assimp/models)");
   try {
-    return work(bodyPath);
+    ImportOptions options;
+    options.exclude = exclude;
+    return work(importMesh(bodyPath, options).mesh, bodyPath);
   } catch (const std::runtime_error& error) {  // the importer's and exporter's messages start with the path
     return fail(error.what());
   } catch (const std::exception& error) {

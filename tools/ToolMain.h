@@ -5,8 +5,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "sim/core/TriangleMesh.h"
+
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace figment::tools {
 
@@ -23,10 +26,12 @@ class ToolMain {
   // (0 after --help, 1 after a bad option).
   int parse(CLI::App& app, int argc, char** argv) const;
 
-  // Runs `work` on the path of the body file `bodyName` and returns its exit status.
-  // A body not found, or an exception from `work`, is one line and status 1: the
-  // importer's and exporter's messages start with their path; others get the body's.
-  int withBody(const std::string& bodyName, const std::function<int(const std::string& bodyPath)>& work) const;
+  // Finds the body file `bodyName` on the model search path, reads it (metres, y up,
+  // without the meshes named in `exclude`) and returns the exit status of `work` on it.
+  // A body not found, or an exception, is one line and status 1: the importer's and
+  // exporter's messages start with their path; others get the body's.
+  int withBody(const std::string& bodyName, const std::vector<std::string>& exclude,
+               const std::function<int(const TriangleMesh& body, const std::string& bodyPath)>& work) const;
 
  private:
   std::string program_;

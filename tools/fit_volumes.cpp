@@ -140,12 +140,9 @@ std::vector<figment::CollisionVolumeParameters> fitVolumes(const figment::Triang
   return volumes;
 }
 
-// Fits the body at `bodyPath` and writes the file: the exit status.
-int fitAndWrite(const Options& options, const std::string& bodyPath) {
+// Fits `body` and writes the file: the exit status.
+int fitAndWrite(const Options& options, const figment::TriangleMesh& body) {
   const auto start = std::chrono::steady_clock::now();
-  figment::ImportOptions importOptions;
-  importOptions.exclude = options.exclude;
-  const figment::TriangleMesh body = figment::importMesh(bodyPath, importOptions).mesh;
   const figment::Skeleton skeleton = figment::estimateSkeleton(body);
   const std::set<std::string> exact(options.exactParts.begin(), options.exactParts.end());
   const std::set<std::string> forcedCapsules(options.capsuleParts.begin(), options.capsuleParts.end());
@@ -179,5 +176,7 @@ int main(int argc, char** argv) {
   Options options;
   if (const int status = parseCommandLine(argc, argv, options); status >= 0) return status;
   figment::init();
-  return kTool.withBody(options.body, [&](const std::string& bodyPath) { return fitAndWrite(options, bodyPath); });
+  return kTool.withBody(options.body, options.exclude, [&](const figment::TriangleMesh& body, const std::string&) {
+    return fitAndWrite(options, body);
+  });
 }

@@ -5,7 +5,6 @@
 // "figment-make-dress: <file>: <reason>", on stderr and exit status 1, with no output file.
 
 #include "io/MeshExport.h"
-#include "io/MeshImport.h"
 #include "sim/garment/StrapDress.h"
 #include "ToolMain.h"
 
@@ -19,13 +18,9 @@ namespace {
 
 const figment::tools::ToolMain kTool{"figment-make-dress"};
 
-// Makes the dress around the body at `bodyPath` and writes it: the exit status.
-int makeAndWrite(const std::string& bodyPath, const std::vector<std::string>& exclude,
-                 const figment::StrapDressOptions& options, const std::string& output) {
-  figment::ImportOptions importOptions;
-  importOptions.exclude = exclude;
-  const figment::ImportedMesh body = figment::importMesh(bodyPath, importOptions);
-  const figment::StrapDress dress = figment::makeStrapDress(body.mesh, options);
+// Makes the dress around `body` and writes it: the exit status.
+int makeAndWrite(const figment::TriangleMesh& body, const figment::StrapDressOptions& options, const std::string& output) {
+  const figment::StrapDress dress = figment::makeStrapDress(body, options);
   figment::exportObj(dress.mesh, output);
   std::printf("%s: %s: %zu vertices, %zu triangles, top %.3f m (%.3f m between the straps), hem %.3f m, "
               "straps at x = %.3f, %.3f m\n",
@@ -51,7 +46,7 @@ int main(int argc, char** argv) {
   app.add_option("--neckline-rise", options.necklineRise, "rise of the top edge between the straps, m")
       ->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
-  return kTool.withBody(bodyName, [&](const std::string& bodyPath) {
-    return makeAndWrite(bodyPath, exclude, options, output);
+  return kTool.withBody(bodyName, exclude, [&](const figment::TriangleMesh& body, const std::string&) {
+    return makeAndWrite(body, options, output);
   });
 }

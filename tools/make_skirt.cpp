@@ -5,7 +5,6 @@
 // "figment-make-skirt: <file>: <reason>", on stderr and exit status 1, with no output file.
 
 #include "io/MeshExport.h"
-#include "io/MeshImport.h"
 #include "sim/garment/FlaredSkirt.h"
 #include "ToolMain.h"
 
@@ -17,13 +16,9 @@ namespace {
 
 const figment::tools::ToolMain kTool{"figment-make-skirt"};
 
-// Makes the skirt around the body at `bodyPath` and writes it: the exit status.
-int makeAndWrite(const std::string& bodyPath, const std::vector<std::string>& exclude,
-                 const figment::FlaredSkirtOptions& options, const std::string& output) {
-  figment::ImportOptions importOptions;
-  importOptions.exclude = exclude;
-  const figment::ImportedMesh body = figment::importMesh(bodyPath, importOptions);
-  const figment::FlaredSkirt skirt = figment::makeFlaredSkirt(body.mesh, options);
+// Makes the skirt around `body` and writes it: the exit status.
+int makeAndWrite(const figment::TriangleMesh& body, const figment::FlaredSkirtOptions& options, const std::string& output) {
+  const figment::FlaredSkirt skirt = figment::makeFlaredSkirt(body, options);
   figment::exportObj(skirt.mesh, output);
   std::printf("%s: %s: %zu vertices, %zu triangles, %.3f m^2; waist at %.3f m (%.3f m round, waistband %.3f m), "
               "hem at %.3f m\n",
@@ -52,7 +47,7 @@ int main(int argc, char** argv) {
   app.add_option("--rows", options.rows, "rings of quads")->capture_default_str();
   app.add_option("--columns", options.columns, "vertices around a ring")->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
-  return kTool.withBody(bodyName, [&](const std::string& bodyPath) {
-    return makeAndWrite(bodyPath, exclude, options, output);
+  return kTool.withBody(bodyName, exclude, [&](const figment::TriangleMesh& body, const std::string&) {
+    return makeAndWrite(body, options, output);
   });
 }
