@@ -35,10 +35,20 @@ enum class AccelerationLimiter {
   Tanh,   // a -> a_max tanh(|a|/a_max) a/|a|       (smooth, a little dearer)
 };
 
+// The bending stiffness in the implicit integrator's matrix (sim/cloth/implicit/BendingHessian.h).
+enum class BendingStiffness {
+  Joints,    // a bound per joint (4 nodes): fewer blocks, cheaper steps
+  Sections,  // the sections' exact Gauss-Newton form (6 nodes each)
+};
+
 // The linear solve of the implicit integrator (sim/cloth/implicit/FilteredPcg.h).
 struct ImplicitSolverParameters {
-  double tolerance = 1e-4;  // PCG stops when |residual| <= tolerance |right-hand side|
+  double tolerance = 1e-2;  // PCG stops when |residual| <= tolerance |right-hand side|...
+  // ...or when the velocities' error is about this share of the at-rest speed (a
+  // mass-weighted mean): steps near rest, whose right-hand side is tiny, end early.
+  double restSpeedShare = 1e-3;
   int maxIterations = 300;  // PCG iterations per time step, at most
+  BendingStiffness bending = BendingStiffness::Joints;
 };
 
 struct ClothParameters {

@@ -15,19 +15,24 @@ void invert(const std::vector<int>& targets, int targetCount, std::vector<int>& 
 }
 }  // namespace
 
-AssemblyPlan::AssemblyPlan(int nodes, const std::vector<std::vector<int>>& elementNodes) {
+AssemblyPlan::AssemblyPlan(int nodes, const std::vector<std::vector<int>>& elementNodes,
+                           const std::vector<char>& withBlocks) {
+  const auto hasBlocks = [&](size_t e) { return withBlocks.empty() || withBlocks[e]; };
   std::vector<std::vector<int>> columns(nodes);
-  for (const std::vector<int>& element : elementNodes)
-    for (int i : element) columns[i].insert(columns[i].end(), element.begin(), element.end());
+  for (size_t e = 0; e < elementNodes.size(); ++e)
+    if (hasBlocks(e))
+      for (int i : elementNodes[e]) columns[i].insert(columns[i].end(), elementNodes[e].begin(), elementNodes[e].end());
   pattern_ = BlockSparseMatrix(std::move(columns));
   std::vector<int> blockTarget, vectorTarget;
-  for (const std::vector<int>& element : elementNodes) {
+  for (size_t e = 0; e < elementNodes.size(); ++e) {
+    const std::vector<int>& element = elementNodes[e];
     const int k = static_cast<int>(element.size());
+    const int blocks = hasBlocks(e) ? k : 0;
     for (int a = 0; a < k; ++a) {
       vectorTarget.push_back(element[a]);
-      for (int b = 0; b < k; ++b) blockTarget.push_back(pattern_.find(element[a], element[b]));
+      for (int b = 0; b < blocks; ++b) blockTarget.push_back(pattern_.find(element[a], element[b]));
     }
-    blockOffset_.push_back(blockOffset_.back() + k * k);
+    blockOffset_.push_back(blockOffset_.back() + blocks * blocks);
     vectorOffset_.push_back(vectorOffset_.back() + k);
   }
   invert(blockTarget, static_cast<int>(pattern_.blockCount()), blockSourceStart_, blockSource_);

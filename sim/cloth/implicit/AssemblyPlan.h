@@ -14,8 +14,10 @@ namespace figment {
 class AssemblyPlan {
  public:
   AssemblyPlan() = default;
-  // `elementNodes[e]`: the nodes of element e (its local order), each < nodes.
-  AssemblyPlan(int nodes, const std::vector<std::vector<int>>& elementNodes);
+  // `elementNodes[e]`: the nodes of element e (its local order), each < nodes. Elements
+  // with withBlocks[e] == 0 write node vectors only (no blocks, no matrix pattern);
+  // an empty withBlocks: every element has blocks.
+  AssemblyPlan(int nodes, const std::vector<std::vector<int>>& elementNodes, const std::vector<char>& withBlocks = {});
 
   // Element e's local block (a, b) lives at blockOffset(e) + a k + b (k: its node count),
   // its local vector a at vectorOffset(e) + a.

@@ -82,4 +82,67 @@ void bendingContribution(const PlateBending::SectionForm& section, const Bending
   addAngleCurvatureBound(section, stencil, angles, moment, v, weights, out);
 }
 
+std::vector<JointBending> jointBendings(const PlateBending& bending) {
+  std::vector<JointBending> joints(bending.joints().size());
+  const std::vector<PlateBending::SectionForm>& sections = bending.sectionForms();
+  for (int s = 0; s < static_cast<int>(sections.size()); ++s) {
+    if (sections[s].held) continue;
+    for (int r = 0; r < 3; ++r) {
+      const int j = sections[s].joints[r];
+      if (j < 0) continue;
+      JointBending& joint = joints[j];
+      const int at = joint.section[0] < 0 ? 0 : 1;
+      joint.section[at] = s;
+      joint.side[at] = r;
+      const double scale = sections[s].scale[r];
+      joint.stiffness += scale * scale * sections[s].form.row(r).cwiseAbs().sum();
+    }
+  }
+  return joints;
+}
+
+Eigen::Vector3d bendingSectionForces(const PlateBending::SectionForm& section, const BendingStencil& stencil,
+                                     const std::vector<JointAngle>& angles, const ElementOutput& out) {
+  const int k = static_cast<int>(stencil.nodes.size());
+  Vec3* force = out.force;
+  for (int a = 0; a < k; ++a) force[a] = out.stiffnessTimesVelocity[a] = Vec3::Zero();
+  if (section.held) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (int r = 0; r < 3; ++r)
+    if (section.joints[r] >= 0) d[r] = section.scale[r] * angles[section.joints[r]].change;
+  const Eigen::Vector3d moment = section.form * d;
+  for (int r = 0; r < 3; ++r) {
+    if (section.joints[r] < 0) continue;
+    const JointAngle& angle = angles[section.joints[r]];
+    for (int corner = 0; corner < 4; ++corner)
+      force[stencil.local[r][corner]] -= (section.scale[r] * moment[r]) * angle.gradient[corner];
+  }
+  return moment;
+}
+
+void jointBendingContribution(const JointBending& joint, const PlateBending& bending, const JointAngle& angle,
+                              const std::vector<Eigen::Vector3d>& moments, const std::array<int, 4>& corners,
+                              const std::vector<Vec3>& v, const SystemWeights& weights, const ElementOutput& out) {
+  if (joint.section[0] < 0) {  // on no free section: a clamp's, or one left out as degenerate
+    for (int a = 0; a < 4; ++a) out.force[a] = out.stiffnessTimesVelocity[a] = Vec3::Zero();
+    for (int b = 0; b < 16; ++b) out.blocks[b].setZero();
+    return;
+  }
+  double jointMoment = 0.0;  // for the curvature bound, as addAngleCurvatureBound's
+  for (int at = 0; at < 2; ++at) {
+    const int s = joint.section[at];
+    if (s >= 0) jointMoment += std::abs(bending.sectionForms()[s].scale[joint.side[at]] * moments[s][joint.side[at]]);
+  }
+  double rate = 0.0;  // dtheta/dt
+  for (int a = 0; a < 4; ++a) rate += angle.gradient[a].dot(v[corners[a]]);
+  for (int a = 0; a < 4; ++a) {
+    const double bound = kBound * jointMoment * angle.gradient[a].squaredNorm();
+    out.force[a] = Vec3::Zero();
+    out.stiffnessTimesVelocity[a] = (joint.stiffness * rate) * angle.gradient[a] + bound * v[corners[a]];
+    for (int b = 0; b < 4; ++b)
+      out.blocks[a * 4 + b] = (weights.stiffness * joint.stiffness) * (angle.gradient[a] * angle.gradient[b].transpose());
+    out.blocks[a * 4 + a].diagonal().array() += weights.stiffness * bound;
+  }
+}
+
 }  // namespace figment

@@ -39,4 +39,26 @@ void bendingContribution(const PlateBending::SectionForm& section, const Bending
                          const std::vector<JointAngle>& angles, const std::vector<Vec3>& v,
                          const SystemWeights& weights, const ElementOutput& out);
 
+// The joint-wise bound of the same stiffness: with u_r = scale_r dtheta_r/dx . dx,
+//   u^T Q u <= sum_r q_r u_r^2,   q_r = sum_t |Q_rt|   (|u_r u_t| <= (u_r^2 + u_t^2) / 2),
+// so K <= sum over joints of w_j g_j g_j^T, w_j = sum over the joint's two sections of
+// scale_r^2 q_r: a 4-node stencil per joint instead of 6 per section. The matrix keeps
+// the membrane's 1-ring pattern plus one block per joint's opposite corners (about 13
+// blocks a row instead of 19): cheaper to assemble and to multiply, stiffer than exact
+// by at most the form's off-diagonal share (the equilibrium, f = 0, is the same).
+struct JointBending {
+  std::array<int, 2> section{-1, -1};  // the sections it joins (-1: none, or a clamp)
+  std::array<int, 2> side{0, 0};       // the joint's index r in each
+  double stiffness = 0.0;              // w_j
+};
+std::vector<JointBending> jointBendings(const PlateBending& bending);
+// The section's forces alone (stencil order; its K v slots zero, it has no blocks), as
+// bendingContribution's; returns its moments Q d (zero for a clamp).
+Eigen::Vector3d bendingSectionForces(const PlateBending::SectionForm& section, const BendingStencil& stencil,
+                                     const std::vector<JointAngle>& angles, const ElementOutput& out);
+// The joint's K v and weighted blocks (corner order) into `out`; `moments`: every section's.
+void jointBendingContribution(const JointBending& joint, const PlateBending& bending, const JointAngle& angle,
+                              const std::vector<Eigen::Vector3d>& moments, const std::array<int, 4>& corners,
+                              const std::vector<Vec3>& v, const SystemWeights& weights, const ElementOutput& out);
+
 }  // namespace figment

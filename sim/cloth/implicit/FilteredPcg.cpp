@@ -38,7 +38,7 @@ void FilteredPcg::precondition(const NodeFilter& filter, const std::vector<Vec3>
 }
 
 PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                             double tolerance, int maxIterations, std::vector<Vec3>& y, bool warmStart) {
+                             const PcgStop& stop, std::vector<Vec3>& y, bool warmStart) {
   const int n = A.rows();
   inverseDiagonal_.resize(n);
   r_.resize(n), c_.resize(n), q_.resize(n), s_.resize(n);
@@ -55,11 +55,11 @@ PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>
   for (int i = 0; i < n; ++i) r_[i] = filter.apply(i, b[i] - q_[i]);
   for (int i = 0; i < n; ++i) q_[i] = filter.apply(i, b[i]);
   precondition(filter, q_, s_);
-  const double target = tolerance * tolerance * dot(q_, s_);
+  const double target = std::max(stop.relative * stop.relative * dot(q_, s_), stop.absolute);
   precondition(filter, r_, c_);
   double delta = dot(r_, c_);
   PcgReport report;
-  while (delta > target && report.iterations < maxIterations) {
+  while (delta > target && report.iterations < stop.maxIterations) {
     A.multiply(c_, q_);
     for (int i = 0; i < n; ++i) q_[i] = filter.apply(i, q_[i]);
     const double curvature = dot(c_, q_);

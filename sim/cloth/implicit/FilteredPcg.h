@@ -8,7 +8,9 @@
 //
 // Preconditioner: the inverse of A's 3x3 diagonal blocks, filtered on both sides
 // (S P^-1 S: symmetric, positive definite on the free directions). Stops when
-// r^T P^-1 r <= tolerance^2 (S b)^T P^-1 (S b), or after maxIterations.
+// r^T P^-1 r <= max(relative^2 (S b)^T P^-1 (S b), absolute), or after maxIterations.
+// With P about the nodes' masses, r^T P^-1 r is about sum m_i |e_i|^2 for the
+// velocity changes' errors e_i: absolute = M e^2 stops at a mean error e.
 // Products run in parallel (rows); the dot products are summed over fixed chunks in a
 // fixed order, so the result does not depend on the thread count.
 
@@ -34,6 +36,12 @@ struct NodeFilter {
   }
 };
 
+struct PcgStop {
+  double relative = 1e-2;
+  double absolute = 0.0;  // kg m^2/s^2
+  int maxIterations = 300;
+};
+
 struct PcgReport {
   int iterations = 0;
   bool converged = false;
@@ -44,7 +52,7 @@ class FilteredPcg {
   // Solves for y (resized). The iterations start from the prescribed part, plus y's
   // free part when warmStart (y then holds a guess of the answer).
   PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                  double tolerance, int maxIterations, std::vector<Vec3>& y, bool warmStart = false);
+                  const PcgStop& stop, std::vector<Vec3>& y, bool warmStart = false);
 
  private:
   double dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b);

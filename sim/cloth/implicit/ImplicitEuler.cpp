@@ -6,7 +6,13 @@ namespace figment {
 
 ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& parameters,
                              std::shared_ptr<const Collider> body)
-    : parameters_(parameters), system_(model, parameters), contacts_(std::move(body), parameters, model.nodeCount()) {}
+    : parameters_(parameters), system_(model, parameters), contacts_(std::move(body), parameters, model.nodeCount()) {
+  double mass = 0.0;
+  for (double m : model.masses()) mass += m;
+  const ImplicitSolverParameters& solver = parameters.implicitSolver;
+  const double speed = solver.restSpeedShare * parameters.rest.speedThreshold;
+  stop_ = PcgStop{solver.tolerance, mass * speed * speed, solver.maxIterations};
+}
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
   const std::vector<double>& m = system_.masses();
@@ -31,8 +37,7 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
   for (int solve = 0;; ++solve) {
     for (size_t i = 0; i < n; ++i) b_[i] = rhs_[i] + friction[i];
     // A solve after the first starts from the last one's answer.
-    lastSolve_ = pcg_.solve(system_.matrix(), b_, filter_, parameters_.implicitSolver.tolerance,
-                            parameters_.implicitSolver.maxIterations, change_, solve > 0);
+    lastSolve_ = pcg_.solve(system_.matrix(), b_, filter_, stop_, change_, solve > 0);
     costs_.solverIterations += lastSolve_.iterations;
     costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
     // The constraints' impulses: what the solve added beyond the forces and the friction.

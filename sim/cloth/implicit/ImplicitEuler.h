@@ -47,6 +47,7 @@ class ImplicitEuler {
   ImplicitSystem system_;
   ContactConstraints contacts_;
   FilteredPcg pcg_;
+  PcgStop stop_;
   NodeFilter filter_;
   PcgReport lastSolve_;
   ImplicitStepCosts costs_;

@@ -5,12 +5,25 @@
 namespace figment {
 
 namespace {
-std::vector<std::vector<int>> elementNodes(const ClothModel& model, const std::vector<BendingStencil>& stencils) {
+// The plan's elements: the membrane sections, the bending sections, then (with the
+// joint-wise bound) the joints, which carry the bending blocks instead of the sections.
+AssemblyPlan assemblyPlan(const ClothModel& model, const std::vector<BendingStencil>& stencils, bool jointBound) {
   std::vector<std::vector<int>> nodes;
-  for (const MembraneElement& section : model.sections())
+  std::vector<char> withBlocks;
+  for (const MembraneElement& section : model.sections()) {
     nodes.push_back({section.corners()[0], section.corners()[1], section.corners()[2]});
-  for (const BendingStencil& stencil : stencils) nodes.push_back(stencil.nodes);
-  return nodes;
+    withBlocks.push_back(1);
+  }
+  for (const BendingStencil& stencil : stencils) {
+    nodes.push_back(stencil.nodes);
+    withBlocks.push_back(!jointBound);
+  }
+  if (jointBound)
+    for (const BendingJoint& joint : model.bending().joints()) {
+      nodes.push_back({joint.corners().begin(), joint.corners().end()});
+      withBlocks.push_back(1);
+    }
+  return AssemblyPlan(static_cast<int>(model.nodeCount()), nodes, withBlocks);
 }
 }  // namespace
 
@@ -20,7 +33,10 @@ ImplicitSystem::ImplicitSystem(const ClothModel& model, const ClothParameters& p
   for (const PlateBending::SectionForm& section : bending.sectionForms())
     stencils_.push_back(bendingStencil(bending, section));
   const int n = static_cast<int>(model.nodeCount());
-  plan_ = AssemblyPlan(n, elementNodes(model, stencils_));
+  jointBound_ = parameters.implicitSolver.bending == BendingStiffness::Joints;
+  if (jointBound_) joints_ = jointBendings(bending);
+  moments_.resize(stencils_.size());
+  plan_ = assemblyPlan(model, stencils_, jointBound_);
   matrix_ = plan_.pattern();
   nodeArea_.assign(n, 0.0);
   for (const MembraneElement& section : model.sections())
@@ -33,8 +49,9 @@ ImplicitSystem::ImplicitSystem(const ClothModel& model, const ClothParameters& p
 }
 
 ElementOutput ImplicitSystem::slots(int element) {
-  return {&forceSlots_[plan_.vectorOffset(element)], &stiffnessVelocitySlots_[plan_.vectorOffset(element)],
-          &blockSlots_[plan_.blockOffset(element)]};
+  // data() + offset: an element without blocks may sit at the end of blockSlots_.
+  return {forceSlots_.data() + plan_.vectorOffset(element), stiffnessVelocitySlots_.data() + plan_.vectorOffset(element),
+          blockSlots_.data() + plan_.blockOffset(element)};
 }
 
 void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t,
@@ -59,9 +76,20 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
     }
 #pragma omp for schedule(static)
     for (int j = 0; j < joints; ++j) angles_[j] = jointAngle(bending.joints()[j], x);
+    if (jointBound_) {
 #pragma omp for schedule(static)
-    for (int s = 0; s < bendingSections; ++s)
-      bendingContribution(bending.sectionForms()[s], stencils_[s], angles_, v, weights, slots(membranes + s));
+      for (int s = 0; s < bendingSections; ++s)
+        moments_[s] = bendingSectionForces(bending.sectionForms()[s], stencils_[s], angles_, slots(membranes + s));
+#pragma omp for schedule(static)
+      for (int j = 0; j < joints; ++j) {
+        const ElementOutput out = slots(membranes + bendingSections + j);
+        jointBendingContribution(joints_[j], bending, angles_[j], moments_, bending.joints()[j].corners(), v, weights, out);
+      }
+    } else {
+#pragma omp for schedule(static)
+      for (int s = 0; s < bendingSections; ++s)
+        bendingContribution(bending.sectionForms()[s], stencils_[s], angles_, v, weights, slots(membranes + s));
+    }
   }
 }
 

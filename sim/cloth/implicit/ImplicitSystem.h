@@ -47,6 +47,9 @@ class ImplicitSystem {
   std::vector<BendingStencil> stencils_;
   std::vector<double> nodeArea_;  // m^2, a third of each section's rest area
   std::vector<JointAngle> angles_;
+  bool jointBound_ = false;
+  std::vector<JointBending> joints_;
+  std::vector<Eigen::Vector3d> moments_;
   std::vector<Vec3> forceSlots_, stiffnessVelocitySlots_;
   std::vector<Block3> blockSlots_;
   std::vector<double> diagonal_;
