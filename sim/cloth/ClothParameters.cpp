@@ -38,7 +38,6 @@ void ClothParameters::validate() const {
   wind.validate();
   requireOpenRange("implicitTolerance", implicitSolver.tolerance, 0.0, 1.0);
   requirePositive("implicitMaxIterations", implicitSolver.maxIterations);
-  requireNonNegative("implicitRestSpeedShare", implicitSolver.restSpeedShare);
   if (timeStep > maxTime)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
                                 formatNumber(maxTime));

@@ -43,10 +43,10 @@ enum class BendingStiffness {
 
 // The linear solve of the implicit integrator (sim/cloth/implicit/FilteredPcg.h).
 struct ImplicitSolverParameters {
-  double tolerance = 1e-2;  // PCG stops when |residual| <= tolerance |right-hand side|...
-  // ...or when the velocities' error is about this share of the at-rest speed (a
-  // mass-weighted mean): steps near rest, whose right-hand side is tiny, end early.
-  double restSpeedShare = 1e-3;
+  // PCG stops when |residual| <= tolerance |right-hand side|. At 1 % the dress rests
+  // as far from the converged reference as at 1e-4, in a third of the wall time; at
+  // 3 % it never rests at 1/20 s.
+  double tolerance = 1e-2;
   int maxIterations = 300;  // PCG iterations per time step, at most
   BendingStiffness bending = BendingStiffness::Joints;
 };

@@ -33,11 +33,7 @@ void BlockSparseMatrix::multiply(const std::vector<Vec3>& x, std::vector<Vec3>& 
   const int n = rows();
   y.resize(n);
 #pragma omp parallel for schedule(static) if (n >= kParallelSolveNodes)
-  for (int i = 0; i < n; ++i) {
-    Vec3 sum = Vec3::Zero();
-    for (int k = rowStart_[i]; k < rowStart_[i + 1]; ++k) sum.noalias() += blocks_[k] * x[column_[k]];
-    y[i] = sum;
-  }
+  for (int i = 0; i < n; ++i) y[i] = multiplyRow(i, x);
 }
 
 }  // namespace figment

@@ -32,6 +32,12 @@ class BlockSparseMatrix {
 
   // y = A x, rows in parallel (OpenMP).
   void multiply(const std::vector<Vec3>& x, std::vector<Vec3>& y) const;
+  // Row i of A x.
+  Vec3 multiplyRow(int i, const std::vector<Vec3>& x) const {
+    Vec3 sum = Vec3::Zero();
+    for (int k = rowStart_[i]; k < rowStart_[i + 1]; ++k) sum.noalias() += blocks_[k] * x[column_[k]];
+    return sum;
+  }
 
  private:
   std::vector<int> rowStart_{0}, column_, diagonal_;

@@ -7,8 +7,18 @@
 namespace figment {
 
 namespace {
-constexpr int kChunk = 256;  // nodes per partial sum of a dot product
+constexpr int kChunk = 64;  // nodes per partial sum of a dot product
+
+int chunkEnd(int chunk, int n) { return std::min(n, (chunk + 1) * kChunk); }
+
+// The partial sums added in chunk order: every thread gets the same total, whatever
+// the thread count.
+double total(const std::vector<double>& partial) {
+  double sum = 0.0;
+  for (double p : partial) sum += p;
+  return sum;
 }
+}  // namespace
 
 void NodeFilter::reset(size_t nodes) {
   kind.assign(nodes, Free);
@@ -16,29 +26,8 @@ void NodeFilter::reset(size_t nodes) {
   prescribed.assign(nodes, Vec3::Zero());
 }
 
-double FilteredPcg::dot(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  const int n = static_cast<int>(a.size());
-  const int chunks = (n + kChunk - 1) / kChunk;
-  partial_.resize(chunks);
-#pragma omp parallel for schedule(static) if (n >= kParallelSolveNodes)
-  for (int k = 0; k < chunks; ++k) {
-    double sum = 0.0;
-    for (int i = k * kChunk; i < std::min(n, (k + 1) * kChunk); ++i) sum += a[i].dot(b[i]);
-    partial_[k] = sum;
-  }
-  double total = 0.0;
-  for (double p : partial_) total += p;
-  return total;
-}
-
-void FilteredPcg::precondition(const NodeFilter& filter, const std::vector<Vec3>& r, std::vector<Vec3>& s) const {
-  const int n = static_cast<int>(r.size());
-#pragma omp parallel for schedule(static) if (n >= kParallelSolveNodes)
-  for (int i = 0; i < n; ++i) s[i] = filter.apply(i, inverseDiagonal_[i] * filter.apply(i, r[i]));
-}
-
-PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                             const PcgStop& stop, std::vector<Vec3>& y, bool warmStart) {
+void FilteredPcg::prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
+                          std::vector<Vec3>& y, bool warmStart) {
   const int n = A.rows();
   inverseDiagonal_.resize(n);
   r_.resize(n), c_.resize(n), q_.resize(n), s_.resize(n);
@@ -52,27 +41,68 @@ PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>
     y = filter.prescribed;
   }
   A.multiply(y, q_);
-  for (int i = 0; i < n; ++i) r_[i] = filter.apply(i, b[i] - q_[i]);
-  for (int i = 0; i < n; ++i) q_[i] = filter.apply(i, b[i]);
-  precondition(filter, q_, s_);
-  const double target = std::max(stop.relative * stop.relative * dot(q_, s_), stop.absolute);
-  precondition(filter, r_, c_);
-  double delta = dot(r_, c_);
-  PcgReport report;
-  while (delta > target && report.iterations < stop.maxIterations) {
-    A.multiply(c_, q_);
-    for (int i = 0; i < n; ++i) q_[i] = filter.apply(i, q_[i]);
-    const double curvature = dot(c_, q_);
-    if (!(curvature > 0.0)) break;
-    const double alpha = delta / curvature;
-    for (int i = 0; i < n; ++i) y[i] += alpha * c_[i], r_[i] -= alpha * q_[i];
-    precondition(filter, r_, s_);
-    const double next = dot(r_, s_);
-    for (int i = 0; i < n; ++i) c_[i] = s_[i] + (next / delta) * c_[i];
-    delta = next;
-    ++report.iterations;
+  bScaled_ = 0.0;
+  delta_ = 0.0;
+  for (int i = 0; i < n; ++i) {
+    r_[i] = filter.apply(i, b[i] - q_[i]);
+    c_[i] = precondition(filter, i, r_[i]);
+    delta_ += r_[i].dot(c_[i]);
+    const Vec3 Sb = filter.apply(i, b[i]);
+    bScaled_ += Sb.dot(precondition(filter, i, Sb));
   }
-  report.converged = delta <= target;
+}
+
+PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
+                             const PcgStop& stop, std::vector<Vec3>& y, bool warmStart) {
+  prepare(A, b, filter, y, warmStart);
+  const int n = A.rows();
+  const int chunks = (n + kChunk - 1) / kChunk;
+  curvaturePartial_.assign(chunks, 0.0);
+  deltaPartial_.assign(chunks, 0.0);
+  const double target = stop.relative * stop.relative * bScaled_;
+  PcgReport report;
+  // One parallel region for the whole loop (starting threads costs about an iteration);
+  // every thread runs the same iterations and takes the same decisions from the same sums.
+#pragma omp parallel if (n >= kParallelSolveNodes)
+  {
+    double delta = delta_;
+    int iterations = 0;
+    while (delta > target && iterations < stop.maxIterations) {
+#pragma omp for schedule(static)
+      for (int k = 0; k < chunks; ++k) {  // q = S A c
+        double sum = 0.0;
+        for (int i = k * kChunk; i < chunkEnd(k, n); ++i) {
+          q_[i] = filter.apply(i, A.multiplyRow(i, c_));
+          sum += c_[i].dot(q_[i]);
+        }
+        curvaturePartial_[k] = sum;
+      }
+      const double curvature = total(curvaturePartial_);
+      if (!(curvature > 0.0)) break;
+      const double alpha = delta / curvature;
+#pragma omp for schedule(static)
+      for (int k = 0; k < chunks; ++k) {
+        double sum = 0.0;
+        for (int i = k * kChunk; i < chunkEnd(k, n); ++i) {
+          y[i] += alpha * c_[i];
+          r_[i] -= alpha * q_[i];
+          s_[i] = precondition(filter, i, r_[i]);
+          sum += r_[i].dot(s_[i]);
+        }
+        deltaPartial_[k] = sum;
+      }
+      const double next = total(deltaPartial_);
+#pragma omp for schedule(static)
+      for (int i = 0; i < n; ++i) c_[i] = s_[i] + (next / delta) * c_[i];
+      delta = next;
+      ++iterations;
+    }
+#pragma omp single
+    {
+      report.iterations = iterations;
+      report.converged = delta <= target;
+    }
+  }
   return report;
 }
 

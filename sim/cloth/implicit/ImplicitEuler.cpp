@@ -6,13 +6,10 @@ namespace figment {
 
 ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& parameters,
                              std::shared_ptr<const Collider> body)
-    : parameters_(parameters), system_(model, parameters), contacts_(std::move(body), parameters, model.nodeCount()) {
-  double mass = 0.0;
-  for (double m : model.masses()) mass += m;
-  const ImplicitSolverParameters& solver = parameters.implicitSolver;
-  const double speed = solver.restSpeedShare * parameters.rest.speedThreshold;
-  stop_ = PcgStop{solver.tolerance, mass * speed * speed, solver.maxIterations};
-}
+    : parameters_(parameters),
+      system_(model, parameters),
+      contacts_(std::move(body), parameters, model.nodeCount()),
+      stop_{parameters.implicitSolver.tolerance, parameters.implicitSolver.maxIterations} {}
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
   const std::vector<double>& m = system_.masses();

@@ -1,0 +1,103 @@
+// The filtered conjugate-gradient solve: free directions satisfy the equations, the
+// constrained ones take their prescribed values, and the answer does not depend on the
+// thread count (the loop runs in one parallel region above kParallelSolveNodes nodes).
+#include "sim/cloth/implicit/FilteredPcg.h"
+#include "sim/cloth/implicit/ParallelLoops.h"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <random>
+
+using namespace figment;
+
+namespace {
+constexpr int kSide = 24;  // a 24 x 24 chain of nodes: 576 > kParallelSolveNodes
+
+// Mass plus a stiff spring Laplacian between grid neighbours, with random 3x3 couplings
+// (symmetric, positive definite): about what a step's matrix looks like.
+BlockSparseMatrix springGrid(std::mt19937_64& random) {
+  const int n = kSide * kSide;
+  std::vector<std::vector<int>> columns(n);
+  auto link = [&](int i, int j) { columns[i].push_back(j), columns[j].push_back(i); };
+  for (int r = 0; r < kSide; ++r)
+    for (int c = 0; c < kSide; ++c) {
+      if (c + 1 < kSide) link(r * kSide + c, r * kSide + c + 1);
+      if (r + 1 < kSide) link(r * kSide + c, (r + 1) * kSide + c);
+    }
+  BlockSparseMatrix A(columns);
+  std::normal_distribution<double> normal;
+  for (int i = 0; i < n; ++i) A.block(A.find(i, i)) = 1e-3 * Block3::Identity();
+  for (int i = 0; i < n; ++i)
+    for (int j : columns[i]) {
+      if (j < i) continue;
+      const Vec3 d(normal(random), normal(random), normal(random));
+      const Block3 spring = 50.0 * (Block3::Identity() + d * d.transpose());
+      A.block(A.find(i, j)) -= spring, A.block(A.find(j, i)) -= spring;
+      A.block(A.find(i, i)) += spring, A.block(A.find(j, j)) += spring;
+    }
+  return A;
+}
+
+struct Problem {
+  BlockSparseMatrix A;
+  std::vector<Vec3> b;
+  NodeFilter filter;
+};
+
+Problem problem() {
+  std::mt19937_64 random(17);
+  Problem p{springGrid(random), {}, {}};
+  const int n = p.A.rows();
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  p.b.resize(n);
+  for (Vec3& value : p.b) value = Vec3(uniform(random), uniform(random), uniform(random));
+  p.filter.reset(n);
+  for (int i = 0; i < n; i += 7) {  // every 7th node slides on a plane, every 31st is fixed
+    p.filter.kind[i] = NodeFilter::Sliding;
+    p.filter.normal[i] = Vec3(uniform(random), 1.0, uniform(random)).normalized();
+    p.filter.prescribed[i] = 0.3 * p.filter.normal[i];
+  }
+  for (int i = 0; i < n; i += 31) {
+    p.filter.kind[i] = NodeFilter::Fixed;
+    p.filter.prescribed[i] = Vec3(0.1, -0.2, 0.05);
+  }
+  return p;
+}
+
+std::vector<Vec3> solveWithThreads(const Problem& p, int threads, PcgReport& report) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  FilteredPcg pcg;
+  std::vector<Vec3> y;
+  report = pcg.solve(p.A, p.b, p.filter, PcgStop{1e-10, 5000}, y);
+  omp_set_num_threads(before);
+  return y;
+}
+}  // namespace
+
+TEST(FilteredPcg, SolvesTheFreeDirectionsAndKeepsThePrescribedOnes) {
+  const Problem p = problem();
+  ASSERT_GT(p.A.rows(), kParallelSolveNodes);
+  PcgReport report;
+  const std::vector<Vec3> y = solveWithThreads(p, 2, report);
+  EXPECT_TRUE(report.converged) << report.iterations << " iterations";
+  std::vector<Vec3> Ay;
+  p.A.multiply(y, Ay);
+  double worst = 0.0, scale = 0.0;
+  for (int i = 0; i < p.A.rows(); ++i) {
+    worst = std::max(worst, p.filter.apply(i, Ay[i] - p.b[i]).norm());
+    scale = std::max(scale, p.b[i].norm());
+    const Vec3 constrained = y[i] - p.filter.apply(i, y[i]);
+    EXPECT_LT((constrained - p.filter.prescribed[i]).norm(), 1e-12) << "node " << i;
+  }
+  EXPECT_LT(worst, 1e-6 * scale);
+}
+
+TEST(FilteredPcg, OneThreadGivesTheAnswerOfTwoBitForBit) {
+  const Problem p = problem();
+  PcgReport one, two;
+  const std::vector<Vec3> a = solveWithThreads(p, 1, one), b = solveWithThreads(p, 2, two);
+  EXPECT_EQ(one.iterations, two.iterations);
+  for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << "node " << i;
+}
