@@ -12,6 +12,8 @@ constexpr double kSearchMargin = 0.02;  // m a query looks beyond what it must, 
 // A sticking node slides when |J_t| > (1 + this) mu j_n: a node at the cone's edge does
 // not switch back and forth.
 constexpr double kReleaseMargin = 0.05;
+// Nodes per parallel task: far nodes skip the body's query, so the work per node varies.
+constexpr int kNodesPerTask = 64;
 
 Vec3 tangential(const Vec3& v, const Vec3& normal) { return v - v.dot(normal) * normal; }
 }  // namespace
@@ -52,6 +54,8 @@ void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector
   const double reach = clearance_ + band_;
   const double search = firstStep ? std::numeric_limits<double>::infinity() : reach + kSearchMargin;
   const int n = static_cast<int>(x.size());
+  // Each node's query and state are its own: the nodes in parallel, in any order.
+#pragma omp parallel for schedule(dynamic, kNodesPerTask)
   for (int i = 0; i < n; ++i) {
     const bool released = released_[i];
     released_[i] = held_[i] = switched_[i] = 0;  // a release lasts one step
@@ -135,6 +139,7 @@ void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3
                                 std::vector<Vec3>& v) {
   if (!body_) return;
   const int n = static_cast<int>(x.size());
+#pragma omp parallel for schedule(dynamic, kNodesPerTask)
   for (int i = 0; i < n; ++i) {
     if (filter.kind[i] == NodeFilter::Fixed && !held_[i]) continue;
     if (held_[i]) {
