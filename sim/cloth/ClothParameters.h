@@ -41,6 +41,12 @@ enum class BendingStiffness {
   Sections,  // the sections' exact Gauss-Newton form (6 nodes each)
 };
 
+// The implicit solve's preconditioner (sim/cloth/implicit/FilteredPcg.h).
+enum class Preconditioner {
+  BlockJacobi,  // each node's 3x3 block
+  TwoLevel,     // plus a coarse correction over aggregates of nodes (CoarseCorrection.h)
+};
+
 // The linear solve of the implicit integrator (sim/cloth/implicit/FilteredPcg.h).
 struct ImplicitSolverParameters {
   // PCG stops when |residual| <= tolerance |right-hand side|. At 1 % the dress rests
@@ -49,6 +55,7 @@ struct ImplicitSolverParameters {
   double tolerance = 1e-2;
   int maxIterations = 300;  // PCG iterations per time step, at most
   BendingStiffness bending = BendingStiffness::Joints;
+  Preconditioner preconditioner = Preconditioner::TwoLevel;
 };
 
 struct ClothParameters {

@@ -26,8 +26,15 @@ void NodeFilter::reset(size_t nodes) {
   prescribed.assign(nodes, Vec3::Zero());
 }
 
+FilteredPcg::FilteredPcg(const BlockSparseMatrix& pattern)
+    : coarse_(std::make_unique<CoarseCorrection>(pattern)) {}
+
+FilteredPcg::~FilteredPcg() = default;
+FilteredPcg::FilteredPcg(FilteredPcg&&) noexcept = default;
+FilteredPcg& FilteredPcg::operator=(FilteredPcg&&) noexcept = default;
+
 void FilteredPcg::prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                          std::vector<Vec3>& y, bool warmStart) {
+                          std::vector<Vec3>& y, bool again) {
   const int n = A.rows();
   inverseDiagonal_.resize(n);
   r_.resize(n), c_.resize(n), q_.resize(n), s_.resize(n);
@@ -35,26 +42,40 @@ void FilteredPcg::prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b
     const Block3& D = A.diagonal(i);
     inverseDiagonal_[i] = D.determinant() > 0.0 ? Block3(D.inverse()) : Block3(Block3::Zero());
   }
-  if (warmStart && y.size() == static_cast<size_t>(n)) {
+  if (again && y.size() == static_cast<size_t>(n)) {
     for (int i = 0; i < n; ++i) y[i] = filter.prescribed[i] + filter.apply(i, y[i]);
   } else {
     y = filter.prescribed;
   }
   A.multiply(y, q_);
-  bScaled_ = 0.0;
-  delta_ = 0.0;
   for (int i = 0; i < n; ++i) {
     r_[i] = filter.apply(i, b[i] - q_[i]);
+    s_[i] = filter.apply(i, b[i]);
+  }
+  if (coarse_ && !again) coarse_->prepare(A, filter);
+  // (S b)^T P^-1 (S b), then c = P^-1 r and r^T P^-1 r.
+  applyCoarse(s_);
+  bScaled_ = 0.0;
+  for (int i = 0; i < n; ++i) bScaled_ += s_[i].dot(precondition(filter, i, s_[i]));
+  applyCoarse(r_);
+  delta_ = 0.0;
+  for (int i = 0; i < n; ++i) {
     c_[i] = precondition(filter, i, r_[i]);
     delta_ += r_[i].dot(c_[i]);
-    const Vec3 Sb = filter.apply(i, b[i]);
-    bScaled_ += Sb.dot(precondition(filter, i, Sb));
   }
 }
 
+void FilteredPcg::applyCoarse(const std::vector<Vec3>& r) {
+  if (!coarse_) return;
+  const int m = coarse_->aggregates();
+  coarseResidual_.resize(m);
+  for (int a = 0; a < m; ++a) coarse_->restrictTo(a, r, coarseResidual_);
+  coarse_->solve(coarseResidual_, coarseCorrection_);
+}
+
 PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                             const PcgStop& stop, std::vector<Vec3>& y, bool warmStart) {
-  prepare(A, b, filter, y, warmStart);
+                             const PcgStop& stop, std::vector<Vec3>& y, bool again) {
+  prepare(A, b, filter, y, again);
   const int n = A.rows();
   const int chunks = (n + kChunk - 1) / kChunk;
   curvaturePartial_.assign(chunks, 0.0);
@@ -81,11 +102,17 @@ PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>
       if (!(curvature > 0.0)) break;
       const double alpha = delta / curvature;
 #pragma omp for schedule(static)
+      for (int i = 0; i < n; ++i) y[i] += alpha * c_[i], r_[i] -= alpha * q_[i];
+      if (coarse_) {
+#pragma omp for schedule(static)
+        for (int a = 0; a < coarse_->aggregates(); ++a) coarse_->restrictTo(a, r_, coarseResidual_);
+#pragma omp single
+        coarse_->solve(coarseResidual_, coarseCorrection_);
+      }
+#pragma omp for schedule(static)
       for (int k = 0; k < chunks; ++k) {
         double sum = 0.0;
         for (int i = k * kChunk; i < chunkEnd(k, n); ++i) {
-          y[i] += alpha * c_[i];
-          r_[i] -= alpha * q_[i];
           s_[i] = precondition(filter, i, r_[i]);
           sum += r_[i].dot(s_[i]);
         }

@@ -17,27 +17,12 @@
 // products are summed over fixed chunks in a fixed order, so the result does not
 // depend on the thread count.
 
-#include "sim/cloth/implicit/BlockSparseMatrix.h"
+#include "sim/cloth/implicit/CoarseCorrection.h"
 
+#include <memory>
 #include <vector>
 
 namespace figment {
-
-struct NodeFilter {
-  enum Kind : char { Free, Sliding, Fixed };
-  std::vector<char> kind;      // per node
-  std::vector<Vec3> normal;    // per node, unit: the constrained direction of a Sliding node
-  std::vector<Vec3> prescribed;  // z per node: Sliding along normal, Fixed any; Free zero
-
-  void reset(size_t nodes);
-  Vec3 apply(int i, const Vec3& v) const {
-    switch (kind[i]) {
-      case Free: return v;
-      case Sliding: return v - normal[i].dot(v) * normal[i];
-      default: return Vec3::Zero();
-    }
-  }
-};
 
 struct PcgStop {
   double relative = 1e-2;
@@ -51,24 +36,41 @@ struct PcgReport {
 
 class FilteredPcg {
  public:
+  // Block Jacobi alone.
+  FilteredPcg() = default;
+  // Block Jacobi plus a coarse correction over aggregates of the pattern's nodes
+  // (CoarseCorrection.h): the two-level preconditioner.
+  explicit FilteredPcg(const BlockSparseMatrix& pattern);
+  ~FilteredPcg();
+  FilteredPcg(FilteredPcg&&) noexcept;
+  FilteredPcg& operator=(FilteredPcg&&) noexcept;
+
   // Solves for y (resized). The iterations start from the prescribed part, plus y's
-  // free part when warmStart (y then holds a guess of the answer).
+  // free part when `again`: a second solve of the same matrix after the filter changed
+  // at a few nodes, y holding the last answer. Then the coarse matrix of the last solve
+  // is kept too (any positive definite one keeps the preconditioner so).
   PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                  const PcgStop& stop, std::vector<Vec3>& y, bool warmStart = false);
+                  const PcgStop& stop, std::vector<Vec3>& y, bool again = false);
 
  private:
   // The preconditioner, the starting point y, residual r and direction c, and the sums
   // the loop starts from.
   void prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-               std::vector<Vec3>& y, bool warmStart);
+               std::vector<Vec3>& y, bool again);
+  // Node i of P^-1 r, after applyCoarse(r) (two levels: its coarse part).
   Vec3 precondition(const NodeFilter& filter, int i, const Vec3& r) const {
-    return filter.apply(i, inverseDiagonal_[i] * filter.apply(i, r));
+    const Vec3 jacobi = filter.apply(i, inverseDiagonal_[i] * filter.apply(i, r));
+    return coarse_ ? Vec3(jacobi + filter.apply(i, coarseCorrection_[coarse_->aggregateOf(i)])) : jacobi;
   }
+  // The coarse correction of r (one thread).
+  void applyCoarse(const std::vector<Vec3>& r);
 
   std::vector<Block3> inverseDiagonal_;
   std::vector<Vec3> r_, c_, q_, s_;
   double delta_ = 0.0, bScaled_ = 0.0;  // r^T P^-1 r and (S b)^T P^-1 (S b) at the start
   std::vector<double> curvaturePartial_, deltaPartial_;
+  std::unique_ptr<CoarseCorrection> coarse_;
+  std::vector<Vec3> coarseResidual_, coarseCorrection_;  // per aggregate
 };
 
 }  // namespace figment

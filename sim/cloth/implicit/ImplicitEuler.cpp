@@ -9,7 +9,9 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& par
     : parameters_(parameters),
       system_(model, parameters),
       contacts_(std::move(body), parameters, model.nodeCount()),
-      stop_{parameters.implicitSolver.tolerance, parameters.implicitSolver.maxIterations} {}
+      stop_{parameters.implicitSolver.tolerance, parameters.implicitSolver.maxIterations} {
+  if (parameters.implicitSolver.preconditioner == Preconditioner::TwoLevel) pcg_ = FilteredPcg(system_.matrix());
+}
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
   const std::vector<double>& m = system_.masses();

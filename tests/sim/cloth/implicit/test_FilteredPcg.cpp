@@ -65,10 +65,10 @@ Problem problem() {
   return p;
 }
 
-std::vector<Vec3> solveWithThreads(const Problem& p, int threads, PcgReport& report) {
+std::vector<Vec3> solveWithThreads(const Problem& p, int threads, PcgReport& report, bool twoLevel = true) {
   const int before = omp_get_max_threads();
   omp_set_num_threads(threads);
-  FilteredPcg pcg;
+  FilteredPcg pcg = twoLevel ? FilteredPcg(p.A) : FilteredPcg();
   std::vector<Vec3> y;
   report = pcg.solve(p.A, p.b, p.filter, PcgStop{1e-10, 5000}, y);
   omp_set_num_threads(before);
@@ -100,4 +100,16 @@ TEST(FilteredPcg, OneThreadGivesTheAnswerOfTwoBitForBit) {
   const std::vector<Vec3> a = solveWithThreads(p, 1, one), b = solveWithThreads(p, 2, two);
   EXPECT_EQ(one.iterations, two.iterations);
   for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i], b[i]) << "node " << i;
+}
+
+TEST(FilteredPcg, TheCoarseCorrectionGivesTheSameAnswerInFewerIterations) {
+  const Problem p = problem();
+  PcgReport jacobi, twoLevel;
+  const std::vector<Vec3> a = solveWithThreads(p, 1, jacobi, false), b = solveWithThreads(p, 1, twoLevel, true);
+  EXPECT_TRUE(jacobi.converged);
+  EXPECT_TRUE(twoLevel.converged);
+  double scale = 0.0, worst = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) scale = std::max(scale, a[i].norm()), worst = std::max(worst, (a[i] - b[i]).norm());
+  EXPECT_LT(worst, 1e-6 * scale);
+  EXPECT_LT(twoLevel.iterations, 0.6 * jacobi.iterations) << jacobi.iterations << " block Jacobi";
 }
