@@ -30,10 +30,23 @@ void ClothSolver::pin(int node) {
   model_->hold(pinned_);
 }
 
+void ClothSolver::resume(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double time, int iterations) {
+  if (x.size() != x_.size() || v.size() != v_.size())
+    throw std::invalid_argument("resume: " + std::to_string(x.size()) + " positions and " + std::to_string(v.size()) +
+                                " velocities for " + std::to_string(x_.size()) + " nodes");
+  x_ = x;
+  v_ = v;
+  time_ = time;
+  iterations_ = iterations;
+  restSince_ = -1.0;
+}
+
 const std::vector<Vec3>& ClothSolver::positions() const { return x_; }
 const std::vector<Vec3>& ClothSolver::velocities() const { return v_; }
 double ClothSolver::time() const { return time_; }
 int ClothSolver::iterations() const { return iterations_; }
+
+ImplicitStepCosts ClothSolver::implicitCosts() const { return implicit_ ? implicit_->costs() : ImplicitStepCosts{}; }
 
 double ClothSolver::maxSpeed() const {
   double fastest = 0.0;

@@ -66,6 +66,10 @@ class ClothSolver {
 
   // Holds a node where it is (a pin): it keeps its position and never moves.
   void pin(int node);
+  // Continues a drape from another solver's state (a progressive mesh's next level,
+  // sim/progressive/ProgressiveDrape.h): positions and velocities, one per node, the
+  // time and the steps taken so far. The at-rest rule starts over.
+  void resume(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double time, int iterations);
 
   // Advances one time step (see the steps above). Throws SimulationError when a
   // position or velocity stops being finite or a node exceeds kBlowUpSpeed.
@@ -83,6 +87,8 @@ class ClothSolver {
   double time() const;
   int iterations() const;
   double maxSpeed() const;
+  // Integrator::Implicit's costs since construction (zeros for the others).
+  ImplicitStepCosts implicitCosts() const;
 
  private:
   std::unique_ptr<ClothModel> model_;

@@ -1,6 +1,7 @@
 #include "sim/progressive/ProgressiveMesh.h"
 
 #include <stdexcept>
+#include <string>
 
 namespace figment {
 
@@ -10,16 +11,25 @@ MeshLevel::MeshLevel(const ProgressiveMesh& mesh)
       vertexActive_(mesh.full.vertices.size(), 1),
       faceActive_(mesh.full.triangles.size(), 1),
       rest_(mesh.full.vertices),
-      corners_(mesh.full.triangles) {
+      corners_(mesh.full.triangles),
+      faces_(mesh.full.vertices.size()) {
+  for (int f = 0; f < static_cast<int>(corners_.size()); ++f)
+    for (int v : corners_[f]) faces_[v].push_back(f);
   for (int k = mesh.levels() - 1; k >= 0; --k) collapse(mesh.splits[k]);
   level_ = 0;
 }
 
 void MeshLevel::collapse(const VertexSplit& s) {
-  for (const RestoredFace& f : s.restored) faceActive_[f.face] = 0;
-  for (int f : s.repointed)
+  for (const RestoredFace& f : s.restored) {
+    faceActive_[f.face] = 0;
+    for (int v : corners_[f.face]) std::erase(faces_[v], f.face);
+  }
+  for (int f : s.repointed) {
     for (int& corner : corners_[f])
       if (corner == s.added) corner = s.kept;
+    faces_[s.kept].push_back(f);
+  }
+  faces_[s.added].clear();
   vertexActive_[s.added] = 0;
   rest_[s.kept] = s.collapsedRest;
 }
@@ -28,12 +38,16 @@ void MeshLevel::split(const VertexSplit& s) {
   vertexActive_[s.added] = 1;
   rest_[s.added] = s.addedRest;
   rest_[s.kept] = s.keptRest;
-  for (int f : s.repointed)
+  for (int f : s.repointed) {
     for (int& corner : corners_[f])
       if (corner == s.kept) corner = s.added;
+    std::erase(faces_[s.kept], f);
+    faces_[s.added].push_back(f);
+  }
   for (const RestoredFace& f : s.restored) {
     faceActive_[f.face] = 1;
     corners_[f.face] = f.corners;
+    for (int v : f.corners) faces_[v].push_back(f.face);
   }
 }
 

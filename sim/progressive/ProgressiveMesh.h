@@ -51,6 +51,8 @@ class MeshLevel {
   bool vertexActive(int v) const { return vertexActive_[v]; }
   const Vec3& rest(int v) const { return rest_[v]; }
   const Triangle& corners(int face) const { return corners_[face]; }
+  // The active faces around an active vertex.
+  const std::vector<int>& facesOf(int v) const { return faces_[v]; }
   bool faceActive(int face) const { return faceActive_[face]; }
   int activeFaces() const;
   int activeVertices() const;
@@ -64,6 +66,7 @@ class MeshLevel {
   std::vector<char> vertexActive_, faceActive_;
   std::vector<Vec3> rest_;
   std::vector<Triangle> corners_;
+  std::vector<std::vector<int>> faces_;  // per vertex, its active faces
 };
 
 }  // namespace figment

@@ -12,6 +12,12 @@ struct ImplicitStepCosts {
             solveSeconds - earlier.solveSeconds, contactSeconds - earlier.contactSeconds};
   }
 
+  ImplicitStepCosts& operator+=(const ImplicitStepCosts& more) {
+    steps += more.steps, solverIterations += more.solverIterations, unconvergedSolves += more.unconvergedSolves;
+    assemblySeconds += more.assemblySeconds, solveSeconds += more.solveSeconds, contactSeconds += more.contactSeconds;
+    return *this;
+  }
+
   long steps = 0;
   long solverIterations = 0;   // PCG iterations
   long unconvergedSolves = 0;  // solves stopped by maxIterations
