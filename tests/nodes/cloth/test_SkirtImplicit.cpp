@@ -2,9 +2,8 @@
 // onto the hips and comes to rest on the default collision volumes (no node left
 // chattering), with no node inside any volume and no edge torn.
 #include "nodes/body/CollisionBody.h"
-#include "nodes/cloth/ClothEngine.h"
 #include "sim/collision/Collider.h"
-#include "support/SceneTestSupport.h"
+#include "support/ShippedGarmentScene.h"
 
 #include <Inventor/fields/SoMFVec3f.h>
 
@@ -13,13 +12,9 @@
 using namespace figment::test;
 
 TEST(SkirtImplicit, ComesToRestOnTheVolumesWithNoNodeInside) {
-  initCoin();
-  ScopedModelPath modelPath(FIGMENT_SOURCE_DIR "/scenes");
-  SceneRoot root = readFile(FIGMENT_SOURCE_DIR "/scenes/skirt.iv");
-  ASSERT_TRUE(root);
-  const std::vector<ClothEngine*> engines = figment::findClothEngines(root.get());
-  ASSERT_EQ(engines.size(), 1u);
-  ClothEngine& engine = *engines.front();
+  const ShippedGarmentScene scene("skirt.iv");
+  ASSERT_NE(scene.engine(), nullptr);
+  ClothEngine& engine = *scene.engine();
   engine.integrator = ClothEngine::IMPLICIT;
   engine.timeStep = 0.05;
   SoMFVec3f positions;

@@ -4,8 +4,7 @@
 // fast membrane modes, which Heun then amplified: the flared skirt of scenes/skirt.iv,
 // sliding onto the hips with CLAMP at 30 g, shredded (edges at 265 % strain, nodes at
 // 5 m/s after 0.3 s).
-#include "nodes/cloth/ClothEngine.h"
-#include "support/SceneTestSupport.h"
+#include "support/ShippedGarmentScene.h"
 
 #include <Inventor/fields/SoMFVec3f.h>
 
@@ -44,13 +43,9 @@ double maxEdgeStrain(const ClothEngine& engine, const SoMFVec3f& positions) {
 }  // namespace
 
 TEST(SkirtUnderLimiters, TheClampAtTenOrThirtyGNoLongerTearsTheSkirt) {
-  initCoin();
-  ScopedModelPath modelPath(FIGMENT_SOURCE_DIR "/scenes");
-  SceneRoot root = readFile(FIGMENT_SOURCE_DIR "/scenes/skirt.iv");
-  ASSERT_TRUE(root);
-  const std::vector<ClothEngine*> engines = figment::findClothEngines(root.get());
-  ASSERT_EQ(engines.size(), 1u);
-  ClothEngine& engine = *engines.front();
+  const ShippedGarmentScene scene("skirt.iv");
+  ASSERT_NE(scene.engine(), nullptr);
+  ClothEngine& engine = *scene.engine();
   for (const double g : {10.0, 30.0}) {
     SCOPED_TRACE(testing::Message() << "CLAMP at " << g << " g");
     engine.accelerationLimiter = ClothEngine::CLAMP;
