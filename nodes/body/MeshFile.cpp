@@ -3,6 +3,7 @@
 #include "io/MeshImport.h"
 #include "nodes/cloth/FieldValues.h"
 #include "nodes/body/HiddenChildren.h"
+#include "nodes/SceneFiles.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/core/ParameterChecks.h"
 
@@ -75,35 +76,6 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
-// Where the .iv file being read lives, then the rest of Coin's search list (which
-// SoInput starts with that folder while reading a file), as absolute paths: they are
-// kept for later loads, when the working directory may have changed.
-std::vector<std::string> searchDirectories(SoInput* in) {
-  std::vector<std::filesystem::path> dirs;
-  std::error_code ec;
-  if (in) {
-    const char* current = in->getCurFileName();
-    if (current && *current && std::filesystem::is_regular_file(current, ec))
-      dirs.push_back(std::filesystem::path(current).parent_path());
-  }
-  const SbStringList& coinDirs = SoInput::getDirectories();
-  for (int i = 0; i < coinDirs.getLength(); ++i) dirs.emplace_back(coinDirs[i]->getString());
-  std::vector<std::string> out;
-  for (const auto& dir : dirs) {
-    const std::string absolute = std::filesystem::absolute(dir.empty() ? "." : dir, ec).lexically_normal().string();
-    if (std::find(out.begin(), out.end(), absolute) == out.end()) out.push_back(absolute);
-  }
-  return out;
-}
-
-std::string resolve(const std::string& name, const std::vector<std::string>& dirs) {
-  for (const auto& dir : dirs) {
-    std::string path = figment::findModelFile(name, dir);
-    if (!path.empty()) return path;
-  }
-  return figment::findModelFile(name);
-}
-
 void toFields(const figment::TriangleMesh& mesh, SoMFVec3f& points, SoMFInt32& indices) {
   points.setNum(static_cast<int>(mesh.vertices.size()));
   SbVec3f* p = points.startEditing();
@@ -149,7 +121,7 @@ std::pair<figment::TriangleMesh, figment::TriangleMesh> importMeshes(const MeshF
   const double scale = figment::writtenValue(node.metresPerUnit.getValue());
   if (!(scale > 0.0) || !std::isfinite(scale))
     throw std::invalid_argument("metresPerUnit = " + figment::formatNumber(scale) + " must be > 0");
-  const std::string path = resolve(name, dirs);
+  const std::string path = figment::resolveSceneFile(name, dirs);
   if (path.empty()) throw std::runtime_error("fileName " + quoted(name) + " not found");
 
   figment::ImportOptions options;
@@ -249,7 +221,7 @@ SbBool MeshFile::readInstance(SoInput* in, unsigned short flags) {
   const SbBool ok = inherited::readInstance(in, flags);
   impl_->loadSuppressed = false;
   if (!ok) return FALSE;
-  impl_->sceneDirectories = searchDirectories(in);
+  impl_->sceneDirectories = figment::sceneSearchDirectories(in);
   return load(in) ? TRUE : FALSE;
 }
 

@@ -2,7 +2,10 @@
 
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "nodes/cloth/FieldValues.h"
+#include "io/ProgressiveScript.h"
+#include "nodes/SceneFiles.h"
 #include "sim/cloth/ClothSolver.h"
+#include "sim/progressive/ProgressiveDrape.h"
 
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoNodeEngine.h>
@@ -20,9 +23,15 @@
 SO_ENGINE_SOURCE(ClothEngine);
 
 struct ClothEngine::Impl {
+  std::vector<std::string> sceneDirectories;  // where progressiveScript is looked up
   std::string error;
   RunStats stats;
   int evaluations = 0;
+
+  // Drapes from `engine`'s fields; returns every rest point's position and the sections
+  // simulated last. Throws naming the field and value, or the file, that cannot be used.
+  std::vector<figment::Vec3> simulate(const ClothEngine& engine, std::vector<figment::Triangle>& sections);
+  void recordRun(const figment::DrapeResult& run, int triangles);
 };
 
 namespace {
@@ -81,18 +90,24 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(windFrequency, (wind.frequency));
   SO_ENGINE_ADD_INPUT(windPhaseInterval, (wind.meanPhaseInterval));
   SO_ENGINE_ADD_INPUT(windSeed, (int32_t(wind.seed)));
+  SO_ENGINE_ADD_INPUT(progressiveScript, (""));
+  SO_ENGINE_ADD_INPUT(beginLevel, (0));
+  SO_ENGINE_ADD_INPUT(endLevel, (-1));
+  SO_ENGINE_ADD_INPUT(splitRate, (0.0));
   // The multiple-value inputs start empty ([ ]), not with the one value set above.
   restPoints.setNum(0);
   restPoints.setDefault(TRUE);
   coordIndex.setNum(0);
   coordIndex.setDefault(TRUE);
   SO_ENGINE_ADD_OUTPUT(positions, SoMFVec3f);
+  SO_ENGINE_ADD_OUTPUT(levelCoordIndex, SoMFInt32);
 }
 
 ClothEngine::~ClothEngine() = default;
 
 SbBool ClothEngine::readInstance(SoInput* in, unsigned short readFlags) {
   if (!inherited::readInstance(in, readFlags)) return FALSE;
+  impl_->sceneDirectories = figment::sceneSearchDirectories(in);
   figment::snapReadDoubles(*this);  // "0.0005" means 0.0005 (FieldValues.h)
   // A written input carries both a value and its connection ("restPoints [ ... ] =
   // USE Pattern.point"); Coin keeps the value as read, and floats written with 8
@@ -122,40 +137,108 @@ std::string ClothEngine::label() const {
   return name.getLength() ? "ClothEngine '" + std::string(name.getString()) + "'" : "ClothEngine";
 }
 
+namespace {
+
+using DrapeProgressFunction = std::function<void(const figment::DrapeProgress&)>;
+
+// What a drape leaves: the run, every rest point's position, the sections simulated
+// last (the garment's numbering) and, when progressive, the level reached.
+struct Drape {
+  figment::DrapeResult run;
+  std::vector<figment::Vec3> positions;
+  std::vector<figment::Triangle> sections;
+  int level = 0, levels = 0;
+};
+
+Drape drapeWhole(const figment::TriangleMesh& garment, const figment::ClothParameters& parameters,
+                 std::shared_ptr<const figment::Collider> body, const DrapeProgressFunction& progress) {
+  figment::ClothSolver solver(garment, parameters, std::move(body));
+  Drape out;
+  out.run = solver.run(progress);
+  out.positions = solver.positions();
+  out.sections = garment.triangles;
+  return out;
+}
+
+Drape drapeProgressively(const std::string& script, const figment::TriangleMesh& garment,
+                         const figment::ClothParameters& parameters, std::shared_ptr<const figment::Collider> body,
+                         const figment::ProgressiveSchedule& schedule, const DrapeProgressFunction& progress) {
+  const figment::ProgressiveMesh mesh = figment::readProgressiveScript(script, garment);
+  figment::ProgressiveDrape drape(mesh, parameters, std::move(body), schedule);
+  Drape out;
+  out.run = drape.run(progress);
+  out.positions = drape.fullPositions();
+  out.sections = drape.levelTriangles();
+  out.level = drape.level();
+  out.levels = mesh.levels();
+  return out;
+}
+
+// coordIndex for triangles, each ended by -1.
+std::vector<int32_t> faceIndices(const std::vector<figment::Triangle>& triangles) {
+  std::vector<int32_t> indices;
+  for (const figment::Triangle& t : triangles) indices.insert(indices.end(), {t[0], t[1], t[2], -1});
+  return indices;
+}
+
+}  // namespace
+
+void ClothEngine::Impl::recordRun(const figment::DrapeResult& run, int triangles) {
+  RunStats& stats = this->stats;
+  stats.triangles = triangles;
+  stats.iterations = run.iterations;
+  stats.simulatedSeconds = run.simulatedTime;
+  stats.atRest = run.atRest;
+  stats.clampedSectionShare = run.clampedSectionShare;
+  stats.limitedNodeShare = run.limitedNodeShare;
+  stats.implicitSteps = run.implicitCosts.steps;
+  stats.solverIterations = run.implicitCosts.solverIterations;
+  stats.assemblySeconds = run.implicitCosts.assemblySeconds;
+  stats.solveSeconds = run.implicitCosts.solveSeconds;
+  stats.contactSeconds = run.implicitCosts.contactSeconds;
+}
+
+std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine,
+                                                       std::vector<figment::Triangle>& sections) {
+  const figment::TriangleMesh garment = figment::garmentFromFields(engine.restPoints, engine.coordIndex);
+  const figment::ClothParameters parameters = figment::parametersFromFields(engine);
+  std::shared_ptr<const figment::Collider> collider = figment::colliderFromBody(engine.body);
+  const auto start = std::chrono::steady_clock::now();  // the solver's set-up counts too
+  const auto progress = [&](const figment::DrapeProgress& p) {
+    if (!progressCallback()) return;
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+    progressCallback()(engine, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed, wall.count()});
+  };
+  const std::string script = engine.progressiveScript.getValue().getString();
+  Drape drape;
+  if (script.empty()) {
+    drape = drapeWhole(garment, parameters, std::move(collider), progress);
+  } else {
+    const std::string path = figment::resolveSceneFile(script, sceneDirectories);
+    if (path.empty()) throw std::runtime_error("progressiveScript \"" + script + "\" not found");
+    const figment::ProgressiveSchedule schedule{engine.beginLevel.getValue(), engine.endLevel.getValue(),
+                                                 engine.splitRate.getValue()};
+    drape = drapeProgressively(path, garment, parameters, std::move(collider), schedule, progress);
+  }
+  stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  recordRun(drape.run, static_cast<int>(garment.triangles.size()));
+  stats.level = drape.level;
+  stats.levels = drape.levels;
+  stats.sections = static_cast<int>(drape.sections.size());
+  sections = std::move(drape.sections);
+  return drape.positions;
+}
+
 void ClothEngine::evaluate() {
   ++impl_->evaluations;
   impl_->error.clear();
   impl_->stats = {};
-
-  // Until a simulation succeeds the output is the rest shape.
+  // Until a simulation succeeds the output is the rest shape and the given faces.
   const int numRest = restPoints.getNum();
   std::vector<SbVec3f> result(restPoints.getValues(0), restPoints.getValues(0) + numRest);
+  std::vector<figment::Triangle> sections;
   try {
-    const figment::TriangleMesh garment = figment::garmentFromFields(restPoints, coordIndex);
-    const figment::ClothParameters parameters = figment::parametersFromFields(*this);
-    std::shared_ptr<const figment::Collider> collider = figment::colliderFromBody(body);
-    impl_->stats.triangles = static_cast<int>(garment.triangles.size());
-
-    const auto start = std::chrono::steady_clock::now();  // the solver's set-up counts too
-    figment::ClothSolver solver(garment, parameters, std::move(collider));
-    const figment::DrapeResult run = solver.run([&](const figment::DrapeProgress& p) {
-      if (!progressCallback()) return;
-      const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-      progressCallback()(*this, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed,
-                                         wall.count()});
-    });
-    impl_->stats.iterations = run.iterations;
-    impl_->stats.simulatedSeconds = run.simulatedTime;
-    impl_->stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    impl_->stats.atRest = run.atRest;
-    impl_->stats.clampedSectionShare = run.clampedSectionShare;
-    impl_->stats.limitedNodeShare = run.limitedNodeShare;
-    impl_->stats.implicitSteps = run.implicitCosts.steps;
-    impl_->stats.solverIterations = run.implicitCosts.solverIterations;
-    impl_->stats.assemblySeconds = run.implicitCosts.assemblySeconds;
-    impl_->stats.solveSeconds = run.implicitCosts.solveSeconds;
-    impl_->stats.contactSeconds = run.implicitCosts.contactSeconds;
-    const std::vector<figment::Vec3>& x = solver.positions();
+    const std::vector<figment::Vec3> x = impl_->simulate(*this, sections);
     for (size_t i = 0; i < x.size() && i < result.size(); ++i)
       result[i].setValue(float(x[i].x()), float(x[i].y()), float(x[i].z()));
   } catch (const std::exception& e) {
@@ -165,12 +248,19 @@ void ClothEngine::evaluate() {
   }
   if (!impl_->error.empty()) {
     result.assign(restPoints.getValues(0), restPoints.getValues(0) + numRest);
+    sections.clear();
     SoDebugError::post("ClothEngine::evaluate", "%s", impl_->error.c_str());
   }
-
   const int n = static_cast<int>(result.size());
   SO_ENGINE_OUTPUT(positions, SoMFVec3f, setNum(n));
   SO_ENGINE_OUTPUT(positions, SoMFVec3f, setValues(0, n, result.data()));
+  const std::vector<int32_t> indices = impl_->error.empty()
+                                           ? faceIndices(sections)
+                                           : std::vector<int32_t>(coordIndex.getValues(0),
+                                                                  coordIndex.getValues(0) + coordIndex.getNum());
+  const int m = static_cast<int>(indices.size());
+  SO_ENGINE_OUTPUT(levelCoordIndex, SoMFInt32, setNum(m));
+  SO_ENGINE_OUTPUT(levelCoordIndex, SoMFInt32, setValues(0, m, indices.data()));
 }
 
 // --- finding the engines of a scene ------------------------------------------------

@@ -82,6 +82,10 @@ class SoNode;
         windFrequency 1
         windPhaseInterval 0.5
         windSeed 1
+        progressiveScript ""
+        beginLevel 0
+        endLevel -1
+        splitRate 0
     }
   \endcode
 */
@@ -165,12 +169,31 @@ class ClothEngine : public SoEngine {
   // Seed of the phase changes: equal seeds repeat a run exactly. Default 1. Must be >= 0.
   SoSFInt32 windSeed;
 
+  // Progressive meshes (paper §4, sim/progressive/ProgressiveDrape.h): the garment is
+  // simulated from a decimated level of its progressive mesh and vertex splits bring it
+  // back to detail as it drapes. The reconstruction script (written by figment-decimate
+  // for this garment; looked up beside the .iv file, then on the model search path);
+  // "" = the full garment from the start. Default "".
+  SoSFString progressiveScript;
+  // The level the drape begins at: splits applied before it starts. Default 0 (the
+  // coarsest). Must be in [0, endLevel].
+  SoSFInt32 beginLevel;
+  // The level it ends at; -1 = every split (the full garment). Default -1. Vertices not
+  // split in by then come out where the remaining splits would put them.
+  SoSFInt32 endLevel;
+  // Splits per second of simulated time; 0 = all remaining splits at once when the
+  // current level has come to rest. Default 0. Must be >= 0.
+  SoSFDouble splitRate;
+
   enum Integrator { EULER, SYMPLECTIC, HEUN, IMPLICIT };
   enum AccelerationLimiter { NONE, CLAMP, TANH };
 
   // --- output ---
   // The draped positions, one per rest point, world frame, m (SoMFVec3f).
   SoEngineOutput positions;
+  // The sections simulated last, as coordIndex (each ended by -1; SoMFInt32): with a
+  // progressive script, the level the drape reached; without, the garment's triangles.
+  SoEngineOutput levelCoordIndex;
 
   // What the last simulation did.
   struct RunStats {
@@ -185,6 +208,8 @@ class ClothEngine : public SoEngine {
     // forces and matrix, solving, and on contacts (zeros for the other integrators).
     long implicitSteps = 0, solverIterations = 0;
     double assemblySeconds = 0.0, solveSeconds = 0.0, contactSeconds = 0.0;
+    // With a progressive script: the level reached, of how many, and its sections.
+    int level = 0, levels = 0, sections = 0;
   };
   // Reported about once per second of wall time while a simulation runs.
   struct Progress {
