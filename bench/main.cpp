@@ -2,6 +2,7 @@
 #include "CollisionStudy.h"
 #include "DrapeStudy.h"
 #include "MethodStudy.h"
+#include "ProgressiveStudy.h"
 #include "RenderStudy.h"
 #include "StabilityStudy.h"
 
@@ -90,6 +91,25 @@ CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
   return command;
 }
 
+CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progressive) {
+  CLI::App* command = app.add_subcommand(
+      "progressive", "a garment draped progressively against the full garment: wall to rest, speed-up, deviation");
+  command->add_option("--scene", progressive.scene, "scene whose first ClothEngine has a progressiveScript")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  command->add_option("--method", progressive.methods, "INTEGRATOR:DT[:LIMITER:LIMIT_G] (repeat)")
+      ->capture_default_str();
+  command->add_option("--schedule", progressive.schedules,
+                      "BEGIN_SHARE:RATE: begin level as a share of the levels, splits per simulated second "
+                      "(0: all once the begin level rests) (repeat)")
+      ->capture_default_str();
+  command->add_option("--repeat", progressive.repeat, "runs per configuration (median wall time)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--out", progressive.outDir, "folder for progressive.csv")->capture_default_str();
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -107,6 +127,8 @@ int main(int argc, char** argv) {
   CLI::App* renderCommand = addRenderCommand(app, render);
   CLI::App* collisionCommand = addCollisionCommand(app, collision);
   CLI::App* methodCommand = addMethodCommand(app, methods);
+  ProgressiveStudyOptions progressive;
+  CLI::App* progressiveCommand = addProgressiveCommand(app, progressive);
 
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return runDrapeStudy(drape);
@@ -114,5 +136,6 @@ int main(int argc, char** argv) {
   if (renderCommand->parsed()) return runRenderStudy(render);
   if (collisionCommand->parsed()) return runCollisionStudy(collision);
   if (methodCommand->parsed()) return runMethodStudy(methods);
+  if (progressiveCommand->parsed()) return runProgressiveStudy(progressive);
   return 1;
 }

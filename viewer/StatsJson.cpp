@@ -34,14 +34,17 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
   nlohmann::json garments = nlohmann::json::array();
   for (const EngineDrape& drape : drapes) {
     const ClothEngine::RunStats& run = drape.run;
-    garments.push_back({{"name", drape.name},
-                        {"triangles", run.triangles},
-                        {"iterations", run.iterations},
-                        {"simulated_s", run.simulatedSeconds},
-                        {"wall_s", run.wallSeconds},
-                        {"at_rest", run.atRest},
-                        {"method", method(drape)},
-                        {"body", body(drape.body)}});
+    nlohmann::json garment = {{"name", drape.name},
+                              {"triangles", run.triangles},
+                              {"iterations", run.iterations},
+                              {"simulated_s", run.simulatedSeconds},
+                              {"wall_s", run.wallSeconds},
+                              {"at_rest", run.atRest},
+                              {"method", method(drape)},
+                              {"body", body(drape.body)}};
+    // A progressive drape (paper §4): the level it reached, of how many, and its sections.
+    if (run.levels > 0) garment["progressive"] = {{"level", run.level}, {"levels", run.levels}, {"sections", run.sections}};
+    garments.push_back(std::move(garment));
   }
   const nlohmann::json stats = {{"scene", scene},
                                 {"garments", garments},

@@ -21,6 +21,7 @@
 #include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -39,6 +40,7 @@ struct Options {
   bool keepStencilFields = false;
   bool depthBufferOnly = false;
   bool showVolumes = false;
+  int stopAt = 0;  // steps; 0: no bound
 };
 
 int fail(const std::string& where, const std::string& message, int status = 1) {
@@ -67,6 +69,13 @@ void showVolumes(SoNode* scene) {
     static_cast<Mannequin*>(mannequins[i]->getTail())->showVolumes = TRUE;
 }
 
+// --stop-at: every drape stops after `steps` steps, if not at rest before (to show a
+// progressive drape's growth, say).
+void stopAt(SoNode* scene, int steps) {
+  for (ClothEngine* engine : figment::findClothEngines(scene))
+    engine->maxTime = std::min(engine->maxTime.getValue(), steps * engine->timeStep.getValue());
+}
+
 // Drapes every engine; its errors come before any image. "" or the first error.
 std::string drapeAll(figment::viewer::SceneSession& session) {
   ClothEngine::setProgressCallback(reportProgress);
@@ -84,6 +93,7 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
   SceneSession session;
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
   if (options.showVolumes) showVolumes(session.scene());
+  if (options.stopAt > 0) stopAt(session.scene(), options.stopAt);
   std::string error = drapeAll(session);
   if (!error.empty()) return fail(options.scene, error);
   SoSeparator* root = session.stage(size, view);
@@ -125,6 +135,8 @@ int main(int argc, char** argv) {
   app.add_flag("--keep-stencil-fields", options.keepStencilFields,
                "Render with the scene's StencilSeparator.writeStencil and ClothingLayer.masked values, "
                "not those the stencil rule sets for the camera");
+  app.add_option("--stop-at", options.stopAt, "Stop every drape after this many steps (if not at rest before)")
+      ->check(CLI::PositiveNumber);
   app.add_flag("--show-volumes", options.showVolumes,
                "Draw every Mannequin's collision volumes as wireframes over the body");
   try {

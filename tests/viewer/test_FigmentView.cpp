@@ -222,3 +222,22 @@ TEST_F(FigmentView, ShowVolumesDrawsTheMannequinsVolumes) {
   };
   EXPECT_NE(bytes(path("plain.png")), bytes(path("shown.png")));
 }
+
+TEST_F(FigmentView, StopsAProgressiveDrapeWhereAskedAndReportsItsLevel) {
+  // scenes/dress-progressive.iv: 400 sections at the coarsest level, its 617 splits in
+  // batches of 61 a step; stopped after 3 steps it has 2 batches in (level 122 or so).
+  const std::string scene = FIGMENT_SOURCE_DIR "/scenes/dress-progressive.iv";
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stop-at 3 --stats " +
+                              quote(path("stats.json")));
+  if (r.status != 0 && r.err.find("not found") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto garment = nlohmann::json::parse(std::ifstream(path("stats.json")))["garments"][0];
+  EXPECT_EQ(garment["iterations"], 3);
+  EXPECT_EQ(garment["at_rest"], false);
+  const auto progressive = garment["progressive"];
+  EXPECT_EQ(progressive["levels"], 617);
+  EXPECT_GT(progressive["level"].get<int>(), 0);
+  EXPECT_LT(progressive["level"].get<int>(), 617);
+  EXPECT_GT(progressive["sections"].get<int>(), 400);
+  EXPECT_LT(progressive["sections"].get<int>(), 1552);
+}

@@ -1,0 +1,24 @@
+#pragma once
+// A drape method as the studies name it, "INTEGRATOR:DT[:LIMITER:LIMIT_G]" in the
+// ClothEngine fields' spelling (case free): "heun:1.5e-4", "heun:1.5e-4:clamp:30",
+// "implicit:0.05".
+
+#include "nodes/cloth/ClothEngine.h"
+
+#include <string>
+
+namespace figment::bench {
+
+struct Method {
+  std::string text;  // as given
+  std::string integrator, limiter = "NONE";
+  double timeStep = 0.0, limit = 30.0;
+};
+
+// Throws std::invalid_argument naming the text.
+Method parseMethod(const std::string& text);
+
+// Sets the engine's method fields; "" or what is wrong.
+std::string configure(ClothEngine& engine, const Method& m);
+
+}  // namespace figment::bench

@@ -1,0 +1,146 @@
+#include "ProgressiveStudy.h"
+
+#include "CsvFile.h"
+#include "MethodSpec.h"
+#include "SceneGarment.h"
+#include "Statistics.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace figment::bench {
+
+namespace {
+
+struct Schedule {
+  std::string text;
+  double beginShare = 0.0, rate = 0.0;
+};
+
+Schedule parseSchedule(const std::string& text) {
+  Schedule s{text};
+  std::stringstream in(text);
+  char colon = 0;
+  if (!(in >> s.beginShare >> colon >> s.rate) || colon != ':' || !(s.beginShare >= 0.0 && s.beginShare <= 1.0) ||
+      !(s.rate >= 0.0))
+    throw std::invalid_argument("schedule \"" + text + "\": expected BEGIN_SHARE:RATE, share in [0, 1], rate >= 0");
+  return s;
+}
+
+struct Run {
+  ClothEngine::RunStats stats;  // of the last repeat
+  double medianWall = 0.0;
+  std::vector<SbVec3f> positions;
+  std::string error;
+};
+
+Run drapeRepeatedly(SceneGarment& garment, int repeat) {
+  Run out;
+  std::vector<double> wall;
+  for (int i = 0; i < repeat && out.error.empty(); ++i) {
+    garment.engine->restPoints.touch();  // simulate again
+    out.positions = garment.drape();
+    out.error = garment.engine->lastError();
+    out.stats = garment.engine->lastRun();
+    wall.push_back(out.stats.wallSeconds);
+  }
+  if (out.error.empty()) out.medianWall = median(wall);
+  return out;
+}
+
+double height(const std::vector<SbVec3f>& rest) {
+  float low = std::numeric_limits<float>::max(), high = -low;
+  for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
+  return high - low;
+}
+
+// One method: the full garment, then each schedule; "" or the error.
+std::string studyMethod(SceneGarment& garment, const std::string& script, const Method& method,
+                        const ProgressiveStudyOptions& options, std::ostream& csv) {
+  if (std::string error = configure(*garment.engine, method); !error.empty()) return error;
+  garment.engine->progressiveScript = "";
+  const Run full = drapeRepeatedly(garment, options.repeat);
+  if (!full.error.empty()) return method.text + ", full garment: " + full.error;
+  std::printf("%-22s full garment: %6d steps %7.3f s wall %s\n", method.text.c_str(), full.stats.iterations,
+              full.medianWall, full.stats.atRest ? "rest" : "moving");
+  const double garmentHeight = height(garment.rest);
+  int levels = -1;  // known after the first progressive drape
+  for (const std::string& text : options.schedules) {
+    const Schedule s = parseSchedule(text);
+    garment.engine->progressiveScript = script.c_str();
+    garment.engine->splitRate = s.rate;
+    garment.engine->endLevel = -1;
+    garment.engine->beginLevel = 0;
+    if (s.beginShare > 0.0 && levels < 0) {  // a drape to learn how many levels there are
+      const Run probe = drapeRepeatedly(garment, 1);
+      if (!probe.error.empty()) return method.text + ", " + text + ": " + probe.error;
+      levels = probe.stats.levels;
+    }
+    garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * std::max(levels, 0)));
+    const Run run = drapeRepeatedly(garment, options.repeat);
+    if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
+      std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
+      csv << method.text << ',' << garment.engine->beginLevel.getValue() << ",," << s.rate << ",,,,"
+          << full.stats.iterations << ',' << full.medianWall << ',' << (full.stats.atRest ? 1 : 0) << ",,,,\"failed: "
+          << run.error << "\"\n";
+      continue;
+    }
+    levels = run.stats.levels;
+    double mean = 0.0, largest = 0.0;
+    for (size_t i = 0; i < run.positions.size(); ++i) {
+      const double d = (run.positions[i] - full.positions[i]).length();
+      mean += d, largest = std::max(largest, d);
+    }
+    mean /= static_cast<double>(run.positions.size());
+    const double speedUp = full.medianWall / run.medianWall;
+    std::printf("%-22s %-10s begin %4d of %4d: %6d steps %7.3f s wall %-6s %5.2fx  dev mean %6.3f %% max %6.3f %%\n",
+                method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), run.stats.levels,
+                run.stats.iterations, run.medianWall, run.stats.atRest ? "rest" : "moving", speedUp,
+                100.0 * mean / garmentHeight, 100.0 * largest / garmentHeight);
+    csv << method.text << ',' << garment.engine->beginLevel.getValue() << ',' << run.stats.levels << ',' << s.rate
+        << ',' << run.stats.iterations << ',' << run.medianWall << ',' << (run.stats.atRest ? 1 : 0) << ','
+        << full.stats.iterations << ',' << full.medianWall << ',' << (full.stats.atRest ? 1 : 0) << ',' << speedUp
+        << ',' << 100.0 * mean / garmentHeight << ',' << 100.0 * largest / garmentHeight << ",\n";
+  }
+  garment.engine->progressiveScript = script.c_str();
+  return "";
+}
+
+}  // namespace
+
+int runProgressiveStudy(const ProgressiveStudyOptions& options) {
+  std::vector<Method> methods;
+  try {
+    for (const std::string& text : options.methods) methods.push_back(parseMethod(text));
+    for (const std::string& text : options.schedules) parseSchedule(text);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "figment-bench: %s\n", e.what());
+    return 2;
+  }
+  SceneGarment garment;
+  std::string error;
+  if (!garment.load(options.scene, error)) {
+    std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
+    return 1;
+  }
+  const std::string script = garment.engine->progressiveScript.getValue().getString();
+  if (script.empty()) {
+    std::fprintf(stderr, "figment-bench: %s: its ClothEngine has no progressiveScript\n", options.scene.c_str());
+    return 1;
+  }
+  std::filesystem::create_directories(options.outDir);
+  const bool written = writeCsv(options.outDir + "/progressive.csv", [&](std::ostream& csv) -> std::string {
+    csv << "method,begin_level,levels,split_rate_per_s,steps,median_wall_s,at_rest,full_steps,full_median_wall_s,"
+           "full_at_rest,speed_up,mean_dev_pct_height,max_dev_pct_height,failure\n";
+    for (const Method& method : methods)
+      if (std::string e = studyMethod(garment, script, method, options, csv); !e.empty()) return e;
+    return "";
+  });
+  return written ? 0 : 1;
+}
+
+}  // namespace figment::bench

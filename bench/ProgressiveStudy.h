@@ -1,0 +1,25 @@
+#pragma once
+// The progressive study (paper §4): a scene's garment draped with its progressive mesh
+// from several begin levels at several split rates, against the same method on the
+// full garment: steps and median wall time to rest of both, the speed-up, and the
+// at-rest mean and largest deviation between them (% of the garment's height).
+
+#include <string>
+#include <vector>
+
+namespace figment::bench {
+
+struct ProgressiveStudyOptions {
+  std::string scene = "scenes/dress-progressive.iv";  // its first engine has a progressiveScript
+  std::vector<std::string> methods = {"implicit:0.05", "heun:1.5e-4:clamp:30"};
+  // Each "BEGIN_SHARE:RATE": the begin level as a share of the levels (0: the coarsest),
+  // and splits per second of simulated time (0: all once the begin level rests).
+  std::vector<std::string> schedules = {"0:300", "0:1200", "0:3000", "0.5:1200"};
+  int repeat = 3;
+  std::string outDir = "bench-out";
+};
+
+// Writes DIR/progressive.csv and prints a table. Returns the exit code.
+int runProgressiveStudy(const ProgressiveStudyOptions& options);
+
+}  // namespace figment::bench
