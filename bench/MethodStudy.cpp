@@ -21,27 +21,11 @@ namespace figment::bench {
 
 namespace {
 
-// What one method's drape came to.
-struct Outcome {
-  ClothEngine::RunStats run;  // of the last repeat
-  double medianWall = 0.0;
-  std::vector<SbVec3f> positions;
-  std::string error;
-};
-
-Outcome drape(SceneGarment& garment, const Method& m, int repeat) {
-  Outcome out;
-  out.error = configure(*garment.engine, m);
-  std::vector<double> wall;
-  for (int i = 0; i < repeat && out.error.empty(); ++i) {
-    garment.engine->restPoints.touch();  // simulate again
-    out.positions = garment.drape();
-    out.error = garment.engine->lastError();
-    out.run = garment.engine->lastRun();
-    wall.push_back(out.run.wallSeconds);
-  }
-  if (out.error.empty()) out.medianWall = median(wall);
-  return out;
+// What one method's drape came to: an error in its fields, or the drapes'.
+RepeatedDrape drape(SceneGarment& garment, const Method& m, int repeat) {
+  const std::string error = configure(*garment.engine, m);
+  if (!error.empty()) return RepeatedDrape{{}, 0.0, {}, error};
+  return garment.drapeRepeatedly(repeat);
 }
 
 struct Measures {
@@ -86,7 +70,7 @@ double height(const std::vector<SbVec3f>& rest) {
   return high - low;
 }
 
-void report(const std::string& scene, const Method& m, const Outcome& o, const Measures& s, double garmentHeight,
+void report(const std::string& scene, const Method& m, const RepeatedDrape& o, const Measures& s, double garmentHeight,
             std::ostream& csv) {
   // One step's breakdown (the implicit integrator's; zeros for the explicit ones), ms.
   const ClothEngine::RunStats& c = o.run;
@@ -116,14 +100,14 @@ std::string studyScene(const std::string& scene, const MethodStudyOptions& optio
   SceneGarment garment;
   std::string error;
   if (!garment.load(scene, error)) return error;
-  const Outcome reference = drape(garment, parseMethod(options.reference), 1);
+  const RepeatedDrape reference = drape(garment, parseMethod(options.reference), 1);
   if (!reference.error.empty()) return scene + ": the reference " + options.reference + ": " + reference.error;
   const double garmentHeight = height(garment.rest);
   std::printf("%s: reference %s, %d steps, %.3f s simulated, %s\n", scene.c_str(), options.reference.c_str(),
               reference.run.iterations, reference.run.simulatedSeconds, reference.run.atRest ? "at rest" : "moving");
   for (const std::string& text : options.methods) {
     const Method m = parseMethod(text);
-    const Outcome o = drape(garment, m, options.repeat);
+    const RepeatedDrape o = drape(garment, m, options.repeat);
     if (!o.error.empty()) {
       std::printf("%-26s failed: %s\n", text.c_str(), o.error.c_str());
       csv << scene << ',' << m.integrator << ',' << m.limiter << ",,\"" << text << "\"," << m.timeStep

@@ -31,27 +31,6 @@ Schedule parseSchedule(const std::string& text) {
   return s;
 }
 
-struct Run {
-  ClothEngine::RunStats stats;  // of the last repeat
-  double medianWall = 0.0;
-  std::vector<SbVec3f> positions;
-  std::string error;
-};
-
-Run drapeRepeatedly(SceneGarment& garment, int repeat) {
-  Run out;
-  std::vector<double> wall;
-  for (int i = 0; i < repeat && out.error.empty(); ++i) {
-    garment.engine->restPoints.touch();  // simulate again
-    out.positions = garment.drape();
-    out.error = garment.engine->lastError();
-    out.stats = garment.engine->lastRun();
-    wall.push_back(out.stats.wallSeconds);
-  }
-  if (out.error.empty()) out.medianWall = median(wall);
-  return out;
-}
-
 double height(const std::vector<SbVec3f>& rest) {
   float low = std::numeric_limits<float>::max(), high = -low;
   for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
@@ -63,10 +42,10 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, const 
                         const ProgressiveStudyOptions& options, std::ostream& csv) {
   if (std::string error = configure(*garment.engine, method); !error.empty()) return error;
   garment.engine->progressiveScript = "";
-  const Run full = drapeRepeatedly(garment, options.repeat);
+  const RepeatedDrape full = garment.drapeRepeatedly(options.repeat);
   if (!full.error.empty()) return method.text + ", full garment: " + full.error;
-  std::printf("%-22s full garment: %6d steps %7.3f s wall %s\n", method.text.c_str(), full.stats.iterations,
-              full.medianWall, full.stats.atRest ? "rest" : "moving");
+  std::printf("%-22s full garment: %6d steps %7.3f s wall %s\n", method.text.c_str(), full.run.iterations,
+              full.medianWall, full.run.atRest ? "rest" : "moving");
   const double garmentHeight = height(garment.rest);
   int levels = -1;  // known after the first progressive drape
   for (const std::string& text : options.schedules) {
@@ -76,20 +55,20 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, const 
     garment.engine->endLevel = -1;
     garment.engine->beginLevel = 0;
     if (s.beginShare > 0.0 && levels < 0) {  // a drape to learn how many levels there are
-      const Run probe = drapeRepeatedly(garment, 1);
+      const RepeatedDrape probe = garment.drapeRepeatedly(1);
       if (!probe.error.empty()) return method.text + ", " + text + ": " + probe.error;
-      levels = probe.stats.levels;
+      levels = probe.run.levels;
     }
     garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * std::max(levels, 0)));
-    const Run run = drapeRepeatedly(garment, options.repeat);
+    const RepeatedDrape run = garment.drapeRepeatedly(options.repeat);
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
       std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
       csv << method.text << ',' << garment.engine->beginLevel.getValue() << ",," << s.rate << ",,,,"
-          << full.stats.iterations << ',' << full.medianWall << ',' << (full.stats.atRest ? 1 : 0) << ",,,,\"failed: "
+          << full.run.iterations << ',' << full.medianWall << ',' << (full.run.atRest ? 1 : 0) << ",,,,\"failed: "
           << run.error << "\"\n";
       continue;
     }
-    levels = run.stats.levels;
+    levels = run.run.levels;
     double mean = 0.0, largest = 0.0;
     for (size_t i = 0; i < run.positions.size(); ++i) {
       const double d = (run.positions[i] - full.positions[i]).length();
@@ -98,12 +77,12 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, const 
     mean /= static_cast<double>(run.positions.size());
     const double speedUp = full.medianWall / run.medianWall;
     std::printf("%-22s %-10s begin %4d of %4d: %6d steps %7.3f s wall %-6s %5.2fx  dev mean %6.3f %% max %6.3f %%\n",
-                method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), run.stats.levels,
-                run.stats.iterations, run.medianWall, run.stats.atRest ? "rest" : "moving", speedUp,
+                method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), run.run.levels,
+                run.run.iterations, run.medianWall, run.run.atRest ? "rest" : "moving", speedUp,
                 100.0 * mean / garmentHeight, 100.0 * largest / garmentHeight);
-    csv << method.text << ',' << garment.engine->beginLevel.getValue() << ',' << run.stats.levels << ',' << s.rate
-        << ',' << run.stats.iterations << ',' << run.medianWall << ',' << (run.stats.atRest ? 1 : 0) << ','
-        << full.stats.iterations << ',' << full.medianWall << ',' << (full.stats.atRest ? 1 : 0) << ',' << speedUp
+    csv << method.text << ',' << garment.engine->beginLevel.getValue() << ',' << run.run.levels << ',' << s.rate
+        << ',' << run.run.iterations << ',' << run.medianWall << ',' << (run.run.atRest ? 1 : 0) << ','
+        << full.run.iterations << ',' << full.medianWall << ',' << (full.run.atRest ? 1 : 0) << ',' << speedUp
         << ',' << 100.0 * mean / garmentHeight << ',' << 100.0 * largest / garmentHeight << ",\n";
   }
   garment.engine->progressiveScript = script.c_str();

@@ -1,5 +1,6 @@
 #include "SceneGarment.h"
 
+#include "Statistics.h"
 #include "nodes/Init.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/core/TriangleMesh.h"
@@ -79,6 +80,20 @@ void SceneGarment::release() {
 std::vector<SbVec3f> SceneGarment::drape() {
   const SbVec3f* draped = coordinates->point.getValues(0);  // evaluates the engine when an input changed
   return {draped, draped + coordinates->point.getNum()};
+}
+
+RepeatedDrape SceneGarment::drapeRepeatedly(int repeat) {
+  RepeatedDrape out;
+  std::vector<double> wall;
+  for (int i = 0; i < repeat && out.error.empty(); ++i) {
+    engine->restPoints.touch();  // simulate again
+    out.positions = drape();
+    out.error = engine->lastError();
+    out.run = engine->lastRun();
+    wall.push_back(out.run.wallSeconds);
+  }
+  if (out.error.empty()) out.medianWall = median(wall);
+  return out;
 }
 
 double SceneGarment::maxEdgeStrain(const std::vector<SbVec3f>& positions) const {

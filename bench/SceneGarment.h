@@ -13,6 +13,15 @@
 
 namespace figment::bench {
 
+// What `repeat` drapes with the same fields came to: the last one's statistics and
+// positions, the median wall time, or the first error.
+struct RepeatedDrape {
+  ClothEngine::RunStats run;
+  double medianWall = 0.0;
+  std::vector<SbVec3f> positions;
+  std::string error;
+};
+
 struct SceneGarment {
   viewer::SceneSession session;  // holds the scene; release() empties it
   ClothEngine* engine = nullptr;
@@ -25,6 +34,8 @@ struct SceneGarment {
   void release();
   // Simulates with the engine's current fields; the draped positions.
   std::vector<SbVec3f> drape();
+  // Simulates `repeat` times (stopping at an error).
+  RepeatedDrape drapeRepeatedly(int repeat);
   // Largest |edge length / rest length - 1| of `positions`.
   double maxEdgeStrain(const std::vector<SbVec3f>& positions) const;
 };
