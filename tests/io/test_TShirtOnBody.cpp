@@ -1,0 +1,125 @@
+// The T-shirt on the default body (human.zae): the garment figment-make-tshirt writes to
+// scenes/tshirt.obj. One manifold piece of the chosen number of triangles with four
+// openings (neck, hem, two sleeves), wound outward, every vertex outside the body.
+#include "support/DefaultBody.h"
+#include "support/MeshChecks.h"
+#include "io/MeshImport.h"
+#include "sim/collision/TriangleBvh.h"
+#include "sim/garment/TShirt.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+
+using namespace figment;
+
+namespace {
+
+class TShirtOnBody : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (const TriangleMesh* body = test::defaultBodyWithoutEyes()) shirt_.emplace(makeTShirt(*body));
+  }
+  void SetUp() override {
+    if (!shirt_) GTEST_SKIP() << "human.zae (assimp-testmodels) is not installed";
+  }
+  static const TriangleMesh& body() { return *test::defaultBodyWithoutEyes(); }
+  static const TShirt& shirt() { return *shirt_; }
+
+ private:
+  static inline std::optional<TShirt> shirt_;
+};
+
+// The boundary edges, each from one vertex to the next around its loop.
+std::map<int, int> boundaryNext(const TriangleMesh& mesh) {
+  std::map<std::pair<int, int>, int> use;
+  for (const Triangle& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) ++use[std::minmax(t[e], t[(e + 1) % 3])];
+  std::map<int, int> next;
+  for (const Triangle& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e)
+      if (use[std::minmax(t[e], t[(e + 1) % 3])] == 1) next[t[e]] = t[(e + 1) % 3];
+  return next;
+}
+
+}  // namespace
+
+TEST_F(TShirtOnBody, OneManifoldPieceOfTheChosenTriangles) {
+  EXPECT_EQ(shirt().mesh.triangles.size(), 1000u);
+  std::map<std::pair<int, int>, int> use;
+  for (const Triangle& t : shirt().mesh.triangles)
+    for (int e = 0; e < 3; ++e) ++use[std::minmax(t[e], t[(e + 1) % 3])];
+  for (const auto& [edge, count] : use) ASSERT_LE(count, 2) << edge.first << "-" << edge.second;
+  EXPECT_NEAR(shirt().area, 0.6, 0.1);
+}
+
+TEST_F(TShirtOnBody, FourOpeningsNeckHemAndSleeves) {
+  std::map<int, int> next = boundaryNext(shirt().mesh);
+  std::vector<double> loopHeights;  // each loop's mean height
+  std::set<int> seen;
+  for (const auto& [start, unused] : next) {
+    if (seen.count(start)) continue;
+    double sum = 0.0;
+    int count = 0;
+    for (int v = start; !seen.count(v); v = next.at(v)) {
+      seen.insert(v);
+      sum += shirt().mesh.vertices[v].y();
+      ++count;
+    }
+    loopHeights.push_back(sum / count);
+  }
+  ASSERT_EQ(loopHeights.size(), 4u);
+  std::sort(loopHeights.begin(), loopHeights.end());
+  // The hem is the lowest; where the hips part ends above the cut (over the thighs) it
+  // runs higher: its mean lies within 5 cm above the cut.
+  EXPECT_GT(loopHeights[0], shirt().hemHeight);
+  EXPECT_LT(loopHeights[0], shirt().hemHeight + 0.05);
+  EXPECT_GT(loopHeights[3], 1.35);                       // the neck the highest
+}
+
+TEST_F(TShirtOnBody, WoundOutwardAndEveryVertexOutsideTheBody) {
+  const TriangleBvh bvh(body());
+  double nearest = 1e9;
+  for (const Vec3& v : shirt().mesh.vertices) {
+    EXPECT_FALSE(checks::insideClosedSurface(body(), v)) << v.transpose();
+    nearest = std::min(nearest, std::sqrt(bvh.closest(v).distanceSquared));
+  }
+  EXPECT_GE(nearest, 0.3 * TShirtOptions{}.ease);
+  // Outward: the normals point away from the nearest skin.
+  int outward = 0;
+  for (const Triangle& t : shirt().mesh.triangles) {
+    const Vec3 &a = shirt().mesh.vertices[t[0]], &b = shirt().mesh.vertices[t[1]], &c = shirt().mesh.vertices[t[2]];
+    const Vec3 centre = (a + b + c) / 3.0;
+    outward += (b - a).cross(c - a).dot(centre - bvh.closest(centre).point) > 0.0;
+  }
+  EXPECT_GT(outward, 0.95 * shirt().mesh.triangles.size());
+}
+
+TEST_F(TShirtOnBody, MoreTrianglesThanTheSkinHasIsNamed) {
+  TShirtOptions options;
+  options.triangles = 100000;
+  try {
+    makeTShirt(body(), options);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("triangles = 100000 is more than the"), std::string::npos) << e.what();
+  }
+}
+
+// scenes/tshirt.obj is figment-make-tshirt's output for the default body: regenerate it
+// (cmake --build <dir> --target figment-tshirt-obj) when the generator changes.
+TEST_F(TShirtOnBody, CommittedSceneFileIsUpToDate) {
+  const std::string path = std::string(FIGMENT_SOURCE_DIR) + "/scenes/tshirt.obj";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  const TriangleMesh committed = importMesh(path).mesh;
+  ASSERT_EQ(committed.vertices.size(), shirt().mesh.vertices.size());
+  EXPECT_EQ(committed.triangles, shirt().mesh.triangles);
+  double largest = 0;
+  for (size_t i = 0; i < committed.vertices.size(); ++i)
+    largest = std::max(largest, (committed.vertices[i] - shirt().mesh.vertices[i]).norm());
+  EXPECT_LT(largest, 1e-6);
+}
