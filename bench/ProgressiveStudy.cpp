@@ -6,6 +6,7 @@
 #include "Statistics.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -119,7 +120,15 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
       if (std::string e = studyMethod(garment, script, method, options, csv); !e.empty()) return e;
     return "";
   });
-  return written ? 0 : 1;
+  if (!written) return 1;
+  if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
+    const std::string png = options.outDir + "/progressive.png";
+    const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + options.outDir +
+                                "/progressive.csv' '" + png + "'";
+    if (std::system(command.c_str()) == 0) std::printf("%s\n", png.c_str());
+    else std::fprintf(stderr, "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n");
+  }
+  return 0;
 }
 
 }  // namespace figment::bench

@@ -17,9 +17,11 @@ struct ProgressiveStudyOptions {
   std::vector<std::string> schedules = {"0:300", "0:1200", "0:3000", "0.5:1200"};
   int repeat = 3;
   std::string outDir = "bench-out";
+  std::string plotScript;  // python script that charts the CSV; "" = no chart
 };
 
-// Writes DIR/progressive.csv and prints a table. Returns the exit code.
+// Writes DIR/progressive.csv (and DIR/progressive.png with the plot script) and prints a
+// table. Returns the exit code.
 int runProgressiveStudy(const ProgressiveStudyOptions& options);
 
 }  // namespace figment::bench

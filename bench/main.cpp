@@ -128,6 +128,7 @@ int main(int argc, char** argv) {
   CLI::App* collisionCommand = addCollisionCommand(app, collision);
   CLI::App* methodCommand = addMethodCommand(app, methods);
   ProgressiveStudyOptions progressive;
+  progressive.plotScript = FIGMENT_PLOT_PROGRESSIVE;
   CLI::App* progressiveCommand = addProgressiveCommand(app, progressive);
 
   CLI11_PARSE(app, argc, argv);
