@@ -64,12 +64,6 @@ Measures measure(const SceneGarment& garment, const std::vector<SbVec3f>& x, con
   return m;
 }
 
-double height(const std::vector<SbVec3f>& rest) {
-  float low = std::numeric_limits<float>::max(), high = -low;
-  for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
-  return high - low;
-}
-
 void report(const std::string& scene, const Method& m, const RepeatedDrape& o, const Measures& s, double garmentHeight,
             std::ostream& csv) {
   // One step's breakdown (the implicit integrator's; zeros for the explicit ones), ms.
@@ -102,7 +96,7 @@ std::string studyScene(const std::string& scene, const MethodStudyOptions& optio
   if (!garment.load(scene, error)) return error;
   const RepeatedDrape reference = drape(garment, parseMethod(options.reference), 1);
   if (!reference.error.empty()) return scene + ": the reference " + options.reference + ": " + reference.error;
-  const double garmentHeight = height(garment.rest);
+  const double garmentHeight = garment.height();
   std::printf("%s: reference %s, %d steps, %.3f s simulated, %s\n", scene.c_str(), options.reference.c_str(),
               reference.run.iterations, reference.run.simulatedSeconds, reference.run.atRest ? "at rest" : "moving");
   for (const std::string& text : options.methods) {

@@ -32,14 +32,21 @@ Schedule parseSchedule(const std::string& text) {
   return s;
 }
 
-double height(const std::vector<SbVec3f>& rest) {
-  float low = std::numeric_limits<float>::max(), high = -low;
-  for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
-  return high - low;
+// The script's number of levels: a drape of one step that ends at the coarsest level.
+int countLevels(SceneGarment& garment, const std::string& script, std::string& error) {
+  ClothEngine& engine = *garment.engine;
+  const double maxTime = engine.maxTime.getValue();
+  engine.progressiveScript = script.c_str();
+  engine.endLevel = 0;
+  engine.maxTime = engine.timeStep.getValue();
+  const RepeatedDrape probe = garment.drapeRepeatedly(1);
+  engine.maxTime = maxTime;
+  error = probe.error;
+  return probe.run.levels;
 }
 
 // One method: the full garment, then each schedule; "" or the error.
-std::string studyMethod(SceneGarment& garment, const std::string& script, const Method& method,
+std::string studyMethod(SceneGarment& garment, const std::string& script, int levels, const Method& method,
                         const ProgressiveStudyOptions& options, std::ostream& csv) {
   if (std::string error = configure(*garment.engine, method); !error.empty()) return error;
   garment.engine->progressiveScript = "";
@@ -47,20 +54,13 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, const 
   if (!full.error.empty()) return method.text + ", full garment: " + full.error;
   std::printf("%-22s full garment: %6d steps %7.3f s wall %s\n", method.text.c_str(), full.run.iterations,
               full.medianWall, full.run.atRest ? "rest" : "moving");
-  const double garmentHeight = height(garment.rest);
-  int levels = -1;  // known after the first progressive drape
+  const double garmentHeight = garment.height();
   for (const std::string& text : options.schedules) {
     const Schedule s = parseSchedule(text);
     garment.engine->progressiveScript = script.c_str();
     garment.engine->splitRate = s.rate;
     garment.engine->endLevel = -1;
-    garment.engine->beginLevel = 0;
-    if (s.beginShare > 0.0 && levels < 0) {  // a drape to learn how many levels there are
-      const RepeatedDrape probe = garment.drapeRepeatedly(1);
-      if (!probe.error.empty()) return method.text + ", " + text + ": " + probe.error;
-      levels = probe.run.levels;
-    }
-    garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * std::max(levels, 0)));
+    garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * levels));
     const RepeatedDrape run = garment.drapeRepeatedly(options.repeat);
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
       std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
@@ -69,7 +69,6 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, const 
           << run.error << "\"\n";
       continue;
     }
-    levels = run.run.levels;
     double mean = 0.0, largest = 0.0;
     for (size_t i = 0; i < run.positions.size(); ++i) {
       const double d = (run.positions[i] - full.positions[i]).length();
@@ -112,12 +111,17 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
     std::fprintf(stderr, "figment-bench: %s: its ClothEngine has no progressiveScript\n", options.scene.c_str());
     return 1;
   }
+  const int levels = countLevels(garment, script, error);
+  if (!error.empty()) {
+    std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
+    return 1;
+  }
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/progressive.csv", [&](std::ostream& csv) -> std::string {
     csv << "method,begin_level,levels,split_rate_per_s,steps,median_wall_s,at_rest,full_steps,full_median_wall_s,"
            "full_at_rest,speed_up,mean_dev_pct_height,max_dev_pct_height,failure\n";
     for (const Method& method : methods)
-      if (std::string e = studyMethod(garment, script, method, options, csv); !e.empty()) return e;
+      if (std::string e = studyMethod(garment, script, levels, method, options, csv); !e.empty()) return e;
     return "";
   });
   if (!written) return 1;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -94,6 +95,12 @@ RepeatedDrape SceneGarment::drapeRepeatedly(int repeat) {
   }
   if (out.error.empty()) out.medianWall = median(wall);
   return out;
+}
+
+double SceneGarment::height() const {
+  float low = std::numeric_limits<float>::max(), high = -low;
+  for (const SbVec3f& p : rest) low = std::min(low, p[1]), high = std::max(high, p[1]);
+  return high - low;
 }
 
 double SceneGarment::maxEdgeStrain(const std::vector<SbVec3f>& positions) const {

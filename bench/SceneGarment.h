@@ -36,6 +36,8 @@ struct SceneGarment {
   std::vector<SbVec3f> drape();
   // Simulates `repeat` times (stopping at an error).
   RepeatedDrape drapeRepeatedly(int repeat);
+  // m: the rest shape's extent along y.
+  double height() const;
   // Largest |edge length / rest length - 1| of `positions`.
   double maxEdgeStrain(const std::vector<SbVec3f>& positions) const;
 };

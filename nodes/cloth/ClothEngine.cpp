@@ -184,7 +184,6 @@ std::vector<int32_t> faceIndices(const std::vector<figment::Triangle>& triangles
 }  // namespace
 
 void ClothEngine::Impl::recordRun(const figment::DrapeResult& run, int triangles) {
-  RunStats& stats = this->stats;
   stats.triangles = triangles;
   stats.iterations = run.iterations;
   stats.simulatedSeconds = run.simulatedTime;

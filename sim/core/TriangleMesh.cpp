@@ -32,6 +32,15 @@ constexpr double kSmallestCell = 1e-9;  // m
 
 }  // namespace
 
+double surfaceArea(const TriangleMesh& mesh) {
+  double sum = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    sum += 0.5 * (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  }
+  return sum;
+}
+
 Bounds boundsOf(const std::vector<Vec3>& points) {
   Bounds bounds;
   for (const Vec3& p : points) bounds.extend(p);

@@ -28,6 +28,9 @@ struct Bounds {
 
 Bounds boundsOf(const std::vector<Vec3>& points);
 
+// m^2: the sum of the triangles' areas, in triangle order.
+double surfaceArea(const TriangleMesh& mesh);
+
 // Merges vertices closer than `tolerance` (metres) and drops triangles that collapse;
 // used to turn a mesh split along texture seams back into one closed surface.
 TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance = 1e-6);

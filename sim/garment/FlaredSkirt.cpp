@@ -100,10 +100,7 @@ FlaredSkirt makeFlaredSkirt(const TriangleMesh& body, const FlaredSkirtOptions& 
       const Vec3 &a = skirt.mesh.vertices[t[k]], &b = skirt.mesh.vertices[t[(k + 1) % 3]];
       if (a.y() == waist.height && b.y() == waist.height) skirt.waistbandPerimeter += (b - a).norm();
     }
-  for (const Triangle& t : skirt.mesh.triangles) {
-    const Vec3& a = skirt.mesh.vertices[t[0]];
-    skirt.area += 0.5 * (skirt.mesh.vertices[t[1]] - a).cross(skirt.mesh.vertices[t[2]] - a).norm();
-  }
+  skirt.area = surfaceArea(skirt.mesh);
   return skirt;
 }
 

@@ -118,13 +118,6 @@ TriangleMesh offsetSkin(const TriangleMesh& body, const std::vector<Triangle>& t
   return numberedByFirstUse(skin);
 }
 
-double areaOf(const TriangleMesh& mesh) {
-  double sum = 0.0;
-  for (const Triangle& t : mesh.triangles)
-    sum += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
-  return sum;
-}
-
 }  // namespace
 
 TShirt makeTShirt(const TriangleMesh& body, const TShirtOptions& options) {
@@ -151,7 +144,7 @@ TShirt makeTShirt(const TriangleMesh& body, const TShirtOptions& options) {
   std::vector<int> fullIndex;
   shirt.mesh = numberedByFirstUse(MeshLevel(decimated).restMesh(fullIndex));
   shirt.hemHeight = region.hemHeight();
-  shirt.area = areaOf(shirt.mesh);
+  shirt.area = surfaceArea(shirt.mesh);
   return shirt;
 }
 

@@ -12,15 +12,6 @@ namespace figment {
 
 namespace {
 constexpr int kBatches = 10;  // the splits come in at most this many rebuilds (and a last one)
-
-double area(const TriangleMesh& mesh) {
-  double sum = 0.0;
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
-    sum += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return sum;
-}
 }  // namespace
 
 ProgressiveDrape::ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParameters& parameters,
@@ -30,7 +21,7 @@ ProgressiveDrape::ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParam
       body_(std::move(body)),
       schedule_(schedule),
       endLevel_(schedule.endLevel < 0 ? mesh.levels() : schedule.endLevel),
-      fullArea_(area(mesh.full)),
+      fullArea_(surfaceArea(mesh.full)),
       level_(mesh) {
   if (schedule.beginLevel < 0 || schedule.beginLevel > endLevel_ || endLevel_ > mesh.levels())
     throw std::invalid_argument("beginLevel = " + std::to_string(schedule.beginLevel) + " and endLevel = " +
@@ -65,7 +56,7 @@ void ProgressiveDrape::rebuild() {
   }
   const TriangleMesh rest = level_.restMesh(fullIndex_);
   ClothParameters p = parameters_;
-  p.material.density *= fullArea_ / area(rest);  // the same mass at every level
+  p.material.density *= fullArea_ / surfaceArea(rest);  // the same mass at every level
   solver_ = std::make_unique<ClothSolver>(rest, p, body_);
   std::vector<Vec3> x(fullIndex_.size()), v(fullIndex_.size());
   for (size_t i = 0; i < fullIndex_.size(); ++i) x[i] = x_[fullIndex_[i]], v[i] = v_[fullIndex_[i]];
