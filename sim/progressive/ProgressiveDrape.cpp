@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,35 @@ namespace figment {
 
 namespace {
 constexpr int kBatches = 10;  // the splits come in at most this many rebuilds (and a last one)
+// After the splits no edge of the level is longer or shorter than its rest length by
+// more than this share (as far as the sweeps get; see settle()).
+constexpr double kSettledStrain = 0.05;
+constexpr int kSettleRounds = 4, kSweepsPerRound = 5;
+// How much longer a coarse level's explicit step may be than the scene's.
+constexpr double kMaxStepGrowth = 2.0;
+
+// An explicit step's stability bound scales with the shortest period of the mesh's
+// nodes, sqrt(m_i / k_i): a node's mass goes with the area of its sections, its
+// membrane stiffness with the sum of 1 / length over its edges (same material, same
+// thickness at every level; the constant factors cancel in a ratio of two levels).
+// Light nodes on a strap's edge set it, not the shortest edge (which coarse levels
+// keep wherever the decimation left a region alone).
+double stabilityTime(const TriangleMesh& mesh) {
+  std::vector<double> area(mesh.vertices.size(), 0.0), stiffness(mesh.vertices.size(), 0.0);
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 &a = mesh.vertices[t[0]], &b = mesh.vertices[t[1]], &c = mesh.vertices[t[2]];
+    const double third = (b - a).cross(c - a).norm() / 6.0;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& p = mesh.vertices[t[k]];
+      area[t[k]] += third;
+      stiffness[t[k]] += 1.0 / (mesh.vertices[t[(k + 1) % 3]] - p).norm() + 1.0 / (mesh.vertices[t[(k + 2) % 3]] - p).norm();
+    }
+  }
+  double shortest = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < area.size(); ++i)
+    if (stiffness[i] > 0.0 && area[i] > 0.0) shortest = std::min(shortest, area[i] / stiffness[i]);
+  return std::sqrt(shortest);
+}
 }  // namespace
 
 ProgressiveDrape::ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParameters& parameters,
@@ -22,6 +52,7 @@ ProgressiveDrape::ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParam
       schedule_(schedule),
       endLevel_(schedule.endLevel < 0 ? mesh.levels() : schedule.endLevel),
       fullArea_(surfaceArea(mesh.full)),
+      fullStabilityTime_(stabilityTime(mesh.full)),
       level_(mesh) {
   if (schedule.beginLevel < 0 || schedule.beginLevel > endLevel_ || endLevel_ > mesh.levels())
     throw std::invalid_argument("beginLevel = " + std::to_string(schedule.beginLevel) + " and endLevel = " +
@@ -38,11 +69,60 @@ ProgressiveDrape::ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParam
   rebuild();
 }
 
-void ProgressiveDrape::splitTo(int target) {
+std::vector<int> ProgressiveDrape::splitTo(int target) {
+  std::vector<int> placed;
   while (level_.level() < target) {
     const VertexSplit& split = mesh_.splits[level_.level()];
     placeSplit(split, level_, x_, v_);
+    placed.push_back(split.kept);
+    placed.push_back(split.added);
     level_.splitTo(level_.level() + 1);
+  }
+  return placed;
+}
+
+void ProgressiveDrape::settle(const std::vector<int>& placed) {
+  if (body_) liftOutOfBody(placed);
+  // Lifting stretches the sections around, relaxing may pull a vertex back in: in turns.
+  std::vector<int> active;
+  for (int i = 0; i < static_cast<int>(x_.size()); ++i)
+    if (level_.vertexActive(i)) active.push_back(i);
+  for (int round = 0; round < kSettleRounds; ++round) {
+    relaxStrain();
+    if (body_) liftOutOfBody(active);
+  }
+}
+
+void ProgressiveDrape::relaxStrain() {
+  std::vector<std::pair<int, int>> edges;  // of the level, each once
+  for (int f = 0; f < static_cast<int>(mesh_.full.triangles.size()); ++f) {
+    if (!level_.faceActive(f)) continue;
+    const Triangle& t = level_.corners(f);
+    for (int e = 0; e < 3; ++e) edges.emplace_back(std::minmax(t[e], t[(e + 1) % 3]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (int sweep = 0; sweep < kSweepsPerRound; ++sweep) {
+    for (auto [a, b] : edges) {
+      const Vec3 d = x_[b] - x_[a];
+      const double length = d.norm(), rest = (level_.rest(b) - level_.rest(a)).norm();
+      const double target = std::clamp(length, (1.0 - kSettledStrain) * rest, (1.0 + kSettledStrain) * rest);
+      if (length == target || length == 0.0) continue;
+      const Vec3 half = 0.5 * (length - target) / length * d;
+      x_[a] += half;
+      x_[b] -= half;
+    }
+  }
+}
+
+void ProgressiveDrape::liftOutOfBody(const std::vector<int>& vertices) {
+  const double clearance = parameters_.clearance;
+  for (int i : vertices) {
+    Contact contact;
+    if (!body_->contact(x_[i], clearance, std::numeric_limits<double>::infinity(), contact)) continue;
+    const Vec3& n = contact.normal;
+    x_[i] = contact.surfacePoint + clearance * n;
+    v_[i] -= std::min(0.0, v_[i].dot(n)) * n;
   }
 }
 
@@ -57,6 +137,8 @@ void ProgressiveDrape::rebuild() {
   const TriangleMesh rest = level_.restMesh(fullIndex_);
   ClothParameters p = parameters_;
   p.material.density *= fullArea_ / surfaceArea(rest);  // the same mass at every level
+  if (p.integrator != Integrator::Implicit)
+    p.timeStep *= std::min(kMaxStepGrowth, stabilityTime(rest) / fullStabilityTime_);
   solver_ = std::make_unique<ClothSolver>(rest, p, body_);
   std::vector<Vec3> x(fullIndex_.size()), v(fullIndex_.size());
   for (size_t i = 0; i < fullIndex_.size(); ++i) x[i] = x_[fullIndex_[i]], v[i] = v_[fullIndex_[i]];
@@ -79,7 +161,7 @@ void ProgressiveDrape::step() {
   const std::vector<Vec3>& x = solver_->positions();
   const std::vector<Vec3>& v = solver_->velocities();
   for (size_t i = 0; i < fullIndex_.size(); ++i) x_[fullIndex_[i]] = x[i], v_[fullIndex_[i]] = v[i];
-  splitTo(target);
+  settle(splitTo(target));
   rebuild();
 }
 
@@ -88,8 +170,8 @@ DrapeResult ProgressiveDrape::run(const std::function<void(const DrapeProgress&)
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto lastReport = start;
-  const int totalSteps = static_cast<int>(std::ceil(parameters_.maxTime / parameters_.timeStep - 1e-9));
-  while (solver_->iterations() < totalSteps && !atRest()) {
+  // Until maxTime: the explicit levels' steps differ, so it is counted in time.
+  while (solver_->time() < parameters_.maxTime - 1e-9 * parameters_.timeStep && !atRest()) {
     step();
     if (progress && std::chrono::duration<double>(Clock::now() - lastReport).count() >= progressInterval) {
       progress({solver_->iterations(), solver_->time(), solver_->maxSpeed()});

@@ -13,8 +13,12 @@
 // Each split restores its sections' rest geometry (so their strain is right from the
 // start) and places its vertices from the deformed neighbourhood (SplitPlacement.h).
 // Each level's density is scaled so the garment's mass is the full garment's at every
-// level. The time step stays the scene's: the implicit integrator is stable at any,
-// and an explicit one must be stable for the finest level anyway.
+// level. The time step: the implicit integrator keeps the scene's (stable at any); an
+// explicit one takes a coarser level's longer stability bound, up to twice the scene's
+// step (ProgressiveDrape.cpp, stabilityTime: the shortest sqrt(m/k) of the level's
+// nodes against the full garment's; on the default dress's coarsest level 3.3x, but
+// Heun with the 30 g clamp then never rests there at 2.5x and more), and maxTime is
+// counted in simulated time.
 
 #include "sim/cloth/ClothSolver.h"
 #include "sim/progressive/ProgressiveMesh.h"
@@ -54,7 +58,20 @@ class ProgressiveDrape {
   std::vector<Triangle> levelTriangles() const;
 
  private:
-  void splitTo(int target);
+  // Applies splits up to `target`; returns the vertices they placed.
+  std::vector<int> splitTo(int target);
+  // Makes the placed state fit to simulate. A coarse section resting on convex skin
+  // cuts a chord through it, so a split puts its vertices under the skin (the explicit
+  // contact response would turn that depth into speed); and where a coarse section bent
+  // across a fold or a strap's edge, the new sections start stretched far beyond
+  // anything the drape makes (which put light strap nodes of Heun's drape on the edge of
+  // its stability: it blew up). So: placed vertices inside the body or its clearance go
+  // to the surface + clearance without velocity into it, and the level's edges are
+  // pulled or pushed back to within kSettledStrain of their rest lengths (Gauss-Seidel
+  // sweeps, as strain limiting does), in turns.
+  void settle(const std::vector<int>& placed);
+  void relaxStrain();
+  void liftOutOfBody(const std::vector<int>& vertices);
   void rebuild();
   int dueLevel() const;
 
@@ -63,7 +80,7 @@ class ProgressiveDrape {
   std::shared_ptr<const Collider> body_;
   ProgressiveSchedule schedule_;
   int endLevel_, batch_;
-  double fullArea_;
+  double fullArea_, fullStabilityTime_;
   MeshLevel level_;
   std::vector<int> fullIndex_;           // per solver node, its full vertex
   std::vector<Vec3> x_, v_;              // per full vertex (the active ones meaningful)

@@ -98,6 +98,30 @@ TEST(ProgressiveDrape, SplitsOnADrapedSheetFoldNoSectionOver) {
   }
 }
 
+TEST(ProgressiveDrape, SplitsOnTheBallPutNoVertexInsideItNorStretchAnEdgeFar) {
+  // A coarse section resting on the ball cuts a chord through it (8 cm sections on a
+  // 15 cm ball sag about 5 mm below their corners), so a split that placed its vertex in
+  // the section would put it under the skin; and where the coarse drape bent across a
+  // fold a split can stretch the new sections. Neither survives the split (the ball is
+  // faceted: its facets lie up to 0.5 mm inside the sphere).
+  const TriangleMesh sheet = sheetAboveBall();
+  const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 80});
+  const ClothParameters p = implicitDrape();
+  ProgressiveDrape drape(pm, p, ball(), ProgressiveSchedule{0, -1, 0.0});
+  while (drape.level() == 0 && drape.solver().time() < 6.0) drape.step();
+  ASSERT_EQ(drape.level(), pm.levels()) << "the coarse level never rested";
+  const std::vector<Vec3> placed = drape.fullPositions();  // as the split left them
+  for (size_t i = 0; i < placed.size(); ++i)
+    EXPECT_GT(placed[i].norm(), kRadius + 0.7 * p.clearance) << "vertex " << i;
+  double longest = 0.0;
+  for (const Triangle& t : sheet.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      longest = std::max(longest, (placed[a] - placed[b]).norm() / (sheet.vertices[a] - sheet.vertices[b]).norm());
+    }
+  EXPECT_LT(longest, 1.12);
+}
+
 TEST(ProgressiveDrape, EndsNearTheFullGarmentsDrape) {
   // A towel over a bar (a sheet over a horizontal capsule: one rest shape, unlike a
   // sheet on a ball, whose folds may form in more than one way): from 3/4 of its
@@ -128,4 +152,23 @@ TEST(ProgressiveDrape, RefusesLevelsOutsideTheMesh) {
   EXPECT_THROW(ProgressiveDrape(pm, implicitDrape(), nullptr, ProgressiveSchedule{0, pm.levels() + 1, 0.0}),
                std::invalid_argument);
   EXPECT_THROW(ProgressiveDrape(pm, implicitDrape(), nullptr, ProgressiveSchedule{0, -1, -1.0}), std::invalid_argument);
+}
+
+TEST(ProgressiveDrape, AnExplicitDrapeStepsLongerOnCoarseLevelsAndTheScenesStepAtFullDetail) {
+  // The coarsest sheet's nodes are heavier for their stiffness than the full sheet's:
+  // its Heun steps are longer (at most twice the scene's); every split in, they are the
+  // scene's again.
+  const TriangleMesh sheet = sheetAboveBall();
+  const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 80});
+  ClothParameters p;
+  p.integrator = Integrator::Heun;
+  p.timeStep = 1e-4;
+  ProgressiveDrape drape(pm, p, ball(), ProgressiveSchedule{0, -1, 0.0});
+  drape.step();
+  const double coarseStep = drape.solver().time();
+  EXPECT_GT(coarseStep, 1.5 * p.timeStep);
+  EXPECT_LE(coarseStep, 2.0 * p.timeStep * (1.0 + 1e-12));
+  ProgressiveDrape full(pm, p, ball(), ProgressiveSchedule{pm.levels(), -1, 0.0});
+  full.step();
+  EXPECT_DOUBLE_EQ(full.solver().time(), p.timeStep);
 }
