@@ -1,0 +1,23 @@
+#include "sim/progressive/Resampling.h"
+
+#include "sim/core/Subdivision.h"
+#include "sim/progressive/Decimation.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace figment {
+
+TriangleMesh resampled(const TriangleMesh& garment, int triangles) {
+  if (triangles < 1 || garment.triangles.empty())
+    throw std::invalid_argument("cannot resample " + std::to_string(garment.triangles.size()) +
+                                " triangles to " + std::to_string(triangles));
+  TriangleMesh fine = garment;
+  while (static_cast<int>(fine.triangles.size()) < triangles) fine = subdivided(fine);
+  if (static_cast<int>(fine.triangles.size()) == triangles) return numberedByFirstUse(fine);
+  const ProgressiveMesh decimated = decimate(fine, DecimationOptions{.targetFaces = triangles});
+  std::vector<int> fullIndex;
+  return numberedByFirstUse(MeshLevel(decimated).restMesh(fullIndex));
+}
+
+}  // namespace figment
