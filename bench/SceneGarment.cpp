@@ -78,6 +78,20 @@ void SceneGarment::release() {
   coordinates = nullptr;
 }
 
+void SceneGarment::replaceGarment(const TriangleMesh& mesh) {
+  engine->restPoints.disconnect();
+  engine->coordIndex.disconnect();
+  rest.clear();
+  for (const Vec3& x : mesh.vertices) rest.emplace_back(float(x.x()), float(x.y()), float(x.z()));
+  std::vector<int32_t> index;
+  for (const Triangle& t : mesh.triangles) index.insert(index.end(), {t[0], t[1], t[2], -1});
+  engine->restPoints.setValues(0, static_cast<int>(rest.size()), rest.data());
+  engine->restPoints.setNum(static_cast<int>(rest.size()));
+  engine->coordIndex.setValues(0, static_cast<int>(index.size()), index.data());
+  engine->coordIndex.setNum(static_cast<int>(index.size()));
+  edges = uniqueEdges(mesh);
+}
+
 std::vector<SbVec3f> SceneGarment::drape() {
   const SbVec3f* draped = coordinates->point.getValues(0);  // evaluates the engine when an input changed
   return {draped, draped + coordinates->point.getNum()};

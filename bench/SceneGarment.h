@@ -3,6 +3,7 @@
 // settings: the engine, the Coordinate3 it feeds, and its rest shape.
 
 #include "nodes/cloth/ClothEngine.h"
+#include "sim/core/TriangleMesh.h"
 #include "viewer/SceneSession.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
@@ -32,6 +33,9 @@ struct SceneGarment {
   // Reads `scene`; on failure returns false and sets `error` to one line.
   bool load(const std::string& scene, std::string& error);
   void release();
+  // Drapes `mesh` instead of the scene's garment from now on: the engine's restPoints and
+  // coordIndex are disconnected from the scene and set to it (vertices as floats).
+  void replaceGarment(const TriangleMesh& mesh);
   // Simulates with the engine's current fields; the draped positions.
   std::vector<SbVec3f> drape();
   // Simulates `repeat` times (stopping at an error).

@@ -4,6 +4,7 @@
 #include "MethodStudy.h"
 #include "ProgressiveStudy.h"
 #include "RenderStudy.h"
+#include "SizeStudy.h"
 #include "StabilityStudy.h"
 
 #include <CLI/CLI.hpp>
@@ -110,6 +111,29 @@ CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progress
   return command;
 }
 
+CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
+  CLI::App* command = app.add_subcommand(
+      "sizes", "a garment resampled to each size, draped whole and progressively: wall to rest, speed-up, deviation");
+  command->add_option("--scene", sizes.scene, "scene whose first garment is resampled")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  command->add_option("--sections", sizes.sizes, "garment sizes, triangles (repeat)")
+      ->capture_default_str()
+      ->check(CLI::Range(8, 1000000));
+  command->add_option("--method", sizes.method, "INTEGRATOR:DT[:LIMITER:LIMIT_G]")->capture_default_str();
+  command->add_option("--coarse-share", sizes.coarseShare, "the progressive drape's first level, share of the sections")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1.0));
+  command->add_option("--split-time", sizes.splitTime, "simulated s over which every split is made")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--repeat", sizes.repeat, "runs per drape (median wall time)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--out", sizes.outDir, "folder for sizes.csv")->capture_default_str();
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -130,6 +154,9 @@ int main(int argc, char** argv) {
   ProgressiveStudyOptions progressive;
   progressive.plotScript = FIGMENT_PLOT_PROGRESSIVE;
   CLI::App* progressiveCommand = addProgressiveCommand(app, progressive);
+  SizeStudyOptions sizes;
+  sizes.plotScript = FIGMENT_PLOT_SIZES;
+  CLI::App* sizeCommand = addSizeCommand(app, sizes);
 
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return runDrapeStudy(drape);
@@ -138,5 +165,6 @@ int main(int argc, char** argv) {
   if (collisionCommand->parsed()) return runCollisionStudy(collision);
   if (methodCommand->parsed()) return runMethodStudy(methods);
   if (progressiveCommand->parsed()) return runProgressiveStudy(progressive);
+  if (sizeCommand->parsed()) return runSizeStudy(sizes);
   return 1;
 }
