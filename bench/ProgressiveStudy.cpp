@@ -4,12 +4,15 @@
 #include "MethodSpec.h"
 #include "SceneGarment.h"
 #include "Statistics.h"
+#include "TemporaryScript.h"
+#include "nodes/cloth/ClothEngineInputs.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -45,45 +48,92 @@ int countLevels(SceneGarment& garment, const std::string& script, std::string& e
   return probe.run.levels;
 }
 
+// Mean and largest distance between two drapes, % of `height`.
+std::pair<double, double> deviation(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b, double height) {
+  double mean = 0.0, largest = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const double d = (a[i] - b[i]).length();
+    mean += d, largest = std::max(largest, d);
+  }
+  return {100.0 * mean / a.size() / height, 100.0 * largest / height};
+}
+
+// Drapes with the engine's fields at each of the time steps; medians over them.
+struct Drapes {
+  std::vector<std::vector<SbVec3f>> positions;  // one per time step
+  std::vector<double> wall, steps;
+  int rested = 0, levels = 0;
+  std::string error;
+};
+
+Drapes drapeAtEachStep(SceneGarment& garment, double timeStep, const std::vector<double>& factors) {
+  Drapes out;
+  for (double factor : factors) {
+    garment.engine->timeStep = factor * timeStep;
+    const RepeatedDrape run = garment.drapeRepeatedly(1);
+    if (!(out.error = run.error).empty()) break;
+    out.positions.push_back(run.positions);
+    out.wall.push_back(run.medianWall), out.steps.push_back(run.run.iterations);
+    out.rested += run.run.atRest;
+    out.levels = run.run.levels;
+  }
+  garment.engine->timeStep = timeStep;
+  return out;
+}
+
+// Median deviation of each drape of `a` from the drape of `b` at the same time step.
+std::pair<double, double> medianDeviation(const Drapes& a, const Drapes& b, double height) {
+  std::vector<double> mean, largest;
+  for (size_t i = 0; i < a.positions.size(); ++i) {
+    const auto [m, l] = deviation(a.positions[i], b.positions[i], height);
+    mean.push_back(m), largest.push_back(l);
+  }
+  return {median(mean), median(largest)};
+}
+
+// How far the whole garment's drapes at the time steps lie from each other (median).
+double floorOf(const Drapes& full, double height) {
+  std::vector<double> d;
+  for (size_t i = 0; i < full.positions.size(); ++i)
+    for (size_t j = i + 1; j < full.positions.size(); ++j) d.push_back(deviation(full.positions[i], full.positions[j], height).first);
+  return d.empty() ? 0.0 : median(d);
+}
+
 // One method: the full garment, then each schedule; "" or the error.
 std::string studyMethod(SceneGarment& garment, const std::string& script, int levels, const Method& method,
                         const ProgressiveStudyOptions& options, std::ostream& csv) {
   if (std::string error = configure(*garment.engine, method); !error.empty()) return error;
   garment.engine->progressiveScript = "";
-  const RepeatedDrape full = garment.drapeRepeatedly(options.repeat);
+  const Drapes full = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
   if (!full.error.empty()) return method.text + ", full garment: " + full.error;
-  std::printf("%-22s full garment: %6d steps %7.3f s wall %s\n", method.text.c_str(), full.run.iterations,
-              full.medianWall, full.run.atRest ? "rest" : "moving");
-  const double garmentHeight = garment.height();
+  const double fullWall = median(full.wall), height = garment.height(), floor = floorOf(full, height);
+  const size_t runs = options.stepFactors.size();
+  std::printf("%-22s full garment: %6.0f steps %7.3f s wall, %d/%zu rested; floor %.3f %%\n", method.text.c_str(),
+              median(full.steps), fullWall, full.rested, runs, floor);
   for (const std::string& text : options.schedules) {
     const Schedule s = parseSchedule(text);
     garment.engine->progressiveScript = script.c_str();
     garment.engine->splitRate = s.rate;
     garment.engine->endLevel = -1;
     garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * levels));
-    const RepeatedDrape run = garment.drapeRepeatedly(options.repeat);
+    const Drapes run = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
+    csv << method.text << ',' << runs << ',' << garment.engine->beginLevel.getValue() << ',' << levels << ','
+        << s.rate << ',';
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
       std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
-      csv << method.text << ',' << garment.engine->beginLevel.getValue() << ",," << s.rate << ",,,,"
-          << full.run.iterations << ',' << full.medianWall << ',' << (full.run.atRest ? 1 : 0) << ",,,,\"failed: "
+      csv << ",,," << median(full.steps) << ',' << fullWall << ',' << full.rested << ",,,," << floor << ",\"failed: "
           << run.error << "\"\n";
       continue;
     }
-    double mean = 0.0, largest = 0.0;
-    for (size_t i = 0; i < run.positions.size(); ++i) {
-      const double d = (run.positions[i] - full.positions[i]).length();
-      mean += d, largest = std::max(largest, d);
-    }
-    mean /= static_cast<double>(run.positions.size());
-    const double speedUp = full.medianWall / run.medianWall;
-    std::printf("%-22s %-10s begin %4d of %4d: %6d steps %7.3f s wall %-6s %5.2fx  dev mean %6.3f %% max %6.3f %%\n",
-                method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), run.run.levels,
-                run.run.iterations, run.medianWall, run.run.atRest ? "rest" : "moving", speedUp,
-                100.0 * mean / garmentHeight, 100.0 * largest / garmentHeight);
-    csv << method.text << ',' << garment.engine->beginLevel.getValue() << ',' << run.run.levels << ',' << s.rate
-        << ',' << run.run.iterations << ',' << run.medianWall << ',' << (run.run.atRest ? 1 : 0) << ','
-        << full.run.iterations << ',' << full.medianWall << ',' << (full.run.atRest ? 1 : 0) << ',' << speedUp
-        << ',' << 100.0 * mean / garmentHeight << ',' << 100.0 * largest / garmentHeight << ",\n";
+    const auto [mean, largest] = medianDeviation(run, full, height);
+    const double wall = median(run.wall);
+    std::printf("%-22s %-10s begin %4d of %4d: %6.0f steps %7.3f s wall, %d/%zu rested %5.2fx  dev mean %6.3f %% "
+                "max %6.3f %%\n",
+                method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), levels, median(run.steps),
+                wall, run.rested, runs, fullWall / wall, mean, largest);
+    std::fflush(stdout);
+    csv << median(run.steps) << ',' << wall << ',' << run.rested << ',' << median(full.steps) << ',' << fullWall << ','
+        << full.rested << ',' << fullWall / wall << ',' << mean << ',' << largest << ',' << floor << ",\n";
   }
   garment.engine->progressiveScript = script.c_str();
   return "";
@@ -106,10 +156,17 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
     std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
     return 1;
   }
-  const std::string script = garment.engine->progressiveScript.getValue().getString();
+  // The scene's script, or one made now (to coarseShare of the sections).
+  std::string script = garment.engine->progressiveScript.getValue().getString();
+  std::optional<TemporaryScript> made;
   if (script.empty()) {
-    std::fprintf(stderr, "figment-bench: %s: its ClothEngine has no progressiveScript\n", options.scene.c_str());
-    return 1;
+    try {
+      made.emplace(garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex), options.coarseShare);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "figment-bench: %s: %s\n", options.scene.c_str(), e.what());
+      return 1;
+    }
+    script = made->path();
   }
   const int levels = countLevels(garment, script, error);
   if (!error.empty()) {
@@ -118,8 +175,12 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
   }
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/progressive.csv", [&](std::ostream& csv) -> std::string {
-    csv << "method,begin_level,levels,split_rate_per_s,steps,median_wall_s,at_rest,full_steps,full_median_wall_s,"
-           "full_at_rest,speed_up,mean_dev_pct_height,max_dev_pct_height,failure\n";
+    // Steps, walls and deviations are medians over the time steps (the method's times each
+    // factor); *rested count the drapes at rest within maxTime; floor: the full garment's
+    // drapes' median deviation from each other.
+    csv << "method,time_steps,begin_level,levels,split_rate_per_s,steps,median_wall_s,rested,full_steps,"
+           "full_median_wall_s,full_rested,speed_up,mean_dev_pct_height,max_dev_pct_height,floor_mean_dev_pct_height,"
+           "failure\n";
     for (const Method& method : methods)
       if (std::string e = studyMethod(garment, script, levels, method, options, csv); !e.empty()) return e;
     return "";

@@ -3,10 +3,10 @@
 #include "CsvFile.h"
 #include "MethodSpec.h"
 #include "SceneGarment.h"
+#include "Statistics.h"
+#include "TemporaryScript.h"
 
-#include "io/ProgressiveScript.h"
 #include "nodes/cloth/ClothEngineInputs.h"
-#include "sim/progressive/Decimation.h"
 #include "sim/progressive/Resampling.h"
 
 #include <chrono>
@@ -16,40 +16,17 @@
 #include <filesystem>
 #include <stdexcept>
 
-#include <unistd.h>  // getpid: one temporary script per process
-
 namespace figment::bench {
 
 namespace {
 
-// The garment as the engine holds it (floats), so its script's hash matches.
-TriangleMesh asFloats(TriangleMesh mesh) {
-  for (Vec3& x : mesh.vertices) x = x.cast<float>().cast<double>();
-  return mesh;
-}
-
+// The garment resampled to a size, with its progressive mesh.
 struct SizedGarment {
+  SizedGarment(const TriangleMesh& base, int sections, double coarseShare)
+      : mesh(asSceneHoldsIt(resampled(base, sections))), script(mesh, coarseShare) {}
   TriangleMesh mesh;
-  std::string script;  // its progressive script, a temporary file
-  int coarseSections = 0, levels = 0;
-  double preparation = 0.0;  // s to resample and decimate
+  TemporaryScript script;
 };
-
-SizedGarment prepare(const TriangleMesh& base, int sections, const SizeStudyOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  SizedGarment out;
-  out.mesh = asFloats(resampled(base, sections));
-  const int coarse = std::max(1, static_cast<int>(std::lround(options.coarseShare * out.mesh.triangles.size())));
-  const ProgressiveMesh progressive = decimate(out.mesh, DecimationOptions{.targetFaces = coarse});
-  out.levels = progressive.levels();
-  out.coarseSections = MeshLevel(progressive).activeFaces();
-  out.script = (std::filesystem::temp_directory_path() /
-                ("figment-sizes-" + std::to_string(sections) + "-" + std::to_string(::getpid()) + ".pm"))
-                   .string();
-  writeProgressiveScript(progressive, out.script);
-  out.preparation = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return out;
-}
 
 // Mean and largest distance between two drapes, % of `height`.
 std::pair<double, double> deviation(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b, double height) {
@@ -62,43 +39,73 @@ std::pair<double, double> deviation(const std::vector<SbVec3f>& a, const std::ve
   return {100.0 * mean / height, 100.0 * largest / height};
 }
 
-// One size: the full garment, then the progressive drape; "" or the error.
-std::string studySize(SceneGarment& garment, const TriangleMesh& base, int sections, const SizeStudyOptions& options,
-                      std::ostream& csv) {
-  const SizedGarment sized = prepare(base, sections, options);
-  garment.replaceGarment(sized.mesh);
+struct Drapes {
+  std::vector<double> fullWall, wall, fullSteps, steps, meanDev, maxDev, floorDev;
+  int fullRested = 0, rested = 0;
+  std::string failure;
+};
+
+// The garment whole, then progressively, at each of the options' time steps.
+Drapes drapeAtEachStep(SceneGarment& garment, const SizedGarment& sized, double timeStep,
+                       const SizeStudyOptions& options) {
   ClothEngine& engine = *garment.engine;
-  engine.progressiveScript = "";
-  const RepeatedDrape full = garment.drapeRepeatedly(options.repeat);
-  const double rate = sized.levels / options.splitTime;
-  engine.progressiveScript = sized.script.c_str();
-  engine.beginLevel = 0;
-  engine.endLevel = -1;
-  engine.splitRate = rate;
-  const RepeatedDrape progressive = garment.drapeRepeatedly(options.repeat);
-  std::filesystem::remove(sized.script);
+  Drapes out;
+  std::vector<std::vector<SbVec3f>> whole;
+  for (double factor : options.stepFactors) {
+    engine.timeStep = factor * timeStep;
+    engine.progressiveScript = "";
+    const RepeatedDrape full = garment.drapeRepeatedly(1);
+    engine.progressiveScript = sized.script.path().c_str();
+    engine.beginLevel = 0;
+    engine.endLevel = -1;
+    engine.splitRate = sized.script.levels() / options.splitTime;
+    const RepeatedDrape progressive = garment.drapeRepeatedly(1);
+    out.failure = !full.error.empty() ? "whole: " + full.error
+                  : !progressive.error.empty() ? "progressive: " + progressive.error : "";
+    if (!out.failure.empty()) break;
+    out.fullWall.push_back(full.medianWall), out.wall.push_back(progressive.medianWall);
+    out.fullSteps.push_back(full.run.iterations), out.steps.push_back(progressive.run.iterations);
+    out.fullRested += full.run.atRest, out.rested += progressive.run.atRest;
+    const auto [mean, largest] = deviation(progressive.positions, full.positions, garment.height());
+    out.meanDev.push_back(mean), out.maxDev.push_back(largest);
+    whole.push_back(full.positions);
+  }
+  engine.timeStep = timeStep;
+  engine.progressiveScript = "";  // the script goes with `sized`
+  for (size_t i = 0; out.failure.empty() && i < whole.size(); ++i)
+    for (size_t j = i + 1; j < whole.size(); ++j) out.floorDev.push_back(deviation(whole[i], whole[j], garment.height()).first);
+  return out;
+}
+
+// One size: its row of the CSV; "" or the error.
+std::string studySize(SceneGarment& garment, const TriangleMesh& base, int sections, double timeStep,
+                      const SizeStudyOptions& options, std::ostream& csv) {
+  const auto start = std::chrono::steady_clock::now();
+  const SizedGarment sized(base, sections, options.coarseShare);
+  const double preparation = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  garment.replaceGarment(sized.mesh);
+  const Drapes d = drapeAtEachStep(garment, sized, timeStep, options);
   const int triangles = static_cast<int>(sized.mesh.triangles.size());
-  const std::string failure = !full.error.empty() ? "full: " + full.error
-                              : !progressive.error.empty() ? "progressive: " + progressive.error : "";
-  if (!failure.empty()) {
-    std::printf("%6d sections: failed: %s\n", triangles, failure.c_str());
-    csv << triangles << ',' << sized.mesh.vertices.size() << ',' << options.method << ",,,,,,,,,,,,,\"" << failure
-        << "\"\n";
+  const size_t runs = options.stepFactors.size();
+  csv << triangles << ',' << sized.mesh.vertices.size() << ',' << options.method << ',' << runs << ','
+      << sized.script.coarseSections() << ',' << sized.script.levels() << ','
+      << sized.script.levels() / options.splitTime << ',';
+  if (!d.failure.empty()) {
+    std::printf("%6d sections: failed: %s\n", triangles, d.failure.c_str());
+    csv << ",,,,,,,,,,,\"" << d.failure << "\"\n";
     return "";
   }
-  const auto [mean, largest] = deviation(progressive.positions, full.positions, garment.height());
-  const double speedUp = full.medianWall / progressive.medianWall;
-  std::printf("%6d sections (%5d nodes): full %4d steps %8.3f s %-6s | from %5d: %4d steps %8.3f s %-6s %5.2fx "
-              "dev mean %6.3f %% max %6.3f %% (prepared in %.2f s)\n",
-              triangles, static_cast<int>(sized.mesh.vertices.size()), full.run.iterations, full.medianWall,
-              full.run.atRest ? "rest" : "moving", sized.coarseSections, progressive.run.iterations,
-              progressive.medianWall, progressive.run.atRest ? "rest" : "moving", speedUp, mean, largest,
-              sized.preparation);
+  const double fullWall = median(d.fullWall), wall = median(d.wall);
+  const double floorDev = d.floorDev.empty() ? 0.0 : median(d.floorDev);
+  std::printf("%6d sections (%5d nodes): whole %5.0f steps %8.3f s, %zu/%zu rested | from %5d: %5.0f steps %8.3f s, "
+              "%d/%zu rested %5.2fx dev mean %6.3f %% max %6.3f %%, floor %6.3f %% (prepared in %.2f s)\n",
+              triangles, static_cast<int>(sized.mesh.vertices.size()), median(d.fullSteps), fullWall,
+              static_cast<size_t>(d.fullRested), runs, sized.script.coarseSections(), median(d.steps), wall, d.rested,
+              runs, fullWall / wall, median(d.meanDev), median(d.maxDev), floorDev, preparation);
   std::fflush(stdout);
-  csv << triangles << ',' << sized.mesh.vertices.size() << ',' << options.method << ',' << sized.coarseSections << ','
-      << sized.levels << ',' << rate << ',' << full.run.iterations << ',' << full.medianWall << ','
-      << (full.run.atRest ? 1 : 0) << ',' << progressive.run.iterations << ',' << progressive.medianWall << ','
-      << (progressive.run.atRest ? 1 : 0) << ',' << speedUp << ',' << mean << ',' << largest << ",\n";
+  csv << median(d.fullSteps) << ',' << fullWall << ',' << d.fullRested << ',' << median(d.steps) << ',' << wall << ','
+      << d.rested << ',' << fullWall / wall << ',' << median(d.meanDev) << ',' << median(d.maxDev) << ',' << floorDev
+      << ',' << preparation << ",\n";
   return "";
 }
 
@@ -122,13 +129,17 @@ int runSizeStudy(const SizeStudyOptions& options) {
     std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
     return 1;
   }
+  garment.engine->maxTime = options.maxTime;
   const TriangleMesh base = garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex);
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/sizes.csv", [&](std::ostream& csv) -> std::string {
-    csv << "sections,nodes,method,coarse_sections,levels,split_rate_per_s,full_steps,full_median_wall_s,full_at_rest,"
-           "steps,median_wall_s,at_rest,speed_up,mean_dev_pct_height,max_dev_pct_height,failure\n";
+    // Steps, walls and deviations are medians over the time steps; *_rested count the
+    // drapes that came to rest within maxTime.
+    csv << "sections,nodes,method,time_steps,coarse_sections,levels,split_rate_per_s,full_steps,full_median_wall_s,"
+           "full_rested,steps,median_wall_s,rested,speed_up,mean_dev_pct_height,max_dev_pct_height,"
+           "floor_mean_dev_pct_height,preparation_s,failure\n";
     for (int sections : options.sizes)
-      if (std::string e = studySize(garment, base, sections, options, csv); !e.empty()) return e;
+      if (std::string e = studySize(garment, base, sections, method.timeStep, options, csv); !e.empty()) return e;
     return "";
   });
   if (!written) return 1;

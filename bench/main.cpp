@@ -95,7 +95,7 @@ CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
 CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progressive) {
   CLI::App* command = app.add_subcommand(
       "progressive", "a garment draped progressively against the full garment: wall to rest, speed-up, deviation");
-  command->add_option("--scene", progressive.scene, "scene whose first ClothEngine has a progressiveScript")
+  command->add_option("--scene", progressive.scene, "scene whose first garment is draped progressively")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   command->add_option("--method", progressive.methods, "INTEGRATOR:DT[:LIMITER:LIMIT_G] (repeat)")
@@ -104,9 +104,14 @@ CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progress
                       "BEGIN_SHARE:RATE: begin level as a share of the levels, splits per simulated second "
                       "(0: all once the begin level rests) (repeat)")
       ->capture_default_str();
-  command->add_option("--repeat", progressive.repeat, "runs per configuration (median wall time)")
+  command->add_option("--step-factor", progressive.stepFactors,
+                      "drape at the method's time step times each (repeat; medians over them)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.5, 2.0));
+  command->add_option("--coarse-share", progressive.coarseShare,
+                      "a scene with no progressiveScript: its garment decimated to this share of its sections")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 1.0));
   command->add_option("--out", progressive.outDir, "folder for progressive.csv")->capture_default_str();
   return command;
 }
@@ -127,9 +132,13 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   command->add_option("--split-time", sizes.splitTime, "simulated s over which every split is made")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  command->add_option("--repeat", sizes.repeat, "runs per drape (median wall time)")
+  command->add_option("--max-time", sizes.maxTime, "simulated s a drape may take before it counts as never resting")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  command->add_option("--step-factor", sizes.stepFactors,
+                      "drape at the method's time step times each (repeat; medians over them)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5, 2.0));
   command->add_option("--out", sizes.outDir, "folder for sizes.csv")->capture_default_str();
   return command;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Charts figment-bench progressive's CSV: for each method, the progressive drapes' wall
-time to rest (as a share of the full garment's) against their at-rest mean deviation
-from it, one point per schedule (begin level, split rate), failures marked.
+"""Charts figment-bench progressive's CSV: for each method, the progressive drapes' median
+wall time to rest (as a share of the full garment's) against their at-rest mean deviation
+from it, one point per schedule (begin level, split rate), failures marked; a dotted
+line per method at its floor (the full garment's drapes' deviation from each other).
 Usage: plot_progressive.py progressive.csv progressive.png"""
 import csv
 import sys
@@ -19,6 +20,11 @@ def main(csv_path, png_path):
     fig, ax = plt.subplots(figsize=(8, 5))
     colors = ["tab:blue", "tab:orange", "tab:green", "tab:red"]
     for m, color in zip(methods, colors):
+        # The floor: how far the full garment's own drapes at the nearby time steps differ.
+        floor = float(next(r for r in rows if r["method"] == m)["floor_mean_dev_pct_height"])
+        ax.axvline(floor, color=color, linewidth=0.8, linestyle=":")
+        ax.annotate(f"floor {floor:.3f} %", (floor, 0.05), xycoords=("data", "axes fraction"), rotation=90,
+                    fontsize=7, color=color, xytext=(2, 0), textcoords="offset points")
         for r in (r for r in rows if r["method"] == m):
             label = f"begin {r['begin_level']}, {float(r['split_rate_per_s']):g}/s"
             if r["failure"]:
@@ -27,7 +33,8 @@ def main(csv_path, png_path):
                 continue
             share = float(r["median_wall_s"]) / float(r["full_median_wall_s"])
             dev = float(r["mean_dev_pct_height"])
-            marker = "o" if r["at_rest"] == "1" else "x"
+            rested, runs = int(r["rested"]), int(r["time_steps"])
+            marker = "o" if rested == runs else "^" if rested else "x"
             ax.scatter(dev, share, c=color, marker=marker, s=45)
             ax.annotate(label, (dev, share), textcoords="offset points", xytext=(4, 4), fontsize=7, color=color)
     ax.axhline(1.0, color="grey", linewidth=0.8)
@@ -38,7 +45,7 @@ def main(csv_path, png_path):
     ax.set_xlabel("at-rest mean deviation from the full garment's drape, % of its height")
     ax.set_ylabel("wall time to rest / the full garment's")
     handles = [matplotlib.lines.Line2D([], [], color=c, marker="o", linestyle="") for c in colors[: len(methods)]]
-    ax.legend(handles, methods, fontsize=8, title="o at rest, x never rested", title_fontsize=7, loc="center right")
+    ax.legend(handles, methods, fontsize=8, title="o all rested, ^ some, x none", title_fontsize=7, loc="center right")
     ax.set_title("Progressive drapes of the default dress (figment-bench progressive)")
     fig.tight_layout()
     fig.savefig(png_path, dpi=110)

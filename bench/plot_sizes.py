@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""Charts figment-bench sizes' CSV: wall time to rest against the garment's sections,
-whole and progressive, log-log; drapes that never rested marked x, failures listed.
+"""Charts figment-bench sizes' CSV: median wall time to rest against the garment's
+sections, whole and progressive, log-log; o: every drape rested, ^: some, x: none;
+each size's speed-up, deviation and floor beside it; failures listed.
 Usage: plot_sizes.py sizes.csv sizes.png"""
 import csv
 import sys
@@ -20,9 +21,11 @@ def main(csv_path, png_path):
         y = [float(r[prefix + "median_wall_s"]) for r in done]
         ax.plot(x, y, color=color, label=label, linewidth=1.2)
         for xi, yi, r in zip(x, y, done):
-            ax.scatter(xi, yi, c=color, marker="o" if r[prefix + "at_rest"] == "1" else "x", s=40)
+            rested, runs = int(r[prefix + "rested"]), int(r["time_steps"])
+            ax.scatter(xi, yi, c=color, marker="o" if rested == runs else "^" if rested else "x", s=40)
     for r in done:
-        ax.annotate(f"{float(r['speed_up']):.2f}x\n{float(r['mean_dev_pct_height']):.2f} %",
+        ax.annotate(f"{float(r['speed_up']):.2f}x\n{float(r['mean_dev_pct_height']):.2f} % "
+                    f"(floor {float(r['floor_mean_dev_pct_height']):.2f})",
                     (int(r["sections"]), float(r["median_wall_s"])), textcoords="offset points", xytext=(4, -22),
                     fontsize=7, color="tab:orange")
     for i, r in enumerate(r for r in rows if r["failure"]):
@@ -33,7 +36,7 @@ def main(csv_path, png_path):
     ax.set_yscale("log")
     ax.set_xlabel("garment sections (triangles)")
     ax.set_ylabel("wall time to rest, s (one core)")
-    ax.legend(fontsize=8, title="o at rest, x never rested; speed-up, mean deviation", title_fontsize=7)
+    ax.legend(fontsize=8, title="o all rested, ^ some, x none; speed-up,\nmean deviation (floor)", title_fontsize=7)
     ax.set_title(f"Time to rest against garment size ({method}; figment-bench sizes)")
     fig.tight_layout()
     fig.savefig(png_path, dpi=110)

@@ -3,7 +3,8 @@
 #include "sim/body/BodyParts.h"
 #include "sim/body/SkeletonEstimate.h"
 #include "sim/core/ParameterChecks.h"
-#include "sim/progressive/Decimation.h"
+#include "sim/core/PlaneClip.h"
+#include "sim/progressive/Resampling.h"
 
 #include <algorithm>
 #include <map>
@@ -22,6 +23,8 @@ void TShirtOptions::validate() const {
 
 namespace {
 
+constexpr double kHemSnap = 0.005;  // m: a third of the skin's shortest edges or so
+
 // Whether the shirt covers triangle t of the body.
 class ShirtRegion {
  public:
@@ -33,9 +36,12 @@ class ShirtRegion {
 
   double hemHeight() const { return hem_; }
 
-  bool covers(const std::string& part, const Vec3& centroid) const {
+  // `top`: the triangle's highest corner; a triangle across the hem is kept whole here
+  // and cut along it later.
+  bool covers(const std::string& part, const Vec3& centroid, double top) const {
     if (part == "upperTorso" || part == "lowerTorso") return true;
-    if (part == "hips") return centroid.y() > hem_;
+    // Over the hips' sides the thighs' parts reach above the hem.
+    if (part == "hips" || part == "thighL" || part == "thighR") return top > hem_;
     if (part == "neck") return centroid.y() < neckline_;  // the slopes down to the shoulders
     if (part == "upperArmL") return withinSleeve(centroid, "shoulderL", "elbowL");
     if (part == "upperArmR") return withinSleeve(centroid, "shoulderR", "elbowR");
@@ -129,20 +135,19 @@ TShirt makeTShirt(const TriangleMesh& body, const TShirtOptions& options) {
   for (size_t f = 0; f < body.triangles.size(); ++f) {
     const Triangle& t = body.triangles[f];
     const Vec3 centroid = (body.vertices[t[0]] + body.vertices[t[1]] + body.vertices[t[2]]) / 3.0;
-    if (region.covers(skeleton.parts[parts[f]].name, centroid)) chosen.push_back(t);
+    const double top = std::max({body.vertices[t[0]].y(), body.vertices[t[1]].y(), body.vertices[t[2]].y()});
+    if (region.covers(skeleton.parts[parts[f]].name, centroid, top)) chosen.push_back(t);
   }
   removeSpikes(chosen);
 
   chosen = largestPiece(chosen);
   TShirt shirt;
-  shirt.skinTriangles = static_cast<int>(chosen.size());
-  if (options.triangles > shirt.skinTriangles)
-    throw std::invalid_argument("triangles = " + std::to_string(options.triangles) + " is more than the " +
-                                std::to_string(shirt.skinTriangles) + " of the skin it is made from");
-  const TriangleMesh skin = offsetSkin(body, chosen, options.ease);
-  const ProgressiveMesh decimated = decimate(skin, DecimationOptions{.targetFaces = options.triangles});
-  std::vector<int> fullIndex;
-  shirt.mesh = numberedByFirstUse(MeshLevel(decimated).restMesh(fullIndex));
+  // The hem level and straight: cut along the plane (corners within kHemSnap of it moved
+  // onto it, so the cut leaves no slivers).
+  const Plane hem{Vec3(0.0, region.hemHeight(), 0.0), Vec3::UnitY()};
+  const TriangleMesh skin = clippedByPlane(offsetSkin(body, chosen, options.ease), hem, kHemSnap);
+  shirt.skinTriangles = static_cast<int>(skin.triangles.size());
+  shirt.mesh = resampled(skin, options.triangles);
   shirt.hemHeight = region.hemHeight();
   shirt.area = surfaceArea(shirt.mesh);
   return shirt;

@@ -1,10 +1,11 @@
 #pragma once
 // A T-shirt with short sleeves generated around a body in its rest pose (metres, y up,
 // facing +z): the body's own skin over the torso and the upper arms, stood off it by
-// `ease` along the skin's normals, then decimated (sim/progressive/Decimation.h) to the
-// chosen number of even sections. The skin is cut into parts by the estimated skeleton
+// `ease` along the skin's normals, cut straight along the hem's level, then resampled
+// (sim/progressive/Resampling.h: decimated, or subdivided and decimated) to the chosen
+// number of even sections. The skin is cut into parts by the estimated skeleton
 // (sim/body/BodyParts.h): the shirt keeps the upper and lower torso, the hips above the
-// hem, and each upper arm from the shoulder to `sleeveShare` of the way to the elbow;
+// hem (and the thighs' tops above it), and each upper arm from the shoulder to `sleeveShare` of the way to the elbow;
 // and the neck's skin below the neckline (its slopes down to the shoulders); the rest of
 // the neck, the forearms and below the hem stay open (neck hole, sleeve ends, hem).
 // One piece, manifold, wound counter-clockwise seen from outside; rest shape and
@@ -29,12 +30,12 @@ struct TShirt {
   TriangleMesh mesh;      // vertices numbered as the triangles first use them
   double hemHeight = 0;   // m
   double area = 0;        // m^2 of cloth
-  int skinTriangles = 0;  // the body's triangles it was made from
+  int skinTriangles = 0;  // of the body's skin it was made from, after the hem's cut
 };
 
 // Generates the shirt around `body`, a closed surface in the scene frame. Deterministic.
-// Throws std::invalid_argument for bad options, a body whose skeleton cannot be
-// estimated, or more triangles than the skin region has (skinTriangles).
+// Throws std::invalid_argument for bad options or a body whose skeleton cannot be
+// estimated.
 TShirt makeTShirt(const TriangleMesh& body, const TShirtOptions& options = {});
 
 }  // namespace figment
