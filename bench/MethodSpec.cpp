@@ -37,8 +37,12 @@ Method parseMethod(const std::string& text) {
   std::stringstream in(text);
   for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
   if (parts.size() != 2 && parts.size() != 4)
-    throw std::invalid_argument("method \"" + text + "\": expected INTEGRATOR:DT[:LIMITER:LIMIT_G]");
+    throw std::invalid_argument("method \"" + text + "\": expected INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G]");
   Method m{text, upper(parts[0])};
+  if (const size_t plus = m.integrator.find('+'); plus != std::string::npos) {  // IMPLICIT+PENALTY
+    m.contactModel = m.integrator.substr(plus + 1);
+    m.integrator.resize(plus);
+  }
   try {
     m.timeStep = std::stod(parts[1]);
     if (parts.size() == 4) m.limiter = upper(parts[2]), m.limit = std::stod(parts[3]);
@@ -50,6 +54,8 @@ Method parseMethod(const std::string& text) {
 
 std::string configure(ClothEngine& engine, const Method& m) {
   if (!setByName(engine.integrator, m.integrator)) return "method \"" + m.text + "\": no integrator " + m.integrator;
+  if (!setByName(engine.contactModel, m.contactModel))
+    return "method \"" + m.text + "\": no contact model " + m.contactModel;
   if (!setByName(engine.accelerationLimiter, m.limiter))
     return "method \"" + m.text + "\": no acceleration limiter " + m.limiter;
   engine.accelerationLimit.setValue(m.limit);

@@ -1,7 +1,7 @@
 #pragma once
-// A drape method as the studies name it, "INTEGRATOR:DT[:LIMITER:LIMIT_G]" in the
+// A drape method as the studies name it, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G]" in the
 // ClothEngine fields' spelling (case free): "heun:1.5e-4", "heun:1.5e-4:clamp:30",
-// "implicit:0.05".
+// "implicit:0.05", "implicit+penalty:0.05" (contactModel PENALTY).
 
 #include "nodes/cloth/ClothEngine.h"
 
@@ -11,7 +11,7 @@ namespace figment::bench {
 
 struct Method {
   std::string text;  // as given
-  std::string integrator, limiter = "NONE";
+  std::string integrator, limiter = "NONE", contactModel = "CONSTRAINTS";
   double timeStep = 0.0, limit = 30.0;
 };
 

@@ -81,7 +81,7 @@ CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
   command->add_option("--scene", methods.scenes, "scenes whose first garment is draped (repeat the option)")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
-  command->add_option("--method", methods.methods, "INTEGRATOR:DT[:LIMITER:LIMIT_G], e.g. heun:1.5e-4:clamp:30 (repeat)")
+  command->add_option("--method", methods.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G], e.g. heun:1.5e-4:clamp:30, implicit+penalty:0.05 (repeat)")
       ->capture_default_str();
   command->add_option("--reference", methods.reference, "the converged run deviations are measured against")
       ->capture_default_str();
@@ -98,7 +98,7 @@ CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progress
   command->add_option("--scene", progressive.scene, "scene whose first garment is draped progressively")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
-  command->add_option("--method", progressive.methods, "INTEGRATOR:DT[:LIMITER:LIMIT_G] (repeat)")
+  command->add_option("--method", progressive.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
       ->capture_default_str();
   command->add_option("--schedule", progressive.schedules,
                       "BEGIN_SHARE:RATE: begin level as a share of the levels, splits per simulated second "
@@ -125,7 +125,7 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   command->add_option("--sections", sizes.sizes, "garment sizes, triangles (repeat)")
       ->capture_default_str()
       ->check(CLI::Range(8, 1000000));
-  command->add_option("--method", sizes.method, "INTEGRATOR:DT[:LIMITER:LIMIT_G]")->capture_default_str();
+  command->add_option("--method", sizes.method, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G]")->capture_default_str();
   command->add_option("--coarse-share", sizes.coarseShare, "the progressive drape's first level, share of the sections")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1.0));

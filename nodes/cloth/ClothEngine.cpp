@@ -76,6 +76,10 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, HEUN);
   SO_ENGINE_DEFINE_ENUM_VALUE(Integrator, IMPLICIT);
   SO_ENGINE_SET_SF_ENUM_TYPE(integrator, Integrator);
+  SO_ENGINE_ADD_INPUT(contactModel, (CONSTRAINTS));
+  SO_ENGINE_DEFINE_ENUM_VALUE(ContactModel, CONSTRAINTS);
+  SO_ENGINE_DEFINE_ENUM_VALUE(ContactModel, PENALTY);
+  SO_ENGINE_SET_SF_ENUM_TYPE(contactModel, ContactModel);
   SO_ENGINE_ADD_INPUT(strainLimit, (defaults.strainLimit));
   SO_ENGINE_ADD_INPUT(accelerationLimiter, (NONE));
   SO_ENGINE_DEFINE_ENUM_VALUE(AccelerationLimiter, NONE);

@@ -143,6 +143,11 @@ class ClothEngine : public SoEngine {
   // it ignores strainLimit and accelerationLimiter, which only explicit steps need; its
   // assembly and solve use OMP_NUM_THREADS threads). Default HEUN.
   SoSFEnum integrator;
+  // How IMPLICIT meets the body: CONSTRAINTS (held nodes, velocity constraints of its
+  // solve, sim/cloth/implicit/ContactConstraints.h) or PENALTY (springs and Coulomb
+  // friction forces inside the solve, ContactPenalty.h: nothing switches between held
+  // and let go). PENALTY needs IMPLICIT. Default CONSTRAINTS.
+  SoSFEnum contactModel;
   // Strain clamping (paper §2): each section's strain components are held within
   // [-strainLimit, strainLimit] when its forces are computed, dimensionless; 0 = off.
   // Default 0.
@@ -187,6 +192,7 @@ class ClothEngine : public SoEngine {
 
   enum Integrator { EULER, SYMPLECTIC, HEUN, IMPLICIT };
   enum AccelerationLimiter { NONE, CLAMP, TANH };
+  enum ContactModel { CONSTRAINTS, PENALTY };
 
   // --- output ---
   // The draped positions, one per rest point, world frame, m (SoMFVec3f).

@@ -97,6 +97,8 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
     case ClothEngine::IMPLICIT: p.integrator = Integrator::Implicit; break;
     default: p.integrator = Integrator::Heun; break;
   }
+  p.implicitSolver.contacts =
+      engine.contactModel.getValue() == ClothEngine::PENALTY ? ContactModel::Penalty : ContactModel::Constraints;
   p.strainLimit = engine.strainLimit.getValue();
   switch (engine.accelerationLimiter.getValue()) {
     case ClothEngine::CLAMP: p.accelerationLimiter = AccelerationLimiter::Clamp; break;

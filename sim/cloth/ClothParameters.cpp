@@ -38,6 +38,10 @@ void ClothParameters::validate() const {
   wind.validate();
   requireOpenRange("implicitTolerance", implicitSolver.tolerance, 0.0, 1.0);
   requirePositive("implicitMaxIterations", implicitSolver.maxIterations);
+  requirePositive("penaltyRate", implicitSolver.penaltyRate);
+  requirePositive("stickSpeed", implicitSolver.stickSpeed);
+  if (implicitSolver.contacts == ContactModel::Penalty && integrator != Integrator::Implicit)
+    throw std::invalid_argument("contactModel PENALTY needs integrator IMPLICIT");
   if (timeStep > maxTime)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
                                 formatNumber(maxTime));

@@ -47,6 +47,12 @@ enum class Preconditioner {
   TwoLevel,     // plus a coarse correction over aggregates of nodes (CoarseCorrection.h)
 };
 
+// How the implicit integrator meets the body.
+enum class ContactModel {
+  Constraints,  // held nodes, velocity constraints of the solve (ContactConstraints.h)
+  Penalty,      // springs and friction forces inside the solve (ContactPenalty.h)
+};
+
 // The linear solve of the implicit integrator (sim/cloth/implicit/FilteredPcg.h).
 struct ImplicitSolverParameters {
   // PCG stops when |residual| <= tolerance |right-hand side|. At 1 % the dress rests
@@ -56,6 +62,11 @@ struct ImplicitSolverParameters {
   int maxIterations = 300;  // PCG iterations per time step, at most
   BendingStiffness bending = BendingStiffness::Joints;
   Preconditioner preconditioner = Preconditioner::TwoLevel;
+  ContactModel contacts = ContactModel::Constraints;
+  // Penalty contacts: spring k_i = penaltyRate m_i (1/s^2); a node slower than
+  // stickSpeed (m/s) along the body sticks.
+  double penaltyRate = 1e6;
+  double stickSpeed = 1e-3;
 };
 
 struct ClothParameters {

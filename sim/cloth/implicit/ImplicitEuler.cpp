@@ -8,9 +8,12 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& par
                              std::shared_ptr<const Collider> body)
     : parameters_(parameters),
       system_(model, parameters),
-      contacts_(std::move(body), parameters, model.nodeCount()),
+      contacts_(parameters.implicitSolver.contacts == ContactModel::Constraints ? body : nullptr, parameters,
+                model.nodeCount()),
       stop_{parameters.implicitSolver.tolerance, parameters.implicitSolver.maxIterations} {
   if (parameters.implicitSolver.preconditioner == Preconditioner::TwoLevel) pcg_ = FilteredPcg(system_.matrix());
+  if (parameters.implicitSolver.contacts == ContactModel::Penalty)
+    penalties_ = std::make_unique<ContactPenalty>(std::move(body), parameters, model.nodeCount());
 }
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
@@ -47,6 +50,15 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
   }
 }
 
+void ImplicitEuler::solveWithPenalties(const std::vector<Vec3>& v, double dt) {
+  for (int solve = 0;; ++solve) {
+    lastSolve_ = pcg_.solve(system_.matrix(), rhs_, filter_, stop_, change_, solve > 0);
+    costs_.solverIterations += lastSolve_.iterations;
+    costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
+    if (solve + 1 >= kMaxSolves || !penalties_->update(v, change_, dt, system_.matrix(), rhs_)) break;
+  }
+}
+
 namespace {
 using Clock = std::chrono::steady_clock;
 // Seconds since `since`, and `since` moved on to now.
@@ -74,13 +86,20 @@ void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, c
   const std::vector<Vec3>& f = system_.forces();
   const std::vector<Vec3>& Kv = system_.stiffnessTimesVelocity();
   for (size_t i = 0; i < n; ++i) rhs_[i] = dt * (f[i] - dt * Kv[i]);
-  solveWithFriction(v);
+  if (penalties_) {
+    penalties_->add(x, v, system_.masses(), dt, firstStep, system_.matrix(), rhs_);
+    costs_.contactSeconds += lap(clock);
+    solveWithPenalties(v, dt);
+  } else {
+    solveWithFriction(v);
+  }
   costs_.solveSeconds += lap(clock);
   ++costs_.steps;
   for (size_t i = 0; i < n; ++i) v[i] += change_[i];
   for (size_t i = 0; i < n; ++i)
     if (!pinned[i]) x[i] += dt * v[i];
-  contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
+  if (penalties_) penalties_->finish(xStart_, dt, firstStep, x, v);
+  else contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
   costs_.contactSeconds += lap(clock);
 }
 

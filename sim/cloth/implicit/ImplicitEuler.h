@@ -5,14 +5,16 @@
 //
 //   (M + dt C + dt^2 K) y = dt (f(x, v, t) - dt K v),   v' = v + y,   x' = x + dt v'
 //
-// by filtered PCG (FilteredPcg.h), with pinned nodes fixed and the body's contacts as
-// constraints with Coulomb friction in the right-hand side (ContactConstraints.h); when
+// by filtered PCG (FilteredPcg.h), with pinned nodes fixed and the body's contacts either
+// as constraints with Coulomb friction in the right-hand side (ContactConstraints.h) or
+// as penalty springs and friction forces in the system (ContactPenalty.h); when
 // contacts switch between sticking and sliding the same system is solved again (up to
 // kMaxSolves times, warm-started). One Newton step of the implicit equations: stable
 // for any step (the matrix is positive definite: K projected, C >= 0), first order in
 // time, and at rest it leaves exactly the explicit model's equilibrium f = 0.
 
 #include "sim/cloth/implicit/ContactConstraints.h"
+#include "sim/cloth/implicit/ContactPenalty.h"
 #include "sim/cloth/implicit/FilteredPcg.h"
 #include "sim/cloth/implicit/ImplicitStepCosts.h"
 #include "sim/cloth/implicit/ImplicitSystem.h"
@@ -39,6 +41,9 @@ class ImplicitEuler {
   // kResolveShare of the step's impulses, kMaxSolves times at most. Changes below that
   // (a few nodes at the friction cone's edge) act from the next step.
   void solveWithFriction(const std::vector<Vec3>& v);
+  // The same with penalty contacts: solves again while nodes switch between sticking
+  // and sliding, kMaxSolves times at most.
+  void solveWithPenalties(const std::vector<Vec3>& v, double dt);
 
   static constexpr int kMaxSolves = 3;
   static constexpr double kResolveShare = 0.03;
@@ -46,6 +51,7 @@ class ImplicitEuler {
   ClothParameters parameters_;
   ImplicitSystem system_;
   ContactConstraints contacts_;
+  std::unique_ptr<ContactPenalty> penalties_;  // instead of contacts_ where the parameters say so
   FilteredPcg pcg_;
   PcgStop stop_;
   NodeFilter filter_;

@@ -33,6 +33,8 @@ class ImplicitSystem {
   const std::vector<Vec3>& forces() const { return force_; }
   const std::vector<Vec3>& stiffnessTimesVelocity() const { return stiffnessVelocity_; }
   const BlockSparseMatrix& matrix() const { return matrix_; }
+  // Penalty contacts add their terms to the diagonal blocks after assembly.
+  BlockSparseMatrix& matrix() { return matrix_; }
   const std::vector<double>& masses() const { return model_.masses(); }  // kg
 
  private:

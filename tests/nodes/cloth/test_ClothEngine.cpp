@@ -71,6 +71,8 @@ TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaults) {
   EXPECT_EQ(engine->windFrequency.getValue(), sim.wind.frequency);
   EXPECT_EQ(engine->windPhaseInterval.getValue(), sim.wind.meanPhaseInterval);
   EXPECT_EQ(uint64_t(engine->windSeed.getValue()), sim.wind.seed);
+  EXPECT_EQ(engine->contactModel.getValue(), ClothEngine::CONSTRAINTS);
+  EXPECT_EQ(sim.implicitSolver.contacts, figment::ContactModel::Constraints);
   EXPECT_EQ(engine->restPoints.getNum(), 0);
   EXPECT_EQ(engine->coordIndex.getNum(), 0);
   EXPECT_EQ(engine->body.getValue(), nullptr);
@@ -224,6 +226,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"windFrequency -1", "ClothEngine 'Drape': windFrequency = -1 must be >= 0"},
         BadField{"windPhaseInterval -0.5", "ClothEngine 'Drape': windPhaseInterval = -0.5 must be >= 0"},
         BadField{"windSeed -3", "ClothEngine 'Drape': windSeed = -3 must be >= 0"},
+        BadField{"contactModel PENALTY", "ClothEngine 'Drape': contactModel PENALTY needs integrator IMPLICIT"},
         BadField{"", "ClothEngine 'Drape': coordIndex[2] = 100 is not a vertex: restPoints has 100 points", "",
                  "[ 0 1 100 -1 ]"},
         BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "",

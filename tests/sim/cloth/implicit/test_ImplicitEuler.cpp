@@ -93,6 +93,39 @@ TEST(ImplicitEuler, ASheetRestsOnTheFloorAtTheClearanceNotAboveIt) {
   EXPECT_LT(highest, p.clearance + 1e-4);
 }
 
+// Penalty contacts (ContactPenalty.h): at rest on the ball at 1/30 and 1/50 s (at 1/20 s
+// neither contact model has the folds still in 6 s), every node outside it and inside
+// the clearance by no more than its spring's depth under the cloth it carries.
+TEST(ImplicitEuler, WithPenaltyContactsASheetComesToRestOnABall) {
+  for (const double timeStep : {1.0 / 30.0, 1.0 / 50.0}) {
+    SCOPED_TRACE(testing::Message() << "dt = " << timeStep << " s");
+    ClothParameters p = implicitDrape(timeStep);
+    p.implicitSolver.contacts = ContactModel::Penalty;
+    auto body = ball();
+    ClothSolver solver(sheetAboveBall(), p, body);
+    const DrapeResult result = solver.run();
+    EXPECT_TRUE(result.atRest) << "t = " << result.simulatedTime << " s";
+    const double worst = worstClearance(*body, solver.positions(), p.clearance);
+    EXPECT_LT(worst, 0.0);    // the top nodes carry the sheet: inside the clearance
+    EXPECT_GT(worst, -5e-4);  // by a fraction of a millimetre
+    EXPECT_LT(solver.positions()[0].y(), 0.0);
+  }
+}
+
+// On a floor every node carries its own weight only: each rests g / penaltyRate inside
+// the clearance (9.8 um), flat.
+TEST(ImplicitEuler, WithPenaltyContactsASheetRestsOnTheFloorAtItsSpringsDepth) {
+  ClothParameters p = implicitDrape(1.0 / 50.0);
+  p.implicitSolver.contacts = ContactModel::Penalty;
+  auto floor = std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY());
+  const TriangleMesh sheet =
+      meshes::grid(8, 8, 0.3, 0.3, Vec3(-0.15, p.clearance + 5e-4, 0.15), Vec3::UnitX(), -Vec3::UnitZ());
+  ClothSolver solver(sheet, p, floor);
+  ASSERT_TRUE(solver.run().atRest);
+  const double expected = p.clearance + p.gravity.y() / p.implicitSolver.penaltyRate;
+  for (const Vec3& x : solver.positions()) EXPECT_NEAR(x.y(), expected, 1e-7);
+}
+
 TEST(ImplicitEuler, EveryStepEndsOutsideTheBall) {
   const ClothParameters p = implicitDrape(0.01);
   auto body = ball();
