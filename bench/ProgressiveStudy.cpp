@@ -48,16 +48,6 @@ int countLevels(SceneGarment& garment, const std::string& script, std::string& e
   return probe.run.levels;
 }
 
-// Mean and largest distance between two drapes, % of `height`.
-std::pair<double, double> deviation(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b, double height) {
-  double mean = 0.0, largest = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    const double d = (a[i] - b[i]).length();
-    mean += d, largest = std::max(largest, d);
-  }
-  return {100.0 * mean / a.size() / height, 100.0 * largest / height};
-}
-
 // Drapes with the engine's fields at each of the time steps; medians over them.
 struct Drapes {
   std::vector<std::vector<SbVec3f>> positions;  // one per time step
@@ -82,20 +72,21 @@ Drapes drapeAtEachStep(SceneGarment& garment, double timeStep, const std::vector
 }
 
 // Median deviation of each drape of `a` from the drape of `b` at the same time step.
-std::pair<double, double> medianDeviation(const Drapes& a, const Drapes& b, double height) {
+std::pair<double, double> medianDeviation(const SceneGarment& garment, const Drapes& a, const Drapes& b) {
   std::vector<double> mean, largest;
   for (size_t i = 0; i < a.positions.size(); ++i) {
-    const auto [m, l] = deviation(a.positions[i], b.positions[i], height);
+    const auto [m, l] = garment.deviationPercent(a.positions[i], b.positions[i]);
     mean.push_back(m), largest.push_back(l);
   }
   return {median(mean), median(largest)};
 }
 
 // How far the whole garment's drapes at the time steps lie from each other (median).
-double floorOf(const Drapes& full, double height) {
+double floorOf(const SceneGarment& garment, const Drapes& full) {
   std::vector<double> d;
   for (size_t i = 0; i < full.positions.size(); ++i)
-    for (size_t j = i + 1; j < full.positions.size(); ++j) d.push_back(deviation(full.positions[i], full.positions[j], height).first);
+    for (size_t j = i + 1; j < full.positions.size(); ++j)
+      d.push_back(garment.deviationPercent(full.positions[i], full.positions[j]).first);
   return d.empty() ? 0.0 : median(d);
 }
 
@@ -106,7 +97,7 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
   garment.engine->progressiveScript = "";
   const Drapes full = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
   if (!full.error.empty()) return method.text + ", full garment: " + full.error;
-  const double fullWall = median(full.wall), height = garment.height(), floor = floorOf(full, height);
+  const double fullWall = median(full.wall), floor = floorOf(garment, full);
   const size_t runs = options.stepFactors.size();
   std::printf("%-22s full garment: %6.0f steps %7.3f s wall, %d/%zu rested; floor %.3f %%\n", method.text.c_str(),
               median(full.steps), fullWall, full.rested, runs, floor);
@@ -125,7 +116,7 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
           << run.error << "\"\n";
       continue;
     }
-    const auto [mean, largest] = medianDeviation(run, full, height);
+    const auto [mean, largest] = medianDeviation(garment, run, full);
     const double wall = median(run.wall);
     std::printf("%-22s %-10s begin %4d of %4d: %6.0f steps %7.3f s wall, %d/%zu rested %5.2fx  dev mean %6.3f %% "
                 "max %6.3f %%\n",

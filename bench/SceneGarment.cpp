@@ -117,6 +117,17 @@ double SceneGarment::height() const {
   return high - low;
 }
 
+std::pair<double, double> SceneGarment::deviationPercent(const std::vector<SbVec3f>& a,
+                                                        const std::vector<SbVec3f>& b) const {
+  double mean = 0.0, largest = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    const double d = (a[i] - b[i]).length();
+    mean += d, largest = std::max(largest, d);
+  }
+  mean /= static_cast<double>(a.size());
+  return {100.0 * mean / height(), 100.0 * largest / height()};
+}
+
 double SceneGarment::maxEdgeStrain(const std::vector<SbVec3f>& positions) const {
   double worst = 0.0;
   for (const auto& [a, b] : edges) {

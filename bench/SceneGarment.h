@@ -10,6 +10,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace figment::bench {
@@ -42,6 +43,8 @@ struct SceneGarment {
   RepeatedDrape drapeRepeatedly(int repeat);
   // m: the rest shape's extent along y.
   double height() const;
+  // Mean and largest distance between two drapes of the garment, % of height().
+  std::pair<double, double> deviationPercent(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b) const;
   // Largest |edge length / rest length - 1| of `positions`.
   double maxEdgeStrain(const std::vector<SbVec3f>& positions) const;
 };

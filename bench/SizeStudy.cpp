@@ -28,17 +28,6 @@ struct SizedGarment {
   TemporaryScript script;
 };
 
-// Mean and largest distance between two drapes, % of `height`.
-std::pair<double, double> deviation(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b, double height) {
-  double mean = 0.0, largest = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    const double d = (a[i] - b[i]).length();
-    mean += d, largest = std::max(largest, d);
-  }
-  mean /= static_cast<double>(a.size());
-  return {100.0 * mean / height, 100.0 * largest / height};
-}
-
 struct Drapes {
   std::vector<double> fullWall, wall, fullSteps, steps, meanDev, maxDev, floorDev;
   int fullRested = 0, rested = 0;
@@ -66,14 +55,14 @@ Drapes drapeAtEachStep(SceneGarment& garment, const SizedGarment& sized, double 
     out.fullWall.push_back(full.medianWall), out.wall.push_back(progressive.medianWall);
     out.fullSteps.push_back(full.run.iterations), out.steps.push_back(progressive.run.iterations);
     out.fullRested += full.run.atRest, out.rested += progressive.run.atRest;
-    const auto [mean, largest] = deviation(progressive.positions, full.positions, garment.height());
+    const auto [mean, largest] = garment.deviationPercent(progressive.positions, full.positions);
     out.meanDev.push_back(mean), out.maxDev.push_back(largest);
     whole.push_back(full.positions);
   }
   engine.timeStep = timeStep;
   engine.progressiveScript = "";  // the script goes with `sized`
   for (size_t i = 0; out.failure.empty() && i < whole.size(); ++i)
-    for (size_t j = i + 1; j < whole.size(); ++j) out.floorDev.push_back(deviation(whole[i], whole[j], garment.height()).first);
+    for (size_t j = i + 1; j < whole.size(); ++j) out.floorDev.push_back(garment.deviationPercent(whole[i], whole[j]).first);
   return out;
 }
 

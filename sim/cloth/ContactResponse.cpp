@@ -1,6 +1,7 @@
 #include "sim/cloth/ContactResponse.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace figment {
 
@@ -21,6 +22,21 @@ void respondToContact(const Contact& contact, double clearance, double friction,
   } else {
     v = normalSpeed * n + tangential * (1.0 - frictionLimit / tangentialSpeed);
     x = target;
+  }
+}
+
+void respondIfTouching(const Collider& body, double clearance, double friction, double dt, bool firstStep,
+                       double searchMargin, const Vec3& xPrevious, Vec3& x, Vec3& v, double& distanceBound) {
+  const double moved = (x - xPrevious).norm();
+  distanceBound -= moved;
+  if (distanceBound > clearance) return;
+  const double search = firstStep ? std::numeric_limits<double>::infinity() : clearance + 2.0 * moved + searchMargin;
+  Contact contact;
+  if (body.contact(x, clearance, search, contact)) {
+    respondToContact(contact, clearance, friction, dt, xPrevious, x, v);
+    distanceBound = clearance;
+  } else {
+    distanceBound = contact.distance;
   }
 }
 

@@ -20,4 +20,11 @@ namespace figment {
 void respondToContact(const Contact& contact, double clearance, double friction, double dt, const Vec3& xPrevious,
                       Vec3& x, Vec3& v);
 
+// The same after a step for a node that keeps `distanceBound`, a lower bound of its
+// distance to the body (m): lowered by how far it moved; only when that comes within
+// the clearance is the body queried (out to `searchMargin` beyond what the motion
+// needs; everywhere on the first step), and the bound set again from the answer.
+void respondIfTouching(const Collider& body, double clearance, double friction, double dt, bool firstStep,
+                       double searchMargin, const Vec3& xPrevious, Vec3& x, Vec3& v, double& distanceBound);
+
 }  // namespace figment

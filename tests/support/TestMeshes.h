@@ -24,6 +24,14 @@ inline TriangleMesh grid(int nu, int nv, double width, double height, const Vec3
   return mesh;
 }
 
+// A 40 x 30 cm sheet of 24 x 18 quads (864 sections), curved like a sleeve's back:
+// z = x^2 / 2.
+inline TriangleMesh curvedSheet() {
+  TriangleMesh sheet = grid(24, 18, 0.4, 0.3, Vec3(-0.2, 0.15, 0.0), Vec3::UnitX(), -Vec3::UnitY());
+  for (Vec3& x : sheet.vertices) x.z() = 0.5 * x.x() * x.x();
+  return sheet;
+}
+
 // A strip of equilateral triangles (edge a): `rows` + 1 straight rows of nodes across the
 // strip, `rows` * a sqrt(3)/2 apart along `along`, each row `across` edges wide along
 // `side`, odd rows shifted by a/2 (so the long edges zigzag and the two ends are straight).

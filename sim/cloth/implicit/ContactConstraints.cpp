@@ -151,19 +151,7 @@ void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3
       const double normalSpeed = v[i].dot(normal);
       v[i] += (std::min(normalSpeed, std::max(0.0, vStart[i].dot(normal))) - normalSpeed) * normal;
     }
-    const double moved = (x[i] - xStart[i]).norm();
-    double& bound = distanceBound_[i];
-    bound -= moved;
-    if (bound > clearance_) continue;
-    const double search =
-        firstStep ? std::numeric_limits<double>::infinity() : clearance_ + 2.0 * moved + kSearchMargin;
-    Contact contact;
-    if (body_->contact(x[i], clearance_, search, contact)) {
-      respondToContact(contact, clearance_, mu_, dt, xStart[i], x[i], v[i]);
-      bound = clearance_;
-    } else {
-      bound = contact.distance;
-    }
+    respondIfTouching(*body_, clearance_, mu_, dt, firstStep, kSearchMargin, xStart[i], x[i], v[i], distanceBound_[i]);
   }
 }
 

@@ -117,20 +117,8 @@ void ContactPenalty::finish(const std::vector<Vec3>& xStart, double dt, bool fir
   const double hard = 0.5 * clearance_;
   const int n = static_cast<int>(x.size());
 #pragma omp parallel for schedule(dynamic, kNodesPerTask)
-  for (int i = 0; i < n; ++i) {
-    const double moved = (x[i] - xStart[i]).norm();
-    double& bound = distanceBound_[i];
-    bound -= moved;
-    if (bound > hard) continue;
-    const double search = firstStep ? std::numeric_limits<double>::infinity() : hard + 2.0 * moved + kSearchMargin;
-    Contact contact;
-    if (body_->contact(x[i], hard, search, contact)) {
-      respondToContact(contact, hard, mu_, dt, xStart[i], x[i], v[i]);
-      bound = hard;
-    } else {
-      bound = contact.distance;
-    }
-  }
+  for (int i = 0; i < n; ++i)
+    respondIfTouching(*body_, hard, mu_, dt, firstStep, kSearchMargin, xStart[i], x[i], v[i], distanceBound_[i]);
 }
 
 }  // namespace figment

@@ -13,13 +13,6 @@
 using namespace figment;
 
 namespace {
-// A 40 x 30 cm sheet of 24 x 18 quads (864 sections), curved like a sleeve's back.
-TriangleMesh curvedSheet() {
-  TriangleMesh sheet = meshes::grid(24, 18, 0.4, 0.3, Vec3(-0.2, 0.15, 0.0), Vec3::UnitX(), -Vec3::UnitY());
-  for (Vec3& x : sheet.vertices) x.z() = 0.5 * x.x() * x.x();
-  return sheet;
-}
-
 // Each edge with the number of faces holding it.
 std::map<std::pair<int, int>, int> edgeUse(const TriangleMesh& mesh) {
   std::map<std::pair<int, int>, int> use;
@@ -42,7 +35,7 @@ Vec3 normalOf(const TriangleMesh& mesh, const Triangle& t) {
 }  // namespace
 
 TEST(Decimation, ReplayingEverySplitGivesBackTheGarmentExactly) {
-  const TriangleMesh sheet = curvedSheet();
+  const TriangleMesh sheet = meshes::curvedSheet();
   const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 60});
   MeshLevel level(pm);
   EXPECT_LE(level.activeFaces(), 80);
@@ -60,7 +53,7 @@ TEST(Decimation, ReplayingEverySplitGivesBackTheGarmentExactly) {
 }
 
 TEST(Decimation, NoLevelFoldsOverOrLeavesTheManifold) {
-  const TriangleMesh sheet = curvedSheet();
+  const TriangleMesh sheet = meshes::curvedSheet();
   const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 60});
   MeshLevel level(pm);
   for (int k = 0; k <= pm.levels(); k += 7) {
@@ -81,7 +74,7 @@ TEST(Decimation, NoLevelFoldsOverOrLeavesTheManifold) {
 TEST(Decimation, ThePerimeterStaysThePerimeter) {
   // Every vertex on a level's boundary is one of the garment's boundary vertices, at its
   // own rest position, and the coarsest level still spans the sheet's four corners.
-  const TriangleMesh sheet = curvedSheet();
+  const TriangleMesh sheet = meshes::curvedSheet();
   const std::set<int> original = boundaryVertices(sheet);
   const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 60});
   MeshLevel level(pm);

@@ -10,18 +10,11 @@
 using namespace figment;
 
 namespace {
-// 40 x 30 cm, curved like a sleeve's back: 24 x 18 quads, 864 sections.
-TriangleMesh curvedSheet() {
-  TriangleMesh sheet = meshes::grid(24, 18, 0.4, 0.3, Vec3(-0.2, 0.15, 0.0), Vec3::UnitX(), -Vec3::UnitY());
-  for (Vec3& x : sheet.vertices) x.z() = 0.5 * x.x() * x.x();
-  return sheet;
-}
-
 Bounds boundsOf(const TriangleMesh& mesh) { return figment::boundsOf(mesh.vertices); }
 }  // namespace
 
 TEST(Resampling, AnyCountAboveOrBelowTheGarmentsKeepsItsShape) {
-  const TriangleMesh sheet = curvedSheet();
+  const TriangleMesh sheet = meshes::curvedSheet();
   for (int target : {300, 864, 2000, 5000}) {
     const TriangleMesh out = resampled(sheet, target);
     EXPECT_NEAR(static_cast<double>(out.triangles.size()), target, 1.0) << target;
@@ -34,6 +27,6 @@ TEST(Resampling, AnyCountAboveOrBelowTheGarmentsKeepsItsShape) {
 }
 
 TEST(Resampling, NoTrianglesIsAnError) {
-  EXPECT_THROW(resampled(curvedSheet(), 0), std::invalid_argument);
+  EXPECT_THROW(resampled(meshes::curvedSheet(), 0), std::invalid_argument);
   EXPECT_THROW(resampled(TriangleMesh{}, 10), std::invalid_argument);
 }
