@@ -126,7 +126,6 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
     csv << median(run.steps) << ',' << wall << ',' << run.rested << ',' << median(full.steps) << ',' << fullWall << ','
         << full.rested << ',' << fullWall / wall << ',' << mean << ',' << largest << ',' << floor << ",\n";
   }
-  garment.engine->progressiveScript = script.c_str();
   return "";
 }
 
@@ -176,6 +175,9 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
       if (std::string e = studyMethod(garment, script, levels, method, options, csv); !e.empty()) return e;
     return "";
   });
+  // The scene's own script again: a made one goes with `made`, and an engine left naming
+  // it would complain of a missing file when the scene is let go.
+  garment.engine->progressiveScript = made ? "" : script.c_str();
   if (!written) return 1;
   if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
     const std::string png = options.outDir + "/progressive.png";
