@@ -51,7 +51,8 @@ int countLevels(SceneGarment& garment, const std::string& script, std::string& e
 // Drapes with the engine's fields at each of the time steps; medians over them.
 struct Drapes {
   std::vector<std::vector<SbVec3f>> positions;  // one per time step
-  std::vector<double> wall, steps;
+  std::vector<double> wall, steps, simulated;
+  std::vector<double> endLevelAt, meanMoveAfter, maxMoveAfter;  // s, m (progressive drapes)
   int rested = 0, levels = 0;
   std::string error;
 };
@@ -64,8 +65,12 @@ Drapes drapeAtEachStep(SceneGarment& garment, double timeStep, const std::vector
     if (!(out.error = run.error).empty()) break;
     out.positions.push_back(run.positions);
     out.wall.push_back(run.medianWall), out.steps.push_back(run.run.iterations);
+    out.simulated.push_back(run.run.simulatedSeconds);
     out.rested += run.run.atRest;
     out.levels = run.run.levels;
+    out.endLevelAt.push_back(run.run.endLevelSeconds);
+    out.meanMoveAfter.push_back(run.run.meanMoveAfterEndLevel);
+    out.maxMoveAfter.push_back(run.run.maxMoveAfterEndLevel);
   }
   garment.engine->timeStep = timeStep;
   return out;
@@ -112,19 +117,23 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
         << s.rate << ',';
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
       std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
-      csv << ",,," << median(full.steps) << ',' << fullWall << ',' << full.rested << ",,,," << floor << ",\"failed: "
+      csv << ",,," << median(full.steps) << ',' << fullWall << ',' << full.rested << ",,,," << floor << ",,,,,,\"failed: "
           << run.error << "\"\n";
       continue;
     }
     const auto [mean, largest] = medianDeviation(garment, run, full);
     const double wall = median(run.wall);
+    const double arrival = median(run.endLevelAt);
     std::printf("%-22s %-10s begin %4d of %4d: %6.0f steps %7.3f s wall, %d/%zu rested %5.2fx  dev mean %6.3f %% "
-                "max %6.3f %%\n",
+                "max %6.3f %%; full detail at %.2f s, moved %.1f mm mean %.1f mm max after it\n",
                 method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), levels, median(run.steps),
-                wall, run.rested, runs, fullWall / wall, mean, largest);
+                wall, run.rested, runs, fullWall / wall, mean, largest, arrival, 1e3 * median(run.meanMoveAfter),
+                1e3 * median(run.maxMoveAfter));
     std::fflush(stdout);
     csv << median(run.steps) << ',' << wall << ',' << run.rested << ',' << median(full.steps) << ',' << fullWall << ','
-        << full.rested << ',' << fullWall / wall << ',' << mean << ',' << largest << ',' << floor << ",\n";
+        << full.rested << ',' << fullWall / wall << ',' << mean << ',' << largest << ',' << floor << ','
+        << arrival << ',' << median(full.simulated) << ',' << median(run.simulated) << ',' << 1e3 * median(run.meanMoveAfter)
+        << ',' << 1e3 * median(run.maxMoveAfter) << ",\n";
   }
   return "";
 }
@@ -170,7 +179,7 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
     // drapes' median deviation from each other.
     csv << "method,time_steps,begin_level,levels,split_rate_per_s,steps,median_wall_s,rested,full_steps,"
            "full_median_wall_s,full_rested,speed_up,mean_dev_pct_height,max_dev_pct_height,floor_mean_dev_pct_height,"
-           "failure\n";
+           "full_detail_at_s,full_rest_s,rest_s,moved_after_full_detail_mean_mm,moved_after_full_detail_max_mm,failure\n";
     for (const Method& method : methods)
       if (std::string e = studyMethod(garment, script, levels, method, options, csv); !e.empty()) return e;
     return "";

@@ -43,7 +43,14 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
                               {"method", method(drape)},
                               {"body", body(drape.body)}};
     // A progressive drape (paper §4): the level it reached, of how many, and its sections.
-    if (run.levels > 0) garment["progressive"] = {{"level", run.level}, {"levels", run.levels}, {"sections", run.sections}};
+    // When the end level arrived and how far the garment moved after it (m).
+    if (run.levels > 0)
+      garment["progressive"] = {{"level", run.level},
+                                {"levels", run.levels},
+                                {"sections", run.sections},
+                                {"end_level_s", run.endLevelSeconds},
+                                {"moved_after_end_level_mean_m", run.meanMoveAfterEndLevel},
+                                {"moved_after_end_level_max_m", run.maxMoveAfterEndLevel}};
     garments.push_back(std::move(garment));
   }
   const nlohmann::json stats = {{"scene", scene},

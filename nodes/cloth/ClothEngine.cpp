@@ -152,6 +152,7 @@ struct Drape {
   std::vector<figment::Vec3> positions;
   std::vector<figment::Triangle> sections;
   int level = 0, levels = 0;
+  figment::EndLevelSettling settling;
 };
 
 Drape drapeWhole(const figment::TriangleMesh& garment, const figment::ClothParameters& parameters,
@@ -175,6 +176,7 @@ Drape drapeProgressively(const std::string& script, const figment::TriangleMesh&
   out.sections = drape.levelTriangles();
   out.level = drape.level();
   out.levels = mesh.levels();
+  out.settling = drape.endLevelSettling();
   return out;
 }
 
@@ -228,6 +230,9 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   stats.level = drape.level;
   stats.levels = drape.levels;
   stats.sections = static_cast<int>(drape.sections.size());
+  stats.endLevelSeconds = drape.settling.arrival;
+  stats.meanMoveAfterEndLevel = drape.settling.meanMove;
+  stats.maxMoveAfterEndLevel = drape.settling.maxMove;
   sections = std::move(drape.sections);
   return drape.positions;
 }

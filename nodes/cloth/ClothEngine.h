@@ -214,8 +214,11 @@ class ClothEngine : public SoEngine {
     // forces and matrix, solving, and on contacts (zeros for the other integrators).
     long implicitSteps = 0, solverIterations = 0;
     double assemblySeconds = 0.0, solveSeconds = 0.0, contactSeconds = 0.0;
-    // With a progressive script: the level reached, of how many, and its sections.
+    // With a progressive script: the level reached, of how many, and its sections;
+    // when the end level arrived (simulated s, -1 if never) and how far the garment
+    // moved from there to the end of the run (mean and largest, m).
     int level = 0, levels = 0, sections = 0;
+    double endLevelSeconds = -1.0, meanMoveAfterEndLevel = 0.0, maxMoveAfterEndLevel = 0.0;
   };
   // Reported about once per second of wall time while a simulation runs.
   struct Progress {

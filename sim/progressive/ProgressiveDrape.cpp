@@ -143,6 +143,7 @@ void ProgressiveDrape::rebuild() {
   std::vector<Vec3> x(fullIndex_.size()), v(fullIndex_.size());
   for (size_t i = 0; i < fullIndex_.size(); ++i) x[i] = x_[fullIndex_[i]], v[i] = v_[fullIndex_[i]];
   solver_->resume(x, v, time, iterations);
+  if (level_.level() == endLevel_) endLevelArrival_ = time, endLevelPlaced_ = solver_->positions();
 }
 
 int ProgressiveDrape::dueLevel() const {
@@ -206,6 +207,20 @@ std::vector<Vec3> ProgressiveDrape::fullPositions() const {
     }
   }
   return x;
+}
+
+EndLevelSettling ProgressiveDrape::endLevelSettling() const {
+  EndLevelSettling out;
+  if (endLevelArrival_ < 0.0) return out;
+  out.arrival = endLevelArrival_;
+  const std::vector<Vec3>& now = solver_->positions();
+  for (size_t i = 0; i < now.size(); ++i) {
+    const double moved = (now[i] - endLevelPlaced_[i]).norm();
+    out.meanMove += moved;
+    out.maxMove = std::max(out.maxMove, moved);
+  }
+  if (!now.empty()) out.meanMove /= static_cast<double>(now.size());
+  return out;
 }
 
 std::vector<Triangle> ProgressiveDrape::levelTriangles() const {

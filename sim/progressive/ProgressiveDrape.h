@@ -27,6 +27,15 @@
 
 namespace figment {
 
+// What happened after the last split: when the end level arrived (simulated s; -1 if
+// it never did) and how far the garment moved from its placed state at that moment to
+// where the run ended (mean and largest over the end level's vertices, m). A coarse
+// level whose rest shape the fine one keeps moves little and rests soon after.
+struct EndLevelSettling {
+  double arrival = -1.0;
+  double meanMove = 0.0, maxMove = 0.0;
+};
+
 struct ProgressiveSchedule {
   int beginLevel = 0;
   int endLevel = -1;            // -1: every split (the full garment)
@@ -56,6 +65,8 @@ class ProgressiveDrape {
   std::vector<Vec3> fullPositions() const;
   // The current level's sections, in the full garment's vertex numbering.
   std::vector<Triangle> levelTriangles() const;
+  // After the last split, so far.
+  EndLevelSettling endLevelSettling() const;
 
  private:
   // Applies splits up to `target`; returns the vertices they placed.
@@ -84,6 +95,8 @@ class ProgressiveDrape {
   MeshLevel level_;
   std::vector<int> fullIndex_;           // per solver node, its full vertex
   std::vector<Vec3> x_, v_;              // per full vertex (the active ones meaningful)
+  double endLevelArrival_ = -1.0;        // simulated s
+  std::vector<Vec3> endLevelPlaced_;     // per solver node, as the end level began
   std::unique_ptr<ClothSolver> solver_;
   ImplicitStepCosts retiredCosts_;       // of the solvers of earlier levels
 };

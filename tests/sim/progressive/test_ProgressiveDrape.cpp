@@ -145,6 +145,36 @@ TEST(ProgressiveDrape, EndsNearTheFullGarmentsDrape) {
   EXPECT_LT(meanDistance(drape.fullPositions(), full.positions()), 0.005);
 }
 
+TEST(ProgressiveDrape, RecordsWhenTheFullDetailArrivedAndHowFarItMovedAfter) {
+  // A sheet dropped onto the ball: all splits once the coarse level rests. The record
+  // holds the simulated time of the last split and how far the full sheet moved from
+  // its placed state to its rest; begun at full detail, the arrival is 0 and the move is
+  // the whole drape's, from the flat sheet.
+  const TriangleMesh sheet = sheetAboveBall();
+  const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 160});
+  const ClothParameters p = implicitDrape();
+  ProgressiveDrape progressive(pm, p, ball(), ProgressiveSchedule{0, -1, 0.0});
+  EXPECT_LT(progressive.endLevelSettling().arrival, 0.0);  // not yet
+  double coarseRest = -1.0;
+  while (!progressive.atRest() && progressive.solver().time() < p.maxTime) {
+    progressive.step();
+    if (coarseRest < 0.0 && progressive.level() == pm.levels()) coarseRest = progressive.solver().time();
+  }
+  ASSERT_TRUE(progressive.atRest());
+  const EndLevelSettling settled = progressive.endLevelSettling();
+  EXPECT_DOUBLE_EQ(settled.arrival, coarseRest);
+  const std::vector<Vec3> rest = progressive.fullPositions();
+  EXPECT_GT(settled.maxMove, 0.0);
+  EXPECT_LE(settled.meanMove, settled.maxMove);
+
+  ProgressiveDrape whole(pm, p, ball(), ProgressiveSchedule{pm.levels(), -1, 0.0});
+  ASSERT_TRUE(whole.run().atRest);
+  const EndLevelSettling fromStart = whole.endLevelSettling();
+  EXPECT_EQ(fromStart.arrival, 0.0);
+  EXPECT_NEAR(fromStart.meanMove, meanDistance(whole.fullPositions(), sheet.vertices), 1e-12);
+  EXPECT_GT(fromStart.meanMove, 0.02);  // the sheet fell 2 cm and more onto the ball
+}
+
 TEST(ProgressiveDrape, RefusesLevelsOutsideTheMesh) {
   const TriangleMesh sheet = sheetAboveBall();
   const ProgressiveMesh pm = decimate(sheet, DecimationOptions{.targetFaces = 80});
