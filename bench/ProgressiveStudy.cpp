@@ -113,7 +113,7 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
     garment.engine->endLevel = -1;
     garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * levels));
     const Drapes run = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
-    csv << method.text << ',' << runs << ',' << garment.engine->beginLevel.getValue() << ',' << levels << ','
+    csv << options.scene << ',' << method.text << ',' << runs << ',' << garment.engine->beginLevel.getValue() << ',' << levels << ','
         << s.rate << ',';
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
       std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
@@ -177,7 +177,7 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
     // Steps, walls and deviations are medians over the time steps (the method's times each
     // factor); *rested count the drapes at rest within maxTime; floor: the full garment's
     // drapes' median deviation from each other.
-    csv << "method,time_steps,begin_level,levels,split_rate_per_s,steps,median_wall_s,rested,full_steps,"
+    csv << "scene,method,time_steps,begin_level,levels,split_rate_per_s,steps,median_wall_s,rested,full_steps,"
            "full_median_wall_s,full_rested,speed_up,mean_dev_pct_height,max_dev_pct_height,floor_mean_dev_pct_height,"
            "full_detail_at_s,full_rest_s,rest_s,moved_after_full_detail_mean_mm,moved_after_full_detail_max_mm,failure\n";
     for (const Method& method : methods)

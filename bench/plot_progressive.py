@@ -46,7 +46,7 @@ def main(csv_path, png_path):
     ax.set_ylabel("wall time to rest / the full garment's")
     handles = [matplotlib.lines.Line2D([], [], color=c, marker="o", linestyle="") for c in colors[: len(methods)]]
     ax.legend(handles, methods, fontsize=8, title="o all rested, ^ some, x none", title_fontsize=7, loc="center right")
-    ax.set_title("Progressive drapes of the default dress (figment-bench progressive)")
+    ax.set_title(f"Progressive drapes of {rows[0]['scene']} (figment-bench progressive)")
     fig.tight_layout()
     fig.savefig(png_path, dpi=110)
 
