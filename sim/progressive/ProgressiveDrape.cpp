@@ -87,18 +87,8 @@ std::vector<int> ProgressiveDrape::splitTo(int target) {
 
 void ProgressiveDrape::settle(const std::vector<int>& placed) {
   if (body_) liftOutOfBody(placed);
-  // Lifting stretches the sections around, relaxing may pull a vertex back in: in turns.
-  std::vector<int> active;
-  for (int i = 0; i < static_cast<int>(x_.size()); ++i)
-    if (level_.vertexActive(i)) active.push_back(i);
-  for (int round = 0; round < kSettleRounds; ++round) {
-    relaxStrain();
-    if (body_) liftOutOfBody(active);
-  }
-}
-
-void ProgressiveDrape::relaxStrain() {
   std::vector<std::pair<int, int>> edges;  // of the level, each once
+  std::vector<int> active;
   for (int f = 0; f < static_cast<int>(mesh_.full.triangles.size()); ++f) {
     if (!level_.faceActive(f)) continue;
     const Triangle& t = level_.corners(f);
@@ -106,6 +96,19 @@ void ProgressiveDrape::relaxStrain() {
   }
   std::sort(edges.begin(), edges.end());
   edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (int i = 0; i < static_cast<int>(x_.size()); ++i)
+    if (level_.vertexActive(i)) active.push_back(i);
+  // Lifting stretches the sections around, relaxing may pull a vertex back in: in turns.
+  // Every vertex is lifted after the first round; after later ones, those relaxing moved
+  // (the others stand where the last lift left them).
+  for (int round = 0; round < kSettleRounds; ++round) {
+    const std::vector<int> moved = relaxStrain(edges);
+    if (body_) liftOutOfBody(round == 0 ? active : moved);
+  }
+}
+
+std::vector<int> ProgressiveDrape::relaxStrain(const std::vector<std::pair<int, int>>& edges) {
+  std::vector<char> changed(x_.size(), 0);
   for (int sweep = 0; sweep < kSweepsPerRound; ++sweep) {
     for (auto [a, b] : edges) {
       const Vec3 d = x_[b] - x_[a];
@@ -115,8 +118,13 @@ void ProgressiveDrape::relaxStrain() {
       const Vec3 half = 0.5 * (length - target) / length * d;
       x_[a] += half;
       x_[b] -= half;
+      changed[a] = changed[b] = 1;
     }
   }
+  std::vector<int> moved;
+  for (int i = 0; i < static_cast<int>(changed.size()); ++i)
+    if (changed[i]) moved.push_back(i);
+  return moved;
 }
 
 void ProgressiveDrape::liftOutOfBody(const std::vector<int>& vertices) {

@@ -24,6 +24,8 @@
 #include "sim/progressive/ProgressiveMesh.h"
 
 #include <memory>
+#include <utility>
+#include <vector>
 
 namespace figment {
 
@@ -81,7 +83,8 @@ class ProgressiveDrape {
   // pulled or pushed back to within kSettledStrain of their rest lengths (Gauss-Seidel
   // sweeps, as strain limiting does), in turns.
   void settle(const std::vector<int>& placed);
-  void relaxStrain();
+  // Sweeps over `edges`; returns the vertices it moved.
+  std::vector<int> relaxStrain(const std::vector<std::pair<int, int>>& edges);
   void liftOutOfBody(const std::vector<int>& vertices);
   void rebuild();
   int dueLevel() const;
