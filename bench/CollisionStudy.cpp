@@ -1,5 +1,6 @@
 #include "CollisionStudy.h"
 
+#include "CsvFile.h"
 #include "Statistics.h"
 #include "io/AtomicFile.h"
 #include "io/MeshImport.h"
@@ -267,11 +268,8 @@ int collisionStudy(const CollisionStudyOptions& options) {
               median(capsuleGap), median(radialGap), options.harmonics, median(capsuleNs), median(radialNs),
               median(exactNs), median(exactNs) / median(capsuleNs), median(radialNs) / median(capsuleNs));
   std::cout << csvPath << "\n";
-  if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
-    const std::string png = options.outDir + "/collision.png";
-    const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + csvPath + "' '" + png + "'";
-    if (std::system(command.c_str()) == 0) std::cout << png << "\n";
-  }
+  std::cout.flush();
+  chartCsv(options.plotScript, csvPath, options.outDir + "/collision.png");
   return 0;
 }
 

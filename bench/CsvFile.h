@@ -1,5 +1,5 @@
 #pragma once
-// How every study writes its CSV: complete or not at all.
+// How every study writes its CSV (complete or not at all) and charts it.
 
 #include <functional>
 #include <ostream>
@@ -12,5 +12,10 @@ namespace figment::bench {
 // and returns true; otherwise prints "figment-bench: <error>" to stderr, leaves no file
 // and returns false.
 bool writeCsv(const std::string& path, const std::function<std::string(std::ostream& csv)>& fill);
+
+// Charts `csvPath` into `pngPath` with the study's matplotlib script, when there is one
+// ("" or missing: nothing happens): prints the PNG's path, or on stderr that there is no
+// chart (python3 or matplotlib missing).
+void chartCsv(const std::string& plotScript, const std::string& csvPath, const std::string& pngPath);
 
 }  // namespace figment::bench

@@ -150,11 +150,8 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
     return 2;
   }
   SceneGarment garment;
+  if (!garment.loadOrReport(options.scene)) return 1;
   std::string error;
-  if (!garment.load(options.scene, error)) {
-    std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
-    return 1;
-  }
   // The scene's script, or one made now (to coarseShare of the sections).
   std::string script = garment.engine->progressiveScript.getValue().getString();
   std::optional<TemporaryScript> made;
@@ -188,13 +185,7 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
   // it would complain of a missing file when the scene is let go.
   garment.engine->progressiveScript = made ? "" : script.c_str();
   if (!written) return 1;
-  if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
-    const std::string png = options.outDir + "/progressive.png";
-    const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + options.outDir +
-                                "/progressive.csv' '" + png + "'";
-    if (std::system(command.c_str()) == 0) std::printf("%s\n", png.c_str());
-    else std::fprintf(stderr, "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n");
-  }
+  chartCsv(options.plotScript, options.outDir + "/progressive.csv", options.outDir + "/progressive.png");
   return 0;
 }
 

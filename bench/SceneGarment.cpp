@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -109,6 +110,13 @@ RepeatedDrape SceneGarment::drapeRepeatedly(int repeat) {
   }
   if (out.error.empty()) out.medianWall = median(wall);
   return out;
+}
+
+bool SceneGarment::loadOrReport(const std::string& scene) {
+  std::string error;
+  if (load(scene, error)) return true;
+  std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
+  return false;
 }
 
 double SceneGarment::height() const {

@@ -33,6 +33,8 @@ struct SceneGarment {
 
   // Reads `scene`; on failure returns false and sets `error` to one line.
   bool load(const std::string& scene, std::string& error);
+  // The same, saying "figment-bench: <error>" on stderr when it fails.
+  bool loadOrReport(const std::string& scene);
   void release();
   // Drapes `mesh` instead of the scene's garment from now on: the engine's restPoints and
   // coordIndex are disconnected from the scene and set to it (vertices as floats).

@@ -109,11 +109,8 @@ int runSizeStudy(const SizeStudyOptions& options) {
     return 2;
   }
   SceneGarment garment;
+  if (!garment.loadOrReport(options.scene)) return 1;
   std::string error;
-  if (!garment.load(options.scene, error)) {
-    std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
-    return 1;
-  }
   if (error = configure(*garment.engine, method); !error.empty()) {
     std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
     return 1;
@@ -132,13 +129,7 @@ int runSizeStudy(const SizeStudyOptions& options) {
     return "";
   });
   if (!written) return 1;
-  if (!options.plotScript.empty() && std::filesystem::exists(options.plotScript)) {
-    const std::string png = options.outDir + "/sizes.png";
-    const std::string command =
-        "/usr/bin/python3 '" + options.plotScript + "' '" + options.outDir + "/sizes.csv' '" + png + "'";
-    if (std::system(command.c_str()) == 0) std::printf("%s\n", png.c_str());
-    else std::fprintf(stderr, "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n");
-  }
+  chartCsv(options.plotScript, options.outDir + "/sizes.csv", options.outDir + "/sizes.png");
   return 0;
 }
 

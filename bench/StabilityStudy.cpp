@@ -137,22 +137,15 @@ void sweep(SceneGarment& garment, const StabilityStudyOptions& options, const st
 }
 
 void plot(const StabilityStudyOptions& options, const std::string& csvPath) {
-  if (options.plotScript.empty() || !std::filesystem::exists(options.plotScript)) return;
-  const std::string png = options.outDir + "/stability.png";
-  const std::string command = "/usr/bin/python3 '" + options.plotScript + "' '" + csvPath + "' '" + png + "'";
-  if (std::system(command.c_str()) == 0) std::cout << png << "\n";
-  else std::cerr << "figment-bench: no chart (needs /usr/bin/python3 with matplotlib)\n";
+  std::cout.flush();
+  chartCsv(options.plotScript, csvPath, options.outDir + "/stability.png");
 }
 
 }  // namespace
 
 int runStabilityStudy(const StabilityStudyOptions& options) {
   SceneGarment garment;
-  std::string error;
-  if (!garment.load(options.scene, error)) {
-    std::cerr << "figment-bench: " << error << "\n";
-    return 1;
-  }
+  if (!garment.loadOrReport(options.scene)) return 1;
   SoDebugError::setHandlerCallback(silence, nullptr);
   ClothEngine& engine = *garment.engine;
   if (options.quick) engine.maxTime.setValue(0.3);
