@@ -1,5 +1,6 @@
 #include "DrapeStudy.h"
 
+#include "BodyChoice.h"
 #include "CsvFile.h"
 #include "Statistics.h"
 #include "nodes/cloth/ClothEngine.h"
@@ -22,33 +23,6 @@
 namespace figment::bench {
 
 namespace {
-
-// The body the engines use for `method`, or null (with `error`) when the scene has no
-// Mannequin to take it from.
-SoNode* bodyFor(const std::string& method, SoNode* root, std::string& error) {
-  if (method == "scene") return nullptr;
-  const SoPathList found = findAll(root, Mannequin::getClassTypeId());
-  if (found.getLength() != 1) {
-    error = "--body " + method + " needs a scene with one Mannequin";
-    return nullptr;
-  }
-  auto* mannequin = static_cast<Mannequin*>(found[0]->getTail());
-  if (method == "exact") return mannequin->body.getValue();
-  // The same mannequin (body, pose, size) with other volumes.
-  auto* other = new Mannequin;
-  other->copyFieldValues(mannequin);
-  auto* file = new SoFile;
-  file->ref();
-  file->name = std::filesystem::absolute(method).string().c_str();
-  if (file->getChildren()->getLength() == 0) {
-    error = "--body " + method + ": no volumes read from it";
-    file->unref();
-    return nullptr;
-  }
-  other->addChild(file);
-  file->unref();
-  return other;
-}
 
 // One CSV row and one line on stdout for a drape.
 void report(const std::string& method, int run, const viewer::EngineDrape& drape, std::ostream& csv) {

@@ -63,4 +63,14 @@ std::string configure(ClothEngine& engine, const Method& m) {
   return "";
 }
 
+Schedule parseSchedule(const std::string& text) {
+  Schedule s{text};
+  std::stringstream in(text);
+  char colon = 0;
+  if (!(in >> s.beginShare >> colon >> s.rate) || colon != ':' || !(s.beginShare >= 0.0 && s.beginShare <= 1.0) ||
+      !(s.rate >= 0.0))
+    throw std::invalid_argument("schedule \"" + text + "\": expected BEGIN_SHARE:RATE, share in [0, 1], rate >= 0");
+  return s;
+}
+
 }  // namespace figment::bench

@@ -21,4 +21,15 @@ Method parseMethod(const std::string& text);
 // Sets the engine's method fields; "" or what is wrong.
 std::string configure(ClothEngine& engine, const Method& m);
 
+// A progressive schedule as the studies name it, "BEGIN_SHARE:RATE": the begin level as
+// a share of the script's levels, splits per simulated second (0: all at once when the
+// begin level rests).
+struct Schedule {
+  std::string text;
+  double beginShare = 0.0, rate = 0.0;
+};
+
+// Throws std::invalid_argument naming the text.
+Schedule parseSchedule(const std::string& text);
+
 }  // namespace figment::bench

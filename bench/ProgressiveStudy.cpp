@@ -20,21 +20,6 @@ namespace figment::bench {
 
 namespace {
 
-struct Schedule {
-  std::string text;
-  double beginShare = 0.0, rate = 0.0;
-};
-
-Schedule parseSchedule(const std::string& text) {
-  Schedule s{text};
-  std::stringstream in(text);
-  char colon = 0;
-  if (!(in >> s.beginShare >> colon >> s.rate) || colon != ':' || !(s.beginShare >= 0.0 && s.beginShare <= 1.0) ||
-      !(s.rate >= 0.0))
-    throw std::invalid_argument("schedule \"" + text + "\": expected BEGIN_SHARE:RATE, share in [0, 1], rate >= 0");
-  return s;
-}
-
 // The script's number of levels: a drape of one step that ends at the coarsest level.
 int countLevels(SceneGarment& garment, const std::string& script, std::string& error) {
   ClothEngine& engine = *garment.engine;

@@ -6,6 +6,7 @@
 #include "RenderStudy.h"
 #include "SizeStudy.h"
 #include "StabilityStudy.h"
+#include "TradeoffStudy.h"
 
 #include <CLI/CLI.hpp>
 
@@ -143,6 +144,34 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   return command;
 }
 
+CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
+  CLI::App* command = app.add_subcommand(
+      "tradeoff", "every method choice against a converged reference: wall to rest against deviation, Pareto front");
+  command->add_option("--scene", tradeoff.scenes, "scenes whose first garment is draped (repeat)")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  command->add_option("--method", tradeoff.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
+      ->capture_default_str();
+  command->add_option("--body", tradeoff.bodies, "volumes, capsules or triangles (repeat)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"volumes", "capsules", "triangles"}));
+  command->add_option("--schedule", tradeoff.schedules, "off or BEGIN_SHARE:RATE, progressive (repeat)")
+      ->capture_default_str();
+  command->add_option("--resolution", tradeoff.resolutions, "the garment's sections times each (repeat)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.05, 20.0));
+  command->add_option("--reference", tradeoff.reference, "the converged drape, on the body's triangles")
+      ->capture_default_str();
+  command->add_flag("!--no-reference-check", tradeoff.checkReference, "skip the reference's half-step drape");
+  command->add_option("--repeat", tradeoff.repeat, "drapes per configuration (median wall)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_flag("--quick", tradeoff.quick, "the dress, 4 methods x 3 bodies x 2 schedules x 2 resolutions, once (under 5 minutes)");
+  command->add_option("--out", tradeoff.outDir, "folder for tradeoff.csv, tradeoff-reference.csv, tradeoff.png")
+      ->capture_default_str();
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -166,6 +195,9 @@ int main(int argc, char** argv) {
   SizeStudyOptions sizes;
   sizes.plotScript = FIGMENT_PLOT_SIZES;
   CLI::App* sizeCommand = addSizeCommand(app, sizes);
+  TradeoffStudyOptions tradeoff;
+  tradeoff.plotScript = FIGMENT_PLOT_TRADEOFF;
+  CLI::App* tradeoffCommand = addTradeoffCommand(app, tradeoff);
 
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return runDrapeStudy(drape);
@@ -175,5 +207,6 @@ int main(int argc, char** argv) {
   if (methodCommand->parsed()) return runMethodStudy(methods);
   if (progressiveCommand->parsed()) return runProgressiveStudy(progressive);
   if (sizeCommand->parsed()) return runSizeStudy(sizes);
+  if (tradeoffCommand->parsed()) return runTradeoffStudy(tradeoff.quick ? quickTradeoff(tradeoff) : tradeoff);
   return 1;
 }
