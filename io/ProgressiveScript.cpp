@@ -1,6 +1,7 @@
 #include "io/ProgressiveScript.h"
 
 #include "io/AtomicFile.h"
+#include "io/Fnv1a.h"
 
 #include <cinttypes>
 #include <cstdio>
@@ -14,21 +15,6 @@ namespace figment {
 namespace {
 constexpr const char* kMagic = "figment-progressive-mesh";
 constexpr int kVersion = 1;
-
-// FNV-1a, 64 bits.
-class Fnv1a {
- public:
-  template <class T>
-  void add(const T& value) {
-    unsigned char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    for (unsigned char b : bytes) hash_ = (hash_ ^ b) * 1099511628211ull;
-  }
-  std::uint64_t value() const { return hash_; }
-
- private:
-  std::uint64_t hash_ = 14695981039346656037ull;
-};
 
 std::string hex(std::uint64_t value) {
   char text[17];

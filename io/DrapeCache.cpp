@@ -1,0 +1,179 @@
+#include "io/DrapeCache.h"
+
+#include "io/AtomicFile.h"
+#include "io/Fnv1a.h"
+
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+namespace figment {
+
+namespace {
+constexpr std::array<char, 16> kMagic = {'f', 'i', 'g', 'm', 'e', 'n', 't', '-', 'd', 'r', 'a', 'p', 'e', ' ', '1', '\n'};
+// Three digests of a key, each FNV-1a from its own basis.
+constexpr std::uint64_t kBases[3] = {14695981039346656037ull, 0x84222325cbf29ce4ull, 0x9e3779b97f4a7c15ull};
+
+std::uint64_t digest(const std::string& text, int which) {
+  Fnv1a hash(kBases[which]);
+  hash.addText(text);
+  return hash.value();
+}
+
+std::uint64_t checksum(const std::vector<unsigned char>& bytes) {
+  Fnv1a hash;
+  hash.addBytes(bytes.data(), bytes.size());
+  return hash.value();
+}
+
+template <class T>
+void put(std::vector<unsigned char>& out, const T& value) {
+  const std::size_t at = out.size();
+  out.resize(at + sizeof(T));
+  std::memcpy(out.data() + at, &value, sizeof(T));
+}
+
+template <class T>
+void putArray(std::vector<unsigned char>& out, const std::vector<T>& values) {
+  put(out, static_cast<std::uint64_t>(values.size()));
+  const std::size_t at = out.size(), size = values.size() * sizeof(T);
+  out.resize(at + size);
+  if (size > 0) std::memcpy(out.data() + at, values.data(), size);
+}
+
+// Reads what put/putArray wrote; false when the bytes run out.
+class Reader {
+ public:
+  explicit Reader(const std::vector<unsigned char>& bytes) : bytes_(bytes) {}
+  template <class T>
+  bool get(T& value) {
+    if (bytes_.size() - at_ < sizeof(T)) return false;
+    std::memcpy(&value, bytes_.data() + at_, sizeof(T));
+    at_ += sizeof(T);
+    return true;
+  }
+  template <class T>
+  bool getArray(std::vector<T>& values) {
+    std::uint64_t count = 0;
+    if (!get(count) || count > (bytes_.size() - at_) / sizeof(T)) return false;
+    values.resize(count);
+    std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
+    at_ += count * sizeof(T);
+    return true;
+  }
+  bool done() const { return at_ == bytes_.size(); }
+
+ private:
+  const std::vector<unsigned char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+std::vector<unsigned char> payloadOf(const CachedDrape& drape) {
+  std::vector<unsigned char> out;
+  putArray(out, drape.positions);
+  putArray(out, drape.sectionIndices);
+  putArray(out, drape.stats);
+  return out;
+}
+}  // namespace
+
+DrapeCache::DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes)
+    : folder_(std::move(folder)), maxBytes_(maxBytes) {}
+
+std::filesystem::path DrapeCache::userFolder() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "figment";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".cache" / "figment";
+  return {};
+}
+
+std::filesystem::path DrapeCache::entryPath(const std::string& key) const {
+  char name[48];
+  std::snprintf(name, sizeof name, "%016" PRIx64 "%016" PRIx64 ".drape", digest(key, 0), digest(key, 1));
+  return folder_ / name;
+}
+
+std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string& problem) const {
+  problem.clear();
+  const std::filesystem::path path = entryPath(key);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  Reader header(bytes);
+  std::array<char, 16> magic{};
+  std::uint64_t keyDigest = 0, size = 0, sum = 0;
+  CachedDrape drape;
+  bool sound = header.get(magic) && magic == kMagic && header.get(keyDigest) &&
+               keyDigest == digest(key, 2) && header.get(size) && header.get(sum);
+  const std::size_t headerSize = kMagic.size() + 3 * sizeof(std::uint64_t);
+  sound = sound && bytes.size() == headerSize + size;
+  if (sound) {
+    const std::vector<unsigned char> payload(bytes.begin() + headerSize, bytes.end());
+    Reader body(payload);
+    sound = checksum(payload) == sum && body.getArray(drape.positions) && body.getArray(drape.sectionIndices) &&
+            body.getArray(drape.stats) && body.done();
+  }
+  std::error_code ec;
+  if (!sound) {
+    std::filesystem::remove(path, ec);
+    problem = path.string() + ": a damaged entry, removed; draped again";
+    return std::nullopt;
+  }
+  std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);  // recently used
+  return drape;
+}
+
+std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) const {
+  std::error_code ec;
+  std::filesystem::create_directories(folder_, ec);
+  if (ec) return folder_.string() + ": cannot make the cache folder: " + ec.message();
+  const std::vector<unsigned char> payload = payloadOf(drape);
+  std::vector<unsigned char> bytes;
+  put(bytes, kMagic);
+  put(bytes, digest(key, 2));
+  put(bytes, static_cast<std::uint64_t>(payload.size()));
+  put(bytes, checksum(payload));
+  const std::size_t headerSize = bytes.size();
+  bytes.resize(headerSize + payload.size());
+  if (!payload.empty()) std::memcpy(bytes.data() + headerSize, payload.data(), payload.size());
+  const std::filesystem::path path = entryPath(key);
+  const std::string error = writeAtomically(path.string(), [&](const std::string& temporary) -> std::string {
+    std::ofstream out(temporary, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    return out ? "" : "cannot write";
+  });
+  if (!error.empty()) return path.string() + ": " + error;
+  trim();
+  return "";
+}
+
+void DrapeCache::trim() const {
+  struct Entry {
+    std::filesystem::path path;
+    std::filesystem::file_time_type used;
+    std::uintmax_t size;
+  };
+  std::vector<Entry> entries;
+  std::uintmax_t total = 0;
+  std::error_code ec;
+  for (const auto& file : std::filesystem::directory_iterator(folder_, ec)) {
+    if (file.path().extension() != ".drape") continue;
+    const std::uintmax_t size = file.file_size(ec);
+    if (ec) continue;
+    entries.push_back({file.path(), file.last_write_time(ec), size});
+    total += size;
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  for (const Entry& e : entries) {
+    if (total <= maxBytes_) break;
+    if (std::filesystem::remove(e.path, ec)) total -= e.size;
+  }
+}
+
+}  // namespace figment

@@ -1,0 +1,48 @@
+#pragma once
+// Finished drapes kept on disk, so rendering another view of a scene, or running it
+// again, does not simulate again. An entry is keyed by a text that holds everything
+// that shaped the drape (nodes/cloth/DrapeKey.h writes it: every engine input, the
+// body, the files they read, the program's own build); its file is named by two 64-bit
+// digests of the key and carries a third, and a checksum of its contents, so a damaged
+// or foreign entry is found out and dropped, never used. Entries are written through a
+// temporary name; past `maxBytes` the least recently used go first.
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace figment {
+
+struct CachedDrape {
+  std::vector<std::array<float, 3>> positions;  // the engine's output, as it gave it
+  std::vector<std::int32_t> sectionIndices;     // its levelCoordIndex
+  std::vector<unsigned char> stats;             // the run's statistics, as the engine packs them
+};
+
+class DrapeCache {
+ public:
+  DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes);
+
+  // $XDG_CACHE_HOME/figment, else $HOME/.cache/figment; empty when neither is set.
+  static std::filesystem::path userFolder();
+
+  const std::filesystem::path& folder() const { return folder_; }
+  // The entry for `key`, if there is a sound one. A damaged one is removed and
+  // `problem` says so (naming the file); otherwise `problem` is left empty.
+  std::optional<CachedDrape> find(const std::string& key, std::string& problem) const;
+  // Keeps `drape` under `key`; "" or the error, naming the file or folder.
+  std::string store(const std::string& key, const CachedDrape& drape) const;
+  // The file an entry for `key` lives in.
+  std::filesystem::path entryPath(const std::string& key) const;
+
+ private:
+  void trim() const;
+
+  std::filesystem::path folder_;
+  std::uintmax_t maxBytes_;
+};
+
+}  // namespace figment

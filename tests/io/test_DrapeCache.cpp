@@ -1,0 +1,102 @@
+// The drape cache on disk: what goes in comes back bit for bit under the same key and
+// never under another; a damaged entry is found out, removed and reported; past its
+// bound the least recently used entries go; a folder that cannot be made is an error
+// naming it.
+#include "io/DrapeCache.h"
+#include "support/IoTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <thread>
+
+using namespace figment;
+using namespace figment::test;
+
+namespace {
+CachedDrape someDrape(int n) {
+  CachedDrape d;
+  for (int i = 0; i < n; ++i) d.positions.push_back({0.1f * i, std::nextafter(1.0f, 2.0f) + i, -3.0e-7f * i});
+  for (int i = 0; i + 2 < n; ++i) d.sectionIndices.insert(d.sectionIndices.end(), {i, i + 1, i + 2, -1});
+  d.stats = {1, 2, 3, 250, 0};
+  return d;
+}
+}  // namespace
+
+TEST(DrapeCache, GivesBackWhatWasStoredBitForBitAndOnlyUnderItsKey) {
+  const TempDir dir;
+  const DrapeCache cache(dir.path() / "figment", 1 << 20);
+  const CachedDrape drape = someDrape(50);
+  ASSERT_EQ(cache.store("scene A, every field", drape), "");
+  std::string problem;
+  const std::optional<CachedDrape> back = cache.find("scene A, every field", problem);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(problem, "");
+  EXPECT_EQ(std::memcmp(back->positions.data(), drape.positions.data(), drape.positions.size() * 12), 0);
+  EXPECT_EQ(back->positions.size(), drape.positions.size());
+  EXPECT_EQ(back->sectionIndices, drape.sectionIndices);
+  EXPECT_EQ(back->stats, drape.stats);
+  EXPECT_FALSE(cache.find("scene A, every field but one", problem));
+  EXPECT_EQ(problem, "");
+}
+
+TEST(DrapeCache, ADamagedEntryIsRemovedAndReportedNeverUsed) {
+  const TempDir dir;
+  const DrapeCache cache(dir.path(), 1 << 20);
+  for (const std::string damage : {"flip", "truncate", "append"}) {
+    ASSERT_EQ(cache.store("key", someDrape(40)), "");
+    const std::filesystem::path path = cache.entryPath("key");
+    std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+    if (damage == "flip") {
+      file.seekp(200);
+      file.put('\x7f');
+      file.close();
+    } else if (damage == "truncate") {
+      file.close();
+      std::filesystem::resize_file(path, std::filesystem::file_size(path) - 5);
+    } else {
+      file.seekp(0, std::ios::end);
+      file.put('x');
+      file.close();
+    }
+    std::string problem;
+    EXPECT_FALSE(cache.find("key", problem)) << damage;
+    EXPECT_NE(problem.find(path.string()), std::string::npos) << damage << ": " << problem;
+    EXPECT_FALSE(std::filesystem::exists(path)) << damage;
+  }
+}
+
+TEST(DrapeCache, PastItsBoundTheLeastRecentlyUsedGoFirst) {
+  const TempDir dir;
+  const CachedDrape drape = someDrape(200);  // about 5 KB an entry
+  const DrapeCache cache(dir.path(), 12000);
+  ASSERT_EQ(cache.store("first", drape), "");
+  ASSERT_EQ(cache.store("second", drape), "");
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  std::string problem;
+  ASSERT_TRUE(cache.find("first", problem));  // used: now the more recent of the two
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_EQ(cache.store("third", drape), "");
+  EXPECT_TRUE(cache.find("first", problem));
+  EXPECT_FALSE(cache.find("second", problem));
+  EXPECT_TRUE(cache.find("third", problem));
+}
+
+TEST(DrapeCache, AFolderThatCannotBeMadeIsAnErrorNamingIt) {
+  const TempDir dir;
+  const std::string file = dir.file("not-a-folder", "x");
+  const DrapeCache cache(std::filesystem::path(file) / "figment", 1 << 20);
+  const std::string error = cache.store("key", someDrape(5));
+  EXPECT_NE(error.find(file), std::string::npos) << error;
+}
+
+TEST(DrapeCache, LivesInTheUsersCacheFolder) {
+  {
+    const ScopedEnvironment xdg("XDG_CACHE_HOME", "/somewhere/cache");
+    EXPECT_EQ(DrapeCache::userFolder(), std::filesystem::path("/somewhere/cache/figment"));
+  }
+  const ScopedEnvironment xdg("XDG_CACHE_HOME", std::nullopt);
+  const ScopedEnvironment home("HOME", "/home/someone");
+  EXPECT_EQ(DrapeCache::userFolder(), std::filesystem::path("/home/someone/.cache/figment"));
+}
