@@ -40,6 +40,7 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
                               {"simulated_s", run.simulatedSeconds},
                               {"wall_s", run.wallSeconds},
                               {"at_rest", run.atRest},
+                              {"cached", run.fromCache},
                               {"method", method(drape)},
                               {"body", body(drape.body)}};
     // A progressive drape (paper §4): the level it reached, of how many, and its sections.

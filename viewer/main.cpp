@@ -2,11 +2,12 @@
 //
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]
 //                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
-//                [--show-volumes]
+//                [--show-volumes] [--stop-at N] [--no-cache]
 //
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
 // exit status (2: bad command line, 1: anything else); no image is written then.
 
+#include "io/DrapeCache.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/SceneSearch.h"
@@ -40,8 +41,11 @@ struct Options {
   bool keepStencilFields = false;
   bool depthBufferOnly = false;
   bool showVolumes = false;
+  bool noCache = false;
   int stopAt = 0;  // steps; 0: no bound
 };
+
+constexpr std::uintmax_t kCacheBytes = 512u << 20;  // the drape cache's bound
 
 int fail(const std::string& where, const std::string& message, int status = 1) {
   std::cerr << "figment-view: " << where << ": " << message << "\n";
@@ -76,6 +80,12 @@ void stopAt(SoNode* scene, int steps) {
     engine->maxTime = std::min(engine->maxTime.getValue(), steps * engine->timeStep.getValue());
 }
 
+// Finished drapes are kept in the user's cache folder (none without one).
+void useDrapeCache(bool use) {
+  const std::filesystem::path folder = figment::DrapeCache::userFolder();
+  if (use && !folder.empty()) ClothEngine::setDrapeCache(std::make_shared<figment::DrapeCache>(folder, kCacheBytes));
+}
+
 // Drapes every engine; its errors come before any image. "" or the first error.
 std::string drapeAll(figment::viewer::SceneSession& session) {
   ClothEngine::setProgressCallback(reportProgress);
@@ -83,6 +93,9 @@ std::string drapeAll(figment::viewer::SceneSession& session) {
     if (!drape.error.empty()) return drape.error;
     reportFinished(drape);
   }
+  for (ClothEngine* engine : session.engines())  // the cache's trouble is said, not fatal
+    if (!engine->lastCacheMessage().empty())
+      std::fprintf(stderr, "figment-view: %s: %s\n", engine->label().c_str(), engine->lastCacheMessage().c_str());
   return "";
 }
 
@@ -94,6 +107,7 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
   if (options.showVolumes) showVolumes(session.scene());
   if (options.stopAt > 0) stopAt(session.scene(), options.stopAt);
+  useDrapeCache(!options.noCache);
   std::string error = drapeAll(session);
   if (!error.empty()) return fail(options.scene, error);
   SoSeparator* root = session.stage(size, view);
@@ -139,6 +153,9 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_flag("--show-volumes", options.showVolumes,
                "Draw every Mannequin's collision volumes as wireframes over the body");
+  app.add_flag("--no-cache", options.noCache,
+               "Drape even where the drape cache ($XDG_CACHE_HOME/figment, else ~/.cache/figment) holds this "
+               "drape, and keep nothing there");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

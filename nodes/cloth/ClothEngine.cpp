@@ -2,7 +2,9 @@
 
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "nodes/cloth/FieldValues.h"
+#include "io/DrapeCache.h"
 #include "io/ProgressiveScript.h"
+#include "nodes/cloth/DrapeKey.h"
 #include "nodes/SceneFiles.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/progressive/ProgressiveDrape.h"
@@ -17,6 +19,9 @@
 #include <Inventor/SoFullPath.h>
 
 #include <chrono>
+#include <cstring>
+#include <optional>
+#include <type_traits>
 #include <set>
 #include <utility>
 
@@ -25,6 +30,7 @@ SO_ENGINE_SOURCE(ClothEngine);
 struct ClothEngine::Impl {
   std::vector<std::string> sceneDirectories;  // where progressiveScript is looked up
   std::string error;
+  std::string cacheMessage;
   RunStats stats;
   int evaluations = 0;
 
@@ -32,6 +38,9 @@ struct ClothEngine::Impl {
   // simulated last. Throws naming the field and value, or the file, that cannot be used.
   std::vector<figment::Vec3> simulate(const ClothEngine& engine, std::vector<figment::Triangle>& sections);
   void recordRun(const figment::DrapeResult& run, int triangles);
+  // The drape cache (setDrapeCache): read an entry into the output, keep a new one.
+  bool readCached(const std::string& key, int numRest, std::vector<SbVec3f>& result, std::vector<int32_t>& indices);
+  void keep(const std::string& key, const std::vector<SbVec3f>& result, const std::vector<int32_t>& indices);
 };
 
 namespace {
@@ -39,6 +48,20 @@ namespace {
 ClothEngine::ProgressCallback& progressCallback() {
   static ClothEngine::ProgressCallback callback;
   return callback;
+}
+
+std::shared_ptr<const figment::DrapeCache>& drapeCache() {
+  static std::shared_ptr<const figment::DrapeCache> cache;
+  return cache;
+}
+
+// RunStats travel through the cache as their bytes.
+static_assert(std::is_trivially_copyable_v<ClothEngine::RunStats>);
+
+std::vector<unsigned char> packStats(const ClothEngine::RunStats& stats) {
+  std::vector<unsigned char> bytes(sizeof stats);
+  std::memcpy(bytes.data(), &stats, sizeof stats);
+  return bytes;
 }
 
 }  // namespace
@@ -129,6 +152,10 @@ SbBool ClothEngine::readInstance(SoInput* in, unsigned short readFlags) {
 }
 
 void ClothEngine::setProgressCallback(ProgressCallback callback) { progressCallback() = std::move(callback); }
+
+void ClothEngine::setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache) { drapeCache() = std::move(cache); }
+
+const std::string& ClothEngine::lastCacheMessage() const { return impl_->cacheMessage; }
 
 const std::string& ClothEngine::lastError() const { return impl_->error; }
 
@@ -237,35 +264,70 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   return drape.positions;
 }
 
+// The drape kept under `key`, when it fits this engine's rest points: the output and
+// the statistics set from it.
+bool ClothEngine::Impl::readCached(const std::string& key, int numRest, std::vector<SbVec3f>& result,
+                                   std::vector<int32_t>& indices) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<figment::CachedDrape> cached = drapeCache()->find(key, cacheMessage);
+  if (!cached || static_cast<int>(cached->positions.size()) != numRest || cached->stats.size() != sizeof(RunStats))
+    return false;
+  result.clear();
+  for (const auto& p : cached->positions) result.emplace_back(p[0], p[1], p[2]);
+  indices = cached->sectionIndices;
+  std::memcpy(&stats, cached->stats.data(), sizeof stats);
+  stats.fromCache = true;
+  stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+
+void ClothEngine::Impl::keep(const std::string& key, const std::vector<SbVec3f>& result,
+                             const std::vector<int32_t>& indices) {
+  figment::CachedDrape drape;
+  for (const SbVec3f& p : result) drape.positions.push_back({p[0], p[1], p[2]});
+  drape.sectionIndices = indices;
+  drape.stats = packStats(stats);
+  const std::string problem = drapeCache()->store(key, drape);
+  if (!problem.empty()) cacheMessage = "drape cache: " + problem;
+}
+
 void ClothEngine::evaluate() {
   ++impl_->evaluations;
   impl_->error.clear();
+  impl_->cacheMessage.clear();
   impl_->stats = {};
   // Until a simulation succeeds the output is the rest shape and the given faces.
   const int numRest = restPoints.getNum();
   std::vector<SbVec3f> result(restPoints.getValues(0), restPoints.getValues(0) + numRest);
-  std::vector<figment::Triangle> sections;
-  try {
-    const std::vector<figment::Vec3> x = impl_->simulate(*this, sections);
-    for (size_t i = 0; i < x.size() && i < result.size(); ++i)
-      result[i].setValue(float(x[i].x()), float(x[i].y()), float(x[i].z()));
-  } catch (const std::exception& e) {
-    impl_->error = label() + ": " + e.what();
-  } catch (...) {
-    impl_->error = label() + ": unknown error while simulating";
+  std::vector<int32_t> indices;
+  std::string key;
+  if (drapeCache()) {
+    const std::string script = progressiveScript.getValue().getString();
+    key = figment::drapeKey(*this, script.empty() ? "" : figment::resolveSceneFile(script, impl_->sceneDirectories));
   }
-  if (!impl_->error.empty()) {
-    result.assign(restPoints.getValues(0), restPoints.getValues(0) + numRest);
-    sections.clear();
-    SoDebugError::post("ClothEngine::evaluate", "%s", impl_->error.c_str());
+  if (key.empty() || !impl_->readCached(key, numRest, result, indices)) {
+    std::vector<figment::Triangle> sections;
+    try {
+      const std::vector<figment::Vec3> x = impl_->simulate(*this, sections);
+      for (size_t i = 0; i < x.size() && i < result.size(); ++i)
+        result[i].setValue(float(x[i].x()), float(x[i].y()), float(x[i].z()));
+    } catch (const std::exception& e) {
+      impl_->error = label() + ": " + e.what();
+    } catch (...) {
+      impl_->error = label() + ": unknown error while simulating";
+    }
+    if (!impl_->error.empty()) {
+      result.assign(restPoints.getValues(0), restPoints.getValues(0) + numRest);
+      indices.assign(coordIndex.getValues(0), coordIndex.getValues(0) + coordIndex.getNum());
+      SoDebugError::post("ClothEngine::evaluate", "%s", impl_->error.c_str());
+    } else {
+      indices = faceIndices(sections);
+      if (!key.empty()) impl_->keep(key, result, indices);
+    }
   }
   const int n = static_cast<int>(result.size());
   SO_ENGINE_OUTPUT(positions, SoMFVec3f, setNum(n));
   SO_ENGINE_OUTPUT(positions, SoMFVec3f, setValues(0, n, result.data()));
-  const std::vector<int32_t> indices = impl_->error.empty()
-                                           ? faceIndices(sections)
-                                           : std::vector<int32_t>(coordIndex.getValues(0),
-                                                                  coordIndex.getValues(0) + coordIndex.getNum());
   const int m = static_cast<int>(indices.size());
   SO_ENGINE_OUTPUT(levelCoordIndex, SoMFInt32, setNum(m));
   SO_ENGINE_OUTPUT(levelCoordIndex, SoMFInt32, setValues(0, m, indices.data()));

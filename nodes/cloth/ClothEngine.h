@@ -17,6 +17,9 @@
 #include <vector>
 
 class SoNode;
+namespace figment {
+class DrapeCache;
+}
 
 /*!
   \class ClothEngine nodes/cloth/ClothEngine.h
@@ -219,6 +222,9 @@ class ClothEngine : public SoEngine {
     // moved from there to the end of the run (mean and largest, m).
     int level = 0, levels = 0, sections = 0;
     double endLevelSeconds = -1.0, meanMoveAfterEndLevel = 0.0, maxMoveAfterEndLevel = 0.0;
+    // The drape came from the drape cache (setDrapeCache): the statistics are the run
+    // that made it, but wallSeconds, which is the time to find and read it.
+    bool fromCache = false;
   };
   // Reported about once per second of wall time while a simulation runs.
   struct Progress {
@@ -233,6 +239,16 @@ class ClothEngine : public SoEngine {
   // One callback for all engines (figment-view prints progress on stderr); an empty
   // function removes it. Not for use while an engine is evaluating.
   static void setProgressCallback(ProgressCallback callback);
+
+  // A cache of finished drapes for all engines (io/DrapeCache.h), or none (null, the
+  // default: every evaluation simulates). With one, an evaluation whose inputs, body,
+  // script and program match a kept drape (nodes/cloth/DrapeKey.h) reads it instead of
+  // simulating, and one that simulates keeps its drape. figment-view sets it unless
+  // --no-cache. Not for use while an engine is evaluating.
+  static void setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache);
+  // What the cache had to say in the last evaluation (a damaged entry dropped, a drape
+  // that could not be kept), one line; empty otherwise.
+  const std::string& lastCacheMessage() const;
 
   // The last evaluation's error, one line; empty when it succeeded.
   const std::string& lastError() const;

@@ -21,6 +21,7 @@ class ShippedGarmentScene {
 
   // Null unless the scene read and holds exactly one engine.
   ClothEngine* engine() const { return engines_.size() == 1 ? engines_.front() : nullptr; }
+  SoSeparator* root() const { return root_.get(); }
 
  private:
   ScopedModelPath modelPath_;

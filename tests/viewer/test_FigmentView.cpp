@@ -11,6 +11,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -33,10 +34,12 @@ class FigmentView : public ::testing::Test {
  protected:
   std::string path(const std::string& name) const { return (dir_.path() / name).string(); }
   std::string write(const std::string& name, const std::string& text) const { return dir_.file(name, text); }
-  // Runs figment-view with `arguments` (shell words), capturing stderr.
-  ProcessResult run(const std::string& arguments) const {
-    const std::string command =
-        quote(FIGMENT_VIEW_EXECUTABLE) + " " + arguments + " 2> " + quote(path("stderr.txt")) + " > /dev/null";
+  // Runs figment-view with `arguments` (shell words), capturing stderr; its drape cache
+  // in `cache` (by default a folder of this test's own).
+  ProcessResult run(const std::string& arguments, const std::string& cache = "") const {
+    const std::string command = "XDG_CACHE_HOME=" + quote(cache.empty() ? path("cache") : cache) + " " +
+                                quote(FIGMENT_VIEW_EXECUTABLE) + " " + arguments + " 2> " + quote(path("stderr.txt")) +
+                                " > /dev/null";
     const int raw = std::system(command.c_str());
     std::ifstream in(path("stderr.txt"));
     std::stringstream err;
@@ -93,6 +96,36 @@ TEST_F(FigmentView, RendersAPngAndWritesStatistics) {
   EXPECT_TRUE(garment["at_rest"].is_boolean());
   EXPECT_EQ(garment["body"]["kind"], "none");
   EXPECT_GE(stats["render_wall_s"].get<double>(), 0.0);
+}
+
+TEST_F(FigmentView, ASecondRunFromAnotherViewReadsTheKeptDrape) {
+  const std::string scene = write("cloth.iv", clothScene(""));
+  const auto cached = [&](const std::string& extra) {
+    const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " +
+                                quote(path("stats.json")) + " " + extra);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    return nlohmann::json::parse(std::ifstream(path("stats.json")))["garments"][0]["cached"].get<bool>();
+  };
+  EXPECT_FALSE(cached("--view front"));
+  EXPECT_TRUE(fs::exists(path("cache/figment")));
+  EXPECT_TRUE(cached("--view 30,20"));
+  EXPECT_FALSE(cached("--view back --no-cache"));
+}
+
+TEST_F(FigmentView, ACacheThatCannotBeKeptIsSaidInOneLineAndTheImageIsStillMade) {
+  const std::string notAFolder = write("not-a-folder", "x");
+  const std::string scene = write("cloth.iv", clothScene(""));
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60", notAFolder);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("out.png")));
+  // One line of ours (Mesa says on its own that its shader cache cannot go there either).
+  std::istringstream lines(r.err);
+  int ours = 0;
+  for (std::string line; std::getline(lines, line);) ours += line.rfind("figment-view: ", 0) == 0;
+  EXPECT_EQ(ours, 1) << r.err;
+  EXPECT_NE(r.err.find("drape cache"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(notAFolder), std::string::npos) << r.err;
 }
 
 TEST_F(FigmentView, StatisticsSayWhatTheGarmentCollidedWith) {
