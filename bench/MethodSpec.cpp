@@ -1,10 +1,11 @@
 #include "MethodSpec.h"
 
+#include "io/TradeoffTable.h"
+
 #include <Inventor/SbName.h>
 
 #include <algorithm>
 #include <cctype>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
@@ -64,13 +65,8 @@ std::string configure(ClothEngine& engine, const Method& m) {
 }
 
 Schedule parseSchedule(const std::string& text) {
-  Schedule s{text};
-  std::stringstream in(text);
-  char colon = 0;
-  if (!(in >> s.beginShare >> colon >> s.rate) || colon != ':' || !(s.beginShare >= 0.0 && s.beginShare <= 1.0) ||
-      !(s.rate >= 0.0))
-    throw std::invalid_argument("schedule \"" + text + "\": expected BEGIN_SHARE:RATE, share in [0, 1], rate >= 0");
-  return s;
+  const ScheduleText s = parseScheduleText(text);
+  return Schedule{text, s.beginShare, s.rate};
 }
 
 }  // namespace figment::bench

@@ -40,8 +40,9 @@ struct TradeoffStudyOptions {
 // The options --quick stands for: under 5 minutes on one core.
 TradeoffStudyOptions quickTradeoff(TradeoffStudyOptions options);
 
-// Writes DIR/tradeoff.csv (a row per configuration), DIR/tradeoff-reference.csv and,
-// with the plot script, DIR/tradeoff.png. Returns the exit code.
+// Writes DIR/tradeoff.csv (a row per configuration), DIR/tradeoff-reference.csv,
+// DIR/tradeoff-table.csv (the front over all garments, io/TradeoffTable.h) and, with the
+// plot script, DIR/tradeoff.png. Returns the exit code.
 int runTradeoffStudy(const TradeoffStudyOptions& options);
 
 }  // namespace figment::bench

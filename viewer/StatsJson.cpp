@@ -43,6 +43,10 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
                               {"cached", run.fromCache},
                               {"method", method(drape)},
                               {"body", body(drape.body)}};
+    // With a tolerance: what the engine picked and the deviation measured for it.
+    if (run.picked[0] != '\0')
+      garment["picked"] = {{"configuration", std::string(run.picked.data())},
+                           {"measured_worst_mean_dev_pct_height", run.pickedDeviation}};
     // A progressive drape (paper §4): the level it reached, of how many, and its sections.
     // When the end level arrived and how far the garment moved after it (m).
     if (run.levels > 0)

@@ -5,6 +5,9 @@
 #include "io/DrapeCache.h"
 #include "io/ProgressiveScript.h"
 #include "nodes/cloth/DrapeKey.h"
+#include "nodes/cloth/ToleranceChoice.h"
+#include "sim/core/ParameterChecks.h"
+#include "sim/progressive/Decimation.h"
 #include "nodes/SceneFiles.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/progressive/ProgressiveDrape.h"
@@ -19,6 +22,8 @@
 #include <Inventor/SoFullPath.h>
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 #include <type_traits>
@@ -121,6 +126,7 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(beginLevel, (0));
   SO_ENGINE_ADD_INPUT(endLevel, (-1));
   SO_ENGINE_ADD_INPUT(splitRate, (0.0));
+  SO_ENGINE_ADD_INPUT(tolerance, (0.0));
   // The multiple-value inputs start empty ([ ]), not with the one value set above.
   restPoints.setNum(0);
   restPoints.setDefault(TRUE);
@@ -192,10 +198,9 @@ Drape drapeWhole(const figment::TriangleMesh& garment, const figment::ClothParam
   return out;
 }
 
-Drape drapeProgressively(const std::string& script, const figment::TriangleMesh& garment,
-                         const figment::ClothParameters& parameters, std::shared_ptr<const figment::Collider> body,
-                         const figment::ProgressiveSchedule& schedule, const DrapeProgressFunction& progress) {
-  const figment::ProgressiveMesh mesh = figment::readProgressiveScript(script, garment);
+Drape drapeProgressively(const figment::ProgressiveMesh& mesh, const figment::ClothParameters& parameters,
+                         std::shared_ptr<const figment::Collider> body, const figment::ProgressiveSchedule& schedule,
+                         const DrapeProgressFunction& progress) {
   figment::ProgressiveDrape drape(mesh, parameters, std::move(body), schedule);
   Drape out;
   out.run = drape.run(progress);
@@ -233,25 +238,41 @@ void ClothEngine::Impl::recordRun(const figment::DrapeResult& run, int triangles
 std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine,
                                                        std::vector<figment::Triangle>& sections) {
   const figment::TriangleMesh garment = figment::garmentFromFields(engine.restPoints, engine.coordIndex);
-  const figment::ClothParameters parameters = figment::parametersFromFields(engine);
-  std::shared_ptr<const figment::Collider> collider = figment::colliderFromBody(engine.body);
-  const auto start = std::chrono::steady_clock::now();  // the solver's set-up counts too
+  figment::ClothParameters parameters = figment::parametersFromFields(engine);
+  figment::requireNonNegative("tolerance", engine.tolerance.getValue());
+  const auto start = std::chrono::steady_clock::now();  // choosing and the solver's set-up count too
+  std::shared_ptr<const figment::Collider> collider;
+  std::string script = engine.progressiveScript.getValue().getString();
+  figment::ProgressiveSchedule schedule{engine.beginLevel.getValue(), engine.endLevel.getValue(),
+                                       engine.splitRate.getValue()};
+  std::optional<figment::ProgressiveMesh> mesh;  // the garment's progressive mesh, when draped so
+  if (engine.tolerance.getValue() > 0.0) {
+    const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, parameters);
+    collider = choice.body;
+    std::snprintf(stats.picked.data(), stats.picked.size(), "%s", choice.picked.label().c_str());
+    stats.pickedDeviation = choice.picked.worstMeanDeviation;
+    script.clear();
+    if (choice.picked.progressive != "off") {
+      mesh = figment::decimate(garment, figment::DecimationOptions{
+          .targetFaces = static_cast<int>(figment::kStudyCoarseShare * garment.triangles.size())});
+      const figment::ScheduleText s = figment::parseScheduleText(choice.picked.progressive);
+      schedule = {static_cast<int>(std::lround(s.beginShare * mesh->levels())), -1, s.rate};
+    }
+  } else {
+    collider = figment::colliderFromBody(engine.body);
+  }
+  if (!script.empty()) {
+    const std::string path = figment::resolveSceneFile(script, sceneDirectories);
+    if (path.empty()) throw std::runtime_error("progressiveScript \"" + script + "\" not found");
+    mesh = figment::readProgressiveScript(path, garment);
+  }
   const auto progress = [&](const figment::DrapeProgress& p) {
     if (!progressCallback()) return;
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
     progressCallback()(engine, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed, wall.count()});
   };
-  const std::string script = engine.progressiveScript.getValue().getString();
-  Drape drape;
-  if (script.empty()) {
-    drape = drapeWhole(garment, parameters, std::move(collider), progress);
-  } else {
-    const std::string path = figment::resolveSceneFile(script, sceneDirectories);
-    if (path.empty()) throw std::runtime_error("progressiveScript \"" + script + "\" not found");
-    const figment::ProgressiveSchedule schedule{engine.beginLevel.getValue(), engine.endLevel.getValue(),
-                                                 engine.splitRate.getValue()};
-    drape = drapeProgressively(path, garment, parameters, std::move(collider), schedule, progress);
-  }
+  const Drape drape = mesh ? drapeProgressively(*mesh, parameters, std::move(collider), schedule, progress)
+                           : drapeWhole(garment, parameters, std::move(collider), progress);
   stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   recordRun(drape.run, static_cast<int>(garment.triangles.size()));
   stats.level = drape.level;

@@ -3,6 +3,7 @@
 #include "io/Fnv1a.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/ToleranceChoice.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <Inventor/fields/SoMFFloat.h>
@@ -150,6 +151,7 @@ std::string drapeKey(const ClothEngine& engine, const std::string& scriptPath) {
   std::set<const SoNode*> seen;
   addFields(key, "engine", engine, seen);
   if (!scriptPath.empty()) key.file("script", scriptPath);
+  if (engine.tolerance.getValue() > 0.0) key.file("tradeoff table", tradeoffTablePath());
   return key.text;
 }
 
