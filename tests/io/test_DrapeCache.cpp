@@ -92,11 +92,12 @@ TEST(DrapeCache, AFolderThatCannotBeMadeIsAnErrorNamingIt) {
 }
 
 TEST(DrapeCache, LivesInTheUsersCacheFolder) {
+  const TempDir dir;
   {
-    const ScopedEnvironment xdg("XDG_CACHE_HOME", "/somewhere/cache");
-    EXPECT_EQ(DrapeCache::userFolder(), std::filesystem::path("/somewhere/cache/figment"));
+    const ScopedEnvironment xdg("XDG_CACHE_HOME", (dir.path() / "cache").string());
+    EXPECT_EQ(DrapeCache::userFolder(), dir.path() / "cache" / "figment");
   }
   const ScopedEnvironment xdg("XDG_CACHE_HOME", std::nullopt);
-  const ScopedEnvironment home("HOME", "/home/someone");
-  EXPECT_EQ(DrapeCache::userFolder(), std::filesystem::path("/home/someone/.cache/figment"));
+  const ScopedEnvironment home("HOME", (dir.path() / "home").string());
+  EXPECT_EQ(DrapeCache::userFolder(), dir.path() / "home" / ".cache" / "figment");
 }
