@@ -254,7 +254,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     script.clear();
     if (choice.picked.progressive != "off") {
       mesh = figment::decimate(garment, figment::DecimationOptions{
-          .targetFaces = static_cast<int>(figment::kStudyCoarseShare * garment.triangles.size())});
+          .targetFaces = static_cast<int>(std::lround(figment::kStudyCoarseShare * garment.triangles.size()))});
       const figment::ScheduleText s = figment::parseScheduleText(choice.picked.progressive);
       schedule = {static_cast<int>(std::lround(s.beginShare * mesh->levels())), -1, s.rate};
     }
