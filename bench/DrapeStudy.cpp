@@ -5,13 +5,8 @@
 #include "Statistics.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/Init.h"
-#include "nodes/body/Mannequin.h"
-#include "nodes/SceneSearch.h"
 #include "viewer/SceneSession.h"
 
-#include <Inventor/SoPath.h>
-#include <Inventor/misc/SoChildList.h>
-#include <Inventor/nodes/SoFile.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/nodes/SoSeparator.h>
 

@@ -11,9 +11,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 namespace figment::bench {
