@@ -20,23 +20,24 @@ namespace figment::bench {
 namespace {
 
 // One CSV row and one line on stdout for a drape.
-void report(const std::string& method, int run, const viewer::EngineDrape& drape, std::ostream& csv) {
+void report(const std::string& method, bool broadPhase, int run, const viewer::EngineDrape& drape, std::ostream& csv) {
   const ClothEngine::RunStats& stats = drape.run;
   const double perSecond = stats.iterations / stats.wallSeconds;
   const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
-  csv << method << ',' << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
+  csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
       << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0) << ',' << perSecond
       << '\n';
-  std::cout << method << " run " << run << ": " << drape.label << " " << stats.triangles << " triangles, "
+  std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " " << stats.triangles << " triangles, "
             << stats.iterations << " iterations, " << stats.simulatedSeconds << " s simulated in "
             << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest") << "\n";
 }
 
 // Runs every engine options.repeat times against the body they have now; one CSV row
 // per run and engine. On an engine's error sets `error`.
-void timeDrapes(const std::string& method, const DrapeStudyOptions& options, viewer::SceneSession& session,
+void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOptions& options, viewer::SceneSession& session,
                 std::ostream& csv, std::string& error) {
   std::vector<double> wall, rate;
+  ClothEngine::setBroadPhase(broadPhase);
   for (int run = 0; run < options.repeat; ++run) {
     for (ClothEngine* engine : session.engines()) engine->restPoints.touch();  // inputs changed: simulate again
     for (const viewer::EngineDrape& drape : session.drape()) {
@@ -44,17 +45,18 @@ void timeDrapes(const std::string& method, const DrapeStudyOptions& options, vie
         error = drape.error;
         return;
       }
-      report(method, run, drape, csv);
+      report(method, broadPhase, run, drape, csv);
       wall.push_back(drape.run.wallSeconds);
       rate.push_back(drape.run.iterations / drape.run.wallSeconds);
     }
   }
-  std::cout << method << ": median wall " << median(wall) << " s, median " << median(rate) << " iterations/s\n";
+  ClothEngine::setBroadPhase(true);
+  std::cout << method << (broadPhase ? "" : " (no broad phase)") << ": median wall " << median(wall) << " s, median " << median(rate) << " iterations/s\n";
 }
 
 // Times the engines against each body of options.bodies in turn; "" or the error.
 std::string timeEveryBody(const DrapeStudyOptions& options, viewer::SceneSession& session, std::ostream& csv) {
-  csv << "body,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s\n";
+  csv << "body,broad_phase,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s\n";
   const std::vector<ClothEngine*>& engines = session.engines();
   std::vector<SoNode*> sceneBodies;
   for (ClothEngine* engine : engines) sceneBodies.push_back(engine->body.getValue());
@@ -63,7 +65,8 @@ std::string timeEveryBody(const DrapeStudyOptions& options, viewer::SceneSession
     SoNode* body = bodyFor(method, session.scene(), error);
     if (error.empty()) {
       for (size_t e = 0; e < engines.size(); ++e) engines[e]->body = body ? body : sceneBodies[e];
-      timeDrapes(method, options, session, csv, error);
+      for (const std::string& broadPhase : options.broadPhase)
+        if (error.empty()) timeDrapes(method, broadPhase == "on", options, session, csv, error);
     }
     if (!error.empty()) return error;
   }

@@ -14,6 +14,9 @@ struct DrapeStudyOptions {
   // (the triangles of the scene's Mannequin body), or a volumes file (.iv, as
   // figment-fit writes) that replaces the Mannequin's children.
   std::vector<std::string> bodies = {"scene"};
+  // Each body timed with the broad phase "on" (the default), "off", or both in turn: a
+  // drape is the same either way, only its time differs.
+  std::vector<std::string> broadPhase = {"on"};
   // Overrides of every engine's method: "" and 0 keep the scene's.
   std::string integrator;  // EULER, SYMPLECTIC, HEUN or IMPLICIT
   double timeStep = 0.0;   // s

@@ -8,7 +8,10 @@
 #include "TemporaryScript.h"
 
 #include "nodes/body/CollisionBody.h"
+#include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngineInputs.h"
+#include "nodes/cloth/ToleranceChoice.h"
+#include "sim/body/Skeleton.h"
 #include "sim/collision/Collider.h"
 #include "sim/progressive/Resampling.h"
 
@@ -63,13 +66,16 @@ std::pair<double, double> deviation(const std::vector<Vec3>& a, const std::vecto
 // The bodies a scene's garment is draped against, by the options' names (kept referenced).
 class Bodies {
  public:
-  Bodies(SoNode* root, const TradeoffStudyOptions& options, std::string& error) {
+  // `garmentStart`: where the garment starts (the per-part mix's exact parts are those it
+  // starts near).
+  Bodies(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart, std::string& error) {
     add("triangles", bodyFor("exact", root, error));
     for (const std::string& name : options.bodies) {
       if (!error.empty() || nodes_.count(name)) continue;
       if (name == "volumes") add(name, bodyFor(options.volumesFile, root, error));
       else if (name == "capsules") add(name, bodyFor(options.capsulesFile, root, error));
-      else error = "--body " + name + ": expected volumes, capsules or triangles";
+      else if (name == "mix") add(name, mixFor(root, options, garmentStart, error));
+      else error = "--body " + name + ": expected volumes, capsules, triangles or mix";
     }
     if (error.empty()) exact_ = asCollisionBody(nodes_.at("triangles"))->bodyCollider();
   }
@@ -89,6 +95,23 @@ class Bodies {
   }
 
  private:
+  // The radial volumes with the parts the garment starts near on their own triangles, as
+  // ClothEngine.tolerance builds it (ToleranceChoice.h), as Mannequin.exactParts.
+  static SoNode* mixFor(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart,
+                        std::string& error) {
+    SoNode* node = bodyFor(options.volumesFile, root, error);
+    if (!node) return nullptr;
+    auto* mannequin = static_cast<Mannequin*>(node);
+    const std::vector<int> parts = partsWhereGarmentMeets(*mannequin, garmentStart);
+    mannequin->exactParts.setNum(0);
+    for (int part : parts) {
+      const std::string& name = mannequin->skeleton().parts[part].name;
+      mannequin->exactParts.set1Value(mannequin->exactParts.getNum(), name.c_str());
+    }
+    std::printf("mix: triangles on %zu parts the garment starts within %.0f mm of\n", parts.size(),
+                1000.0 * kExactPartReach);
+    return node;
+  }
   void add(const std::string& name, SoNode* node) {
     if (!node) return;
     node->ref();
@@ -227,13 +250,13 @@ std::string studyScene(const std::string& scene, const TradeoffStudyOptions& opt
   SceneGarment garment;
   std::string error;
   if (!garment.load(scene, error)) return error;
-  const Bodies bodies(garment.session.scene(), options, error);
+  const TriangleMesh base = garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex);
+  const Bodies bodies(garment.session.scene(), options, base.vertices, error);
   if (!error.empty()) return scene + ": " + error;
   std::printf("%s\n", scene.c_str());
   referenceCsv << scene << ',';
   const std::optional<Reference> reference = drapeReference(garment, bodies, options, referenceCsv, error);
   if (!reference) return scene + ": the reference " + options.reference + ": " + error;
-  const TriangleMesh base = garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex);
   std::vector<Row> rows;
   for (double factor : options.resolutions) {
     const Resolution resolution = makeResolution(base, factor, options);

@@ -23,6 +23,11 @@ CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
                            "what the garments collide with, each timed: scene, exact (the Mannequin's body "
                            "triangles) or a volumes .iv file")
       ->capture_default_str();
+  drapeCommand->add_option("--broad-phase", drape.broadPhase,
+                           "on, off, or both in turn (repeat the option): body parts far from the garment "
+                           "tested or not (the drape is the same)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"on", "off"}));
   drapeCommand->add_option("--integrator", drape.integrator, "every engine's integrator instead of the scene's")
       ->check(CLI::IsMember({"EULER", "SYMPLECTIC", "HEUN", "IMPLICIT"}));
   drapeCommand->add_option("--time-step", drape.timeStep, "every engine's time step instead of the scene's, s")
@@ -152,9 +157,9 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
       ->check(CLI::ExistingFile);
   command->add_option("--method", tradeoff.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
       ->capture_default_str();
-  command->add_option("--body", tradeoff.bodies, "volumes, capsules or triangles (repeat)")
+  command->add_option("--body", tradeoff.bodies, "volumes, capsules, triangles or mix (the volumes, triangles where the garment starts) (repeat)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"volumes", "capsules", "triangles"}));
+      ->check(CLI::IsMember({"volumes", "capsules", "triangles", "mix"}));
   command->add_option("--schedule", tradeoff.schedules, "off or BEGIN_SHARE:RATE, progressive (repeat)")
       ->capture_default_str();
   command->add_option("--resolution", tradeoff.resolutions, "the garment's sections times each (repeat)")

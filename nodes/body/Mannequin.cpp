@@ -25,6 +25,7 @@
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/misc/SoState.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 SO_NODE_SOURCE(Mannequin);
@@ -35,6 +36,7 @@ struct Mannequin::Model {
   figment::Pose pose;
   figment::Sizing sizing;
   std::vector<Eigen::Affine3d> transforms;
+  std::vector<char> exactPart;  // per skeleton part: named in exactParts
 };
 
 void Mannequin::initClass() {
@@ -53,6 +55,7 @@ Mannequin::Mannequin() {
   SO_NODE_ADD_FIELD(hips, (1.0f));
   SO_NODE_ADD_FIELD(armLength, (1.0f));
   SO_NODE_ADD_FIELD(blendRadius, (0.04f));
+  SO_NODE_ADD_EMPTY_MFIELD(exactParts);
   SO_NODE_ADD_FIELD(showVolumes, (FALSE));
   SO_NODE_ADD_FIELD(volumeColor, (0.1f, 0.85f, 0.25f));
 }
@@ -137,6 +140,15 @@ const Mannequin::Model& Mannequin::model() const {
     if (!(blendRadius.getValue() > 0.0f))
       throw std::invalid_argument("blendRadius = " + std::to_string(blendRadius.getValue()) + " must be > 0");
     model->transforms = figment::partTransforms(model->skeleton, model->pose, model->sizing);
+    model->exactPart.assign(model->skeleton.parts.size(), 0);
+    for (int i = 0; i < exactParts.getNum(); ++i) {
+      const std::string name = exactParts[i].getString();
+      const int part = partIndex(model->skeleton, name);
+      if (part < 0)
+        throw std::invalid_argument("exactParts[" + std::to_string(i) + "] = \"" + name + "\" is not a part (" +
+                                    partNames(model->skeleton) + ")");
+      model->exactPart[part] = 1;
+    }
   } catch (const std::invalid_argument& e) {
     throw std::invalid_argument(label() + ": " + e.what());
   }
@@ -150,6 +162,11 @@ const std::vector<Mannequin::VolumeEntry>& Mannequin::volumes() const { return m
 
 namespace {
 
+// Rings of the neighbouring parts' triangles an exact part keeps beyond its cut (about
+// 1 cm each on the default body): its surface overlaps the next part's, so a node at the
+// seam meets the true surface of one or the other (sim/body/BodyParts.h).
+constexpr int kExactBorderRings = 3;
+
 MeshFile* bodyMesh(const SoSFNode& body, const std::string& label) {
   SoNode* node = body.getValue();
   if (!node) return nullptr;
@@ -161,30 +178,60 @@ MeshFile* bodyMesh(const SoSFNode& body, const std::string& label) {
 }  // namespace
 
 std::shared_ptr<const figment::Collider> Mannequin::collider() const {
-  if (collider_) return collider_;
+  if (!collider_) collider_ = buildCollider(model().exactPart);
+  return collider_;
+}
+
+std::shared_ptr<const figment::Collider> Mannequin::colliderWithExactParts(const std::vector<int>& alsoExact) const {
+  std::vector<char> exact = model().exactPart;
+  for (int part : alsoExact) {
+    if (part < 0 || part >= static_cast<int>(exact.size()))
+      throw std::invalid_argument(label() + ": part " + std::to_string(part) + " is not a part of its skeleton");
+    exact[part] = 1;
+  }
+  return buildCollider(exact);
+}
+
+std::shared_ptr<const figment::Collider> Mannequin::buildCollider(const std::vector<char>& exact) const {
   const Model& m = model();
-  // The body's parts, only when an ExactVolume needs its triangles.
+  const auto byTriangles = [&](const VolumeEntry& v) {
+    return exact[v.part] || v.node->isOfType(ExactVolume::getClassTypeId());
+  };
+  // The body's parts, only when a part collides with its triangles.
+  const bool anyExact = std::find(exact.begin(), exact.end(), 1) != exact.end();
   std::vector<figment::PartMesh> parts;
   for (const VolumeEntry& v : m.volumes)
-    if (v.node->isOfType(ExactVolume::getClassTypeId()) && parts.empty()) {
+    if ((anyExact || byTriangles(v)) && parts.empty()) {
       MeshFile* mesh = bodyMesh(body, label());
-      if (!mesh) throw std::invalid_argument(v.node->label() + " needs the Mannequin's body, which is NULL");
-      parts = figment::splitIntoParts(mesh->collisionSurface(), m.skeleton);
+      if (!mesh)
+        throw std::invalid_argument(label() + ": " + (anyExact ? "exactParts" : v.node->label()) +
+                                    " needs the Mannequin's body, which is NULL");
+      parts = figment::splitIntoParts(mesh->collisionSurface(), m.skeleton, kExactBorderRings);
     }
   std::vector<figment::PosedCollisionVolume> posed;
   const figment::TriangleMesh none;
   for (const VolumeEntry& v : m.volumes) {
+    if (exact[v.part]) continue;  // below: its triangles once, however many volumes it has
     const figment::TriangleMesh& triangles = parts.empty() ? none : parts[v.part].mesh;
     posed.push_back({v.part, v.node->makeVolume(triangles), m.transforms[v.part]});
   }
-  collider_ = std::make_shared<const figment::VolumeSetCollider>(std::move(posed));
-  return collider_;
+  for (size_t part = 0; part < exact.size(); ++part) {
+    if (!exact[part]) continue;
+    if (parts[part].mesh.triangles.empty())
+      throw std::invalid_argument(label() + ": exactParts: part \"" + m.skeleton.parts[part].name +
+                                  "\" has no triangles in the body");
+    posed.push_back({static_cast<int>(part), figment::makeVolume(parts[part].mesh), m.transforms[part]});
+  }
+  return std::make_shared<const figment::VolumeSetCollider>(std::move(posed));
 }
 
 figment::CollisionBody::Description Mannequin::describeBody() const {
   int capsules = 0, radial = 0, exact = 0;
   try {
+    const std::vector<char>& exactPart = model().exactPart;
+    exact = static_cast<int>(std::count(exactPart.begin(), exactPart.end(), 1));
     for (const VolumeEntry& v : volumes()) {
+      if (exactPart[v.part]) continue;  // its triangles stand in for its volumes
       capsules += v.node->isOfType(CapsuleVolume::getClassTypeId());
       radial += v.node->isOfType(RadialDepthVolume::getClassTypeId());
       exact += v.node->isOfType(ExactVolume::getClassTypeId());

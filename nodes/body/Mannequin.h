@@ -54,7 +54,10 @@ struct TriangleMesh;
   each joint.
 
   As a ClothEngine's body, the collider is the set of posed volumes: a cloth node inside
-  several (they overlap at the joints) is put outside all of them.
+  several (they overlap at the joints) is put outside all of them. The parts named in
+  `exactParts` collide with their own triangles of `body` instead of their volumes (as
+  an ExactVolume would, without editing the fitted volumes file): exact where a garment
+  rests, the cheaper volumes elsewhere.
 
   Draws nothing unless `showVolumes` is TRUE: then its volumes, posed, as wireframes in
   `volumeColor` (figment-view --show-volumes sets it). Other actions reach the volumes
@@ -72,6 +75,7 @@ struct TriangleMesh;
         hips 1
         armLength 1
         blendRadius 0.04
+        exactParts [ ]
         showVolumes FALSE
         volumeColor 0.1 0.85 0.25
     }
@@ -98,6 +102,9 @@ class Mannequin : public SoGroup, public figment::CollisionBody {
   // Distance from a joint within which the skin blends between its two parts, m.
   // Default 0.04. Must be > 0.
   SoSFFloat blendRadius;
+  // Parts (by name) that collide with their own triangles of `body` instead of their
+  // volumes. Default [ ]. Needs `body`.
+  SoMFString exactParts;
   SoSFBool showVolumes;    // Default FALSE.
   SoSFColor volumeColor;   // Default 0.1 0.85 0.25.
 
@@ -105,6 +112,10 @@ class Mannequin : public SoGroup, public figment::CollisionBody {
   // changes). Throws std::invalid_argument with one line naming this node, the field
   // and the value when the data or the fields are unusable.
   std::shared_ptr<const figment::Collider> collider() const;
+  // The same with the parts in `alsoExact` (skeleton part indices) colliding with their
+  // own triangles too (a tolerance's per-part mix, nodes/cloth/ToleranceChoice.h); built
+  // anew on each call. Throws as collider(), and when `body` is NULL.
+  std::shared_ptr<const figment::Collider> colliderWithExactParts(const std::vector<int>& alsoExact) const;
   // As a ClothEngine's body (figment::CollisionBody): collider(). Described as kind
   // "mannequin" with its capsule_volumes, radial_volumes and exact_parts (all 0 when
   // the volumes cannot be read).
@@ -147,6 +158,8 @@ class Mannequin : public SoGroup, public figment::CollisionBody {
  private:
   struct Model;
   const Model& model() const;  // built on demand; throws std::invalid_argument
+  // The posed volumes, parts marked in `exact` (one flag per skeleton part) by their triangles.
+  std::shared_ptr<const figment::Collider> buildCollider(const std::vector<char>& exact) const;
   // The volumes, each under its part's transformation, when showVolumes is TRUE.
   void traverseVolumes(SoAction* action);
 

@@ -60,6 +60,11 @@ std::shared_ptr<const figment::DrapeCache>& drapeCache() {
   return cache;
 }
 
+bool& broadPhase() {
+  static bool on = true;
+  return on;
+}
+
 // RunStats travel through the cache as their bytes.
 static_assert(std::is_trivially_copyable_v<ClothEngine::RunStats>);
 
@@ -161,6 +166,8 @@ void ClothEngine::setProgressCallback(ProgressCallback callback) { progressCallb
 
 void ClothEngine::setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache) { drapeCache() = std::move(cache); }
 
+void ClothEngine::setBroadPhase(bool on) { broadPhase() = on; }
+
 const std::string& ClothEngine::lastCacheMessage() const { return impl_->cacheMessage; }
 
 const std::string& ClothEngine::lastError() const { return impl_->error; }
@@ -239,6 +246,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                                        std::vector<figment::Triangle>& sections) {
   const figment::TriangleMesh garment = figment::garmentFromFields(engine.restPoints, engine.coordIndex);
   figment::ClothParameters parameters = figment::parametersFromFields(engine);
+  parameters.broadPhase = broadPhase();
   figment::requireNonNegative("tolerance", engine.tolerance.getValue());
   const auto start = std::chrono::steady_clock::now();  // choosing and the solver's set-up count too
   std::shared_ptr<const figment::Collider> collider;
@@ -247,7 +255,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                        engine.splitRate.getValue()};
   std::optional<figment::ProgressiveMesh> mesh;  // the garment's progressive mesh, when draped so
   if (engine.tolerance.getValue() > 0.0) {
-    const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, parameters);
+    const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, garment, parameters);
     collider = choice.body;
     std::snprintf(stats.picked.data(), stats.picked.size(), "%s", choice.picked.label().c_str());
     stats.pickedDeviation = choice.picked.worstMeanDeviation;

@@ -259,6 +259,11 @@ class ClothEngine : public SoEngine {
   // simulating, and one that simulates keeps its drape. figment-view sets it unless
   // --no-cache. Not for use while an engine is evaluating.
   static void setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache);
+  // Whether drapes test only the body parts near the garment (the default; sim/collision/
+  // BroadPhaseCollider.h). A drape is the same either way: off only to measure what the
+  // broad phase saves (figment-bench drape --broad-phase off). Not for use while an
+  // engine is evaluating.
+  static void setBroadPhase(bool on);
   // What the cache had to say in the last evaluation (a damaged entry dropped, a drape
   // that could not be kept), one line; empty otherwise.
   const std::string& lastCacheMessage() const;

@@ -4,6 +4,7 @@
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/ClothEngineInputs.h"
+#include "sim/collision/VolumeSetCollider.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -43,6 +44,7 @@ bool usable(const ClothEngine& engine, const MeasuredConfiguration& c) {
   if (c.body == "triangles") return mannequin->body.getValue() && restPoseAndSize(*mannequin);
   if (c.body == "volumes") return radial > 0 && capsules == 0 && exact == 0;
   if (c.body == "capsules") return capsules > 0 && radial == 0 && exact == 0;
+  if (c.body == "mix") return mannequin->body.getValue() && radial > 0 && capsules == 0;
   return false;
 }
 
@@ -55,7 +57,12 @@ std::string tradeoffTablePath() {
   return FIGMENT_TRADEOFF_TABLE_SOURCE;
 }
 
-ToleranceChoice chooseForTolerance(const ClothEngine& engine, ClothParameters& parameters) {
+std::vector<int> partsWhereGarmentMeets(const Mannequin& mannequin, const std::vector<Vec3>& garmentStart) {
+  const auto* volumes = dynamic_cast<const VolumeSetCollider*>(mannequin.collider().get());
+  return volumes ? volumes->partsWithin(garmentStart, kExactPartReach) : std::vector<int>{};
+}
+
+ToleranceChoice chooseForTolerance(const ClothEngine& engine, const TriangleMesh& garment, ClothParameters& parameters) {
   const double tolerance = engine.tolerance.getValue();
   const std::vector<MeasuredConfiguration> table = readTradeoffTable(tradeoffTablePath());
   const std::optional<MeasuredConfiguration> picked =
@@ -71,6 +78,8 @@ ToleranceChoice chooseForTolerance(const ClothEngine& engine, ClothParameters& p
     const CollisionBody* exact = asCollisionBody(mannequin->body.getValue());
     if (!exact) throw std::runtime_error("tolerance: the Mannequin's body is no mesh to collide with");
     choice.body = exact->bodyCollider();
+  } else if (picked->body == "mix") {
+    choice.body = mannequin->colliderWithExactParts(partsWhereGarmentMeets(*mannequin, garment.vertices));
   } else {
     choice.body = colliderFromBody(engine.body);
   }

@@ -2,8 +2,9 @@
 // ClothEngine.tolerance: the fastest measured configuration within a deviation
 // (io/TradeoffTable.h), as the engine can use it: its method onto the parameters, its
 // collision body from the engine's body (the Mannequin's own triangles for
-// "triangles"; the engine's body itself for "volumes" or "capsules" when its volumes
-// are all of that kind), its progressive schedule on a progressive mesh made now, at
+// "triangles", in its rest pose and size only; the engine's body itself for "volumes" or
+// "capsules" when its volumes are all of that kind; for "mix", its radial volumes with
+// the parts the garment starts near colliding with their own triangles, in any pose), its progressive schedule on a progressive mesh made now, at
 // the study's share of the sections. Configurations of another garment resolution are
 // not used (the output is per rest point).
 
@@ -12,8 +13,10 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 class ClothEngine;
+class Mannequin;
 
 namespace figment {
 
@@ -24,6 +27,12 @@ std::string tradeoffTablePath();
 // The share of a garment's sections the study's progressive drapes begin from.
 constexpr double kStudyCoarseShare = 0.25;
 
+// The per-part mix ("mix"): the parts whose volumes come within kExactPartReach of the
+// garment's starting nodes collide with their triangles. A garment starts placed about
+// the body where it will rest (paper §3.3), so those are the parts it rests on.
+constexpr double kExactPartReach = 0.02;  // m
+std::vector<int> partsWhereGarmentMeets(const Mannequin& mannequin, const std::vector<Vec3>& garmentStart);
+
 struct ToleranceChoice {
   MeasuredConfiguration picked;
   std::shared_ptr<const Collider> body;
@@ -31,6 +40,7 @@ struct ToleranceChoice {
 
 // Throws std::runtime_error naming the field and value (no configuration within it),
 // or the table file, when there is none to use.
-ToleranceChoice chooseForTolerance(const ClothEngine& engine, ClothParameters& parameters);
+// `garment` is the engine's garment, where it starts.
+ToleranceChoice chooseForTolerance(const ClothEngine& engine, const TriangleMesh& garment, ClothParameters& parameters);
 
 }  // namespace figment

@@ -131,22 +131,37 @@ std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skele
   return owner;
 }
 
-std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton) {
+std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton, int borderRings) {
   const std::vector<int> owner = assignTriangles(body, skeleton);
+  std::vector<std::vector<int>> trianglesAt(borderRings > 0 ? body.vertices.size() : 0);
+  for (size_t t = 0; t < body.triangles.size() && borderRings > 0; ++t)
+    for (int v : body.triangles[t]) trianglesAt[v].push_back(static_cast<int>(t));
   std::vector<PartMesh> parts;
-  for (const BodyPart& p : skeleton.parts)
-    parts.push_back({p.name, {}, skeleton.joints[p.from].position, skeleton.joints[p.to].position});
-  std::vector<std::vector<int>> local(parts.size(), std::vector<int>(body.vertices.size(), -1));
-  for (size_t t = 0; t < body.triangles.size(); ++t) {
-    PartMesh& part = parts[owner[t]];
-    std::vector<int>& map = local[owner[t]];
-    Triangle kept;
-    for (int k = 0; k < 3; ++k) {
-      const int v = body.triangles[t][k];
-      if (map[v] < 0) map[v] = static_cast<int>(part.mesh.vertices.size()), part.mesh.vertices.push_back(body.vertices[v]);
-      kept[k] = map[v];
+  for (size_t p = 0; p < skeleton.parts.size(); ++p) {
+    const BodyPart& bone = skeleton.parts[p];
+    PartMesh part{bone.name, {}, skeleton.joints[bone.from].position, skeleton.joints[bone.to].position};
+    std::vector<char> kept(body.triangles.size(), 0);
+    for (size_t t = 0; t < body.triangles.size(); ++t) kept[t] = owner[t] == static_cast<int>(p);
+    for (int ring = 0; ring < borderRings; ++ring) {
+      std::vector<char> grown = kept;
+      for (size_t t = 0; t < body.triangles.size(); ++t)
+        if (kept[t])
+          for (int v : body.triangles[t])
+            for (int u : trianglesAt[v]) grown[u] = 1;
+      kept = std::move(grown);
     }
-    part.mesh.triangles.push_back(kept);
+    std::vector<int> map(body.vertices.size(), -1);
+    for (size_t t = 0; t < body.triangles.size(); ++t) {
+      if (!kept[t]) continue;
+      Triangle triangle;
+      for (int k = 0; k < 3; ++k) {
+        const int v = body.triangles[t][k];
+        if (map[v] < 0) map[v] = static_cast<int>(part.mesh.vertices.size()), part.mesh.vertices.push_back(body.vertices[v]);
+        triangle[k] = map[v];
+      }
+      part.mesh.triangles.push_back(triangle);
+    }
+    parts.push_back(std::move(part));
   }
   return parts;
 }

@@ -24,7 +24,10 @@ struct PartMesh {
   Vec3 from, to;      // the bone
 };
 
-std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton);
+// With `borderRings` > 0 each part also keeps that many rings of its neighbours'
+// triangles round its cut (triangles sharing a vertex with it, ring by ring): an exact
+// part's surface then overlaps the next part's, so no seam is left open between them.
+std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& skeleton, int borderRings = 0);
 
 // The part index (into skeleton.parts) of each triangle of `body`, as described above.
 std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skeleton);

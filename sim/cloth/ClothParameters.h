@@ -87,6 +87,9 @@ struct ClothParameters {
   double accelerationLimit = 20.0;       // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
   WindParameters wind;                   // paper §2 wind; amplitude 0 (the default) = none
   ImplicitSolverParameters implicitSolver;  // used by Integrator::Implicit only
+  // Test only the body parts near the garment (sim/collision/BroadPhaseCollider.h). The
+  // drape is the same either way; off only to measure what it saves.
+  bool broadPhase = true;
   // a_max in m/s^2.
   double accelerationLimitSI() const;
 

@@ -19,6 +19,11 @@ ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& par
   v_.assign(x_.size(), Vec3::Zero());
   pinned_.assign(x_.size(), 0);
   bodyDistanceBound_.assign(x_.size(), 0.0);
+  if (body_ && parameters_.broadPhase) {
+    broadPhase_ = std::make_shared<BroadPhaseCollider>(body_);
+    broadPhase_->follow(x_);
+    body_ = broadPhase_;
+  }
   if (parameters_.integrator == Integrator::Implicit)
     implicit_ = std::make_unique<ImplicitEuler>(*model_, parameters_, body_);
 }
@@ -109,6 +114,7 @@ void ClothSolver::integrate(double dt) {
 }
 
 void ClothSolver::step() {
+  if (broadPhase_) broadPhase_->follow(x_);
   if (implicit_) return stepImplicit();
   const double dt = parameters_.timeStep;
   const size_t n = x_.size();

@@ -20,6 +20,7 @@
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/implicit/ImplicitStepCosts.h"
+#include "sim/collision/BroadPhaseCollider.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
 
@@ -89,11 +90,14 @@ class ClothSolver {
   double maxSpeed() const;
   // Integrator::Implicit's costs since construction (zeros for the others).
   ImplicitStepCosts implicitCosts() const;
+  // The broad phase in front of the body (null without a body or with it off).
+  const BroadPhaseCollider* broadPhase() const { return broadPhase_.get(); }
 
  private:
   std::unique_ptr<ClothModel> model_;
   ClothParameters parameters_;
   std::shared_ptr<const Collider> body_;
+  std::shared_ptr<BroadPhaseCollider> broadPhase_;  // body_ itself, when parameters_.broadPhase
   std::vector<Vec3> x_, v_;
   double time_ = 0.0;
   int iterations_ = 0;

@@ -5,6 +5,10 @@
 
 #include "sim/core/TriangleMesh.h"
 
+#include <Eigen/Geometry>
+
+#include <memory>
+
 namespace figment {
 
 struct Contact {
@@ -22,6 +26,14 @@ class Collider {
   // bound of p's distance to the surface: the distance found, or searchRadius when
   // nothing lies within it; a caller may skip queries while p has not moved that far.
   virtual bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const = 0;
+
+  // The broad phase (BroadPhaseCollider): this collider without its parts that lie at
+  // least `reach` from every point of `region`, or null when it would leave none out (or
+  // has no parts to leave). For p in `region` the focused collider answers as this one,
+  // except that (a) where nothing touches p its lower bound counts only the parts kept (the
+  // distance to this collider is at least min(that bound, reach)), and (b) a push-out
+  // target more than reach - clearance from p was not checked against the parts left out.
+  virtual std::shared_ptr<const Collider> focusedOn(const Eigen::AlignedBox3d& region, double reach) const;
 };
 
 }  // namespace figment

@@ -200,7 +200,7 @@ class RadialVolume final : public CollisionVolume {
 
 class MeshVolume final : public CollisionVolume {
  public:
-  explicit MeshVolume(TriangleMesh mesh) : collider_(checked(std::move(mesh))) {
+  explicit MeshVolume(TriangleMesh mesh) : collider_(checked(std::move(mesh)), OpenEdges::Outside) {
     const Bounds box = boundsOf(collider_.surface().vertices);
     centre_ = 0.5 * (box.min + box.max);
     for (const Vec3& v : collider_.surface().vertices) radius_ = std::max(radius_, (v - centre_).norm());

@@ -72,7 +72,9 @@ class CollisionVolume {
 std::shared_ptr<const CollisionVolume> makeVolume(const CapsuleParameters& parameters);  // Capsule::nearestFast
 std::shared_ptr<const CollisionVolume> makeVolume(const RadialDepthParameters& parameters);  // ...::nearestFast
 // Exact: a bounding-volume hierarchy over a part's own triangles, closed or not; inside =
-// behind the nearest feature's angle-weighted pseudo-normal, as MeshCollider decides.
+// behind the nearest feature's angle-weighted pseudo-normal, as MeshCollider decides,
+// but never where that feature is on an open edge (the cut to a neighbouring part, whose
+// own volume answers there: OpenEdges::Outside).
 // Throws std::invalid_argument when it has no triangles.
 std::shared_ptr<const CollisionVolume> makeVolume(TriangleMesh partTriangles);
 

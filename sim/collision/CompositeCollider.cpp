@@ -18,6 +18,18 @@ void CompositeCollider::add(std::shared_ptr<const Collider> part) {
   parts_.push_back(std::move(part));
 }
 
+std::shared_ptr<const Collider> CompositeCollider::focusedOn(const Eigen::AlignedBox3d& region,
+                                                             double reach) const {
+  auto focused = std::make_shared<CompositeCollider>();
+  bool narrower = false;
+  for (const auto& part : parts_) {
+    std::shared_ptr<const Collider> f = part->focusedOn(region, reach);
+    narrower = narrower || f;
+    focused->add(f ? std::move(f) : part);
+  }
+  return narrower ? focused : nullptr;
+}
+
 bool CompositeCollider::contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const {
   bool touching = false;
   double bound = std::numeric_limits<double>::infinity();

@@ -29,6 +29,10 @@ class CompositeCollider : public Collider {
   // With no parts: false, and out.distance = +infinity (there is nothing to touch).
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
 
+  // Each part focused (or kept whole where it leaves nothing out); null when no part
+  // leaves anything out.
+  std::shared_ptr<const Collider> focusedOn(const Eigen::AlignedBox3d& region, double reach) const override;
+
   const std::vector<std::shared_ptr<const Collider>>& parts() const { return parts_; }
 
  private:

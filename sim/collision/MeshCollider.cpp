@@ -13,13 +13,14 @@ double cornerAngle(const Vec3& corner, const Vec3& next, const Vec3& previous) {
 }
 }  // namespace
 
-MeshCollider::MeshCollider(TriangleMesh surface) : surface_(std::move(surface)), bvh_(surface_) {
+MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_(std::move(surface)), bvh_(surface_) {
   const auto& V = surface_.vertices;
   const auto& T = surface_.triangles;
   faceNormals_.resize(T.size());
   vertexNormals_.assign(V.size(), Vec3::Zero());
   edgeNormals_.assign(3 * T.size(), Vec3::Zero());
   std::map<std::pair<int, int>, Vec3> edgeSums;
+  std::map<std::pair<int, int>, int> edgeUses;
   for (size_t t = 0; t < T.size(); ++t) {
     const Vec3 &a = V[T[t][0]], &b = V[T[t][1]], &c = V[T[t][2]];
     const Vec3 cross = (b - a).cross(c - a);
@@ -30,11 +31,38 @@ MeshCollider::MeshCollider(TriangleMesh surface) : surface_(std::move(surface)),
       vertexNormals_[i] += cornerAngle(V[i], V[j], V[l]) * faceNormals_[t];
       // Eigen vectors start uninitialised: insert a zero before summing.
       edgeSums.try_emplace(std::minmax(i, j), Vec3::Zero()).first->second += faceNormals_[t];
+      ++edgeUses[std::minmax(i, j)];
     }
   }
   // Closest-point feature k of triangle t is edge (k, k+1): Edge01, Edge12, Edge20.
   for (size_t t = 0; t < T.size(); ++t)
     for (int k = 0; k < 3; ++k) edgeNormals_[3 * t + k] = edgeSums[std::minmax(T[t][k], T[t][(k + 1) % 3])];
+  if (openEdges == OpenEdges::Outside) {
+    openEdge_.assign(3 * T.size(), 0);
+    openVertex_.assign(V.size(), 0);
+    for (size_t t = 0; t < T.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        const int i = T[t][k], j = T[t][(k + 1) % 3];
+        if (edgeUses[std::minmax(i, j)] != 1) continue;
+        openEdge_[3 * t + k] = 1;
+        openVertex_[i] = openVertex_[j] = 1;
+      }
+  }
+}
+
+bool MeshCollider::onOpenEdge(const ClosestPoint& closest) const {
+  if (openEdge_.empty()) return false;
+  const Triangle& tri = surface_.triangles[closest.triangle];
+  switch (closest.feature) {
+    case TriangleFeature::Face: return false;
+    case TriangleFeature::Edge01: return openEdge_[3 * closest.triangle + 0];
+    case TriangleFeature::Edge12: return openEdge_[3 * closest.triangle + 1];
+    case TriangleFeature::Edge20: return openEdge_[3 * closest.triangle + 2];
+    case TriangleFeature::Vertex0: return openVertex_[tri[0]];
+    case TriangleFeature::Vertex1: return openVertex_[tri[1]];
+    case TriangleFeature::Vertex2: return openVertex_[tri[2]];
+  }
+  return false;
 }
 
 bool MeshCollider::contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const {
@@ -56,7 +84,7 @@ bool MeshCollider::contact(const Vec3& p, double clearance, double searchRadius,
   }
   const Vec3 offset = p - closest.point;
   const double distance = std::sqrt(closest.distanceSquared);
-  const bool inside = offset.dot(pseudoNormal) < 0.0;
+  const bool inside = offset.dot(pseudoNormal) < 0.0 && !onOpenEdge(closest);
   out.surfacePoint = closest.point;
   out.distance = inside ? -distance : distance;
   // Push-out direction: along the true offset when it is well defined, else the

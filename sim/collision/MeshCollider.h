@@ -8,10 +8,18 @@
 
 namespace figment {
 
+// What a point whose closest feature is an open edge (one triangle only) or a vertex on
+// one is: decided by the pseudo-normal there as anywhere else (a closed surface has
+// none), or outside. A part of a body cut from the rest (an exact part) is open at the
+// cut, where the pseudo-normal says nothing about the body beyond; there the neighbouring
+// part's collider answers.
+enum class OpenEdges { PseudoNormal, Outside };
+
 class MeshCollider : public Collider {
  public:
-  // `surface` should be closed and consistently wound (counter-clockwise from outside).
-  explicit MeshCollider(TriangleMesh surface);
+  // `surface` should be closed (or open only where `openEdges` says so) and consistently
+  // wound (counter-clockwise from outside).
+  explicit MeshCollider(TriangleMesh surface, OpenEdges openEdges = OpenEdges::PseudoNormal);
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
   const TriangleMesh& surface() const { return surface_; }
   const TriangleBvh& bvh() const { return bvh_; }
@@ -21,6 +29,9 @@ class MeshCollider : public Collider {
   TriangleBvh bvh_;
   std::vector<Vec3> faceNormals_, vertexNormals_;
   std::vector<Vec3> edgeNormals_;  // per triangle edge (3 per triangle), angle-weighted sum
+  // With OpenEdges::Outside: per triangle edge and per vertex, whether it is (on) an open edge.
+  std::vector<char> openEdge_, openVertex_;
+  bool onOpenEdge(const ClosestPoint& closest) const;
 };
 
 }  // namespace figment

@@ -44,6 +44,38 @@ VolumeSetCollider::VolumeSetCollider(std::vector<PosedCollisionVolume> volumes) 
   }
 }
 
+std::shared_ptr<const Collider> VolumeSetCollider::focusedOn(const Eigen::AlignedBox3d& region,
+                                                             double reach) const {
+  std::shared_ptr<VolumeSetCollider> focused(new VolumeSetCollider(std::vector<PosedCollisionVolume>{}));  // filled below
+  for (size_t i = 0; i < world_.size(); ++i) {
+    const BoundingCapsule c = world_[i]->boundingCapsule();
+    const Vec3 grow = Vec3::Constant(c.radius);
+    const Eigen::AlignedBox3d box(c.a.cwiseMin(c.b) - grow, c.a.cwiseMax(c.b) + grow);
+    // The gap between the boxes, per axis: no point of one is nearer the other.
+    const Vec3 gap = (region.min() - box.max()).cwiseMax(box.min() - region.max()).cwiseMax(0.0);
+    if (gap.norm() >= reach) continue;
+    focused->parts_.push_back(parts_[i]);
+    focused->world_.push_back(world_[i]);
+    focused->reach_.push_back(reach_[i]);
+  }
+  if (focused->world_.size() == world_.size()) return nullptr;
+  return focused;
+}
+
+std::vector<int> VolumeSetCollider::partsWithin(const std::vector<Vec3>& points, double distance) const {
+  std::vector<int> parts;
+  for (size_t i = 0; i < world_.size(); ++i) {
+    if (std::find(parts.begin(), parts.end(), parts_[i]) != parts.end()) continue;
+    for (const Vec3& x : points)
+      if (!beyond(i, x, distance) && world_[i]->nearest(x).distance < distance) {
+        parts.push_back(parts_[i]);
+        break;
+      }
+  }
+  std::sort(parts.begin(), parts.end());
+  return parts;
+}
+
 VolumeSetCollider::Reach::Reach(const BoundingCapsule& c)
     : a(c.a), ab(c.b - c.a), inverseLength2(ab.squaredNorm() > 0.0 ? 1.0 / ab.squaredNorm() : 0.0), radius(c.radius) {}
 

@@ -59,6 +59,15 @@ class VolumeSetCollider : public Collider {
   // every volume answers from anywhere.
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
 
+  // The volumes whose bounding capsule's box comes within `reach` of `region` (a box
+  // test: conservative, it may keep a volume a capsule test would leave out).
+  std::shared_ptr<const Collider> focusedOn(const Eigen::AlignedBox3d& region, double reach) const override;
+
+  // The parts (PosedCollisionVolume::part, ascending, each once) of the volumes that come
+  // within `distance` (m) of any of `points`: where a garment placed at `points` meets
+  // the body.
+  std::vector<int> partsWithin(const std::vector<Vec3>& points, double distance) const;
+
   size_t size() const { return world_.size(); }
   int part(size_t i) const { return parts_[i]; }
   // Volume i in world space (its transform built in): for tests and benchmarks.

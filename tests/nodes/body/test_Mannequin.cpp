@@ -230,6 +230,38 @@ TEST_F(MannequinTest, AnExactPartCollidesWithItsOwnTrianglesAndFollowsThePose) {
   EXPECT_NEAR(c.distance, -0.02, 1e-6);
 }
 
+TEST_F(MannequinTest, ExactPartsCollideWithTheirTrianglesInsteadOfTheirVolumes) {
+  // The forearm capsule stays in the scene; exactParts puts the forearm's triangles (the
+  // 4 cm box) in its place, in the field or for one collider (a tolerance's mix).
+  TempDir dir;
+  dir.file("arm.obj",
+           "v 0.5 1.40 -0.02\nv 0.65 1.40 -0.02\nv 0.5 1.44 -0.02\nv 0.65 1.44 -0.02\n"
+           "v 0.5 1.40 0.02\nv 0.65 1.40 0.02\nv 0.5 1.44 0.02\nv 0.65 1.44 0.02\n"
+           "f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 1 3 4 2\nf 5 6 8 7\n");
+  const std::string path = dir.file("scene.iv", mannequinScene("body DEF Arm MeshFile { fileName \"arm.obj\" }"));
+  SceneRoot root = readFile(path);
+  ASSERT_TRUE(root);
+  auto* model = find<Mannequin>(root.get(), "Model");
+  const figment::Vec3 onAxis(0.575, 1.42, 0.0);
+  figment::Contact c;
+  ASSERT_TRUE(inContact(*model->collider(), onAxis, c));
+  EXPECT_LT(c.distance, -0.03) << "the capsule is 4 cm round its axis";
+  int forearm = 0;
+  while (model->skeleton().parts.at(forearm).name != "forearmL") ++forearm;
+  ASSERT_TRUE(inContact(*model->colliderWithExactParts({forearm}), onAxis, c));
+  EXPECT_NEAR(c.distance, -0.02, 1e-9) << "the box's faces are 2 cm from its axis";
+  EXPECT_TRUE(inContact(*model->colliderWithExactParts({forearm}), {0.0, 1.3, 0.0}, c)) << "the torso's volume";
+
+  model->exactParts.setValue("forearmL");
+  ASSERT_TRUE(inContact(*model->collider(), onAxis, c));
+  EXPECT_NEAR(c.distance, -0.02, 1e-9);
+  const figment::CollisionBody::Description d = model->describeBody();
+  EXPECT_EQ(d.counts, (std::vector<std::pair<std::string, int>>{
+                          {"capsule_volumes", 0}, {"radial_volumes", 1}, {"exact_parts", 1}}));
+  model->body.setValue(nullptr);
+  EXPECT_THROW(model->collider(), std::invalid_argument) << "its triangles need the body";
+}
+
 TEST_F(MannequinTest, AnExactPartNeedsABody) {
   CapturedErrors errors;
   SceneRoot root = readString(mannequinScene("", std::string(kJoints) + "ExactVolume { part \"forearmL\" }\n"));
@@ -284,6 +316,7 @@ INSTANTIATE_TEST_SUITE_P(
                      "rotatedJoints has 2 names but rotations has 1 values"},
         BadMannequin{"height 3", "", "height"},
         BadMannequin{"blendRadius 0", "", "blendRadius = 0"},
+        BadMannequin{"exactParts [ \"forearmL\", \"elbow\" ]", "", "exactParts[1] = \"elbow\" is not a part"},
         BadMannequin{"", std::string(kJoints) + "CapsuleVolume { part \"elbow\" }\n",
                      "CapsuleVolume: part = \"elbow\" is not a part"},
         BadMannequin{"", std::string(kJoints) + "DEF C CapsuleVolume { part \"handL\"  x -1 }\n",

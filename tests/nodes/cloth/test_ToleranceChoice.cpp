@@ -5,6 +5,7 @@
 // converged drape.
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
+#include "sim/collision/Collider.h"
 #include "support/IoTestSupport.h"
 #include "support/ShippedGarmentScene.h"
 
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 using namespace figment::test;
@@ -81,6 +83,39 @@ TEST_F(ToleranceChoice, WithoutAToleranceNothingIsPicked) {
   ASSERT_EQ(engine.lastError(), "");
   EXPECT_EQ(engine.lastRun().picked[0], '\0');
   EXPECT_EQ(engine.lastRun().iterations, 53);  // the scene's implicit 1/20 s with constraints
+}
+
+TEST(ToleranceChoiceMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles) {
+  TempDir dir;
+  const ScopedEnvironment table{"FIGMENT_TRADEOFF_TABLE",
+                                dir.file("table.csv",
+                                         "method,body,progressive,resolution,garments,worst_mean_dev_pct_height,"
+                                         "total_median_wall_s\n"
+                                         "implicit:0.05,triangles,off,1,3,0.5,0.3\n"
+                                         "implicit:0.05,mix,off,1,3,0.6,0.5\n")};
+  const ShippedGarmentScene scene("dress.iv");
+  ClothEngine& engine = *scene.engine();
+  engine.tolerance = 0.7;
+  drape(engine);
+  ASSERT_EQ(engine.lastError(), "");
+  EXPECT_EQ(std::string(engine.lastRun().picked.data()), "implicit:0.05, triangles, progressive off");
+  // Arms turned out a little: the body's own triangles are not posed, the mix's parts are.
+  const SoPathList found = figment::findAll(scene.root(), Mannequin::getClassTypeId());
+  ASSERT_EQ(found.getLength(), 1);
+  auto* mannequin = static_cast<Mannequin*>(found[0]->getTail());
+  mannequin->rotatedJoints.setValues(0, 2, std::array<SbString, 2>{"shoulderL", "shoulderR"}.data());
+  mannequin->rotations.setValues(0, 2, std::array<SbRotation, 2>{SbRotation(SbVec3f(0, 0, 1), 0.1f),
+                                                                  SbRotation(SbVec3f(0, 0, 1), -0.1f)}.data());
+  const std::vector<SbVec3f> posed = drape(engine);
+  ASSERT_EQ(engine.lastError(), "");
+  EXPECT_EQ(std::string(engine.lastRun().picked.data()), "implicit:0.05, mix, progressive off");
+  EXPECT_TRUE(engine.lastRun().atRest);
+  // At rest outside the posed body's volumes (the mix's volume parts and more).
+  int inside = 0;
+  figment::Contact contact;
+  for (const SbVec3f& p : posed)
+    inside += mannequin->collider()->contact({p[0], p[1], p[2]}, 0.0, 0.05, contact) && contact.distance < -0.01;
+  EXPECT_EQ(inside, 0);
 }
 
 TEST(ToleranceChoiceCommittedTable, TheDressPickedAtHalfAPercentLandsWithinItOfAConvergedDrape) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 using namespace figment;
@@ -38,4 +40,29 @@ TEST(MeshCollider, ClearanceCountsAsContact) {
   EXPECT_TRUE(collider.contact(Vec3(0, 0.302, 0), 0.005, 1.0, contact));
   EXPECT_FALSE(collider.contact(Vec3(0, 0.31, 0), 0.005, 1.0, contact));
   EXPECT_GT(contact.distance, 0.0);
+}
+
+// A sphere with its cap cut off (open above y = 0.05), as an exact part is open at its cut.
+TEST(MeshCollider, AnOpenEdgeSaysNothingOfInsideWhenAskedTo) {
+  const TriangleMesh sphere = meshes::sphere(0.1, 48, 24);
+  TriangleMesh cut = sphere;
+  cut.triangles.clear();
+  for (const Triangle& t : sphere.triangles)
+    if ((sphere.vertices[t[0]] + sphere.vertices[t[1]] + sphere.vertices[t[2]]).y() / 3.0 < 0.05)
+      cut.triangles.push_back(t);
+  const MeshCollider byPseudoNormal(cut), openOutside(cut, OpenEdges::Outside);
+  const double inf = std::numeric_limits<double>::infinity();
+  Contact c;
+  // Above the cut, nearest the rim: the rim's one face calls it inside, which says
+  // nothing about the (missing) cap; asked to, the collider calls it outside.
+  const Vec3 aboveCut(0.0, 0.08, 0.0);
+  byPseudoNormal.contact(aboveCut, 0.0, inf, c);
+  EXPECT_LT(c.distance, 0.0);
+  EXPECT_FALSE(openOutside.contact(aboveCut, 0.0, inf, c));
+  EXPECT_NEAR(c.distance, std::hypot(0.1 * std::sqrt(0.75), 0.03), 0.01);
+  // Below the cut, nearest a face: inside either way.
+  for (const MeshCollider* collider : {&byPseudoNormal, &openOutside}) {
+    ASSERT_TRUE(collider->contact(Vec3(0.0, -0.05, 0.0), 0.0, inf, c));
+    EXPECT_NEAR(c.distance, -0.05, 2e-3);
+  }
 }

@@ -356,3 +356,18 @@ TEST(VolumeSetCollider, DeepPointsArePushedStraightOut) {
     EXPECT_GT(inside, 500);
   }
 }
+
+TEST(VolumeSetCollider, PartsWithinADistanceOfAGarment) {
+  // Three parts along x, 0.3 m apart; a garment's nodes about the middle one.
+  std::vector<PosedCollisionVolume> volumes;
+  for (int part = 0; part < 3; ++part)
+    volumes.push_back({10 + part, makeVolume(segmentCapsule(Vec3(0.3 * part, 0, 0), Vec3(0.3 * part, 0.2, 0), 0.05)),
+                       Eigen::Affine3d::Identity()});
+  volumes.push_back({11, makeVolume(segmentCapsule(Vec3(0.3, 0.2, 0), Vec3(0.3, 0.4, 0), 0.05)),
+                     Eigen::Affine3d::Identity()});  // a second volume of the middle part
+  const VolumeSetCollider set(std::move(volumes));
+  const std::vector<Vec3> garment = {Vec3(0.3, 0.1, 0.06), Vec3(0.3, 0.3, -0.065)};
+  EXPECT_EQ(set.partsWithin(garment, 0.02), std::vector<int>{11});
+  EXPECT_EQ(set.partsWithin(garment, 0.005), std::vector<int>{}) << "the nearest node is 1 cm out";
+  EXPECT_EQ(set.partsWithin(garment, 0.3), (std::vector<int>{10, 11, 12}));
+}
