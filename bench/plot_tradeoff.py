@@ -15,7 +15,7 @@ matplotlib.use("Agg")
 import matplotlib.lines
 import matplotlib.pyplot as plt
 
-MARKERS = {"volumes": "o", "capsules": "s", "triangles": "^"}
+MARKERS = {"volumes": "o", "capsules": "s", "triangles": "^", "mix": "D"}
 
 
 def number(text):

@@ -20,4 +20,10 @@ bool cornersBelow(const CoordIndexFace& face, const int32_t* coordIndex, int poi
   return true;
 }
 
+int firstBadIndex(const int32_t* coordIndex, int count, int pointCount) {
+  for (int k = 0; k < count; ++k)
+    if (coordIndex[k] < -1 || coordIndex[k] >= pointCount) return k;
+  return -1;
+}
+
 }  // namespace figment

@@ -23,4 +23,8 @@ std::vector<CoordIndexFace> coordIndexFaces(const int32_t* coordIndex, int count
 // Whether every corner of `face` is a vertex of a list of `pointCount` points.
 bool cornersBelow(const CoordIndexFace& face, const int32_t* coordIndex, int pointCount);
 
+// Where in `coordIndex` (`count` entries) the first entry lies that is neither a vertex
+// of a list of `pointCount` points nor the -1 that ends a face; -1 when there is none.
+int firstBadIndex(const int32_t* coordIndex, int count, int pointCount);
+
 }  // namespace figment

@@ -1,6 +1,8 @@
 #include "nodes/Init.h"
 
 #include "nodes/body/CapsuleVolume.h"
+#include "nodes/body/CollisionGroup.h"
+#include "nodes/cloth/GarmentSurface.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/render/DepthSortedGroup.h"
@@ -31,6 +33,8 @@ void init() {
   ExactVolume::initClass();
   Mannequin::initClass();
   MannequinSkin::initClass();
+  GarmentSurface::initClass();
+  CollisionGroup::initClass();
 }
 
 }  // namespace figment

@@ -1,6 +1,7 @@
 #include "viewer/SceneFile.h"
 
 #include "viewer/CoinMessages.h"
+#include "viewer/SceneTextCheck.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -20,6 +21,9 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
     error = "not a file";
     return nullptr;
   }
+  // Before Coin: its reader has no bound on nesting or includes (SceneTextCheck.h).
+  error = checkSceneText(path);
+  if (!error.empty()) return nullptr;
   CoinMessages::takeReadErrors(path);  // only this file's errors count
   SoInput in;
   if (!in.openFile(path.c_str(), TRUE)) {

@@ -1,7 +1,11 @@
 #include "viewer/ViewOptions.h"
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <regex>
+#include <string_view>
 
 namespace figment::viewer {
 
@@ -16,18 +20,45 @@ std::optional<ImageSize> parseImageSize(const std::string& text) {
   return size;
 }
 
+namespace {
+
+// A decimal number as figment-view takes an angle: [+-] digits [. digits] or [+-] . digits,
+// with spaces around it; nullopt otherwise, and for one too large for a double (a
+// 400-digit azimuth), where std::stod would throw.
+std::optional<double> parseDecimal(std::string_view text) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+  const bool negative = !text.empty() && text.front() == '-';
+  if (!text.empty() && (text.front() == '+' || text.front() == '-')) text.remove_prefix(1);
+  const size_t point = text.find('.');
+  const std::string_view whole = text.substr(0, point);
+  const std::string_view fraction = point == std::string_view::npos ? std::string_view() : text.substr(point + 1);
+  const auto digits = [](std::string_view part) {
+    return std::all_of(part.begin(), part.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+  };
+  if (whole.empty() && fraction.empty()) return std::nullopt;
+  if (!digits(whole) || !digits(fraction)) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return negative ? -value : value;
+}
+
+}  // namespace
+
 std::optional<ViewDirection> parseViewDirection(const std::string& text) {
   if (text == "front") return ViewDirection{0.0, 0.0};
   if (text == "right") return ViewDirection{90.0, 0.0};
   if (text == "back") return ViewDirection{180.0, 0.0};
   if (text == "left") return ViewDirection{270.0, 0.0};
-  static const std::regex pattern(R"(^\s*([-+]?\d+(\.\d*)?|[-+]?\.\d+)\s*,\s*([-+]?\d+(\.\d*)?|[-+]?\.\d+)\s*$)");
-  std::smatch m;
-  if (!std::regex_match(text, m, pattern)) return std::nullopt;
-  const ViewDirection view{std::stod(m[1]), std::stod(m[3])};
+  const size_t comma = text.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  const std::optional<double> azimuth = parseDecimal(std::string_view(text).substr(0, comma));
+  const std::optional<double> elevation = parseDecimal(std::string_view(text).substr(comma + 1));
+  if (!azimuth || !elevation) return std::nullopt;
   // Straight up or down the camera's "up" (+y) is undefined.
-  if (!std::isfinite(view.azimuth) || !(std::abs(view.elevation) < 90.0)) return std::nullopt;
-  return view;
+  if (!std::isfinite(*azimuth) || !(std::abs(*elevation) < 90.0)) return std::nullopt;
+  return ViewDirection{*azimuth, *elevation};
 }
 
 }  // namespace figment::viewer

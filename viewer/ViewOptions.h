@@ -22,7 +22,8 @@ struct ViewDirection {
 std::optional<ImageSize> parseImageSize(const std::string& text);
 
 // "front" (0,0), "right" (90,0), "back" (180,0), "left" (270,0), or "AZ,EL" in degrees
-// with EL in (-90, 90); nullopt otherwise.
+// with EL in (-90, 90) (each [+-]digits[.digits]); nullopt otherwise, also for a
+// number too large for a double.
 std::optional<ViewDirection> parseViewDirection(const std::string& text);
 
 }  // namespace figment::viewer

@@ -5,9 +5,11 @@
 //                [--show-volumes] [--stop-at N] [--no-cache]
 //
 // Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
-// exit status (2: bad command line, 1: anything else); no image is written then.
+// exit status (2: bad command line, 1: anything else, an exception included); no image
+// is written then.
 
 #include "io/DrapeCache.h"
+#include "nodes/FaceIndexCheck.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/SceneSearch.h"
@@ -25,10 +27,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -51,6 +55,24 @@ int fail(const std::string& where, const std::string& message, int status = 1) {
   std::cerr << "figment-view: " << where << ": " << message << "\n";
   return status;
 }
+
+// The image just written, removed again unless the run succeeds: an error after it (the
+// statistics, an exception) leaves no image behind.
+class WrittenImage {
+ public:
+  explicit WrittenImage(std::string path) : path_(std::move(path)) {}
+  ~WrittenImage() {
+    std::error_code ignored;
+    if (!kept_) std::filesystem::remove(path_, ignored);
+  }
+  WrittenImage(const WrittenImage&) = delete;
+  WrittenImage& operator=(const WrittenImage&) = delete;
+  void keep() { kept_ = true; }
+
+ private:
+  std::string path_;
+  bool kept_ = false;
+};
 
 // Long simulations say how far they are, about once a second.
 void reportProgress(const ClothEngine& engine, const ClothEngine::Progress& p) {
@@ -110,6 +132,10 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
   useDrapeCache(!options.noCache);
   std::string error = drapeAll(session);
   if (!error.empty()) return fail(options.scene, error);
+  // Draped, the coordinates are known: every face set's indices must lie among them
+  // before anything is drawn or bounded (Coin allocates by the largest index).
+  error = figment::firstFaceIndexError(session.scene());
+  if (!error.empty()) return fail(options.scene, error);
   SoSeparator* root = session.stage(size, view);
 
   DepthBufferOnly plain(root);
@@ -121,20 +147,23 @@ int render(const Options& options, const figment::viewer::ImageSize& size,
   if (!error.empty()) return fail(options.scene, error);
   error = renderer.writePng(options.output);
   if (!error.empty()) return fail(options.output, error);
+  WrittenImage image(options.output);
   if (!options.stats.empty()) {
     error = writeStatsJson(options.stats, options.scene, session.drapes(), renderWall.count(), size);
-    if (!error.empty()) {
-      std::filesystem::remove(options.output);  // an error leaves no image behind
-      return fail(options.stats, error);
-    }
+    if (!error.empty()) return fail(options.stats, error);
   }
+  image.keep();
   return 0;
 }
 
-}  // namespace
+// An exception's message as one line.
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  return text;
+}
 
-int main(int argc, char** argv) {
-  Options options;
+int run(int argc, char** argv, Options& options) {
   CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless."};
   app.add_option("scene", options.scene, "Scene file (.iv)")->required();
   app.add_option("-o,--output", options.output, "PNG image to write")->required();
@@ -175,4 +204,20 @@ int main(int argc, char** argv) {
                   2);
   }
   return render(options, *size, view);
+}
+
+}  // namespace
+
+// Nothing escapes the program: an exception from anywhere (a library's, std::bad_alloc)
+// is one line and exit status 1, as every other error.
+int main(int argc, char** argv) {
+  Options options;
+  const auto where = [&] { return options.scene.empty() ? std::string("error") : options.scene; };
+  try {
+    return run(argc, argv, options);
+  } catch (const std::exception& e) {
+    return fail(where(), std::string("unexpected error: ") + oneLine(e.what()));
+  } catch (...) {
+    return fail(where(), "unexpected error of an unknown type");
+  }
 }

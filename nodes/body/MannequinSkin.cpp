@@ -13,6 +13,7 @@
 #include <Inventor/actions/SoPickAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/errors/SoDebugError.h>
+#include <Inventor/errors/SoReadError.h>
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
@@ -52,6 +53,27 @@ MannequinSkin::~MannequinSkin() { impl_->children.truncate(0); }
 
 const std::string& MannequinSkin::lastError() const { return impl_->error; }
 
+std::string MannequinSkin::label() const {
+  const SbName name = getName();
+  return std::string("MannequinSkin") + (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": ";
+}
+
+std::string MannequinSkin::mannequinTypeError() const {
+  const SoNode* node = mannequin.getValue();
+  if (!node || node->isOfType(Mannequin::getClassTypeId())) return "";
+  return std::string("mannequin is a ") + node->getTypeId().getName().getString() + ", not a Mannequin";
+}
+
+// A mannequin of the wrong type is the file's mistake: said where it is read, not left
+// to draw nothing in silence.
+SbBool MannequinSkin::readInstance(SoInput* in, unsigned short flags) {
+  if (!inherited::readInstance(in, flags)) return FALSE;
+  const std::string error = mannequinTypeError();
+  if (error.empty()) return TRUE;
+  SoReadError::post(in, "%s", (label() + error).c_str());  // fails the read; Coin adds file and line
+  return FALSE;
+}
+
 void MannequinSkin::notify(SoNotList* list) {
   if (impl_ && !impl_->updating) impl_->dirty = true;
   inherited::notify(list);
@@ -66,9 +88,8 @@ void MannequinSkin::update() {
   std::vector<int32_t> indices;
   try {
     SoNode* node = mannequin.getValue();
-    if (node && !node->isOfType(Mannequin::getClassTypeId()))
-      throw std::invalid_argument(std::string("mannequin is a ") + node->getTypeId().getName().getString() +
-                                  ", not a Mannequin");
+    if (const std::string wrongType = mannequinTypeError(); !wrongType.empty())
+      throw std::invalid_argument(wrongType);
     if (node) {
       const auto* m = static_cast<const Mannequin*>(node);
       const figment::TriangleMesh& body = m->posedBody();
@@ -87,8 +108,7 @@ void MannequinSkin::update() {
           indices.insert(indices.end(), {body.triangles[t][0], body.triangles[t][1], body.triangles[t][2], -1});
     }
   } catch (const std::exception& e) {
-    error = std::string("MannequinSkin") + (getName().getLength() ? " '" + std::string(getName().getString()) + "'" : "") +
-            ": " + e.what();
+    error = label() + e.what();
     points.clear(), indices.clear();
   }
   if (!error.empty() && error != impl_->error) SoDebugError::post("MannequinSkin", "%s", error.c_str());

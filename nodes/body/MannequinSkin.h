@@ -21,7 +21,9 @@ class SoChildList;
   the arms apart from the torso this way, each in a StencilSeparator (paper §5).
 
   An unusable mannequin (see Mannequin) draws nothing; the error is posted once through
-  SoDebugError, and the ClothEngine that uses the mannequin reports it.
+  SoDebugError, and the ClothEngine that uses the mannequin reports it. A `mannequin`
+  that is not a Mannequin at all is a read error ("MannequinSkin 'Arms': mannequin is a
+  Cube, not a Mannequin"): the file does not read.
 
   <b>FILE FORMAT/DEFAULTS:</b>
   \code
@@ -57,9 +59,14 @@ class MannequinSkin : public SoNode {
 
  protected:
   ~MannequinSkin() override;
+  SbBool readInstance(SoInput* in, unsigned short flags) override;
 
  private:
   void update();
+  // "MannequinSkin 'Arms': " (the DEF name when it has one).
+  std::string label() const;
+  // "mannequin is a Cube, not a Mannequin"; "" when it is one (or NULL).
+  std::string mannequinTypeError() const;
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -123,7 +123,8 @@ class ClothEngine : public SoEngine {
   SoSFDouble youngsModulus;
   // Poisson's ratio nu, dimensionless. Default 0.3. Must lie in (-1, 0.5).
   SoSFDouble poissonRatio;
-  // Integration time step dt, s. Default 1.5e-4. Must be > 0.
+  // Integration time step dt, s. Default 1.5e-4. Must be > 0, and maxTime / timeStep at
+  // most 1e7 steps.
   SoSFDouble timeStep;
   // Upper bound of simulated time, s. Default 5.
   SoSFDouble maxTime;

@@ -26,9 +26,9 @@ std::string at(int index, int value) {
 
 }  // namespace
 
-TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex) {
+TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex, const char* pointsName) {
   const int numPoints = restPoints.getNum();
-  if (numPoints == 0) throw std::invalid_argument("restPoints is empty");
+  if (numPoints == 0) throw std::invalid_argument(std::string(pointsName) + " is empty");
   TriangleMesh mesh;
   mesh.vertices.reserve(numPoints);
   for (int i = 0; i < numPoints; ++i) {
@@ -41,8 +41,8 @@ TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coo
   const int numIndices = coordIndex.getNum();
   const int32_t* index = coordIndex.getValues(0);
   auto notAVertex = [&](int i) {
-    return std::invalid_argument(at(i, index[i]) + " is not a vertex: restPoints has " + std::to_string(numPoints) +
-                                 " points");
+    return std::invalid_argument(at(i, index[i]) + " is not a vertex: " + pointsName + " has " +
+                                 std::to_string(numPoints) + " points");
   };
   for (const CoordIndexFace& face : coordIndexFaces(index, numIndices)) {
     for (int i = face.first; i < face.end; ++i)

@@ -18,7 +18,9 @@ namespace figment {
 
 // The garment: restPoints (m) and the faces of coordIndex, -1 separated, polygons split
 // into triangles as a fan (0 1 2, 0 2 3, ...). Empty faces (-1 -1) are skipped.
-TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex);
+// `pointsName` names the points field in errors.
+TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex,
+                               const char* pointsName = "restPoints");
 
 // The material: a preset named in `material` with the four material fields the scene
 // wrote over it, or those four fields alone. Throws for an unknown preset.

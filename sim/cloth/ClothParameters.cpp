@@ -45,6 +45,11 @@ void ClothParameters::validate() const {
   if (timeStep > maxTime)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
                                 formatNumber(maxTime));
+  // A step too small for the run is a slip of the exponent, not a drape anyone waits for.
+  if (maxTime / timeStep > kMaxSteps)
+    throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " would take " +
+                                formatNumber(maxTime / timeStep) + " steps to maxTime = " + formatNumber(maxTime) +
+                                ", more than " + formatNumber(kMaxSteps));
 }
 
 }  // namespace figment

@@ -93,7 +93,12 @@ struct ClothParameters {
   // a_max in m/s^2.
   double accelerationLimitSI() const;
 
-  // Throws std::invalid_argument naming the field and value when out of range.
+  // A run takes at most this many steps (maxTime / timeStep): 10^7 steps of the smallest
+  // garment take hours.
+  static constexpr double kMaxSteps = 1e7;
+
+  // Throws std::invalid_argument naming the field and value when out of range, or when
+  // maxTime / timeStep exceeds kMaxSteps (then naming timeStep).
   void validate() const;
 };
 

@@ -56,8 +56,10 @@ class FigmentView : public ::testing::Test {
   figment::test::TempDir dir_;
 };
 
-// A falling square of cloth; `fields` go into its ClothEngine, `before` before it.
-std::string clothScene(const std::string& fields, const std::string& before = "") {
+// A falling square of cloth; `fields` go into its ClothEngine, `before` before it, and
+// `layerIndex` is its ClothingLayer's coordIndex.
+std::string clothScene(const std::string& fields, const std::string& before = "",
+                       const std::string& layerIndex = "0 3 2 1 -1") {
   return "#Inventor V2.1 ascii\nSeparator {\n" + before +
          "  Material { diffuseColor 0.1 0.3 0.8 }\n"
          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
@@ -65,8 +67,17 @@ std::string clothScene(const std::string& fields, const std::string& before = ""
          "    coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01\n"
          "    " + fields + "\n"
          "  } . positions }\n"
-         "  ClothingLayer { coordIndex [ 0 3 2 1 -1 ] }\n"
+         "  DEF Layer ClothingLayer { coordIndex [ " + layerIndex + " ] }\n"
          "}\n";
+}
+
+// `depth` nodes of type `group`, one inside the other, around a Cube: depth + 1 levels.
+std::string nestedScene(const std::string& group, int depth) {
+  std::string text = "#Inventor V2.1 ascii\n";
+  for (int i = 0; i < depth; ++i) text += group + " {\n";
+  text += "Cube { }\n";
+  for (int i = 0; i < depth; ++i) text += "}\n";
+  return text;
 }
 
 }  // namespace
@@ -227,8 +238,76 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"BadSize", clothScene(""), "--size 800by600", {"--size", "800by600"}},
         BadInput{"ZeroSize", clothScene(""), "--size 0x600", {"--size", "0x600"}},
         BadInput{"BadViewName", clothScene(""), "--view up", {"--view", "up"}},
-        BadInput{"ViewStraightDown", clothScene(""), "--view 0,-90", {"--view", "0,-90"}}),
+        BadInput{"ViewStraightDown", clothScene(""), "--view 0,-90", {"--view", "0,-90"}},
+        // Found by fuzzing (issue 15): each crashed, hung or was accepted in silence.
+        BadInput{"ViewAzimuthOf400Digits", clothScene(""), "--view " + std::string(400, '7') + ",0",
+                 {"--view", "'" + std::string(400, '7') + ",0'"}},
+        BadInput{"TimeStepFarTooSmall", clothScene("timeStep 1e-30"), "",
+                 {"scene.iv", "ClothEngine 'Drape'", "timeStep = 1e-30", "more than 1e+07"}},
+        BadInput{"LayerIndexOfTwoToThe31", clothScene("", "", "0 3 2 2147483647 -1"), "",
+                 {"scene.iv", "ClothingLayer 'Layer'", "coordIndex[3] = 2147483647", "4 points"}},
+        BadInput{"LayerIndexOfTwoToThe31DrawnAsAFaceSet", clothScene("", "", "0 3 2 2147483647 -1"),
+                 "--depth-buffer-only", {"ClothingLayer 'Layer'", "coordIndex[3] = 2147483647"}},
+        BadInput{"LayerIndexOutOfRange", clothScene("", "", "0 3 2 1 -1 0 1 4 -1"), "",
+                 {"ClothingLayer 'Layer'", "coordIndex[7] = 4", "4 points"}},
+        BadInput{"LayerIndexNegative", clothScene("", "", "0 3 -2 1 -1"), "",
+                 {"ClothingLayer 'Layer'", "coordIndex[2] = -2"}},
+        BadInput{"FaceSetIndexOutOfRange",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                 "  DEF Faces IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n",
+                 "",
+                 {"IndexedFaceSet 'Faces'", "coordIndex[2] = 2147483647", "3 points"}},
+        BadInput{"MannequinSkinOfACube",
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Arms MannequinSkin { mannequin Cube { } }\n}\n", "",
+                 {"scene.iv", "line 3", "MannequinSkin 'Arms'", "mannequin is a Cube, not a Mannequin"}},
+        BadInput{"SceneIncludesItself", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"scene.iv\" }\n}\n", "",
+                 {"scene.iv", "line 3", "File { name \"scene.iv\" }", "scene.iv -> scene.iv"}},
+        BadInput{"IncludesADevice", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"/dev/zero\" }\n}\n", "",
+                 {"scene.iv", "line 3", "\"/dev/zero\"", "not a regular file"}},
+        BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
+                 {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
+        BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
+                 {"scene.iv", "line 258", "nesting depth 257 is more than 256"}},
+        BadInput{"TenThousandNestedSeparators", nestedScene("Separator", 10000), "", {"nesting depth 257"}},
+        BadInput{"TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "",
+                 {"nesting depth 257"}},
+        BadInput{"TenThousandNestedStencilSeparators", nestedScene("StencilSeparator", 10000), "",
+                 {"nesting depth 257"}}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
+
+TEST_F(FigmentView, TwoFilesThatIncludeEachOtherAreOneLine) {
+  write("b.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"a.iv\" }\n}\n");
+  const std::string a = write("a.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"b.iv\" } }\n");
+  const ProcessResult r = run(quote(a) + " -o " + quote(path("out.png")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_NE(r.err.find("line 3: File { name \"a.iv\" } includes a file already being read: a.iv -> b.iv -> a.iv"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("(in " + path("b.iv") + ")"), std::string::npos) << r.err;
+  EXPECT_TRUE(noImageWritten());
+}
+
+TEST_F(FigmentView, IncludesSeventeenDeepAreOneLine) {
+  // f0.iv includes f1.iv, which includes f2.iv, ...: f17.iv would be 17 deep.
+  const auto name = [](int i) { return std::string("f").append(std::to_string(i)).append(".iv"); };
+  for (int i = 0; i <= 17; ++i)
+    write(name(i), "#Inventor V2.1 ascii\nSeparator { File { name \"" + name(i + 1) + "\" } }\n");
+  const ProcessResult r = run(quote(path("f0.iv")) + " -o " + quote(path("out.png")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_NE(r.err.find("File { name \"f17.iv\" } would be 17 includes deep, more than 16"), std::string::npos)
+      << r.err;
+  EXPECT_TRUE(noImageWritten());
+}
+
+TEST_F(FigmentView, RendersASceneJustUnderTheNestingBound) {
+  // 255 Separators around a Cube: 256 levels, the most there may be.
+  const std::string scene = write("deep.iv", nestedScene("Separator", 255));
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(path("out.png")));
+}
 
 TEST_F(FigmentView, DepthBufferOnlyDrawsTheSkinThatTheHybridNodesHide) {
   // scenes/hybrid/poke-through.iv: the two pictures differ (skin shows in the first).

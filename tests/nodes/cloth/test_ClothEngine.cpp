@@ -217,6 +217,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"poissonRatio 0.5", "ClothEngine 'Drape': poissonRatio = 0.5 must be in (-1, 0.5)"},
         BadField{"poissonRatio -1", "ClothEngine 'Drape': poissonRatio = -1 must be in (-1, 0.5)"},
         BadField{"timeStep 0", "ClothEngine 'Drape': timeStep = 0 must be > 0"},
+        BadField{"timeStep 1e-30",
+                 "ClothEngine 'Drape': timeStep = 1e-30 would take 2e+28 steps to maxTime = 0.02, more than 1e+07"},
         BadField{"material \"tweed\"",
                  "ClothEngine 'Drape': material = \"tweed\" is not a preset (cotton, silk, denim, jersey)"},
         BadField{"strainLimit -0.1", "ClothEngine 'Drape': strainLimit = -0.1 must be >= 0"},

@@ -1,0 +1,48 @@
+#pragma once
+// CollisionGroup: several collision bodies as one ClothEngine body.
+
+#include "nodes/body/CollisionBody.h"
+
+#include <Inventor/fields/SoMFNode.h>
+#include <Inventor/fields/SoSFNode.h>
+#include <Inventor/nodes/SoSubNode.h>
+
+/*!
+  \class CollisionGroup nodes/body/CollisionGroup.h
+  \brief The union of collision bodies: a Mannequin and the garments draped on it.
+
+  `body` and each node in `layers` is a collision body (Mannequin, MeshFile,
+  GarmentSurface, another CollisionGroup); a cloth node is in contact when it touches
+  any, and is pushed out of the deepest (sim/collision/CompositeCollider.h). A garment
+  over another names the body (usually `USE` of the scene's Mannequin) and the inner
+  garments' GarmentSurfaces; the inner garment drapes first, because its surface's
+  points are connected to its output. The bodies are referenced, not drawn: draws
+  nothing. (The shared body has a field of its own: Coin writes a `USE` inside a list
+  of nodes as `USE Name,`, which it cannot read back.)
+
+  <b>FILE FORMAT/DEFAULTS:</b>
+  \code
+    CollisionGroup { body NULL  layers [ ] }
+  \endcode
+*/
+class CollisionGroup : public SoNode, public figment::CollisionBody {
+  typedef SoNode inherited;
+  SO_NODE_HEADER(CollisionGroup);
+
+ public:
+  static void initClass();
+  CollisionGroup();
+
+  SoSFNode body;    // Default NULL; a collision body
+  SoMFNode layers;  // Default [ ]; each a collision body (GarmentSurface: a garment beneath)
+
+  // Throws std::invalid_argument naming this node, the field (layers[i]) and what is
+  // wrong (not a collision body; its own error; nothing at all).
+  std::shared_ptr<const figment::Collider> bodyCollider() const override;
+  // "group" with the number of "bodies" (body and layers).
+  Description describeBody() const override;
+  std::string label() const;  // "CollisionGroup 'Name'" or "CollisionGroup"
+
+ protected:
+  ~CollisionGroup() override;
+};

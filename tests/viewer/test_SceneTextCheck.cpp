@@ -1,0 +1,146 @@
+// The look at a scene's text before Coin reads it: nesting and includes are bounded, a
+// cycle of includes and a File naming a device are refused, each in one line; every
+// shipped scene passes.
+
+#include "support/TempDir.h"
+#include "viewer/SceneTextCheck.h"
+
+#include <Inventor/SoDB.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+using namespace figment::viewer;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kHeader = "#Inventor V2.1 ascii\n";
+
+// `levels` levels: Separators one inside the other around a Cube.
+std::string nested(int levels) {
+  std::string text = kHeader;
+  for (int i = 1; i < levels; ++i) text += "Separator {\n";
+  text += "Cube { }\n";
+  for (int i = 1; i < levels; ++i) text += "}\n";
+  return text;
+}
+
+// "f3.iv" for ("f", 3).
+std::string numbered(const char* stem, int i) { return std::string(stem).append(std::to_string(i)).append(".iv"); }
+
+std::string including(const std::string& name) {
+  return kHeader + "Separator {\n  File { name \"" + name + "\" }\n}\n";
+}
+
+class SceneTextCheckTest : public ::testing::Test {
+ protected:
+  void SetUp() override { SoDB::init(); }
+  std::string write(const std::string& name, const std::string& text) const { return dir_.file(name, text); }
+  figment::test::TempDir dir_;
+};
+
+}  // namespace
+
+TEST_F(SceneTextCheckTest, PassesEveryShippedScene) {
+  int count = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(FIGMENT_SOURCE_DIR "/scenes")) {
+    if (entry.path().extension() != ".iv") continue;
+    ++count;
+    EXPECT_EQ(checkSceneText(entry.path().string()), "") << entry.path();
+  }
+  EXPECT_GT(count, 10);
+}
+
+TEST_F(SceneTextCheckTest, BoundsTheNestingDepth) {
+  EXPECT_EQ(checkSceneText(write("at.iv", nested(kMaxNestingDepth))), "");
+  // The Cube of 257 levels opens on line 258 (the header is line 1).
+  EXPECT_EQ(checkSceneText(write("past.iv", nested(kMaxNestingDepth + 1))),
+            "line 258: nesting depth 257 is more than 256");
+}
+
+TEST_F(SceneTextCheckTest, CountsBracketsButNothingInStringsOrComments) {
+  const std::string quiet = kHeader + "Info { string \"{{{{ [[[[ \\\" {{{{\" }  # {{{{ [[[[\nSeparator { }\n";
+  EXPECT_EQ(checkSceneText(write("quiet.iv", quiet)), "");
+  std::string brackets = kHeader + "Separator {\n";
+  for (int i = 0; i < kMaxNestingDepth; ++i) brackets += "[ ";
+  EXPECT_EQ(checkSceneText(write("brackets.iv", brackets)), "line 3: nesting depth 257 is more than 256");
+}
+
+TEST_F(SceneTextCheckTest, CountsTheNestingAcrossIncludes) {
+  // The File's body lies 200 levels deep: 56 levels more are allowed in the file it names.
+  std::string outer = kHeader;
+  for (int i = 0; i < 199; ++i) outer += "Separator {\n";
+  outer += "File { name \"inner.iv\" }\n" + std::string(199, '}') + "\n";
+  const std::string scene = write("outer.iv", outer);
+  const std::string inner = write("inner.iv", nested(56));
+  EXPECT_EQ(checkSceneText(scene), "");
+  write("inner.iv", nested(57));
+  EXPECT_EQ(checkSceneText(scene), "line 58: nesting depth 257 is more than 256 (in " + inner + ")");
+}
+
+TEST_F(SceneTextCheckTest, RefusesAFileThatIncludesItself) {
+  const std::string scene = write("self.iv", including("self.iv"));
+  EXPECT_EQ(checkSceneText(scene),
+            "line 3: File { name \"self.iv\" } includes a file already being read: self.iv -> self.iv");
+  // Unquoted, as an SFString may be written.
+  EXPECT_NE(checkSceneText(write("bare.iv", kHeader + "File { name bare.iv }\n")).find("bare.iv -> bare.iv"),
+            std::string::npos);
+}
+
+TEST_F(SceneTextCheckTest, RefusesTwoFilesThatIncludeEachOther) {
+  const std::string a = write("a.iv", including("sub/b.iv"));
+  const std::string b = write("sub/b.iv", including("../a.iv"));
+  EXPECT_EQ(checkSceneText(a),
+            "line 3: File { name \"../a.iv\" } includes a file already being read: a.iv -> b.iv -> a.iv (in " + b +
+                ")");
+}
+
+TEST_F(SceneTextCheckTest, LooksBesideTheFileThatNamesTheInclude) {
+  // sub/b.iv names "c.iv": sub/c.iv, not a c.iv beside the scene.
+  write("a.iv", including("sub/b.iv"));
+  write("sub/b.iv", including("c.iv"));
+  write("sub/c.iv", kHeader + "Cube { }\n");
+  write("c.iv", including("c.iv"));  // would be a cycle if found instead
+  EXPECT_EQ(checkSceneText((dir_.path() / "a.iv").string()), "");
+  // The same file twice, side by side, is no cycle.
+  const std::string twice = kHeader + "Group { File { name \"sub/c.iv\" } File { name \"sub/c.iv\" } }\n";
+  EXPECT_EQ(checkSceneText(write("twice.iv", twice)), "");
+}
+
+TEST_F(SceneTextCheckTest, BoundsTheIncludeDepth) {
+  // fI.iv includes fI+1.iv: from f0.iv, f16.iv is 16 includes deep, f17.iv 17.
+  for (int i = 0; i < 17; ++i) write(numbered("f", i), including(numbered("f", i + 1)));
+  write("f17.iv", kHeader + "Cube { }\n");
+  EXPECT_EQ(checkSceneText((dir_.path() / "f1.iv").string()), "");
+  EXPECT_EQ(checkSceneText((dir_.path() / "f0.iv").string()),
+            "line 3: File { name \"f17.iv\" } would be 17 includes deep, more than 16 (in " +
+                (dir_.path() / "f16.iv").string() + ")");
+}
+
+TEST_F(SceneTextCheckTest, BoundsTheIncludesReadInAll) {
+  // Each file includes the next one twice: 2 + 4 + ... + 2^10 = 2046 files to read.
+  for (int i = 0; i < 10; ++i) {
+    const std::string next = numbered("g", i + 1);
+    write(numbered("g", i), kHeader + "Group { File { name \"" + next + "\" } File { name \"" + next + "\" } }\n");
+  }
+  write("g10.iv", kHeader + "Cube { }\n");
+  EXPECT_NE(checkSceneText((dir_.path() / "g0.iv").string()).find("is include 1001, more than 1000 in all"),
+            std::string::npos);
+}
+
+TEST_F(SceneTextCheckTest, RefusesWhatIsNotARegularFileOrNotThere) {
+  EXPECT_EQ(checkSceneText(write("zero.iv", including("/dev/zero"))),
+            "line 3: File { name \"/dev/zero\" } is not a regular file");
+  EXPECT_EQ(checkSceneText(write("missing.iv", including("nothere.iv"))),
+            "line 3: File { name \"nothere.iv\" } not found");
+  fs::create_directory(dir_.path() / "folder.iv");  // SoInput passes folders over
+  EXPECT_EQ(checkSceneText(write("folder.txt", including("folder.iv"))),
+            "line 3: File { name \"folder.iv\" } not found");
+}
+
+TEST_F(SceneTextCheckTest, LeavesBinaryFilesToCoin) {
+  EXPECT_EQ(checkSceneText(write("binary.iv", "#Inventor V2.1 binary\n" + std::string(1000, '{'))), "");
+}

@@ -1,0 +1,212 @@
+#include "viewer/SceneTextCheck.h"
+
+#include <Inventor/SoInput.h>
+#include <Inventor/lists/SbStringList.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+namespace figment::viewer {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The text's tokens as far as nesting and File names go: words, quoted strings, and the
+// braces and brackets that open and close a level. Outside strings '#' starts a comment
+// (the header line is one) and commas separate values as spaces do.
+struct Token {
+  enum Kind { kWord, kString, kOpen, kClose, kEnd };
+  Kind kind = kEnd;
+  std::string text;
+  int line = 1;
+};
+
+class Tokenizer {
+ public:
+  explicit Tokenizer(const std::string& text) : text_(text) {}
+
+  Token next() {
+    skipSpaceAndComments();
+    Token token;
+    token.line = line_;
+    if (at_ >= text_.size()) return token;
+    const char c = text_[at_];
+    if (c == '{' || c == '[' || c == '}' || c == ']') {
+      ++at_;
+      token.kind = c == '{' || c == '[' ? Token::kOpen : Token::kClose;
+    } else if (c == '"') {
+      token.kind = Token::kString;
+      token.text = quoted();
+    } else {
+      token.kind = Token::kWord;
+      while (at_ < text_.size() && !separates(text_[at_])) token.text += text_[at_++];
+    }
+    return token;
+  }
+
+ private:
+  static bool separates(char c) {
+    return std::isspace(static_cast<unsigned char>(c)) || std::strchr("{}[]\",#", c) != nullptr;
+  }
+
+  void skipSpaceAndComments() {
+    while (at_ < text_.size()) {
+      const char c = text_[at_];
+      if (c == '#') {
+        while (at_ < text_.size() && text_[at_] != '\n') ++at_;
+      } else if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
+        line_ += c == '\n';
+        ++at_;
+      } else {
+        return;
+      }
+    }
+  }
+
+  // The string from its opening quote to its closing one; a backslash keeps the next
+  // character (\" is a quote in the string, not its end).
+  std::string quoted() {
+    std::string out;
+    for (++at_; at_ < text_.size() && text_[at_] != '"'; ++at_) {
+      if (text_[at_] == '\\' && at_ + 1 < text_.size()) ++at_;
+      line_ += text_[at_] == '\n';
+      out += text_[at_];
+    }
+    ++at_;
+    return out;
+  }
+
+  const std::string& text_;
+  size_t at_ = 0;
+  int line_ = 1;
+};
+
+// Text Coin reads as ASCII: a header line ("#Inventor V2.1 ascii", "#VRML V2.0 utf8")
+// that does not say binary. Anything else is Coin's to accept or refuse.
+bool isAsciiScene(const std::string& text) {
+  if (text.rfind('#', 0) != 0) return false;
+  return text.substr(0, text.find('\n')).find("binary") == std::string::npos;
+}
+
+class Checker {
+ public:
+  explicit Checker(const fs::path& scene) : scene_(scene) {}
+
+  std::string run() {
+    checkFile(scene_, 0);
+    return error_;
+  }
+
+ private:
+  struct OpenFile {
+    fs::path asFound;    // its folder is where SoInput looks (SoInput::addDirectoryFirst)
+    fs::path canonical;  // what a cycle is found by
+  };
+
+  // Checks `file`, whose top level lies `base` levels deep. False after an error.
+  bool checkFile(const fs::path& file, int base) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!isAsciiScene(text)) return true;
+    std::error_code ec;
+    chain_.push_back({file, fs::weakly_canonical(file, ec)});
+    Tokenizer tokens(text);
+    std::vector<int> fileBodies;  // depths of the File nodes' bodies open now
+    int depth = 0;
+    bool afterFile = false, expectName = false;
+    for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
+      if (expectName && (t.kind == Token::kString || (t.kind == Token::kWord && t.text != "="))) {
+        if (!include(t.text, t.line, file, base + depth)) return false;
+      } else if (t.kind == Token::kOpen) {
+        if (base + ++depth > kMaxNestingDepth)
+          return fail(file, t.line,
+                      "nesting depth " + std::to_string(base + depth) + " is more than " +
+                          std::to_string(kMaxNestingDepth));
+        if (afterFile) fileBodies.push_back(depth);
+      } else if (t.kind == Token::kClose) {
+        if (!fileBodies.empty() && fileBodies.back() == depth) fileBodies.pop_back();
+        depth = std::max(depth - 1, 0);  // an unmatched close is Coin's syntax error to report
+      }
+      expectName = t.kind == Token::kWord && t.text == "name" && !fileBodies.empty() && fileBodies.back() == depth;
+      afterFile = t.kind == Token::kWord && (t.text == "File" || t.text == "SoFile");
+    }
+    chain_.pop_back();
+    return true;
+  }
+
+  // The file a File node names at `line` of `from`, its contents `depth` levels deep.
+  bool include(const std::string& name, int line, const fs::path& from, int depth) {
+    if (name.empty()) return true;  // Coin warns and reads nothing
+    const std::string file = "File { name \"" + name + "\" }";
+    const int includeDepth = static_cast<int>(chain_.size());
+    if (includeDepth > kMaxIncludeDepth)
+      return fail(from, line,
+                  file + " would be " + std::to_string(includeDepth) + " includes deep, more than " +
+                      std::to_string(kMaxIncludeDepth));
+    if (++includes_ > kMaxIncludes)
+      return fail(from, line, file + " is include " + std::to_string(includes_) + ", more than " +
+                                  std::to_string(kMaxIncludes) + " in all");
+    const fs::path found = resolve(name);
+    if (found.empty()) return fail(from, line, file + " not found");
+    std::error_code ec;
+    if (!fs::is_regular_file(found, ec)) return fail(from, line, file + " is not a regular file");
+    const fs::path canonical = fs::weakly_canonical(found, ec);
+    for (const OpenFile& open : chain_)
+      if (open.canonical == canonical)
+        return fail(from, line, file + " includes a file already being read: " + chainText(found));
+    if (!std::ifstream(found)) return fail(from, line, file + " cannot be read");
+    return checkFile(found, depth);
+  }
+
+  // Where SoInput::findFile finds `name`: as given (absolute, or from the working
+  // directory), then in the folders of the files being read, innermost first (SoInput
+  // adds each one's folder first while reading it), then along SoInput's directories.
+  // Folders are passed over, as SoInput does; "" when nowhere.
+  fs::path resolve(const std::string& name) const {
+    const fs::path given(name);
+    std::vector<fs::path> candidates{given};
+    if (given.is_relative()) {
+      for (auto open = chain_.rbegin(); open != chain_.rend(); ++open)
+        candidates.push_back(open->asFound.parent_path() / given);
+      const SbStringList& dirs = SoInput::getDirectories();
+      for (int i = 0; i < dirs.getLength(); ++i) candidates.push_back(fs::path(dirs[i]->getString()) / given);
+    }
+    for (const fs::path& candidate : candidates) {
+      std::error_code ec;
+      const fs::file_status status = fs::status(candidate, ec);
+      if (fs::exists(status) && !fs::is_directory(status)) return candidate;
+    }
+    return {};
+  }
+
+  // "a.iv -> b.iv -> a.iv": the files being read, then `next`.
+  std::string chainText(const fs::path& next) const {
+    std::string out;
+    for (const OpenFile& open : chain_) out += open.asFound.filename().string() + " -> ";
+    return out + next.filename().string();
+  }
+
+  // One line in CoinMessages' form: the file named when it is not the scene.
+  bool fail(const fs::path& file, int line, const std::string& what) {
+    error_ = "line " + std::to_string(line) + ": " + what;
+    if (file != scene_) error_ += " (in " + file.string() + ")";
+    return false;
+  }
+
+  fs::path scene_;
+  std::vector<OpenFile> chain_;  // the files being read, the scene first
+  int includes_ = 0;
+  std::string error_;
+};
+
+}  // namespace
+
+std::string checkSceneText(const std::string& path) { return Checker(path).run(); }
+
+}  // namespace figment::viewer
