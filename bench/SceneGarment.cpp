@@ -57,7 +57,9 @@ bool SceneGarment::load(const std::string& scene, std::string& error) {
     error = scene + ": no ClothEngine";
     return false;
   }
-  engine = session.engines().front();
+  // The last garment: a single garment, or an outfit's outer layer (scenes list layers
+  // inside out; the inner ones drape once, as the scene has them).
+  engine = session.engines().back();
   coordinates = coordinatesFedBy(session.scene(), engine);
   if (!coordinates) {
     error = scene + ": no Coordinate3 fed by " + engine->label();

@@ -1,6 +1,6 @@
 #pragma once
-// The first garment of a scene, for studies that re-run its ClothEngine with other
-// settings: the engine, the Coordinate3 it feeds, and its rest shape.
+// The last garment of a scene (an outfit's outer layer), for studies that re-run its
+// ClothEngine with other settings: the engine, the Coordinate3 it feeds, and its rest shape.
 
 #include "nodes/cloth/ClothEngine.h"
 #include "sim/core/TriangleMesh.h"

@@ -8,6 +8,7 @@
 #include "TemporaryScript.h"
 
 #include "nodes/body/CollisionBody.h"
+#include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "nodes/cloth/ToleranceChoice.h"
@@ -64,12 +65,21 @@ std::pair<double, double> deviation(const std::vector<Vec3>& a, const std::vecto
 }
 
 // The bodies a scene's garment is draped against, by the options' names (kept referenced).
+// An outer layer's (a CollisionGroup of the Mannequin and inner garments) keeps its
+// inner garments: each choice takes the Mannequin's place in a copy of the group.
 class Bodies {
  public:
   // `garmentStart`: where the garment starts (the per-part mix's exact parts are those it
-  // starts near).
-  Bodies(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart, std::string& error) {
-    add("triangles", bodyFor("exact", root, error));
+  // starts near); `sceneBody`: the garment's body as the scene has it.
+  Bodies(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart,
+         SoNode* sceneBody, std::string& error)
+      : layers_(sceneBody && sceneBody->isOfType(CollisionGroup::getClassTypeId())
+                    ? static_cast<CollisionGroup*>(sceneBody)
+                    : nullptr) {
+    if (layers_) layers_->ref();
+    SoNode* triangles = bodyFor("exact", root, error);
+    if (triangles) exact_ = asCollisionBody(triangles)->bodyCollider();  // the body alone: "inside" counts
+    add("triangles", triangles);
     for (const std::string& name : options.bodies) {
       if (!error.empty() || nodes_.count(name)) continue;
       if (name == "volumes") add(name, bodyFor(options.volumesFile, root, error));
@@ -77,10 +87,10 @@ class Bodies {
       else if (name == "mix") add(name, mixFor(root, options, garmentStart, error));
       else error = "--body " + name + ": expected volumes, capsules, triangles or mix";
     }
-    if (error.empty()) exact_ = asCollisionBody(nodes_.at("triangles"))->bodyCollider();
   }
   ~Bodies() {
     for (auto& [name, node] : nodes_) node->unref();
+    if (layers_) layers_->unref();
   }
   Bodies(const Bodies&) = delete;
   Bodies& operator=(const Bodies&) = delete;
@@ -114,9 +124,16 @@ class Bodies {
   }
   void add(const std::string& name, SoNode* node) {
     if (!node) return;
+    if (layers_) {
+      auto* group = new CollisionGroup;
+      group->body = node;
+      group->layers = layers_->layers;
+      node = group;
+    }
     node->ref();
     nodes_[name] = node;
   }
+  CollisionGroup* layers_;  // the scene's group, or null
   std::map<std::string, SoNode*> nodes_;
   std::shared_ptr<const Collider> exact_;
 };
@@ -251,7 +268,7 @@ std::string studyScene(const std::string& scene, const TradeoffStudyOptions& opt
   std::string error;
   if (!garment.load(scene, error)) return error;
   const TriangleMesh base = garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex);
-  const Bodies bodies(garment.session.scene(), options, base.vertices, error);
+  const Bodies bodies(garment.session.scene(), options, base.vertices, garment.engine->body.getValue(), error);
   if (!error.empty()) return scene + ": " + error;
   std::printf("%s\n", scene.c_str());
   referenceCsv << scene << ',';

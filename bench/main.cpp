@@ -84,7 +84,7 @@ CLI::App* addCollisionCommand(CLI::App& app, CollisionStudyOptions& collision) {
 CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
   CLI::App* command = app.add_subcommand(
       "methods", "a garment by each method and time step: steps, wall to rest, deviation, strain, nodes inside");
-  command->add_option("--scene", methods.scenes, "scenes whose first garment is draped (repeat the option)")
+  command->add_option("--scene", methods.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat the option)")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   command->add_option("--method", methods.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G], e.g. heun:1.5e-4:clamp:30, implicit+penalty:0.05 (repeat)")
@@ -101,7 +101,7 @@ CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
 CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progressive) {
   CLI::App* command = app.add_subcommand(
       "progressive", "a garment draped progressively against the full garment: wall to rest, speed-up, deviation");
-  command->add_option("--scene", progressive.scene, "scene whose first garment is draped progressively")
+  command->add_option("--scene", progressive.scene, "scene whose last garment is draped progressively")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   command->add_option("--method", progressive.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
@@ -125,7 +125,7 @@ CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progress
 CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   CLI::App* command = app.add_subcommand(
       "sizes", "a garment resampled to each size, draped whole and progressively: wall to rest, speed-up, deviation");
-  command->add_option("--scene", sizes.scene, "scene whose first garment is resampled")
+  command->add_option("--scene", sizes.scene, "scene whose last garment is resampled")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   command->add_option("--sections", sizes.sizes, "garment sizes, triangles (repeat)")
@@ -152,7 +152,7 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
 CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
   CLI::App* command = app.add_subcommand(
       "tradeoff", "every method choice against a converged reference: wall to rest against deviation, Pareto front");
-  command->add_option("--scene", tradeoff.scenes, "scenes whose first garment is draped (repeat)")
+  command->add_option("--scene", tradeoff.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat)")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   command->add_option("--method", tradeoff.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
