@@ -125,7 +125,7 @@ std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body) {
   if (!collisionBody) {
     const std::string name = node->getName().getLength() ? " '" + std::string(node->getName().getString()) + "'" : "";
     throw std::invalid_argument(std::string("body: ") + node->getTypeId().getName().getString() + name +
-                                " is not a collision body (use a MeshFile or a Mannequin)");
+                                " is not a collision body (use a MeshFile, a Mannequin or a CollisionGroup)");
   }
   try {
     return collisionBody->bodyCollider();

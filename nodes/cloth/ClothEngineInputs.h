@@ -30,7 +30,7 @@ Material materialFromFields(const ClothEngine& engine);
 ClothParameters parametersFromFields(const ClothEngine& engine);
 
 // The collider of the node in `body` (a figment::CollisionBody: a MeshFile's exact
-// collider, a Mannequin's posed volumes); null for NULL.
+// collider, a Mannequin's posed volumes, a CollisionGroup's union); null for NULL.
 std::shared_ptr<const Collider> colliderFromBody(const SoSFNode& body);
 
 }  // namespace figment

@@ -234,7 +234,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "",
                  "[ 0 1 -1 ]"},
         BadField{"", "ClothEngine 'Drape': restPoints is empty", "[ ]"},
-        BadField{"body Cube { }", "ClothEngine 'Drape': body: Cube is not a collision body (use a MeshFile or a Mannequin)"},
+        BadField{"body Cube { }", "ClothEngine 'Drape': body: Cube is not a collision body (use a MeshFile, a Mannequin or a CollisionGroup)"},
         BadField{"body MeshFile { }", "ClothEngine 'Drape': body: MeshFile has no mesh"}));
 
 // --- finding the engines of a scene --------------------------------------------------
