@@ -151,7 +151,15 @@ int fitAndWrite(const Options& options, const figment::TriangleMesh& body) {
   if (const std::string name = unknownPart(skeleton, forcedCapsules); !name.empty())
     return kTool.fail("--capsule: " + name + " is not a part");
 
-  const std::vector<figment::CollisionVolumeParameters> volumes = fitVolumes(body, skeleton, options, forcedCapsules);
+  // A fit takes seconds to minutes: say which part is being fitted, a line each.
+  Options withProgress = options;
+  withProgress.fit.progress = [&](const std::string& part, int index, int count) {
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    std::fprintf(stderr, "figment-fit: %s: part %d of %d (%s), %.1f s\n", options.body.c_str(), index + 1, count,
+                 part.c_str(), elapsed.count());
+  };
+  const std::vector<figment::CollisionVolumeParameters> volumes =
+      fitVolumes(body, skeleton, withProgress, forcedCapsules);
   size_t capsules = 0, radials = 0;
   for (const auto& v : volumes)
     if (!exact.count(v.part)) (v.kind == figment::CollisionVolumeParameters::Kind::Capsule ? capsules : radials)++;

@@ -100,13 +100,17 @@ std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part, const
 
 namespace {
 
-// `fitPart` on every part of `body` with enough vertices to fit, in the skeleton's order.
+// `fitPart` on every part of `body` with enough vertices to fit, in the skeleton's order,
+// saying which to `progress`.
 template <typename FitPart>
-std::vector<CollisionVolumeParameters> fitEachPart(const TriangleMesh& body, const Skeleton& skeleton, FitPart fitPart) {
+std::vector<CollisionVolumeParameters> fitEachPart(const TriangleMesh& body, const Skeleton& skeleton,
+                                                   const CollisionVolumeFitOptions& options, FitPart fitPart) {
+  std::vector<PartMesh> parts = splitIntoParts(body, skeleton);
+  std::erase_if(parts, [](const PartMesh& part) { return part.mesh.vertices.size() < 4; });
   std::vector<CollisionVolumeParameters> out;
-  for (const PartMesh& part : splitIntoParts(body, skeleton)) {
-    if (part.mesh.vertices.size() < 4) continue;
-    const std::vector<CollisionVolumeParameters> v = fitPart(part);
+  for (size_t i = 0; i < parts.size(); ++i) {
+    if (options.progress) options.progress(parts[i].name, static_cast<int>(i), static_cast<int>(parts.size()));
+    const std::vector<CollisionVolumeParameters> v = fitPart(parts[i]);
     out.insert(out.end(), v.begin(), v.end());
   }
   return out;
@@ -116,12 +120,12 @@ std::vector<CollisionVolumeParameters> fitEachPart(const TriangleMesh& body, con
 
 std::vector<CollisionVolumeParameters> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
                                       const CollisionVolumeFitOptions& options) {
-  return fitEachPart(body, skeleton, [&](const PartMesh& part) { return fitPartCapsules(part, options); });
+  return fitEachPart(body, skeleton, options, [&](const PartMesh& part) { return fitPartCapsules(part, options); });
 }
 
 std::vector<CollisionVolumeParameters> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
                                            const CollisionVolumeFitOptions& options) {
-  return fitEachPart(body, skeleton, [&](const PartMesh& part) { return fitPartRadial(part, options); });
+  return fitEachPart(body, skeleton, options, [&](const PartMesh& part) { return fitPartRadial(part, options); });
 }
 
 }  // namespace figment

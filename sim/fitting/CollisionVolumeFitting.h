@@ -23,6 +23,7 @@
 #include "sim/body/Skeleton.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct CollisionVolumeFitOptions {
   int harmonics = 8;             // K, the default the collision bench's targets are measured at
   double sectionSpacing = 0.02;  // m
   uint64_t seed = 1;
+  // Called before each part is fitted (a whole body's fit takes seconds to minutes):
+  // the part's name, its index among the parts fitted (from 0) and how many there are.
+  std::function<void(const std::string& part, int index, int count)> progress;
 };
 
 // One or more capsules per part (every part of skeleton.parts gets at least one volume);

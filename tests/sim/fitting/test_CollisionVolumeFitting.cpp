@@ -111,3 +111,18 @@ TEST(CollisionVolumeFitting, TheSameSeedRepeatsAFit) {
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].capsule.values(), b[i].capsule.values());
 }
+
+TEST(CollisionVolumeFitting, SaysWhichPartItIsFittingBeforeEach) {
+  CollisionVolumeFitOptions options;
+  std::vector<std::string> said;
+  options.progress = [&](const std::string& part, int index, int count) {
+    EXPECT_EQ(index, static_cast<int>(said.size()));
+    EXPECT_EQ(count, 2);
+    said.push_back(part);
+  };
+  const Skeleton skeleton = twoParts();
+  fitRadialVolumes(twoPartBody(), skeleton, options);
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_EQ(said[0], skeleton.parts[0].name);
+  EXPECT_EQ(said[1], skeleton.parts[1].name);
+}
