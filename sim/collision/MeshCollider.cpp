@@ -19,8 +19,12 @@ MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_
   faceNormals_.resize(T.size());
   vertexNormals_.assign(V.size(), Vec3::Zero());
   edgeNormals_.assign(3 * T.size(), Vec3::Zero());
-  std::map<std::pair<int, int>, Vec3> edgeSums;
-  std::map<std::pair<int, int>, int> edgeUses;
+  // Per edge, the sum of its faces' normals and how many faces share it.
+  struct EdgeFaces {
+    Vec3 normalSum = Vec3::Zero();
+    int count = 0;
+  };
+  std::map<std::pair<int, int>, EdgeFaces> edges;
   for (size_t t = 0; t < T.size(); ++t) {
     const Vec3 &a = V[T[t][0]], &b = V[T[t][1]], &c = V[T[t][2]];
     const Vec3 cross = (b - a).cross(c - a);
@@ -29,25 +33,25 @@ MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_
     for (int k = 0; k < 3; ++k) {
       const int i = T[t][k], j = T[t][(k + 1) % 3], l = T[t][(k + 2) % 3];
       vertexNormals_[i] += cornerAngle(V[i], V[j], V[l]) * faceNormals_[t];
-      // Eigen vectors start uninitialised: insert a zero before summing.
-      edgeSums.try_emplace(std::minmax(i, j), Vec3::Zero()).first->second += faceNormals_[t];
-      ++edgeUses[std::minmax(i, j)];
+      EdgeFaces& edge = edges[std::minmax(i, j)];
+      edge.normalSum += faceNormals_[t];
+      ++edge.count;
     }
   }
   // Closest-point feature k of triangle t is edge (k, k+1): Edge01, Edge12, Edge20.
-  for (size_t t = 0; t < T.size(); ++t)
-    for (int k = 0; k < 3; ++k) edgeNormals_[3 * t + k] = edgeSums[std::minmax(T[t][k], T[t][(k + 1) % 3])];
   if (openEdges == OpenEdges::Outside) {
     openEdge_.assign(3 * T.size(), 0);
     openVertex_.assign(V.size(), 0);
-    for (size_t t = 0; t < T.size(); ++t)
-      for (int k = 0; k < 3; ++k) {
-        const int i = T[t][k], j = T[t][(k + 1) % 3];
-        if (edgeUses[std::minmax(i, j)] != 1) continue;
-        openEdge_[3 * t + k] = 1;
-        openVertex_[i] = openVertex_[j] = 1;
-      }
   }
+  for (size_t t = 0; t < T.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int i = T[t][k], j = T[t][(k + 1) % 3];
+      const EdgeFaces& edge = edges[std::minmax(i, j)];
+      edgeNormals_[3 * t + k] = edge.normalSum;
+      if (openEdge_.empty() || edge.count != 1) continue;
+      openEdge_[3 * t + k] = 1;
+      openVertex_[i] = openVertex_[j] = 1;
+    }
 }
 
 bool MeshCollider::onOpenEdge(const ClosestPoint& closest) const {
