@@ -1,7 +1,7 @@
 // Garments draped over garments (paper §6's layers): a ClothEngine's body may be a
 // CollisionGroup of the Mannequin and an inner garment's GarmentSurface, whose points
 // are the inner engine's output. The outfit of scenes/outfit-layers.iv (the T-shirt
-// under the dress) drapes inside out and comes to rest with no dress node behind the
+// under the dress; the T-shirt under the skirt in outfit-skirt.iv) drapes inside out and comes to rest with no dress node behind the
 // T-shirt's surface and no node of either inside the body's volumes; bad groups and
 // surfaces are one line naming the node, the entry or field and the value.
 #include "nodes/SceneSearch.h"
@@ -48,43 +48,72 @@ int deeperThan(const figment::Collider& collider, const std::vector<figment::Vec
 
 }  // namespace
 
-TEST(LayeredGarments, TheDressOverTheTShirtRestsOutsideItAndTheBody) {
-  const ShippedGarmentScene scene("outfit-layers.iv");
-  ASSERT_TRUE(scene.root());
-  ClothEngine* shirt = engineNamed(scene.root(), "ShirtDrape");
-  ClothEngine* dress = engineNamed(scene.root(), "DressDrape");
-  ASSERT_TRUE(shirt && dress);
-  // Asking for the dress drapes the T-shirt first: the dress's body needs its surface.
-  const std::vector<figment::Vec3> dressAtRest = drape(*dress);
-  ASSERT_EQ(dress->lastError(), "");
-  EXPECT_EQ(shirt->evaluationCount(), 1) << "the T-shirt drapes once, before the dress";
-  EXPECT_TRUE(shirt->lastRun().atRest);
-  EXPECT_TRUE(dress->lastRun().atRest) << dress->lastRun().iterations << " steps";
+// An outfit of the T-shirt (ShirtDrape) under an outer garment, draped and checked.
+struct DrapedOutfit {
+  explicit DrapedOutfit(const char* file, const char* outerEngine) : scene(file) {
+    if (!scene.root()) return;
+    shirt = engineNamed(scene.root(), "ShirtDrape");
+    outer = engineNamed(scene.root(), outerEngine);
+    if (!shirt || !outer) return;
+    outerAtRest = drape(*outer);
+    auto* group = dynamic_cast<CollisionGroup*>(outer->body.getValue());
+    surface = group && group->layers.getNum() == 1 ? dynamic_cast<GarmentSurface*>(group->layers[0]) : nullptr;
+    if (!surface) return;
+    for (int i = 0; i < surface->point.getNum(); ++i)
+      shirtAtRest.emplace_back(surface->point[i][0], surface->point[i][1], surface->point[i][2]);
+    volumes = figment::asCollisionBody(group->body.getValue())->bodyCollider().get();
+  }
 
-  auto* group = dynamic_cast<CollisionGroup*>(dress->body.getValue());
-  ASSERT_NE(group, nullptr);
-  ASSERT_EQ(group->layers.getNum(), 1);
-  auto* surface = dynamic_cast<GarmentSurface*>(group->layers[0]);
-  ASSERT_NE(surface, nullptr);
-  std::vector<figment::Vec3> shirtAtRest;  // what the dress draped over
-  for (int i = 0; i < surface->point.getNum(); ++i)
-    shirtAtRest.emplace_back(surface->point[i][0], surface->point[i][1], surface->point[i][2]);
-  ASSERT_EQ(shirtAtRest.size(), static_cast<size_t>(shirt->restPoints.getNum()));
-  const figment::Collider& volumes = *figment::asCollisionBody(group->body.getValue())->bodyCollider();
-  const figment::Collider& shirtSurface = *surface->bodyCollider();
-  // No dress node behind the T-shirt's cloth (inside its 2 mm by more than 1 mm: the
-  // penalty contacts' springs give a little), none in the body.
-  const double thickness = surface->thickness.getValue();
-  EXPECT_EQ(deeperThan(shirtSurface, dressAtRest, thickness - 0.001), 0);
-  EXPECT_EQ(deeperThan(volumes, dressAtRest, 0.001), 0);
-  EXPECT_EQ(deeperThan(volumes, shirtAtRest, 0.001), 0);
+  // Asking for the outer garment drapes the T-shirt first (its body needs the T-shirt's
+  // surface), once; both rest; no outer node lies behind the T-shirt's cloth (inside its
+  // 2 mm by more than 1 mm: the penalty contacts' springs give a little); no node of
+  // either lies in the body.
+  void expectRestingInLayers() const {
+    ASSERT_TRUE(shirt && outer && surface && volumes);
+    ASSERT_EQ(outer->lastError(), "");
+    EXPECT_EQ(shirt->evaluationCount(), 1) << "the T-shirt drapes once, before the outer garment";
+    EXPECT_TRUE(shirt->lastRun().atRest);
+    EXPECT_TRUE(outer->lastRun().atRest) << outer->lastRun().iterations << " steps";
+    ASSERT_EQ(shirtAtRest.size(), static_cast<size_t>(shirt->restPoints.getNum()));
+    EXPECT_EQ(deeperThan(*surface->bodyCollider(), outerAtRest, thickness() - 0.001), 0);
+    EXPECT_EQ(deeperThan(*volumes, outerAtRest, 0.001), 0);
+    EXPECT_EQ(deeperThan(*volumes, shirtAtRest, 0.001), 0);
+  }
+  double thickness() const { return surface->thickness.getValue(); }
+
+  ShippedGarmentScene scene;
+  ClothEngine* shirt = nullptr;
+  ClothEngine* outer = nullptr;
+  GarmentSurface* surface = nullptr;
+  const figment::Collider* volumes = nullptr;
+  std::vector<figment::Vec3> outerAtRest, shirtAtRest;
+};
+
+TEST(LayeredGarments, TheDressOverTheTShirtRestsOutsideItAndTheBody) {
+  const DrapedOutfit outfit("outfit-layers.iv", "DressDrape");
+  outfit.expectRestingInLayers();
+  ASSERT_TRUE(outfit.volumes);
   // And the T-shirt held the dress out: over the chest the dress lies farther from the
   // body than the dress alone does (its 6 mm clearance) by about the shirt's standing off.
   int lifted = 0;
   figment::Contact c;
-  for (const figment::Vec3& p : dressAtRest)
-    lifted += !volumes.contact(p, 0.0, 0.05, c) && c.distance > 0.006 + thickness;
-  EXPECT_GT(lifted, static_cast<int>(dressAtRest.size()) / 4);
+  for (const figment::Vec3& p : outfit.outerAtRest)
+    lifted += !outfit.volumes->contact(p, 0.0, 0.05, c) && c.distance > 0.006 + outfit.thickness();
+  EXPECT_GT(lifted, static_cast<int>(outfit.outerAtRest.size()) / 4);
+}
+
+TEST(LayeredGarments, TheSkirtOverTheTShirtsHemRestsOutsideItAndTheBody) {
+  // The paper's Figure 6.2 (scenes/outfit-skirt.iv): the T-shirt tucked into the skirt.
+  const DrapedOutfit outfit("outfit-skirt.iv", "SkirtDrape");
+  outfit.expectRestingInLayers();
+  ASSERT_TRUE(outfit.surface);
+  // The skirt's waist rests on the T-shirt's hem: some skirt nodes lie within a
+  // centimetre of the T-shirt's surface (its contacts held them out).
+  int onTheShirt = 0;
+  figment::Contact c;
+  for (const figment::Vec3& p : outfit.outerAtRest)
+    onTheShirt += outfit.surface->bodyCollider()->contact(p, 0.01, 0.05, c);
+  EXPECT_GT(onTheShirt, 20);
 }
 
 TEST(LayeredGarments, ABadGroupOrSurfaceIsOneLineNamingIt) {
