@@ -33,13 +33,27 @@ void onReadError(const SoError* error, void*) {
     readErrors().push_back({CoinMessages::oneLine(text), {}, 0});
 }
 
+struct HeldWarnings {
+  bool holding = false;
+  std::vector<std::string> lines;
+};
+
+HeldWarnings& heldWarnings() {
+  static HeldWarnings held;
+  return held;
+}
+
 void onDebugMessage(const SoError* error, void*) {
   const std::string text = error->getDebugString().getString();
   // Coin asks GLX whether rendering is direct even when no GLX context exists.
   if (text.find("glxglue_isdirect") != std::string::npos) return;
   // A ClothEngine's error is its lastError(), which figment-view reports itself.
   if (text.find("ClothEngine::evaluate") != std::string::npos) return;
-  std::cerr << "figment-view: warning: " << CoinMessages::oneLine(text) << "\n";
+  const std::string line = "figment-view: warning: " + CoinMessages::oneLine(text);
+  if (heldWarnings().holding)
+    heldWarnings().lines.push_back(line);
+  else
+    std::cerr << line << "\n";
 }
 
 bool sameFile(const std::string& a, const std::string& b) {
@@ -52,6 +66,15 @@ bool sameFile(const std::string& a, const std::string& b) {
 void CoinMessages::install() {
   SoReadError::setHandlerCallback(onReadError, nullptr);
   SoDebugError::setHandlerCallback(onDebugMessage, nullptr);
+}
+
+void CoinMessages::holdWarnings() { heldWarnings().holding = true; }
+
+void CoinMessages::releaseWarnings(bool print) {
+  HeldWarnings& held = heldWarnings();
+  if (print)
+    for (const std::string& line : held.lines) std::cerr << line << "\n";
+  held = {};
 }
 
 std::vector<std::string> CoinMessages::takeReadErrors(const std::string& scene) {

@@ -17,6 +17,11 @@ class CoinMessages {
   // "line 4: MeshFile 'Body': fileName "nothere.obj" not found" (with "in FILE"
   // appended when the error lies in another file than `scene`).
   static std::vector<std::string> takeReadErrors(const std::string& scene);
+  // While a scene is read: warnings wait, and are printed by releaseWarnings(true) when
+  // the read succeeds, or dropped by releaseWarnings(false) when it fails (its one-line
+  // error names the cause; Coin's warnings on the way there would make it several).
+  static void holdWarnings();
+  static void releaseWarnings(bool print);
   // Coin's multi-line message as one line: "Coin read error: " dropped, lines joined.
   static std::string oneLine(const std::string& message);
 };

@@ -30,7 +30,9 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
     error = "cannot open file";
     return nullptr;
   }
+  CoinMessages::holdWarnings();
   SoSeparator* root = SoDB::readAll(&in);
+  CoinMessages::releaseWarnings(root != nullptr);
   const std::vector<std::string> errors = CoinMessages::takeReadErrors(path);
   if (!root) {
     // The first error is the cause; later ones are Coin unwinding the parse.
