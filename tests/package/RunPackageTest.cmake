@@ -1,7 +1,13 @@
-# Installs a FIGMENT build to a fresh prefix, then configures, builds and runs
-# tests/package against it, as a project that uses FIGMENT would.
-#   cmake -DFIGMENT_BINARY_DIR=... -DPACKAGE_SOURCE_DIR=... -DWORK_DIR=... [-DGENERATOR=...] -P RunPackageTest.cmake
-foreach(var FIGMENT_BINARY_DIR PACKAGE_SOURCE_DIR WORK_DIR)
+# Installs a FIGMENT build to a fresh prefix, then configures, builds and runs examples/
+# against it, as a project that extends FIGMENT would: its SphereVolume node drapes a
+# square of cloth (drape_over_sphere checks the cloth lies on the ball), and the
+# installed figment-view, which knows nothing of SphereVolume, renders the scene with
+# the example's library found through LD_LIBRARY_PATH (Coin's dynamic loading); the
+# picture's cloth and ball pixels are counted. Last, a plain Coin program reads a
+# FIGMENT scene through the installed lib<Class>.so links.
+#   cmake -DFIGMENT_BINARY_DIR=... -DEXAMPLES_SOURCE_DIR=... -DWORK_DIR=... -DCOUNT_COLOURS=... -DINSTALL_LIBDIR=lib
+#         [-DPLAIN_COIN_READER=... -DPLAIN_COIN_SCENE=...] [-DGENERATOR=...] -P RunPackageTest.cmake
+foreach(var FIGMENT_BINARY_DIR EXAMPLES_SOURCE_DIR WORK_DIR COUNT_COLOURS INSTALL_LIBDIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "RunPackageTest.cmake needs -D${var}=...")
   endif()
@@ -12,10 +18,13 @@ function(run what)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "${what} failed (${status}):\n${out}")
   endif()
-  message(STATUS "${what}: ok")
+  string(STRIP "${out}" out)
+  string(REGEX REPLACE ".*\n" "" last_line "${out}")
+  message(STATUS "${what}: ok ${last_line}")
 endfunction()
 
 set(prefix ${WORK_DIR}/prefix)
+set(build ${WORK_DIR}/build)
 file(REMOVE_RECURSE ${WORK_DIR})
 run("install" ${CMAKE_COMMAND} --install ${FIGMENT_BINARY_DIR} --prefix ${prefix})
 
@@ -35,7 +44,36 @@ set(generator_args)
 if(GENERATOR)
   set(generator_args -G ${GENERATOR})
 endif()
-run("configure" ${CMAKE_COMMAND} -S ${PACKAGE_SOURCE_DIR} -B ${WORK_DIR}/build ${generator_args}
+run("configure examples/" ${CMAKE_COMMAND} -S ${EXAMPLES_SOURCE_DIR} -B ${build} ${generator_args}
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
-run("build" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-run("run" ${WORK_DIR}/build/figment_package_test)
+run("build examples/" ${CMAKE_COMMAND} --build ${build})
+
+# The example's application: FIGMENT's kit and SphereVolume linked in.
+run("drape_over_sphere" ${build}/drape_over_sphere ${EXAMPLES_SOURCE_DIR}/sphere-drape.iv)
+
+# The installed figment-view (a build with the viewer), with only the library path to
+# find the new node. The drape cache is left out: it keys a body by its fields, not by
+# its code.
+set(figment_view ${prefix}/bin/figment-view)
+if(EXISTS ${figment_view})
+  set(picture ${WORK_DIR}/sphere.png)
+  set(library_path "${build}:${prefix}/${INSTALL_LIBDIR}")
+  if(DEFINED ENV{LD_LIBRARY_PATH})
+    string(APPEND library_path ":$ENV{LD_LIBRARY_PATH}")
+  endif()
+  run("figment-view renders sphere-drape.iv" ${CMAKE_COMMAND} -E env "LD_LIBRARY_PATH=${library_path}"
+      ${figment_view} ${EXAMPLES_SOURCE_DIR}/sphere-drape.iv -o ${picture} --size 240x200 --view 30,25 --no-cache)
+  # 240 x 200 pixels: the cloth covers about a tenth of them (5,500) and the ball shows
+  # below it (600); a cloth that falls through the ball is framed small, 2 m below it
+  # (2,400 red pixels).
+  run("the picture's cloth and ball" ${COUNT_COLOURS} ${picture} 3000 200)
+else()
+  message(STATUS "no figment-view installed (a build without the viewer): no picture")
+endif()
+
+# The installed lib<Class>.so links: a plain Coin program (no FIGMENT in it) reads and
+# renders a FIGMENT scene with only the installed library directory on its path.
+if(PLAIN_COIN_READER AND PLAIN_COIN_SCENE)
+  run("a plain Coin program reads ${PLAIN_COIN_SCENE} from the install" ${CMAKE_COMMAND} -E env
+      "LD_LIBRARY_PATH=${prefix}/${INSTALL_LIBDIR}" ${PLAIN_COIN_READER} ${PLAIN_COIN_SCENE} 2000)
+endif()

@@ -175,19 +175,6 @@ TEST_F(FigmentView, StatisticsReportTheMethodAndHowOftenTheLimitersEngaged) {
   EXPECT_DOUBLE_EQ(method["clamped_section_share"].get<double>(), 0.0);
 }
 
-TEST_F(FigmentView, RendersEveryExampleScene) {
-  int count = 0;
-  for (const auto& entry : fs::directory_iterator(FIGMENT_SOURCE_DIR "/scenes/examples")) {
-    if (entry.path().extension() != ".iv") continue;
-    ++count;
-    const std::string image = path(entry.path().filename().replace_extension(".png").string());
-    const ProcessResult r = run(quote(entry.path().string()) + " -o " + quote(image) + " --size 160x120");
-    EXPECT_EQ(r.status, 0) << entry.path() << ": " << r.err;
-    EXPECT_TRUE(fs::exists(image)) << entry.path();
-  }
-  EXPECT_GE(count, 3) << "one example per node class";
-}
-
 struct BadInput {
   std::string name;
   std::string scene;      // scene file contents; empty: no scene file is written
