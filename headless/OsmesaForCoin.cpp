@@ -3,6 +3,7 @@
 #include <GL/osmesa.h>
 #include <Inventor/C/glue/gl.h>
 
+#include <array>
 #include <vector>
 
 namespace figment {
@@ -12,6 +13,13 @@ namespace {
 // One off-screen GL context with the colour buffer it draws into. Coin reads the
 // pixels back with glReadPixels, so the buffer is only the context's backing store.
 struct OsmesaContext {
+  // Coin 4.0's cc_glglue_context_max_dimensions() (called by every SoOffscreenRenderer
+  // render) passes the handle our create() returned to glxglue_context_pbuffer_max(), which
+  // takes it for its own GLX context record and reads that record's `pbuffer` flag at byte
+  // 64: 16 bytes past the end of this struct as it was (valgrind: "Invalid read of size 4").
+  // Zeros where Coin looks make the read land inside the handle and say "not a pbuffer",
+  // so Coin goes no further with it. Must stay first. (tests/headless/test_OsmesaContextHandle)
+  std::array<unsigned char, kCoinGlxRecordBytes> coinGlxRecord{};
   OSMesaContext context = nullptr;
   std::vector<unsigned char> buffer;  // RGBA, 8 bits per channel
   GLsizei width = 0, height = 0;

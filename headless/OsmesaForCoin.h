@@ -10,4 +10,9 @@ namespace figment {
 // that, Coin's vertex-array drawing is silently blank).
 void useOsmesaForCoin();
 
+// The handle of a context made through these callbacks begins with this many zero bytes:
+// Coin reads some of them as if the handle were its own GLX context record (its
+// glxglue_contextdata: 72 bytes on 64-bit Linux; see OsmesaForCoin.cpp).
+inline constexpr unsigned kCoinGlxRecordBytes = 96;
+
 }  // namespace figment

@@ -5,11 +5,19 @@
 #include <Inventor/lists/SoPathList.h>
 
 class SoNode;
+class SoPath;
 
 namespace figment {
 
 // Paths from `root` to every node of `type` (or derived from it), including nodes under
 // switches that are off at the moment. The list holds references to its paths.
 SoPathList findAll(SoNode* root, SoType type);
+
+// The last node of `path` (or the one `fromTail` places before it), hidden children
+// included; null when the path is shorter. What Coin's idiom
+// static_cast<SoFullPath*>(path)->getNodeFromTail(fromTail) gives, without that downcast: a
+// search's path is an SoPath, never an SoFullPath, so the cast is undefined behaviour (UBSan
+// stops on it: "downcast of address ... which does not point to an object of type SoFullPath").
+SoNode* fullTail(const SoPath* path, int fromTail = 0);
 
 }  // namespace figment

@@ -1,7 +1,8 @@
 #include "viewer/SceneStaging.h"
 
+#include "nodes/SceneSearch.h"
+
 #include <Inventor/SbViewportRegion.h>
-#include <Inventor/SoFullPath.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/lists/SoPathList.h>
@@ -40,11 +41,9 @@ void removeCameras(SoNode* scene) {
   SoPathList paths;
   findAll(scene, SoCamera::getClassTypeId(), true, paths);
   for (int i = 0; i < paths.getLength(); ++i) {
-    auto* path = static_cast<SoFullPath*>(paths[i]);
-    if (path->getLength() < 2) continue;
-    SoNode* parent = path->getNodeFromTail(1);
-    if (parent->isOfType(SoGroup::getClassTypeId()))
-      static_cast<SoGroup*>(parent)->replaceChild(path->getTail(), new SoGroup);
+    SoNode* parent = fullTail(paths[i], 1);
+    if (parent && parent->isOfType(SoGroup::getClassTypeId()))
+      static_cast<SoGroup*>(parent)->replaceChild(fullTail(paths[i]), new SoGroup);
   }
 }
 
@@ -111,7 +110,7 @@ SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optiona
   SoPathList cameras;
   findAll(scene, SoCamera::getClassTypeId(), false, cameras);
   if (cameras.getLength() > 0 && !view) {
-    const auto* own = static_cast<SoCamera*>(static_cast<SoFullPath*>(cameras[0])->getTail());
+    const auto* own = static_cast<SoCamera*>(fullTail(cameras[0]));
     own->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), lookDirection);
   } else {
     removeCameras(scene);

@@ -5,7 +5,7 @@
 #include "nodes/render/StencilSeparator.h"
 
 #include <Inventor/SbBox2f.h>
-#include <Inventor/SoFullPath.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/elements/SoViewVolumeElement.h>
@@ -72,7 +72,7 @@ SoPathList findDrawn(SoNode* root, SoType type) {
 }
 
 // The node a path leads to, when it passes a File's (hidden) children too.
-const SoNode* tailOf(SoPath* path) { return static_cast<SoFullPath*>(path)->getTail(); }
+const SoNode* tailOf(SoPath* path) { return fullTail(path); }
 
 void addOnce(std::vector<const SoNode*>& nodes, const SoNode* node) {
   if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);

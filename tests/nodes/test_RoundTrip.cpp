@@ -4,9 +4,9 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/body/MeshFile.h"
+#include "nodes/SceneSearch.h"
 #include "support/SceneTestSupport.h"
 
-#include <Inventor/SoFullPath.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFNode.h>
 #include <Inventor/lists/SoPathList.h>
@@ -28,7 +28,7 @@ std::vector<SoNode*> nodesOf(SoNode* root) {
   search.apply(root);
   std::vector<SoNode*> nodes;
   for (int i = 0; i < search.getPaths().getLength(); ++i)
-    nodes.push_back(static_cast<SoFullPath*>(search.getPaths()[i])->getTail());
+    nodes.push_back(figment::fullTail(search.getPaths()[i]));
   return nodes;
 }
 
