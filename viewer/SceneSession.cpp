@@ -77,8 +77,12 @@ std::string SceneSession::firstError() const {
 }
 
 SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view) {
+  return stage(size, view, sceneBox(scene_, size));
+}
+
+SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box) {
   if (staged_) staged_->unref();
-  stagedBox_ = sceneBox(scene_, size);
+  stagedBox_ = box;
   staged_ = stageScene(scene_, size, view, stagedBox_);
   staged_->ref();
   return staged_;

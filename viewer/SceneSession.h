@@ -64,6 +64,8 @@ class SceneSession {
   // looking from `view` (the scene's own camera when none is given). Drape first: the
   // bounding box read here then shows the draped garments.
   SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view);
+  // The same, framing `box` (frames of a time span share one camera: the box of them all).
+  SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box);
 
   // Unreferences the scene and the staged root; the session is empty again.
   void clear();

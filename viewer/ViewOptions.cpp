@@ -61,4 +61,42 @@ std::optional<ViewDirection> parseViewDirection(const std::string& text) {
   return ViewDirection{*azimuth, *elevation};
 }
 
+std::optional<int> parseTurntableCount(const std::string& text) {
+  if (text.empty() || text.size() > 4) return std::nullopt;
+  int count = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), count);
+  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  if (count < 1 || count > kMaxTurntableViews) return std::nullopt;
+  return count;
+}
+
+std::vector<ViewDirection> turntableViews(int count, const std::optional<ViewDirection>& start) {
+  const ViewDirection first = start.value_or(ViewDirection{});
+  std::vector<ViewDirection> views;
+  for (int i = 0; i < count; ++i) views.push_back({first.azimuth + 360.0 * i / count, first.elevation});
+  return views;
+}
+
+std::optional<std::vector<double>> parseFrameTimes(const std::string& text) {
+  const size_t first = text.find(':');
+  const size_t second = first == std::string::npos ? first : text.find(':', first + 1);
+  if (second == std::string::npos || text.find(':', second + 1) != std::string::npos) return std::nullopt;
+  const std::optional<double> begin = parseDecimal(std::string_view(text).substr(0, first));
+  const std::optional<double> end = parseDecimal(std::string_view(text).substr(first + 1, second - first - 1));
+  const std::string countText = text.substr(second + 1);
+  int count = 0;
+  const auto [countEnd, error] = std::from_chars(countText.data(), countText.data() + countText.size(), count);
+  if (!begin || !end || countText.empty() || error != std::errc() || countEnd != countText.data() + countText.size())
+    return std::nullopt;
+  // Simulated times: from the start (0) on, forwards, and not so far that the steps to
+  // get there could not be counted (ClothEngine bounds maxTime / timeStep anyway).
+  constexpr double kMaxSeconds = 1e6;
+  if (!std::isfinite(*begin) || !std::isfinite(*end) || *begin < 0.0 || *end < *begin || *end > kMaxSeconds)
+    return std::nullopt;
+  if (count < 1 || count > kMaxFrames) return std::nullopt;
+  std::vector<double> times;
+  for (int i = 0; i < count; ++i) times.push_back(count == 1 ? *begin : *begin + (*end - *begin) * i / (count - 1));
+  return times;
+}
+
 }  // namespace figment::viewer

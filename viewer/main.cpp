@@ -1,26 +1,39 @@
-// figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless.
+// figment-view: renders a FIGMENT scene (.iv) to PNG images, headless.
 //
-//   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]
+//   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]...
+//                [--turntable N] [--frames T0:T1:N] [--wind-force OUT.csv]
 //                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
 //                [--show-volumes] [--stop-at N] [--no-cache]
+//   figment-view --list-nodes
 //
-// Every error is one line on stderr, "figment-view: <file>: <what>", and a non-zero
-// exit status (2: bad command line, 1: anything else, an exception included); no image
-// is written then.
+// The scene drapes once, however many images it gives (views, a turntable, or the
+// frames of a time span); every image is written atomically. Every error is one line on
+// stderr, "figment-view: <file or option>: <what>", and a non-zero exit status (2: bad
+// command line, 1: anything else, an exception included); no image is left then.
 
 #include "io/DrapeCache.h"
 #include "nodes/FaceIndexCheck.h"
+#include "nodes/Init.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/SceneSearch.h"
 #include "viewer/DepthBufferOnly.h"
+#include "viewer/DrapeRecorder.h"
+#include "viewer/FrameDisplay.h"
+#include "viewer/ImagePlan.h"
+#include "viewer/NodeCatalog.h"
 #include "viewer/OffscreenContext.h"
+#include "viewer/PrintableLine.h"
+#include "viewer/ProgressBar.h"
 #include "viewer/SceneRenderer.h"
 #include "viewer/SceneSession.h"
+#include "viewer/SceneStaging.h"
 #include "viewer/StatsJson.h"
 #include "viewer/ViewOptions.h"
+#include "viewer/WindForceCsv.h"
 
 #include <CLI/CLI.hpp>
+#include <Inventor/SoDB.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -30,52 +43,71 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace {
+
+using figment::viewer::ImagePlan;
 
 struct Options {
   std::string scene;
   std::string output;
   std::string size = "800x600";
-  std::string view;
+  std::vector<std::string> views;
+  std::string turntable;
+  std::string frames;
+  std::string windForce;
   std::string stats;
   bool keepStencilFields = false;
   bool depthBufferOnly = false;
   bool showVolumes = false;
   bool noCache = false;
+  bool listNodes = false;
   int stopAt = 0;  // steps; 0: no bound
 };
 
 constexpr std::uintmax_t kCacheBytes = 512u << 20;  // the drape cache's bound
+// --wind-force samples the force about this often (s simulated; at most once a step).
+constexpr double kWindSampleSpacing = 1.0 / 200.0;
 
 int fail(const std::string& where, const std::string& message, int status = 1) {
-  std::cerr << "figment-view: " << where << ": " << message << "\n";
+  // One line whatever the input held: names and values come from the command line and
+  // the scene, and may hold line breaks or control bytes.
+  std::cerr << "figment-view: " << figment::viewer::printableLine(where + ": " + message) << "\n";
   return status;
 }
 
-// The image just written, removed again unless the run succeeds: an error after it (the
-// statistics, an exception) leaves no image behind.
-class WrittenImage {
+// The images written so far, removed again unless the run succeeds: an error after
+// them (another image, the statistics, an exception) leaves no image behind.
+class WrittenImages {
  public:
-  explicit WrittenImage(std::string path) : path_(std::move(path)) {}
-  ~WrittenImage() {
+  WrittenImages() = default;
+  ~WrittenImages() {
     std::error_code ignored;
-    if (!kept_) std::filesystem::remove(path_, ignored);
+    if (!kept_)
+      for (const std::string& path : paths_) std::filesystem::remove(path, ignored);
   }
-  WrittenImage(const WrittenImage&) = delete;
-  WrittenImage& operator=(const WrittenImage&) = delete;
+  WrittenImages(const WrittenImages&) = delete;
+  WrittenImages& operator=(const WrittenImages&) = delete;
+  void add(std::string path) { paths_.push_back(std::move(path)); }
   void keep() { kept_ = true; }
 
  private:
-  std::string path_;
+  std::vector<std::string> paths_;
   bool kept_ = false;
 };
 
-// Long simulations say how far they are, about once a second.
-void reportProgress(const ClothEngine& engine, const ClothEngine::Progress& p) {
+// Long simulations say how far they are: on a terminal a bar redrawn in place, else
+// (logs, tests) a line about once a second.
+void reportProgress(figment::viewer::ProgressBar& bar, const ClothEngine& engine, const ClothEngine::Progress& p) {
+  if (bar.shown()) {
+    bar.draw(figment::viewer::progressBarLine(engine.label(), p.simulatedSeconds, p.maxTime, p.wallSeconds));
+    return;
+  }
   std::fprintf(stderr, "figment-view: %s: simulated %.3g of %.3g s (%d steps, %.1f s, fastest node %.3g m/s)\n",
                engine.label().c_str(), p.simulatedSeconds, p.maxTime, p.iterations, p.wallSeconds, p.maxSpeed);
 }
@@ -102,6 +134,13 @@ void stopAt(SoNode* scene, int steps) {
     engine->maxTime = std::min(engine->maxTime.getValue(), steps * engine->timeStep.getValue());
 }
 
+// --frames: every drape runs at least to the last frame's time (a cloth at rest before
+// then stops there, and its later frames show it at rest).
+void simulateUntil(const std::vector<ClothEngine*>& engines, double seconds) {
+  for (ClothEngine* engine : engines)
+    if (engine->maxTime.getValue() < seconds) engine->maxTime = seconds;
+}
+
 // Finished drapes are kept in the user's cache folder (none without one).
 void useDrapeCache(bool use) {
   const std::filesystem::path folder = figment::DrapeCache::userFolder();
@@ -110,8 +149,15 @@ void useDrapeCache(bool use) {
 
 // Drapes every engine; its errors come before any image. "" or the first error.
 std::string drapeAll(figment::viewer::SceneSession& session) {
-  ClothEngine::setProgressCallback(reportProgress);
-  for (const figment::viewer::EngineDrape& drape : session.drape()) {
+  figment::viewer::ProgressBar bar(stderr);
+  // A bar moves a few times a second; the lines of a log once a second.
+  ClothEngine::setProgressCallback(
+      [&bar](const ClothEngine& engine, const ClothEngine::Progress& p) { reportProgress(bar, engine, p); },
+      bar.shown() ? 0.2 : 1.0);
+  const std::vector<figment::viewer::EngineDrape>& drapes = session.drape();
+  ClothEngine::setProgressCallback({});
+  bar.clear();
+  for (const figment::viewer::EngineDrape& drape : drapes) {
     if (!drape.error.empty()) return drape.error;
     reportFinished(drape);
   }
@@ -121,39 +167,109 @@ std::string drapeAll(figment::viewer::SceneSession& session) {
   return "";
 }
 
-int render(const Options& options, const figment::viewer::ImageSize& size,
-           const std::optional<figment::viewer::ViewDirection>& view) {
+// Renders the staged root and writes it to `path`; "" or the error, with where it
+// happened in `where`.
+std::string renderImage(SoSeparator* root, const Options& options, figment::viewer::SceneRenderer& renderer,
+                        const std::string& path, double& renderWall, std::string& where) {
+  figment::viewer::DepthBufferOnly plain(root);
+  plain.use(options.depthBufferOnly);
+  const auto start = std::chrono::steady_clock::now();
+  std::string error = renderer.render(root, options.keepStencilFields);
+  renderWall += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  where = options.scene;
+  if (!error.empty()) return error;
+  where = path;
+  return renderer.writePng(path);
+}
+
+// Shows frame k of every engine the recorder observed.
+void showFrame(const figment::viewer::SceneSession& session, const figment::viewer::DrapeRecorder& recorder,
+               size_t k) {
+  for (ClothEngine* engine : session.engines())
+    if (recorder.observed(*engine)) figment::viewer::showPositions(*engine, recorder.frame(*engine, k));
+}
+
+// Frames of a time span, one camera for all: it frames the box that holds every frame.
+std::string renderFrames(figment::viewer::SceneSession& session, const figment::viewer::DrapeRecorder& recorder,
+                         const ImagePlan& plan, const Options& options, WrittenImages& images, double& renderWall,
+                         std::string& where) {
+  for (ClothEngine* engine : session.engines())  // simulated, but not step by step
+    if (!recorder.observed(*engine) && engine->evaluationCount() > 0)
+      std::fprintf(stderr, "figment-view: %s: a progressive drape is not recorded step by step; every frame shows "
+                           "its end\n", engine->label().c_str());
+  SbBox3f box;
+  for (size_t k = 0; k < plan.frameTimes.size(); ++k) {
+    showFrame(session, recorder, k);
+    box.extendBy(figment::viewer::sceneBox(session.scene(), plan.size));
+  }
+  SoSeparator* root = session.stage(plan.size, plan.views.front(), box);
+  figment::viewer::SceneRenderer renderer(plan.size);
+  for (size_t k = 0; k < plan.frameTimes.size(); ++k) {
+    showFrame(session, recorder, k);
+    const std::string error = renderImage(root, options, renderer, plan.paths[k], renderWall, where);
+    if (!error.empty()) return error;
+    images.add(plan.paths[k]);
+  }
+  return "";
+}
+
+// One image per view of the drape.
+std::string renderViews(figment::viewer::SceneSession& session, const ImagePlan& plan, const Options& options,
+                        WrittenImages& images, double& renderWall, std::string& where) {
+  figment::viewer::SceneRenderer renderer(plan.size);
+  for (size_t i = 0; i < plan.views.size(); ++i) {
+    SoSeparator* root = session.stage(plan.size, plan.views[i]);
+    const std::string error = renderImage(root, options, renderer, plan.paths[i], renderWall, where);
+    if (!error.empty()) return error;
+    images.add(plan.paths[i]);
+  }
+  return "";
+}
+
+int render(const Options& options, const ImagePlan& plan) {
   using namespace figment::viewer;
   initHeadless();
   SceneSession session;
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
   if (options.showVolumes) showVolumes(session.scene());
+  if (!plan.frameTimes.empty()) simulateUntil(session.engines(), plan.frameTimes.back());
   if (options.stopAt > 0) stopAt(session.scene(), options.stopAt);
   useDrapeCache(!options.noCache);
+  // Frames and the wind force are recorded while the engines drape (and are then
+  // simulated, neither read from nor kept in the drape cache).
+  std::unique_ptr<DrapeRecorder> recorder;
+  if (!plan.frameTimes.empty() || !options.windForce.empty())
+    recorder = std::make_unique<DrapeRecorder>(plan.frameTimes, options.windForce.empty() ? 0.0 : kWindSampleSpacing);
   std::string error = drapeAll(session);
   if (!error.empty()) return fail(options.scene, error);
   // Draped, the coordinates are known: every face set's indices must lie among them
   // before anything is drawn or bounded (Coin allocates by the largest index).
   error = figment::firstFaceIndexError(session.scene());
   if (!error.empty()) return fail(options.scene, error);
-  SoSeparator* root = session.stage(size, view);
 
-  DepthBufferOnly plain(root);
-  plain.use(options.depthBufferOnly);
-  SceneRenderer renderer(size);
-  const auto start = std::chrono::steady_clock::now();
-  error = renderer.render(root, options.keepStencilFields);
-  const std::chrono::duration<double> renderWall = std::chrono::steady_clock::now() - start;
-  if (!error.empty()) return fail(options.scene, error);
-  error = renderer.writePng(options.output);
-  if (!error.empty()) return fail(options.output, error);
-  WrittenImage image(options.output);
+  WrittenImages images;
+  double renderWall = 0.0;
+  std::string where;
+  error = plan.frameTimes.empty() ? renderViews(session, plan, options, images, renderWall, where)
+                                  : renderFrames(session, *recorder, plan, options, images, renderWall, where);
+  if (!error.empty()) return fail(where, error);
+  if (!options.windForce.empty()) {
+    error = writeWindForceCsv(options.windForce, session.drapes(), *recorder);
+    if (!error.empty()) return fail(options.windForce, error);
+  }
   if (!options.stats.empty()) {
-    error = writeStatsJson(options.stats, options.scene, session.drapes(), renderWall.count(), size);
+    error = writeStatsJson(options.stats, options.scene, session.drapes(), renderWall, plan.size);
     if (!error.empty()) return fail(options.stats, error);
   }
-  image.keep();
+  images.keep();
   return 0;
+}
+
+// --list-nodes: the types figment::init() adds to Coin's, with their fields.
+int listNodes() {
+  SoDB::init();
+  std::cout << figment::viewer::describeTypes(figment::viewer::typesAddedBy([] { figment::init(); }));
+  return std::cout.flush() ? 0 : 1;
 }
 
 // An exception's message as one line.
@@ -164,13 +280,33 @@ std::string oneLine(std::string text) {
 }
 
 int run(int argc, char** argv, Options& options) {
-  CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to a PNG image, headless."};
-  app.add_option("scene", options.scene, "Scene file (.iv)")->required();
-  app.add_option("-o,--output", options.output, "PNG image to write")->required();
+  CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to PNG images, headless. The scene drapes once, "
+               "however many images it gives; each image is written whole or not at all, and on an error none "
+               "is left."};
+  // Not required by CLI11: --list-nodes needs neither (checked below).
+  app.add_option("scene", options.scene, "Scene file (.iv)");
+  app.add_option("-o,--output", options.output,
+                 "PNG image to write. Several images (--view repeated, --turntable, --frames) are numbered "
+                 "from 0 before the extension, zero-padded to the largest number's width so they sort: -o out.png gives "
+                 "out-0.png ... out-7.png for 8 images, out-00.png ... out-39.png for 40; a %d or %0Nd in the name (N 1 to 9) "
+                 "takes the number instead: -o frame-%03d.png gives frame-000.png, ...");
   app.add_option("--size", options.size, "Image size in pixels, WxH")->capture_default_str();
-  app.add_option("--view", options.view,
-                 "Camera direction: front, back, left, right or AZ,EL in degrees "
-                 "(default: the scene's camera, else front)");
+  app.add_option("--view", options.views,
+                 "Camera direction: front, back, left, right or AZ,EL in degrees (default: the scene's camera, "
+                 "else front). Repeat it for several images of the one drape, in the order given")
+      ->allow_extra_args(false);
+  app.add_option("--turntable", options.turntable,
+                 "N images around the body: azimuths 0, 360/N, 2*360/N, ... degrees at elevation 0 (with one "
+                 "--view AZ,EL: from AZ, at EL)");
+  app.add_option("--frames", options.frames,
+                 "T0:T1:N: the drape's state at N simulated times from T0 to T1 seconds, evenly spaced (both "
+                 "included), one image each, from one camera framing them all; the drape runs to T1 at least "
+                 "(a cloth at rest before then shows its rest). Drapes are simulated, neither read from nor kept "
+                 "in the drape cache. One view");
+  app.add_option("--wind-force", options.windForce,
+                 "Write the wind's total force on each garment over simulated time here (CSV: engine, time_s, "
+                 "pressure_Pa, phase_rad, force_x_N, force_y_N, force_z_N, force_N; every 5 ms simulated). Drapes are "
+                 "simulated, neither read from nor kept in the drape cache");
   app.add_option("--stats", options.stats, "Write simulation and render statistics (JSON) here");
   app.add_flag("--depth-buffer-only", options.depthBufferOnly,
                "Draw ClothingLayer, DepthSortedGroup and StencilSeparator as IndexedFaceSet, Group and "
@@ -185,6 +321,15 @@ int run(int argc, char** argv, Options& options) {
   app.add_flag("--no-cache", options.noCache,
                "Drape even where the drape cache ($XDG_CACHE_HOME/figment, else ~/.cache/figment) holds this "
                "drape, and keep nothing there");
+  app.add_flag("--list-nodes", options.listNodes,
+               "Print FIGMENT's node and engine types with each field's type and default value (from Coin's "
+               "field data), and exit");
+  app.footer(
+      "A long drape draws a progress bar on stderr when stderr is a terminal (a line a second otherwise).\n"
+      "Examples:\n"
+      "  figment-view scenes/dress.iv -o dress.png --view front --view 30,10 --view back  (dress-0/1/2.png)\n"
+      "  figment-view scenes/dress.iv -o turn.png --turntable 8 --view 0,10               (turn-0 ... turn-7.png)\n"
+      "  figment-view scenes/wind.iv -o wind/frame.png --frames 0.5:4.4:40 --wind-force wind.csv");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -192,18 +337,14 @@ int run(int argc, char** argv, Options& options) {
   } catch (const CLI::ParseError& e) {
     return fail("usage", std::string(e.what()) + " (see --help)", 2);
   }
+  if (options.listNodes) return listNodes();
+  if (options.scene.empty()) return fail("usage", "scene is required (see --help)", 2);
+  if (options.output.empty()) return fail("usage", "--output is required (see --help)", 2);
 
-  const auto size = figment::viewer::parseImageSize(options.size);
-  if (!size) return fail("--size", "'" + options.size + "' is not WxH with 1 to 16384 pixels each (e.g. 800x600)", 2);
-  std::optional<figment::viewer::ViewDirection> view;
-  if (!options.view.empty()) {
-    view = figment::viewer::parseViewDirection(options.view);
-    if (!view)
-      return fail("--view",
-                  "'" + options.view + "' is not front, back, left, right or AZ,EL in degrees with -90 < EL < 90",
-                  2);
-  }
-  return render(options, *size, view);
+  figment::viewer::ImageOptionError error;
+  const std::optional<ImagePlan> plan = figment::viewer::planImages(
+      {options.output, options.size, options.views, options.turntable, options.frames}, error);
+  return plan ? render(options, *plan) : fail(error.option, error.message, 2);
 }
 
 }  // namespace

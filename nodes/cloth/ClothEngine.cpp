@@ -9,6 +9,7 @@
 #include "sim/core/ParameterChecks.h"
 #include "sim/progressive/Decimation.h"
 #include "nodes/SceneFiles.h"
+#include "nodes/SceneSearch.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/progressive/ProgressiveDrape.h"
 
@@ -19,7 +20,6 @@
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/lists/SoPathList.h>
 #include <Inventor/nodes/SoNode.h>
-#include <Inventor/SoFullPath.h>
 
 #include <chrono>
 #include <cmath>
@@ -53,6 +53,16 @@ namespace {
 ClothEngine::ProgressCallback& progressCallback() {
   static ClothEngine::ProgressCallback callback;
   return callback;
+}
+
+double& progressInterval() {
+  static double seconds = 1.0;
+  return seconds;
+}
+
+ClothEngine::StepObserver& stepObserver() {
+  static ClothEngine::StepObserver observer;
+  return observer;
 }
 
 std::shared_ptr<const figment::DrapeCache>& drapeCache() {
@@ -162,7 +172,12 @@ SbBool ClothEngine::readInstance(SoInput* in, unsigned short readFlags) {
   return TRUE;
 }
 
-void ClothEngine::setProgressCallback(ProgressCallback callback) { progressCallback() = std::move(callback); }
+void ClothEngine::setProgressCallback(ProgressCallback callback, double intervalSeconds) {
+  progressCallback() = std::move(callback);
+  progressInterval() = intervalSeconds;
+}
+
+void ClothEngine::setStepObserver(StepObserver observer) { stepObserver() = std::move(observer); }
 
 void ClothEngine::setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache) { drapeCache() = std::move(cache); }
 
@@ -195,11 +210,14 @@ struct Drape {
   figment::EndLevelSettling settling;
 };
 
-Drape drapeWhole(const figment::TriangleMesh& garment, const figment::ClothParameters& parameters,
-                 std::shared_ptr<const figment::Collider> body, const DrapeProgressFunction& progress) {
+Drape drapeWhole(const ClothEngine& engine, const figment::TriangleMesh& garment,
+                 const figment::ClothParameters& parameters, std::shared_ptr<const figment::Collider> body,
+                 const DrapeProgressFunction& progress) {
   figment::ClothSolver solver(garment, parameters, std::move(body));
+  if (stepObserver())
+    solver.setStepObserver([&engine](const figment::ClothSolver& s) { stepObserver()(engine, s); });
   Drape out;
-  out.run = solver.run(progress);
+  out.run = solver.run(progress, progressInterval());
   out.positions = solver.positions();
   out.sections = garment.triangles;
   return out;
@@ -210,7 +228,7 @@ Drape drapeProgressively(const figment::ProgressiveMesh& mesh, const figment::Cl
                          const DrapeProgressFunction& progress) {
   figment::ProgressiveDrape drape(mesh, parameters, std::move(body), schedule);
   Drape out;
-  out.run = drape.run(progress);
+  out.run = drape.run(progress, progressInterval());
   out.positions = drape.fullPositions();
   out.sections = drape.levelTriangles();
   out.level = drape.level();
@@ -280,7 +298,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     progressCallback()(engine, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed, wall.count()});
   };
   const Drape drape = mesh ? drapeProgressively(*mesh, parameters, std::move(collider), schedule, progress)
-                           : drapeWhole(garment, parameters, std::move(collider), progress);
+                           : drapeWhole(engine, garment, parameters, std::move(collider), progress);
   stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   recordRun(drape.run, static_cast<int>(garment.triangles.size()));
   stats.level = drape.level;
@@ -330,7 +348,7 @@ void ClothEngine::evaluate() {
   std::vector<SbVec3f> result(restPoints.getValues(0), restPoints.getValues(0) + numRest);
   std::vector<int32_t> indices;
   std::string key;
-  if (drapeCache()) {
+  if (drapeCache() && !stepObserver()) {  // an observed drape must run its steps
     const std::string script = progressiveScript.getValue().getString();
     key = figment::drapeKey(*this, script.empty() ? "" : figment::resolveSceneFile(script, impl_->sceneDirectories));
   }
@@ -412,7 +430,7 @@ std::vector<ClothEngine*> findClothEngines(SoNode* root) {
   search.apply(root);
   EngineCollector collector;
   const SoPathList& paths = search.getPaths();
-  for (int i = 0; i < paths.getLength(); ++i) collector.visit(static_cast<SoFullPath*>(paths[i])->getTail());
+  for (int i = 0; i < paths.getLength(); ++i) collector.visit(figment::fullTail(paths[i]));
   search.reset();
   root->unrefNoDelete();
   return collector.engines;

@@ -19,6 +19,7 @@
 
 class SoNode;
 namespace figment {
+class ClothSolver;
 class DrapeCache;
 }
 
@@ -250,9 +251,20 @@ class ClothEngine : public SoEngine {
   };
   using ProgressCallback = std::function<void(const ClothEngine&, const Progress&)>;
 
-  // One callback for all engines (figment-view prints progress on stderr); an empty
-  // function removes it. Not for use while an engine is evaluating.
-  static void setProgressCallback(ProgressCallback callback);
+  // One callback for all engines (figment-view prints progress on stderr), called about
+  // every `intervalSeconds` of wall time (looked at every 64 steps; 0: every 64 steps);
+  // an empty function removes it. Not for use while an engine is evaluating.
+  static void setProgressCallback(ProgressCallback callback, double intervalSeconds = 1.0);
+
+  // One observer for all engines, called with the engine and its solver once before a
+  // simulation's first step and after every step (figment-view records frames of a
+  // time span and the wind force through it; sim/cloth/ClothSolver.h). Whole-garment
+  // drapes only: a progressive drape's solver changes with its level and is not
+  // observed. While one is set, drapes are simulated, neither read from the drape cache
+  // (a cached drape has no steps to observe) nor kept there. An empty function removes
+  // it. Not for use while an engine is evaluating.
+  using StepObserver = std::function<void(const ClothEngine&, const figment::ClothSolver&)>;
+  static void setStepObserver(StepObserver observer);
 
   // A cache of finished drapes for all engines (io/DrapeCache.h), or none (null, the
   // default: every evaluation simulates). With one, an evaluation whose inputs, body,

@@ -89,6 +89,17 @@ void ClothModel::addWindForces(const std::vector<Vec3>& x, double t) const {
   }
 }
 
+Vec3 ClothModel::totalWindForce(const std::vector<Vec3>& x, double t) const {
+  Vec3 total = Vec3::Zero();
+  if (!wind_.blows()) return total;
+  const double pressure = wind_.pressure(t);
+  for (const MembraneElement& section : sections_) {
+    const Triangle& c = section.corners();
+    total += 3.0 * windCornerForce(x[c[0]], x[c[1]], x[c[2]], pressure, wind_.direction());
+  }
+  return total;
+}
+
 void ClothModel::limitAccelerations(std::vector<Vec3>& a) const {
   if (parameters_.accelerationLimiter == AccelerationLimiter::None) return;
   const double limit = parameters_.accelerationLimitSI();

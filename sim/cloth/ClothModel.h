@@ -43,6 +43,12 @@ class ClothModel {
   const PlateBending& bending() const { return bending_; }
   size_t nodeCount() const { return masses_.size(); }
 
+  // The wind's total force on the garment at positions x and time t, N: the sum of
+  // every section's p(t) A |n . w| w (what the integrators apply; zero when no wind
+  // blows). For reports and charts (figment-view --wind-force).
+  Vec3 totalWindForce(const std::vector<Vec3>& x, double t) const;
+  const Wind& wind() const { return wind_; }
+
  private:
   void addWindForces(const std::vector<Vec3>& x, double t) const;
   void limitAccelerations(std::vector<Vec3>& a) const;

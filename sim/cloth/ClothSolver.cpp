@@ -193,8 +193,10 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   const ImplicitStepCosts costsBefore = implicit_ ? implicit_->costs() : ImplicitStepCosts{};
   // Stop at maxTime, counted in steps so that rounding never adds or drops one.
   const int totalSteps = static_cast<int>(std::ceil(parameters_.maxTime / parameters_.timeStep - 1e-9));
+  if (stepObserver_) stepObserver_(*this);
   while (iterations_ < totalSteps && !atRest()) {
     step();
+    if (stepObserver_) stepObserver_(*this);
     if (progress && (iterations_ & 63) == 0) {
       const auto now = Clock::now();
       if (std::chrono::duration<double>(now - lastReport).count() >= progressInterval) {

@@ -27,6 +27,7 @@
 #include <functional>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace figment {
@@ -77,9 +78,15 @@ class ClothSolver {
   void step();
   static constexpr double kBlowUpSpeed = 100.0;  // m/s: far beyond any draping motion
   // Runs until at rest or maxTime; `progress` (optional) is called about every
-  // `progressInterval` seconds of wall time.
+  // `progressInterval` seconds of wall time (checked every 64 steps; 0: every 64 steps).
   DrapeResult run(const std::function<void(const DrapeProgress&)>& progress = {},
                   double progressInterval = 1.0);
+
+  // Called by run() once before its first step and after every step, with the solver
+  // (its time, positions and model): to record the cloth's state at chosen times, or
+  // the forces on it, along a run. Empty (the default): nothing is called.
+  using StepObserver = std::function<void(const ClothSolver&)>;
+  void setStepObserver(StepObserver observer) { stepObserver_ = std::move(observer); }
 
   bool atRest() const;
   const ClothModel& model() const { return *model_; }
@@ -103,6 +110,7 @@ class ClothSolver {
   int iterations_ = 0;
   double restSince_ = -1.0;  // time the cloth became slower than the threshold; -1: moving
   std::vector<char> pinned_;
+  StepObserver stepObserver_;
   // Per node, a lower bound of its distance to the body, kept down to date by the
   // distance it moved since the last query: while it exceeds the clearance the node
   // cannot touch the body and needs no query (exact, since the body does not move).

@@ -259,7 +259,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "",
                  {"nesting depth 257"}},
         BadInput{"TenThousandNestedStencilSeparators", nestedScene("StencilSeparator", 10000), "",
-                 {"nesting depth 257"}}),
+                 {"nesting depth 257"}},
+        // Found by mutating scenes/examples (issue 15): each printed several lines.
+        BadInput{"IncludeNameAcrossLines",
+                 "#Inventor V2.1 ascii\nSeparator {\n  File { name \"incl\n  Switch {\n  ude.iv\" }\n}\n", "",
+                 {"scene.iv", "line 3", "\"incl\\n  Switch {\\n  ude.iv\"", "not found"}}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
 
 TEST_F(FigmentView, TwoFilesThatIncludeEachOtherAreOneLine) {
@@ -272,6 +276,19 @@ TEST_F(FigmentView, TwoFilesThatIncludeEachOtherAreOneLine) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("(in " + path("b.iv") + ")"), std::string::npos) << r.err;
+  EXPECT_TRUE(noImageWritten());
+}
+
+TEST_F(FigmentView, AFileNodeBrokenAfterAWarningIsOneLine) {
+  // Found by mutating scenes/examples (issue 15): Coin warns of the File node's missing
+  // name, then fails on the stray numbers; the warning made the error two lines.
+  write("a.iv", "#Inventor V2.1 ascii\nSeparator { }\n");
+  const std::string scene =
+      write("scene.iv", "#Inventor V2.1 ascii\nSeparator {\n  File {.15, 0.00 1.75 name \"a.iv\" }\n}\n");
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_NE(r.err.find("scene.iv: line 3: Expected '}'"), std::string::npos) << r.err;
   EXPECT_TRUE(noImageWritten());
 }
 

@@ -45,3 +45,42 @@ TEST(ViewOptions, RejectsAnAngleTooLargeForADoubleWithoutThrowing) {
   ASSERT_TRUE(parseViewDirection("0." + huge + ",0"));
   EXPECT_NEAR(parseViewDirection("0." + huge + ",0")->azimuth, 1.0, 1e-12);
 }
+
+TEST(ViewOptions, ParsesTurntableCounts) {
+  EXPECT_EQ(parseTurntableCount("1"), 1);
+  EXPECT_EQ(parseTurntableCount("8"), 8);
+  EXPECT_EQ(parseTurntableCount("3600"), 3600);
+  for (const char* bad : {"", "0", "-1", "+8", "8.0", "8 ", " 8", "x", "3601", "99999999999999999999", "8x"})
+    EXPECT_FALSE(parseTurntableCount(bad)) << bad;
+}
+
+TEST(ViewOptions, ATurntableGoesAroundFromItsStart) {
+  const std::vector<ViewDirection> four = turntableViews(4, std::nullopt);
+  ASSERT_EQ(four.size(), 4u);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_DOUBLE_EQ(four[i].azimuth, 90.0 * i);
+    EXPECT_DOUBLE_EQ(four[i].elevation, 0.0);
+  }
+  const std::vector<ViewDirection> three = turntableViews(3, ViewDirection{30.0, 10.0});
+  ASSERT_EQ(three.size(), 3u);
+  EXPECT_DOUBLE_EQ(three[1].azimuth, 150.0);
+  EXPECT_DOUBLE_EQ(three[2].azimuth, 270.0);
+  EXPECT_DOUBLE_EQ(three[2].elevation, 10.0);
+}
+
+TEST(ViewOptions, ParsesFrameTimes) {
+  const auto times = parseFrameTimes("0.5:2.5:5");
+  ASSERT_TRUE(times);
+  EXPECT_EQ(*times, (std::vector<double>{0.5, 1.0, 1.5, 2.0, 2.5}));
+  EXPECT_EQ(*parseFrameTimes("2:2:1"), std::vector<double>{2.0});
+  EXPECT_EQ(*parseFrameTimes("1:3:1"), std::vector<double>{1.0});  // one frame: the first time
+  EXPECT_EQ(parseFrameTimes(".25:1:4")->back(), 1.0);
+  EXPECT_EQ(parseFrameTimes("0:1:10000")->size(), 10000u);
+}
+
+TEST(ViewOptions, RejectsBadFrameTimes) {
+  for (const char* bad : {"", "0:1", "0:1:", ":1:3", "0::3", "0:1:3:4", "1:0:3", "-1:1:3", "0:1:0", "0:1:-2",
+                          "0:1:1.5", "0:1:10001", "a:1:3", "0:inf:3", "0:nan:3", "0:1e3:3", "0:2000000:3",
+                          "0;1;3", "0:1:3 "})
+    EXPECT_FALSE(parseFrameTimes(bad)) << bad;
+}
