@@ -15,6 +15,8 @@
 
 #include "MeshImport.h"
 
+#include "io/AssimpHazards.h"
+
 #include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
@@ -30,20 +32,6 @@ namespace figment {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Proper rotations (determinant +1, so windings and handedness survive) that take the
-// file's up axis onto +y.
-Vec3 toYUp(const Vec3& p, UpAxis up) {
-  switch (up) {
-    case UpAxis::Y: return p;
-    case UpAxis::Z: return {p.x(), p.z(), -p.y()};      // -90 degrees about x
-    case UpAxis::X: return {-p.y(), p.x(), p.z()};      // +90 degrees about z
-    case UpAxis::NegY: return {p.x(), -p.y(), -p.z()};  // 180 degrees about x
-    case UpAxis::NegZ: return {p.x(), -p.z(), p.y()};   // +90 degrees about x
-    case UpAxis::NegX: return {p.y(), -p.x(), p.z()};   // -90 degrees about z
-  }
-  return p;
-}
 
 // An entry of `exclude` matches a mesh whose name contains it: the exact name
 // ("human-highpolyeyesMesh" in human.zae) or any part of it ("eyes").
@@ -112,6 +100,7 @@ ImportedMesh importMesh(const std::string& path, const ImportOptions& options) {
   if (!fs::is_regular_file(path, error)) throw std::runtime_error(path + ": no such file");
   if (!(options.metresPerUnit > 0.0))
     throw std::runtime_error(path + ": metresPerUnit = " + std::to_string(options.metresPerUnit) + " must be > 0");
+  if (const std::string hazard = assimpHazard(path); !hazard.empty()) throw std::runtime_error(path + ": " + hazard);
 
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);

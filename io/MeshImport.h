@@ -2,14 +2,13 @@
 // Reads a mesh file (Collada, .zae, OBJ, PLY, ... anything assimp reads) into the
 // scene frame: metres, y up. Bodies and garments both come in through here.
 
+#include "io/UpAxis.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <string>
 #include <vector>
 
 namespace figment {
-
-enum class UpAxis { X, Y, Z, NegX, NegY, NegZ };
 
 struct ImportOptions {
   double metresPerUnit = 1.0;       // scale applied to the file's coordinates

@@ -1,10 +1,12 @@
 #pragma once
 // What every tool's main does around its own work: parse the command line, find the
-// body on the model search path, and turn any error into one line
-// "<program>: <file>: <reason>" on stderr with exit status 1.
+// body on the model search path, bring it into the scene frame (metres, y up) the way a
+// MeshFile with the same fields would, check it stands upright at a human size, and turn
+// any error into one line "<program>: <file>: <reason>" on stderr with exit status 1.
 
 #include <CLI/CLI.hpp>
 
+#include "io/UpAxis.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <functional>
@@ -12,6 +14,18 @@
 #include <vector>
 
 namespace figment::tools {
+
+// The body a tool works on, as its command line names it: the MeshFile fields fileName,
+// collisionExclude, metresPerUnit and upAxis.
+struct BodyInput {
+  std::string name = "human.zae";
+  std::vector<std::string> exclude = {"eyes"};
+  double metresPerUnit = 1.0;
+  UpAxis upAxis = UpAxis::Y;
+};
+
+// Adds --body, --exclude, --metres-per-unit and --up-axis to `app`, read into `body`.
+void addBodyOptions(CLI::App& app, BodyInput& body);
 
 class ToolMain {
  public:
@@ -26,15 +40,21 @@ class ToolMain {
   // (0 after --help, 1 after a bad option).
   int parse(CLI::App& app, int argc, char** argv) const;
 
-  // Finds the body file `bodyName` on the model search path, reads it (metres, y up,
-  // without the meshes named in `exclude`) and returns the exit status of `work` on it.
-  // A body not found, or an exception, is one line and status 1: the importer's and
-  // exporter's messages start with their path; others get the body's.
-  int withBody(const std::string& bodyName, const std::vector<std::string>& exclude,
+  // Finds the body file on the model search path, reads it (metresPerUnit, upAxis,
+  // without the meshes named in `exclude`), checks it (bodyFrameProblem) and returns the
+  // exit status of `work` on it. A body not found, a body that fails the check, or an
+  // exception, is one line and status 1: the importer's and exporter's messages start
+  // with their path; others get the body's.
+  int withBody(const BodyInput& input,
                const std::function<int(const TriangleMesh& body, const std::string& bodyPath)>& work) const;
 
  private:
   std::string program_;
 };
+
+// Why `body` (as read with `input`'s metresPerUnit and upAxis) cannot be fitted or
+// dressed, with the options that would bring it upright and to a human stature; "" when
+// it stands along +y and is kMinStature to kMaxStature (sim/body/BodyStance.h) tall.
+std::string bodyFrameProblem(const TriangleMesh& body, const BodyInput& input);
 
 }  // namespace figment::tools

@@ -3,10 +3,13 @@
 //
 //   figment-fit [--body human.zae] -o scenes/human-volumes.iv [--method radial|capsule]
 //               [--capsule PART ...] [--exact PART ...] [--harmonics K]
-//               [--section-spacing M] [--seed N]
+//               [--section-spacing M] [--seed N] [--metres-per-unit M] [--up-axis AXIS]
 //
 // The body is read as a MeshFile with the same fields reads it (metres, y up, without
-// the excluded meshes); its skeleton is estimated from cross sections
+// the excluded meshes): the volumes are in that frame, so a scene's MeshFile for the body
+// takes the same metresPerUnit and upAxis. A body that then does not stand along +y at a
+// human stature is refused at once, with the options that would fix it (tools/ToolMain.h:
+// the fit's thresholds are in metres). Its skeleton is estimated from cross sections
 // (sim/body/SkeletonEstimate.h); each part gets radial depth volumes (or capsules where a
 // radial volume does not suit it, sim/fitting/CollisionVolumeFitting.h) or capsules, or, for the parts
 // named by --capsule and --exact, capsules and ExactVolume. The file holds one
@@ -42,9 +45,8 @@ namespace {
 const figment::tools::ToolMain kTool{"figment-fit"};
 
 struct Options {
-  std::string body = "human.zae";
+  figment::tools::BodyInput body;
   std::string output;
-  std::vector<std::string> exclude = {"eyes"};
   std::string method = "radial";
   std::vector<std::string> capsuleParts, exactParts;
   figment::CollisionVolumeFitOptions fit;
@@ -93,10 +95,8 @@ std::string writeIv(SoNode* root, const std::string& path, const std::string& he
 // Reads the command line into `options`: -1 to go on, else the exit status.
 int parseCommandLine(int argc, char** argv, Options& options) {
   CLI::App app{"Fits a body's collision volumes and writes them as an .iv file for a Mannequin.", kTool.program()};
-  app.add_option("--body", options.body, "body model file, looked up on the model search path")->capture_default_str();
+  figment::tools::addBodyOptions(app, options.body);
   app.add_option("-o,--output", options.output, ".iv file to write")->required();
-  app.add_option("--exclude", options.exclude, "meshes of the body file to leave out (name or part of it)")
-      ->capture_default_str();
   app.add_option("--method", options.method, "radial (radial depth, capsules where it does not suit) or capsule")
       ->check(CLI::IsMember({"radial", "capsule"}))
       ->capture_default_str();
@@ -155,7 +155,7 @@ int fitAndWrite(const Options& options, const figment::TriangleMesh& body) {
   Options withProgress = options;
   withProgress.fit.progress = [&](const std::string& part, int index, int count) {
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    std::fprintf(stderr, "figment-fit: %s: part %d of %d (%s), %.1f s\n", options.body.c_str(), index + 1, count,
+    std::fprintf(stderr, "figment-fit: %s: part %d of %d (%s), %.1f s\n", options.body.name.c_str(), index + 1, count,
                  part.c_str(), elapsed.count());
   };
   const std::vector<figment::CollisionVolumeParameters> volumes =
@@ -165,7 +165,7 @@ int fitAndWrite(const Options& options, const figment::TriangleMesh& body) {
     if (!exact.count(v.part)) (v.kind == figment::CollisionVolumeParameters::Kind::Capsule ? capsules : radials)++;
   SoGroup* root = volumeNodes(skeleton, volumes, exact);
   root->ref();
-  const std::string header = "# The collision volumes of " + options.body + ", fitted by\n#   " +
+  const std::string header = "# The collision volumes of " + options.body.name + ", fitted by\n#   " +
                              options.commandLine +
                              "\n# Include it in a Mannequin (nodes/body/Mannequin.h); regenerate, do not edit.";
   const std::string error = figment::writeAtomically(
@@ -184,7 +184,7 @@ int main(int argc, char** argv) {
   Options options;
   if (const int status = parseCommandLine(argc, argv, options); status >= 0) return status;
   figment::init();
-  return kTool.withBody(options.body, options.exclude, [&](const figment::TriangleMesh& body, const std::string&) {
+  return kTool.withBody(options.body, [&](const figment::TriangleMesh& body, const std::string&) {
     return fitAndWrite(options, body);
   });
 }

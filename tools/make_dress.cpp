@@ -1,7 +1,9 @@
 // figment-make-dress: generates the default garment (scenes/dress.obj) around a body.
-//   figment-make-dress [--body human.zae] -o scenes/dress.obj
-// The body is found through the model search path (findModelFile) and read in metres,
-// y up, without its eyes; on success one summary line goes to stdout. Any error is one line,
+//   figment-make-dress [--body human.zae] [--metres-per-unit M] [--up-axis AXIS] -o scenes/dress.obj
+// The body is found through the model search path (findModelFile) and read as a MeshFile
+// with the same fields reads it (metres, y up, without its eyes); a body that then does
+// not stand along +y at a human stature is refused (tools/ToolMain.h) with the options
+// that would fix it. On success one summary line goes to stdout. Any error is one line,
 // "figment-make-dress: <file>: <reason>", on stderr and exit status 1, with no output file.
 
 #include "io/MeshExport.h"
@@ -33,20 +35,20 @@ int makeAndWrite(const figment::TriangleMesh& body, const figment::StrapDressOpt
 
 int main(int argc, char** argv) {
   CLI::App app{"Generates a strap dress around a body and writes it as a Wavefront OBJ.", kTool.program()};
-  std::string bodyName = "human.zae";
+  figment::tools::BodyInput body;
   std::string output;
-  std::vector<std::string> exclude = {"eyes"};
   figment::StrapDressOptions options;
-  app.add_option("--body", bodyName, "body model file, looked up on the model search path")->capture_default_str();
+  figment::tools::addBodyOptions(app, body);
   app.add_option("-o,--output", output, "OBJ file to write")->required();
-  app.add_option("--exclude", exclude, "meshes of the body file to leave out (name or part of it)")
-      ->capture_default_str();
   app.add_option("--clearance", options.clearance, "gap between body and dress at the start, m")
       ->capture_default_str();
   app.add_option("--neckline-rise", options.necklineRise, "rise of the top edge between the straps, m")
       ->capture_default_str();
+  app.add_option("--strap-offset", options.strapOffset,
+                 "|x| of each strap's centre line from the torso's centre, m (nearer the neck for sloping shoulders)")
+      ->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
-  return kTool.withBody(bodyName, exclude, [&](const figment::TriangleMesh& body, const std::string&) {
-    return makeAndWrite(body, options, output);
+  return kTool.withBody(body, [&](const figment::TriangleMesh& bodyMesh, const std::string&) {
+    return makeAndWrite(bodyMesh, options, output);
   });
 }

@@ -1,7 +1,9 @@
 // figment-make-skirt: generates the flared skirt (scenes/skirt.obj) around a body.
-//   figment-make-skirt [--body human.zae] -o scenes/skirt.obj
-// The body is found through the model search path and read in metres, y up, without its
-// eyes; on success one summary line goes to stdout. Any error is one line,
+//   figment-make-skirt [--body human.zae] [--metres-per-unit M] [--up-axis AXIS] -o scenes/skirt.obj
+// The body is found through the model search path and read as a MeshFile with the same
+// fields reads it (metres, y up, without its eyes); a body that then does not stand along
+// +y at a human stature is refused (tools/ToolMain.h). On success one summary line goes
+// to stdout. Any error is one line,
 // "figment-make-skirt: <file>: <reason>", on stderr and exit status 1, with no output file.
 
 #include "io/MeshExport.h"
@@ -31,14 +33,11 @@ int makeAndWrite(const figment::TriangleMesh& body, const figment::FlaredSkirtOp
 
 int main(int argc, char** argv) {
   CLI::App app{"Generates a flared skirt around a body's waist and writes it as a Wavefront OBJ.", kTool.program()};
-  std::string bodyName = "human.zae";
+  figment::tools::BodyInput body;
   std::string output;
-  std::vector<std::string> exclude = {"eyes"};
   figment::FlaredSkirtOptions options;
-  app.add_option("--body", bodyName, "body model file, looked up on the model search path")->capture_default_str();
+  figment::tools::addBodyOptions(app, body);
   app.add_option("-o,--output", output, "OBJ file to write")->required();
-  app.add_option("--exclude", exclude, "meshes of the body file to leave out (name or part of it)")
-      ->capture_default_str();
   app.add_option("--waist-clearance", options.waistClearance, "gap between waistband and waist, m")
       ->capture_default_str();
   app.add_option("--length", options.length, "waistband to hem, m")->capture_default_str();
@@ -47,7 +46,7 @@ int main(int argc, char** argv) {
   app.add_option("--rows", options.rows, "rings of quads")->capture_default_str();
   app.add_option("--columns", options.columns, "vertices around a ring")->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
-  return kTool.withBody(bodyName, exclude, [&](const figment::TriangleMesh& body, const std::string&) {
-    return makeAndWrite(body, options, output);
+  return kTool.withBody(body, [&](const figment::TriangleMesh& bodyMesh, const std::string&) {
+    return makeAndWrite(bodyMesh, options, output);
   });
 }

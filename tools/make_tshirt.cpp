@@ -1,8 +1,11 @@
 // figment-make-tshirt: generates a T-shirt with short sleeves (scenes/tshirt.obj) around
 // a body in its rest pose, of any number of triangles.
 //   figment-make-tshirt [--body human.zae] [--triangles 1000] -o scenes/tshirt.obj
-// The body is found through the model search path and read in metres, y up, without its
-// eyes; on success one summary line goes to stdout. Any error is one line,
+//   (and [--metres-per-unit M] [--up-axis AXIS] for a body in another unit or frame)
+// The body is found through the model search path and read as a MeshFile with the same
+// fields reads it (metres, y up, without its eyes); a body that then does not stand along
+// +y at a human stature is refused (tools/ToolMain.h). On success one summary line goes
+// to stdout. Any error is one line,
 // "figment-make-tshirt: <file>: <reason>", on stderr and exit status 1, with no output file.
 
 #include "io/MeshExport.h"
@@ -31,14 +34,11 @@ int makeAndWrite(const figment::TriangleMesh& body, const figment::TShirtOptions
 int main(int argc, char** argv) {
   CLI::App app{"Generates a T-shirt with short sleeves around a body and writes it as a Wavefront OBJ.",
                kTool.program()};
-  std::string bodyName = "human.zae";
+  figment::tools::BodyInput body;
   std::string output;
-  std::vector<std::string> exclude = {"eyes"};
   figment::TShirtOptions options;
-  app.add_option("--body", bodyName, "body model file, looked up on the model search path")->capture_default_str();
+  figment::tools::addBodyOptions(app, body);
   app.add_option("-o,--output", output, "OBJ file to write")->required();
-  app.add_option("--exclude", exclude, "meshes of the body file to leave out (name or part of it)")
-      ->capture_default_str();
   app.add_option("--triangles", options.triangles, "sections of the shirt")->capture_default_str();
   app.add_option("--ease", options.ease, "how far the shirt stands off the skin, m")->capture_default_str();
   app.add_option("--hem-above-crotch", options.hemAboveCrotch, "the hem's height above the crotch, m")
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   app.add_option("--sleeve-share", options.sleeveShare, "share of the upper arm inside the sleeve")
       ->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
-  return kTool.withBody(bodyName, exclude, [&](const figment::TriangleMesh& body, const std::string&) {
-    return makeAndWrite(body, options, output);
+  return kTool.withBody(body, [&](const figment::TriangleMesh& bodyMesh, const std::string&) {
+    return makeAndWrite(bodyMesh, options, output);
   });
 }

@@ -7,6 +7,7 @@
 #include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
 #include "sim/body/BodyParts.h"
+#include "sim/body/GirthBlend.h"
 #include "sim/collision/CollisionVolume.h"
 #include "sim/body/Posing.h"
 #include "sim/body/Skinning.h"
@@ -192,6 +193,29 @@ std::shared_ptr<const figment::Collider> Mannequin::colliderWithExactParts(const
   return buildCollider(exact);
 }
 
+namespace {
+
+// The node's volume; a radial depth volume with its cross sections grown where its part
+// meets a wider torso part (sim/body/GirthBlend.h: otherwise the wider part's end rim
+// stands out of it and cloth resting there never settles).
+std::shared_ptr<const figment::CollisionVolume> sizedVolume(const CollisionVolumeNode& node, int part,
+                                                            const figment::TriangleMesh& triangles,
+                                                            const figment::GirthBlend& girth) {
+  if (!node.isOfType(RadialDepthVolume::getClassTypeId())) return node.makeVolume(triangles);
+  figment::RadialDepthParameters p = static_cast<const RadialDepthVolume&>(node).parameters();
+  const size_t sections = p.coefficients.size();
+  const figment::Vec3 axis = p.direction.normalized();
+  for (size_t j = 0; sections > 1 && j < sections; ++j) {
+    const double s = p.length * static_cast<double>(j) / static_cast<double>(sections - 1);
+    const double growth = girth.growth(part, p.base + s * axis);
+    if (growth != 1.0)
+      for (double& c : p.coefficients[j]) c *= growth;
+  }
+  return figment::makeVolume(p);
+}
+
+}  // namespace
+
 std::shared_ptr<const figment::Collider> Mannequin::buildCollider(const std::vector<char>& exact) const {
   const Model& m = model();
   const auto byTriangles = [&](const VolumeEntry& v) {
@@ -210,10 +234,11 @@ std::shared_ptr<const figment::Collider> Mannequin::buildCollider(const std::vec
     }
   std::vector<figment::PosedCollisionVolume> posed;
   const figment::TriangleMesh none;
+  const figment::GirthBlend girth(m.skeleton, m.sizing, blendRadius.getValue());
   for (const VolumeEntry& v : m.volumes) {
     if (exact[v.part]) continue;  // below: its triangles once, however many volumes it has
     const figment::TriangleMesh& triangles = parts.empty() ? none : parts[v.part].mesh;
-    posed.push_back({v.part, v.node->makeVolume(triangles), m.transforms[v.part]});
+    posed.push_back({v.part, sizedVolume(*v.node, v.part, triangles, girth), m.transforms[v.part]});
   }
   for (size_t part = 0; part < exact.size(); ++part) {
     if (!exact[part]) continue;

@@ -28,13 +28,22 @@ Eigen::Matrix3d sizingLinear(const Skeleton& skeleton, const BodyPart& part, con
   if (!(bone.norm() > 0.0)) return identity;
   const Vec3 u = bone.normalized();
   const Eigen::Matrix3d along = u * u.transpose(), across = identity - along;
-  if (part.name == "upperTorso") return identity + (sizing.chest - 1.0) * across;
-  if (part.name == "lowerTorso") return identity + (sizing.waist - 1.0) * across;
-  if (part.name == "hips") return identity + (sizing.hips - 1.0) * across;
+  if (const std::optional<double> girth = girthFactor(part, sizing)) return identity + (*girth - 1.0) * across;
   if (startsWith(part.name, "upperArm") || startsWith(part.name, "forearm") || startsWith(part.name, "hand"))
     return identity + (sizing.armLength - 1.0) * along;
   return identity;
 }
+
+}  // namespace
+
+std::optional<double> girthFactor(const BodyPart& part, const Sizing& sizing) {
+  if (part.name == "upperTorso") return sizing.chest;
+  if (part.name == "lowerTorso") return sizing.waist;
+  if (part.name == "hips") return sizing.hips;
+  return std::nullopt;
+}
+
+namespace {
 
 void checkHierarchy(const Skeleton& skeleton) {
   const int n = static_cast<int>(skeleton.joints.size());

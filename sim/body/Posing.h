@@ -27,6 +27,7 @@
 
 #include <Eigen/Geometry>
 
+#include <optional>
 #include <vector>
 
 namespace figment {
@@ -41,6 +42,10 @@ struct Sizing {  // factors, 1 = as fitted; each in [0.5, 2]
 struct Pose {  // rotation of each joint about its rest position (rest frame), by joint index; missing = identity
   std::vector<Eigen::Quaterniond> rotations;
 };
+
+// The girth factor sizing gives `part` across its bone (chest: upperTorso, waist:
+// lowerTorso, hips: hips); nullopt for a part whose girth sizing leaves alone.
+std::optional<double> girthFactor(const BodyPart& part, const Sizing& sizing);
 
 // One map per skeleton part (index = skeleton.parts), rest frame -> posed world frame.
 // Throws std::invalid_argument naming the factor and value when a factor is out of range,

@@ -1,14 +1,15 @@
 #include "sim/body/SkeletonEstimate.h"
 
 #include "sim/body/BodySlices.h"
+#include "sim/body/BodyStance.h"
 
-#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace figment {
@@ -16,52 +17,10 @@ namespace figment {
 namespace {
 
 constexpr double kHeight = 1.66;  // m: the default body's, where BodySlices' thresholds hold
-
-// How many clusters the points make along their widest horizontal spread, split where
-// consecutive points lie more than `gap` apart (points in a plane, as 2-D).
-int clusterCount(std::vector<Vec2> points, double gap) {
-  if (points.empty()) return 0;
-  Vec2 mean = Vec2::Zero();
-  for (const Vec2& p : points) mean += p;
-  mean /= static_cast<double>(points.size());
-  Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero();
-  for (const Vec2& p : points) covariance += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(covariance);
-  const Vec2 axis = eigen.eigenvectors().col(1);
-  std::vector<double> along;
-  for (const Vec2& p : points) along.push_back((p - mean).dot(axis));
-  std::sort(along.begin(), along.end());
-  int count = 1;
-  for (size_t i = 1; i < along.size(); ++i) count += along[i] - along[i - 1] > gap;
-  return count;
-}
-
-// Points of `vertices` within `slab` of the lowest (or highest) along `up`, in the plane
-// perpendicular to it.
-std::vector<Vec2> slab(const std::vector<Vec3>& vertices, const Vec3& up, double fraction, bool top) {
-  double low = std::numeric_limits<double>::max(), high = -low;
-  for (const Vec3& v : vertices) low = std::min(low, v.dot(up)), high = std::max(high, v.dot(up));
-  const double extent = high - low;
-  const Vec3 e1 = up.unitOrthogonal(), e2 = up.cross(e1);
-  std::vector<Vec2> points;
-  for (const Vec3& v : vertices) {
-    const double h = v.dot(up);
-    if (top ? h >= high - fraction * extent : h <= low + fraction * extent) points.emplace_back(v.dot(e1), v.dot(e2));
-  }
-  return points;
-}
+constexpr double kWaistShare = 0.66;  // the default body's waist, crotch to armpits
 
 Vec3 findUp(const std::vector<Vec3>& vertices) {
-  const Bounds b = boundsOf(vertices);
-  const double largest = b.size().maxCoeff();
-  for (int axis = 0; axis < 3; ++axis)
-    for (double sign : {1.0, -1.0}) {
-      if (b.size()[axis] < 0.8 * largest) continue;
-      const Vec3 up = sign * Vec3::Unit(axis);
-      const double gap = 0.04 * b.size()[axis];
-      if (clusterCount(slab(vertices, up, 0.04, false), gap) == 2 && clusterCount(slab(vertices, up, 0.04, true), gap) == 1)
-        return up;
-    }
+  if (const std::optional<Vec3> up = standingUpDirection(vertices)) return *up;
   throw std::invalid_argument("no up axis with two feet below and one head above: not a standing humanoid");
 }
 
@@ -155,10 +114,16 @@ Landmarks landmarksOf(const TriangleMesh& body) {
   l.neck = neckHeight(body, l.armpit);
   l.waist = l.crotch + 0.1;
   double narrowest = std::numeric_limits<double>::max();
-  for (double y = l.crotch + 0.1; y < l.armpit - 0.05; y += 0.005) {
+  const double highest = l.armpit - 0.05;
+  for (double y = l.crotch + 0.1; y < highest; y += 0.005) {
     const TorsoSlice s = sliceTorso(body, y);
     if (!s.empty() && s.maxX() - s.minX() < narrowest) narrowest = s.maxX() - s.minX(), l.waist = y;
   }
+  // A torso that narrows all the way up to the armpits (a broad-hipped or barrel-chested
+  // body without a waist) has its narrowest section at the top of the range, just under
+  // the chest, which would leave the lower torso a sliver: take the default body's
+  // proportion instead, its waist 66 % of the way from the crotch to the armpits.
+  if (l.waist > highest - 0.01) l.waist = l.crotch + kWaistShare * (l.armpit - l.crotch);
   return l;
 }
 
@@ -206,8 +171,53 @@ void placeLegs(const TriangleMesh& body, const Landmarks& l, Joints& j) {
   }
 }
 
+// The arm's fingertip on one side (sign +1: +x): the farthest from `shoulder` of the
+// points that are surely arm. Below the armpits: the section points of the clusters clear
+// of the torso on that side (arm, hand, fingers), scanned down until there are none, and
+// the vertices between those sections or just below the last (the tip lies between two
+// scans). Above the armpits: the vertices beyond the torso's edge (an arm held out level).
+// Not every vertex beyond the torso's edge: where the arms hang close to the sides
+// (HUMAN.blend), a wide hip's flank is beyond the chest's edge and farther from the
+// shoulder than a hand that ends above it.
+Vec3 fingertip(const TriangleMesh& body, const Landmarks& l, const Vec3& shoulder, double torsoEdge, double sign) {
+  constexpr double kStep = 0.005, kTipMargin = 0.03;  // m
+  std::vector<Vec3> candidates;
+  for (const Vec3& v : body.vertices)
+    if (v.y() >= l.armpit && sign * v.x() > sign * torsoEdge + 0.02) candidates.push_back(v);
+  // A cluster clear of the torso on this side: its inner edge beyond the torso's edge.
+  const auto clear = [&](const XCluster& c) { return (sign > 0 ? c.minX : -c.maxX) >= sign * torsoEdge; };
+  struct ArmSection {
+    double y, minX, maxX;  // the x range of the arm's clusters at height y
+  };
+  std::vector<ArmSection> arm;
+  for (double y = l.armpit - kStep; y > l.crotch; y -= kStep) {
+    std::optional<ArmSection> here;
+    for (const XCluster& c : clusterByX(planeSection(body, SectionAxis::Y, y), 0.02)) {
+      if (!clear(c)) continue;  // the torso, the legs or the other arm
+      for (const Vec2& p : c.points) candidates.emplace_back(p.x(), y, p.y());
+      here = here ? ArmSection{y, std::min(here->minX, c.minX), std::max(here->maxX, c.maxX)}
+                  : ArmSection{y, c.minX, c.maxX};
+    }
+    if (!here) break;  // the arm has ended (or joins the torso)
+    arm.push_back(*here);
+  }
+  // Vertices between two sections, or just below the lowest, within the x range of the
+  // sections beside them (1 cm more for the slope between).
+  for (const Vec3& v : body.vertices)
+    for (const ArmSection& a : arm)
+      if (std::abs(v.y() - a.y) <= (&a == &arm.back() ? kTipMargin : kStep) && v.x() >= a.minX - 0.01 &&
+          v.x() <= a.maxX + 0.01) {
+        candidates.push_back(v);
+        break;
+      }
+  Vec3 tip = shoulder;
+  for (const Vec3& v : candidates)
+    if ((v - shoulder).squaredNorm() > (tip - shoulder).squaredNorm()) tip = v;
+  return tip;
+}
+
 // Step 3d: shoulders from the section above the armpits; elbow and wrist along the line
-// to the fingertip, the arm's vertex (beside the torso, above the crotch) farthest away.
+// to the fingertip (above).
 void placeArms(const TriangleMesh& body, const Landmarks& l, Joints& j) {
   const TorsoSlice shoulders = sliceTorso(body, l.armpit + 0.07);
   const Vec3 chest = torsoCentre(body, l.armpit + 0.07);
@@ -220,11 +230,7 @@ void placeArms(const TriangleMesh& body, const Landmarks& l, Joints& j) {
     const Vec3 shoulder(outline[side] - sign * 0.04, l.armpit + 0.07, chest.z());
     j.set(armJoints[side][0], Vec3(chest.x() + sign * 0.05, l.armpit + 0.09, chest.z()));
     j.set(armJoints[side][1], shoulder);
-    Vec3 tip = shoulder;
-    for (const Vec3& v : body.vertices)
-      if (v.y() > l.crotch && sign * v.x() > sign * torsoEdge[side] + 0.02 &&
-          (v - shoulder).squaredNorm() > (tip - shoulder).squaredNorm())
-        tip = v;
+    const Vec3 tip = fingertip(body, l, shoulder, torsoEdge[side], sign);
     j.set(armJoints[side][2], shoulder + 0.42 * (tip - shoulder));
     j.set(armJoints[side][3], shoulder + 0.75 * (tip - shoulder));
     j.set(armJoints[side][4], tip);

@@ -235,3 +235,36 @@ TEST(FindModelFile, FallsBackToAssimpTestModels) {
   EXPECT_EQ(findModelFile("human.zae"), "/usr/share/assimp/models/Collada/human.zae");
   EXPECT_EQ(findModelFile("Collada/human.zae"), "/usr/share/assimp/models/Collada/human.zae");
 }
+
+// assimp 5.2's PLY reader loops forever on a header without end_header, or with a control
+// byte in a line (found by tests/fuzz/fuzz_mesh; figment-view hung on a MeshFile naming such a
+// file). importMesh refuses them first (io/AssimpHazards.h), by name or by the file's first word.
+TEST(MeshImport, AMalformedPlyHeaderIsAnErrorNotAHang) {
+  TempDir dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n";
+  const std::string rest = "property float y\nproperty float z\nelement face 1\n"
+                           "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string tail = " (assimp 5.2 may never finish reading it)";
+  const struct {
+    const char* name;
+    std::string text, error;
+  } cases[] = {
+      {"open.ply", header, "PLY header without end_header in its first 64 KiB"},
+      {"open.obj", header, "PLY header without end_header in its first 64 KiB"},
+      {"control.ply", "ply\nformat ascii 1.0\nelement vertex 3\x06" + std::string("property float x\n") + rest,
+       "PLY header line 3 holds a control or non-ASCII byte"},
+      {"word.ply", "ply\nformat ascii 1.0\nelemen1 vertex 3\n" + rest,
+       "PLY header line 3 does not begin with a PLY keyword"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = dir.file(c.name, c.text);
+    try {
+      importMesh(path);
+      ADD_FAILURE() << c.name << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": " + c.error + tail);
+    }
+  }
+  const ImportedMesh good = importMesh(dir.file("good.ply", header + rest));
+  EXPECT_EQ(good.mesh.triangles.size(), 1u);
+}
