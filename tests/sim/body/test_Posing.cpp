@@ -1,5 +1,6 @@
 // Posing and sizing the jointed mannequin (sim/body/Posing.h) on a small T-posed humanoid
 // skeleton whose joints sit on round numbers: y up, floor at y = 0, arms along +-x.
+#include "support/RoundNumberSkeleton.h"
 #include "support/TestCapsules.h"
 #include "sim/collision/CollisionVolume.h"
 #include "sim/body/Posing.h"
@@ -13,24 +14,10 @@
 #include <string>
 
 using namespace figment;
+using figment::test::partIndex;
+using figment::test::roundNumberTPose;
 
 namespace {
-Skeleton tPose() {
-  return humanoidSkeleton({
-      {0, 1.0, 0},      {0, 1.1, 0},      {0, 1.3, 0},      {0, 1.5, 0},     {0, 1.6, 0},    {0, 1.8, 0},  // spine
-      {0.1, 0.95, 0},   {0.1, 0.5, 0},    {0.1, 0.08, 0},   {0.1, 0.0, 0.15},                                 // left leg
-      {-0.1, 0.95, 0},  {-0.1, 0.5, 0},   {-0.1, 0.08, 0},  {-0.1, 0.0, 0.15},                                // right leg
-      {0.2, 1.45, 0},   {0.5, 1.45, 0},   {0.75, 1.45, 0},  {0.95, 1.45, 0},                                  // left arm
-      {-0.2, 1.45, 0},  {-0.5, 1.45, 0},  {-0.75, 1.45, 0}, {-0.95, 1.45, 0},                                 // right arm
-      {0.05, 1.45, 0},  {-0.05, 1.45, 0}, {0, 0.9, 0}});  // shoulder bases, pelvis floor
-}
-
-int part(const Skeleton& s, const std::string& name) {
-  for (size_t k = 0; k < s.parts.size(); ++k)
-    if (s.parts[k].name == name) return static_cast<int>(k);
-  return -1;
-}
-
 Pose rotate(const Skeleton& s, const std::string& joint, const Eigen::Quaterniond& q, Pose pose = {}) {
   pose.rotations.resize(s.joints.size(), Eigen::Quaterniond::Identity());
   pose.rotations[s.joint(joint)] = q;
@@ -47,7 +34,7 @@ using test::segmentCapsule;
 }  // namespace
 
 TEST(Posing, IdentityPoseAndUnitSizingGiveIdentityTransforms) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   for (const Pose& pose : {Pose{}, rotate(s, "elbowL", Eigen::Quaterniond::Identity())}) {
     for (const Eigen::Affine3d& t : partTransforms(s, pose, Sizing{})) EXPECT_EQ(t.matrix(), Eigen::Matrix4d::Identity());
     const std::vector<Vec3> joints = posedJoints(s, pose, Sizing{});
@@ -56,15 +43,15 @@ TEST(Posing, IdentityPoseAndUnitSizingGiveIdentityTransforms) {
 }
 
 TEST(Posing, ShoulderRotationMovesTheWholeArm) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   const Eigen::Quaterniond q = about(Vec3::UnitZ(), M_PI / 2);
   const Pose pose = rotate(s, "shoulderL", q);
   const std::vector<Eigen::Affine3d> transforms = partTransforms(s, pose, Sizing{});
   const Eigen::Affine3d expected = rotationAbout(s["shoulderL"].position, q);
   for (const char* name : {"upperArmL", "forearmL", "handL"})
-    EXPECT_TRUE(transforms[part(s, name)].isApprox(expected, 1e-14)) << name;
+    EXPECT_TRUE(transforms[partIndex(s, name)].isApprox(expected, 1e-14)) << name;
   for (const char* name : {"upperTorso", "lowerTorso", "hips", "head", "upperArmR", "thighL"})
-    EXPECT_EQ(transforms[part(s, name)].matrix(), Eigen::Matrix4d::Identity()) << name;
+    EXPECT_EQ(transforms[partIndex(s, name)].matrix(), Eigen::Matrix4d::Identity()) << name;
   const std::vector<Vec3> joints = posedJoints(s, pose, Sizing{});
   EXPECT_LT((joints[s.joint("elbowL")] - Vec3(0.2, 1.75, 0)).norm(), 1e-14);
   EXPECT_LT((joints[s.joint("fingertipL")] - Vec3(0.2, 2.2, 0)).norm(), 1e-14);
@@ -72,7 +59,7 @@ TEST(Posing, ShoulderRotationMovesTheWholeArm) {
 
   // The forearm's volume and the mesh vertices on the forearm move together: a vertex
   // keeps its distance to the volume's surface.
-  const int forearm = part(s, "forearmL");
+  const int forearm = partIndex(s, "forearmL");
   const VolumeSetCollider rest({{forearm, makeVolume(segmentCapsule(s["elbowL"].position, s["wristL"].position, 0.04)),
                                  Eigen::Affine3d::Identity()}});
   const VolumeSetCollider posed({{forearm, makeVolume(segmentCapsule(s["elbowL"].position, s["wristL"].position, 0.04)),
@@ -85,7 +72,7 @@ TEST(Posing, ShoulderRotationMovesTheWholeArm) {
 }
 
 TEST(Posing, RotationsComposeDownTheChain) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   const Eigen::Quaterniond shoulder = about(Vec3::UnitZ(), M_PI / 2), elbow = about(Vec3::UnitY(), M_PI / 2);
   const Pose pose = rotate(s, "elbowL", elbow, rotate(s, "shoulderL", shoulder));
   const Vec3 sh = s["shoulderL"].position, el = s["elbowL"].position, wr = s["wristL"].position,
@@ -96,13 +83,13 @@ TEST(Posing, RotationsComposeDownTheChain) {
   EXPECT_LT((joints[s.joint("fingertipL")] - (sh + shoulder * ((el - sh) + elbow * (tip - el)))).norm(), 1e-14);
   const std::vector<Eigen::Affine3d> transforms = partTransforms(s, pose, Sizing{});
   const Eigen::Affine3d forearm = rotationAbout(sh, shoulder) * rotationAbout(el, elbow);
-  EXPECT_TRUE(transforms[part(s, "forearmL")].isApprox(forearm, 1e-14));
-  EXPECT_TRUE(transforms[part(s, "handL")].isApprox(forearm, 1e-14));
-  EXPECT_TRUE(transforms[part(s, "upperArmL")].isApprox(rotationAbout(sh, shoulder), 1e-14));
+  EXPECT_TRUE(transforms[partIndex(s, "forearmL")].isApprox(forearm, 1e-14));
+  EXPECT_TRUE(transforms[partIndex(s, "handL")].isApprox(forearm, 1e-14));
+  EXPECT_TRUE(transforms[partIndex(s, "upperArmL")].isApprox(rotationAbout(sh, shoulder), 1e-14));
 }
 
 TEST(Posing, PartsStayAttachedUnderAnyPoseAndSizing) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   Pose pose;
   for (size_t j = 0; j < s.joints.size(); ++j)
     pose.rotations.push_back(about(Vec3(std::sin(j), std::cos(3.0 * j), 0.5).normalized(), 0.1 * j));
@@ -117,7 +104,7 @@ TEST(Posing, PartsStayAttachedUnderAnyPoseAndSizing) {
 }
 
 TEST(Posing, HeightScalesTheBodyAboutTheFloor) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   const std::vector<Vec3> joints = posedJoints(s, Pose{}, Sizing{1.1});
   double low = 1e9, high = -1e9;
   for (size_t j = 0; j < joints.size(); ++j) {
@@ -131,7 +118,7 @@ TEST(Posing, HeightScalesTheBodyAboutTheFloor) {
 }
 
 TEST(Posing, ArmLengthStretchesTheArmsAlongTheirBones) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   Sizing sizing;
   sizing.armLength = 1.2;
   const std::vector<Vec3> joints = posedJoints(s, Pose{}, sizing);
@@ -140,7 +127,7 @@ TEST(Posing, ArmLengthStretchesTheArmsAlongTheirBones) {
   EXPECT_NEAR((tip - shoulder).norm(), 1.2 * 0.75, 1e-14);
   EXPECT_NEAR((joints[s.joint("fingertipR")] - joints[s.joint("shoulderR")]).norm(), 1.2 * 0.75, 1e-14);
   // Along, not across: a point 4 cm off the forearm's bone stays 4 cm off it.
-  const Eigen::Affine3d forearm = partTransforms(s, Pose{}, sizing)[part(s, "forearmL")];
+  const Eigen::Affine3d forearm = partTransforms(s, Pose{}, sizing)[partIndex(s, "forearmL")];
   const Vec3 mid = forearm * Vec3(0.625, 1.45, 0.0), off = forearm * Vec3(0.625, 1.49, 0.0);
   EXPECT_NEAR((off - mid).norm(), 0.04, 1e-14);
   EXPECT_NEAR(mid.x(), 0.2 + 1.2 * 0.425, 1e-14);
@@ -149,21 +136,21 @@ TEST(Posing, ArmLengthStretchesTheArmsAlongTheirBones) {
 }
 
 TEST(Posing, GirthWidensTheTorsoAndCarriesTheLimbsOut) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   Sizing sizing;
   sizing.chest = 1.1, sizing.hips = 1.2;
   const std::vector<Eigen::Affine3d> transforms = partTransforms(s, Pose{}, sizing);
   const std::vector<Vec3> joints = posedJoints(s, Pose{}, sizing);
   // The upper torso is 10 % wider across its (vertical) axis, not taller.
-  EXPECT_LT((transforms[part(s, "upperTorso")] * Vec3(0.1, 1.4, 0.05) - Vec3(0.11, 1.4, 0.055)).norm(), 1e-14);
-  EXPECT_LT((transforms[part(s, "hips")] * Vec3(0.1, 1.0, 0.05) - Vec3(0.12, 1.0, 0.06)).norm(), 1e-14);
-  EXPECT_EQ(transforms[part(s, "lowerTorso")].matrix(), Eigen::Matrix4d::Identity());
+  EXPECT_LT((transforms[partIndex(s, "upperTorso")] * Vec3(0.1, 1.4, 0.05) - Vec3(0.11, 1.4, 0.055)).norm(), 1e-14);
+  EXPECT_LT((transforms[partIndex(s, "hips")] * Vec3(0.1, 1.0, 0.05) - Vec3(0.12, 1.0, 0.06)).norm(), 1e-14);
+  EXPECT_EQ(transforms[partIndex(s, "lowerTorso")].matrix(), Eigen::Matrix4d::Identity());
   // The shoulders move out with the chest, the hip joints with the hips, the limbs with them.
   EXPECT_LT((joints[s.joint("shoulderL")] - Vec3(0.22, 1.45, 0)).norm(), 1e-14);
   EXPECT_LT((joints[s.joint("shoulderR")] - Vec3(-0.22, 1.45, 0)).norm(), 1e-14);
   EXPECT_LT((joints[s.joint("hipL")] - Vec3(0.12, 0.95, 0)).norm(), 1e-14);
-  EXPECT_LT((transforms[part(s, "upperArmL")].translation() - Vec3(0.02, 0, 0)).norm(), 1e-14);
-  EXPECT_TRUE(transforms[part(s, "upperArmL")].linear().isIdentity(1e-15));
+  EXPECT_LT((transforms[partIndex(s, "upperArmL")].translation() - Vec3(0.02, 0, 0)).norm(), 1e-14);
+  EXPECT_TRUE(transforms[partIndex(s, "upperArmL")].linear().isIdentity(1e-15));
   EXPECT_LT((joints[s.joint("kneeR")] - Vec3(-0.12, 0.5, 0)).norm(), 1e-14);
   // The spine stays where it was.
   for (const char* joint : {"waist", "chest", "neckBase", "headTop"})
@@ -171,7 +158,7 @@ TEST(Posing, GirthWidensTheTorsoAndCarriesTheLimbsOut) {
 }
 
 TEST(Posing, RejectsBadFactorsAndPoses) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   for (const char* name : {"height", "chest", "waist", "hips", "armLength"}) {
     for (const double value : {0.4, 2.5}) {
       Sizing sizing;
@@ -196,12 +183,12 @@ TEST(Posing, RejectsBadFactorsAndPoses) {
 }
 
 TEST(Posing, JointsAreCarriedByTheirBonesOrTorsoParts) {
-  const Skeleton s = tPose();
+  const Skeleton s = roundNumberTPose();
   const std::vector<int> carriers = jointCarriers(s);
   EXPECT_EQ(carriers[s.joint("pelvis")], -1);
-  EXPECT_EQ(carriers[s.joint("elbowL")], part(s, "upperArmL"));
-  EXPECT_EQ(carriers[s.joint("shoulderL")], part(s, "upperTorso"));
-  EXPECT_EQ(carriers[s.joint("shoulderBaseR")], part(s, "upperTorso"));
-  EXPECT_EQ(carriers[s.joint("hipR")], part(s, "hips"));
-  EXPECT_EQ(carriers[s.joint("chest")], part(s, "lowerTorso"));
+  EXPECT_EQ(carriers[s.joint("elbowL")], partIndex(s, "upperArmL"));
+  EXPECT_EQ(carriers[s.joint("shoulderL")], partIndex(s, "upperTorso"));
+  EXPECT_EQ(carriers[s.joint("shoulderBaseR")], partIndex(s, "upperTorso"));
+  EXPECT_EQ(carriers[s.joint("hipR")], partIndex(s, "hips"));
+  EXPECT_EQ(carriers[s.joint("chest")], partIndex(s, "lowerTorso"));
 }
