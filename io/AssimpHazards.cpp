@@ -1,12 +1,16 @@
 #include "io/AssimpHazards.h"
 
+#include <assimp/scene.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string_view>
+#include <vector>
 
 namespace figment {
 
@@ -55,6 +59,61 @@ std::string plyHeaderProblem(const std::string& head) {
   return "PLY header without end_header in its first 64 KiB";
 }
 
+// ".off", or text starting "off" (any case): assimp 5.2's OFF reader claims it.
+bool looksLikeOff(const std::string& path, const std::string& head) {
+  return lowered(std::filesystem::path(path).extension().string()) == ".off" || lowered(head.substr(0, 3)) == "off";
+}
+
+// The file as assimp 5.2's OFF reader needs it: "OFF", the vertex and face counts, that many
+// vertex lines of three numbers and face lines "n i1 ... in" (1 <= n <= 9, every index a
+// vertex). Its reader trusts the counts and lines and can write past what it allocated
+// otherwise (fuzz_mesh: SEGV). Blank lines and # comments are skipped, as it does.
+// "" when the file is so, else what is wrong.
+std::string offProblem(const std::string& text) {
+  std::istringstream lines(text);
+  std::string line;
+  int number = 0;
+  std::vector<std::string> words;
+  const auto nextLine = [&]() {
+    while (std::getline(lines, line)) {
+      ++number;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      for (const char c : line)
+        if ((c < 0x20 || c > 0x7e) && c != '\t') return false;
+      std::istringstream in(line);
+      words.assign(std::istream_iterator<std::string>(in), std::istream_iterator<std::string>());
+      if (!words.empty() && words[0][0] != '#') return true;
+    }
+    words.clear();
+    return false;
+  };
+  const auto count = [](const std::string& word, long long& value) {
+    return !word.empty() && word.size() < 10 && std::all_of(word.begin(), word.end(), ::isdigit) &&
+           ((value = std::stoll(word)), true);
+  };
+  const auto bad = [&](const std::string& what) { return "OFF file line " + std::to_string(number) + ": " + what; };
+  if (!nextLine() || lowered(words[0]) != "off") return "OFF file without its \"OFF\" line";
+  if (words.size() == 1 && !nextLine()) return bad("no vertex and face counts");
+  const size_t first = words.size() >= 3 && lowered(words[0]) == "off" ? 1 : 0;
+  long long vertices = 0, faces = 0;
+  if (words.size() < first + 2 || !count(words[first], vertices) || !count(words[first + 1], faces) ||
+      vertices < 1 || faces < 1)
+    return bad("not the vertex and face counts");
+  for (long long v = 0; v < vertices; ++v) {
+    if (!nextLine()) return bad("fewer vertices than the " + std::to_string(vertices) + " counted");
+    if (words.size() < 3) return bad("a vertex of fewer than 3 numbers");
+  }
+  for (long long f = 0; f < faces; ++f) {
+    if (!nextLine()) return bad("fewer faces than the " + std::to_string(faces) + " counted");
+    long long corners = 0, index = 0;
+    if (!count(words[0], corners) || corners < 1 || corners > 9 || words.size() < static_cast<size_t>(corners) + 1)
+      return bad("not a face of 1 to 9 corners and their indices");
+    for (long long c = 1; c <= corners; ++c)
+      if (!count(words[c], index) || index >= vertices) return bad("a face index that is not a vertex");
+  }
+  return "";
+}
+
 }  // namespace
 
 std::string assimpHazard(const std::string& path) {
@@ -62,9 +121,31 @@ std::string assimpHazard(const std::string& path) {
   std::string head(static_cast<size_t>(kPlyHeaderBytes), '\0');
   in.read(head.data(), kPlyHeaderBytes);
   head.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
-  if (!looksLikePly(path, head)) return "";
-  const std::string problem = plyHeaderProblem(head);
-  return problem.empty() ? "" : problem + " (assimp 5.2 may never finish reading it)";
+  if (looksLikePly(path, head)) {
+    const std::string problem = plyHeaderProblem(head);
+    return problem.empty() ? "" : problem + " (assimp 5.2 may never finish reading it)";
+  }
+  if (looksLikeOff(path, head)) {
+    // OFF is text: the whole file is read (meshes we read as OFF are small).
+    std::string text = head;
+    text.append(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    const std::string problem = offProblem(text);
+    return problem.empty() ? "" : problem + " (assimp 5.2 may crash on it)";
+  }
+  return "";
+}
+
+void correctPrimitiveTypes(aiScene& scene) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    aiMesh& mesh = *scene.mMeshes[m];
+    unsigned types = 0;
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const unsigned n = mesh.mFaces[f].mNumIndices;
+      types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE : n == 3 ? aiPrimitiveType_TRIANGLE
+                                                                                      : aiPrimitiveType_POLYGON;
+    }
+    mesh.mPrimitiveTypes = types;
+  }
 }
 
 }  // namespace figment

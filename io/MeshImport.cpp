@@ -105,9 +105,14 @@ ImportedMesh importMesh(const std::string& path, const ImportOptions& options) {
   Assimp::Importer importer;
   importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   importer.SetPropertyBool(AI_CONFIG_PP_PTV_KEEP_HIERARCHY, true);
-  const aiScene* scene =
-      importer.ReadFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                                  aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  // Read, then post-process: in between, what assimp's readers get wrong is put right
+  // (io/AssimpHazards.h), before a post-processing step aborts on it.
+  const aiScene* scene = importer.ReadFile(path, 0);
+  if (scene) correctPrimitiveTypes(*const_cast<aiScene*>(scene));
+  if (scene)
+    scene = importer.ApplyPostProcessing(aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                         aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
+                                         aiProcess_SortByPType);
   if (!scene || !scene->mRootNode) throw std::runtime_error(path + ": " + importer.GetErrorString());
 
   std::vector<unsigned> order;

@@ -51,8 +51,11 @@ class Tokenizer {
   }
 
  private:
+  // Not '\0': strchr finds every string's terminator, and a NUL byte taken for a separator
+  // that skipSpaceAndComments() does not skip made next() return empty words forever (a scene
+  // with a NUL byte hung figment-view; found by tests/fuzz/fuzz_scene).
   static bool separates(char c) {
-    return std::isspace(static_cast<unsigned char>(c)) || std::strchr("{}[]\",#", c) != nullptr;
+    return std::isspace(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr("{}[]\",#", c) != nullptr);
   }
 
   void skipSpaceAndComments() {

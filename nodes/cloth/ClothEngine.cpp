@@ -339,6 +339,11 @@ void ClothEngine::Impl::keep(const std::string& key, const std::vector<SbVec3f>&
 }
 
 void ClothEngine::evaluate() {
+  // Coin evaluates an engine once more while destroying it (SoEngine::destroy), as when the
+  // scene it is read in fails to read: nothing reads that result, and draping there took the
+  // whole maxTime before the read error came out (found by tests/fuzz/fuzz_scene). An engine
+  // anything reads is referenced by that connection.
+  if (getRefCount() == 0) return;
   ++impl_->evaluations;
   impl_->error.clear();
   impl_->cacheMessage.clear();

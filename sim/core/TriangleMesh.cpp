@@ -50,10 +50,15 @@ Bounds boundsOf(const std::vector<Vec3>& points) {
 TriangleMesh mergeByPosition(const TriangleMesh& mesh, double tolerance) {
   requireNonNegative("tolerance", tolerance);
   const double cell = std::max(tolerance, kSmallestCell);
-  auto cellOf = [cell](const Vec3& p) {
-    return Cell{static_cast<int64_t>(std::floor(p.x() / cell)), static_cast<int64_t>(std::floor(p.y() / cell)),
-                static_cast<int64_t>(std::floor(p.z() / cell))};
+  // A coordinate far beyond any body (or not finite) goes to the outermost cell: casting a double
+  // outside int64's range is undefined behaviour (UBSan, tests/fuzz/fuzz_mesh: a vertex at
+  // -1.1e20). Merging still compares true distances, so sharing a cell only costs a comparison.
+  auto index = [cell](double v) {
+    constexpr double kLimit = 4.0e18;  // below 2^62: a neighbour's index (+-1) stays in range
+    const double k = std::floor(v / cell);
+    return static_cast<int64_t>(std::isnan(k) ? 0.0 : std::clamp(k, -kLimit, kLimit));
   };
+  auto cellOf = [index](const Vec3& p) { return Cell{index(p.x()), index(p.y()), index(p.z())}; };
 
   // Each vertex joins the earliest kept vertex within the tolerance, or is kept itself:
   // kept vertices stay in the order of their first occurrence, whatever the hash does.

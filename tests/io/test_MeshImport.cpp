@@ -268,3 +268,53 @@ TEST(MeshImport, AMalformedPlyHeaderIsAnErrorNotAHang) {
   const ImportedMesh good = importMesh(dir.file("good.ply", header + rest));
   EXPECT_EQ(good.mesh.triangles.size(), 1u);
 }
+
+// assimp 5.2's PLY reader flagged a mesh as holding polygons when its face list held none of
+// more than three corners, and its Triangulate step then aborted the program (ai_assert
+// "numOut != pMesh->mNumFaces"; found by tests/fuzz/fuzz_mesh). importMesh sets the flags from
+// the faces before post-processing (correctPrimitiveTypes): the file now reads or is refused.
+TEST(MeshImport, APlyWhoseFacesDisagreeWithItsHeaderDoesNotAbort) {
+  TempDir dir;
+  const std::string path = dir.file("short.ply",
+                                    "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\n"
+                                    "property float y1property float z\nelement face 3\n"
+                                    "property list uchar int vertex_indices\nend_header\n"
+                                    "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1er\n0 0 0\n1 3\n");
+  try {
+    const ImportedMesh imported = importMesh(path);
+    for (const auto& t : imported.mesh.triangles)
+      for (const int v : t) EXPECT_LT(v, static_cast<int>(imported.mesh.vertices.size()));
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+  }
+}
+
+// assimp 5.2's OFF reader trusts the file's counts and indices and wrote out of bounds on a
+// face naming more corners than its line holds (SEGV; found by tests/fuzz/fuzz_mesh).
+// importMesh checks OFF text first (io/AssimpHazards.h); a sound one still reads.
+TEST(MeshImport, AnOffFileThatDisagreesWithItsCountsIsAnErrorNotACrash) {
+  TempDir dir;
+  const std::string vertices = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const ImportedMesh tetrahedron =
+      importMesh(dir.file("good.off", vertices + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"));
+  EXPECT_EQ(tetrahedron.mesh.triangles.size(), 4u);
+  const struct {
+    const char* name;
+    std::string text, error;
+  } cases[] = {
+      {"corners.off", vertices + "6 0 2 3\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+       "OFF file line 7: not a face of 1 to 9 corners and their indices"},
+      {"index.off", vertices + "3 0 2 4\n3 0 1 3\n3 0 3 2\n3 1 2 3\n",
+       "OFF file line 7: a face index that is not a vertex"},
+      {"short.off", vertices + "3 0 2 1\n", "OFF file line 7: fewer faces than the 4 counted"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = dir.file(c.name, c.text);
+    try {
+      importMesh(path);
+      ADD_FAILURE() << c.name << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": " + c.error + " (assimp 5.2 may crash on it)");
+    }
+  }
+}

@@ -144,3 +144,14 @@ TEST_F(SceneTextCheckTest, RefusesWhatIsNotARegularFileOrNotThere) {
 TEST_F(SceneTextCheckTest, LeavesBinaryFilesToCoin) {
   EXPECT_EQ(checkSceneText(write("binary.iv", "#Inventor V2.1 binary\n" + std::string(1000, '{'))), "");
 }
+
+// A NUL byte was taken for a separator that nothing skipped: the tokenizer returned empty
+// words forever and figment-view hung (found by tests/fuzz/fuzz_scene; the input is in its
+// corpus as nul-byte-hang.iv). The bytes are now part of a word, and the text after them counts.
+TEST_F(SceneTextCheckTest, ReadsPastNulBytes) {
+  std::string text = nested(kMaxNestingDepth + 1);
+  text.insert(kHeader.size(), std::string("Info\0\0 ", 7));
+  EXPECT_EQ(checkSceneText(write("nul.iv", text)),
+            "line 258: nesting depth " + std::to_string(kMaxNestingDepth + 1) + " is more than " +
+                std::to_string(kMaxNestingDepth));
+}

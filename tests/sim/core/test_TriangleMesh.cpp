@@ -110,3 +110,17 @@ TEST(TriangleMesh, CroppedToBoxKeepsTrianglesWhoseCentroidIsInside) {
   EXPECT_EQ(part.vertices[0], Vec3(1, 0, 0)) << "vertices numbered as first used";
   EXPECT_TRUE(croppedToBox(strip, Bounds{}).triangles.empty()) << "an empty box keeps nothing";
 }
+
+// A vertex at -1.1e20 m (found by tests/fuzz/fuzz_mesh in an OBJ file) made the welding grid
+// cast a double outside int64's range: undefined behaviour, which the sanitizer build stops on.
+// Far and non-finite coordinates now share the outermost cell, and welding still goes by the
+// true distance: the far copies weld, the near ones stay apart from them.
+TEST(TriangleMesh, MergeByPositionTakesCoordinatesFarBeyondAnyBody) {
+  TriangleMesh mesh;
+  mesh.vertices = {Vec3(-1.1e20, 0, 0), Vec3(1, 0, 0), Vec3(0, 1e300, 0), Vec3(-1.1e20, 0, 0),
+                   Vec3(0, 0, -1e300), Vec3(0, 0, 0)};
+  mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
+  const TriangleMesh merged = mergeByPosition(mesh);
+  EXPECT_EQ(merged.vertices.size(), 5u);  // the two at -1.1e20 m weld
+  EXPECT_EQ(merged.triangles[1][0], merged.triangles[0][0]);
+}

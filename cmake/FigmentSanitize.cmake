@@ -1,0 +1,25 @@
+# FIGMENT_SANITIZE: every FIGMENT target (libraries, tools, tests) built with AddressSanitizer and
+# UndefinedBehaviorSanitizer. Included before the subdirectories, so the flags reach every target
+# of this project and nothing else (Coin, assimp and OSMesa stay the system's uninstrumented
+# builds). Undefined behaviour aborts (-fno-sanitize-recover) so a test that hits it fails
+# instead of printing a warning no one reads. scripts/sanitize.sh builds and runs this in
+# build-asan; tests/sanitize/*.supp hold the suppressions and say why each is there.
+option(FIGMENT_SANITIZE "Build with -fsanitize=address,undefined" OFF)
+if(FIGMENT_SANITIZE)
+  set(figment_sanitize_flags -fsanitize=address,undefined -fno-omit-frame-pointer
+    -fno-sanitize-recover=undefined)
+  add_compile_options(${figment_sanitize_flags})
+  add_link_options(-fsanitize=address,undefined)
+endif()
+
+# FIGMENT_BUILD_FUZZERS: the libFuzzer targets in tests/fuzz (clang only). Everything they link is
+# compiled with coverage instrumentation (-fsanitize=fuzzer-no-link) so the fuzzer sees which
+# branches of our code an input reaches; scripts/fuzz.sh builds them in build-fuzz together with
+# FIGMENT_SANITIZE.
+option(FIGMENT_BUILD_FUZZERS "Build the libFuzzer targets in tests/fuzz (clang)" OFF)
+if(FIGMENT_BUILD_FUZZERS)
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "FIGMENT_BUILD_FUZZERS needs clang (libFuzzer): configure with CXX=clang++ CC=clang")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()

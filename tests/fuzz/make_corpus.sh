@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Remakes tests/fuzz/corpus/fuzz_scene from the shipped scenes (small ones only, < 8 KB).
+# The names of the shipped meshes become the tiny ones fuzz_scene writes into its working
+# folder (body.obj, garment.obj), so a seed reads in milliseconds; the volume files the
+# Mannequin scenes include are copied there by fuzz_scene too. fuzz_mesh's seeds are
+# hand-written (no third-party meshes in the repository) and are not touched here.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+out=tests/fuzz/corpus/fuzz_scene
+for scene in scenes/*.iv scenes/examples/*.iv scenes/hybrid/*.iv; do
+  case "$(basename "$scene")" in .*) continue ;; esac  # work files of other runs
+  [ "$(stat -c %s "$scene")" -lt 8192 ] || continue
+  name=$(echo "${scene#scenes/}" | tr / -)
+  sed -e 's/"human\.zae"/"body.obj"/g' -e 's/"\(dress\|skirt\|tshirt\)\.obj"/"garment.obj"/g' \
+      -e 's/"\.\.\/human-volumes\.iv"/"human-volumes.iv"/g' "$scene" >"$out/$name"
+done
