@@ -27,6 +27,7 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -121,6 +122,7 @@ struct OutfitCase {
   const char* file;
   const char* outer;              // the outer garment's ClothingLayer
   bool depthBufferShowsTheShirt;  // the depth buffer alone lets T-shirt pixels through
+  friend void PrintTo(const OutfitCase& c, std::ostream* out) { *out << c.file; }
 };
 
 class OutfitPixels : public ::testing::TestWithParam<OutfitCase> {
