@@ -279,10 +279,8 @@ std::string oneLine(std::string text) {
   return text;
 }
 
-int run(int argc, char** argv, Options& options) {
-  CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to PNG images, headless. The scene drapes once, "
-               "however many images it gives; each image is written whole or not at all, and on an error none "
-               "is left."};
+// The command line: every option, its help and the examples of --help.
+void describeOptions(CLI::App& app, Options& options) {
   // Not required by CLI11: --list-nodes needs neither (checked below).
   app.add_option("scene", options.scene, "Scene file (.iv)");
   app.add_option("-o,--output", options.output,
@@ -330,6 +328,13 @@ int run(int argc, char** argv, Options& options) {
       "  figment-view scenes/dress.iv -o dress.png --view front --view 30,10 --view back  (dress-0/1/2.png)\n"
       "  figment-view scenes/dress.iv -o turn.png --turntable 8 --view 0,10               (turn-0 ... turn-7.png)\n"
       "  figment-view scenes/wind.iv -o wind/frame.png --frames 0.5:4.4:40 --wind-force wind.csv");
+}
+
+int run(int argc, char** argv, Options& options) {
+  CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to PNG images, headless. The scene drapes once, "
+               "however many images it gives; each image is written whole or not at all, and on an error none "
+               "is left."};
+  describeOptions(app, options);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
