@@ -14,12 +14,13 @@ endif()
 
 # FIGMENT_BUILD_FUZZERS: the libFuzzer targets in tests/fuzz (clang only). Everything they link is
 # compiled with coverage instrumentation (-fsanitize=fuzzer-no-link) so the fuzzer sees which
-# branches of our code an input reaches; scripts/fuzz.sh builds them in build-fuzz together with
-# FIGMENT_SANITIZE.
+# branches of our code an input reaches, except the numeric kernels tests/fuzz/coverage-ignorelist.txt
+# names; scripts/fuzz.sh builds them in build-fuzz together with FIGMENT_SANITIZE.
 option(FIGMENT_BUILD_FUZZERS "Build the libFuzzer targets in tests/fuzz (clang)" OFF)
 if(FIGMENT_BUILD_FUZZERS)
   if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
     message(FATAL_ERROR "FIGMENT_BUILD_FUZZERS needs clang (libFuzzer): configure with CXX=clang++ CC=clang")
   endif()
-  add_compile_options(-fsanitize=fuzzer-no-link)
+  add_compile_options(-fsanitize=fuzzer-no-link
+    -fsanitize-coverage-ignorelist=${CMAKE_CURRENT_SOURCE_DIR}/tests/fuzz/coverage-ignorelist.txt)
 endif()

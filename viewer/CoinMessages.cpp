@@ -89,9 +89,11 @@ std::vector<std::string> CoinMessages::takeReadErrors(const std::string& scene) 
 }
 
 std::string CoinMessages::oneLine(const std::string& message) {
+  // Compiled once: a scene with many read errors passes every one through here.
   static const std::regex prefix(R"(^Coin (read )?(error|warning|info)( in \S+\(\))?:\s*)");
+  static const std::regex lineBreak(R"(\s*\n\s*)");
   std::string text = std::regex_replace(message, prefix, "");
-  text = std::regex_replace(text, std::regex(R"(\s*\n\s*)"), "; ");
+  text = std::regex_replace(text, lineBreak, "; ");
   while (!text.empty() && (text.back() == ' ' || text.back() == ';')) text.pop_back();
   return text;
 }

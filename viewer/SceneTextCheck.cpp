@@ -4,11 +4,13 @@
 #include <Inventor/lists/SbStringList.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string_view>
 #include <vector>
 
 namespace figment::viewer {
@@ -19,12 +21,15 @@ namespace fs = std::filesystem;
 
 // The text's tokens as far as nesting and File names go: words, quoted strings, and the
 // braces and brackets that open and close a level. Outside strings '#' starts a comment
-// (the header line is one) and commas separate values as spaces do.
+// (the header line is one) and commas separate values as spaces do. A word is a view into
+// the text (a volume file is thousands of numbers; none is copied); a string is unescaped.
 struct Token {
   enum Kind { kWord, kString, kOpen, kClose, kEnd };
   Kind kind = kEnd;
-  std::string text;
+  std::string_view word;
+  std::string string;
   int line = 1;
+  std::string_view text() const { return kind == kString ? std::string_view(string) : word; }
 };
 
 class Tokenizer {
@@ -42,20 +47,28 @@ class Tokenizer {
       token.kind = c == '{' || c == '[' ? Token::kOpen : Token::kClose;
     } else if (c == '"') {
       token.kind = Token::kString;
-      token.text = quoted();
+      token.string = quoted();
     } else {
       token.kind = Token::kWord;
-      while (at_ < text_.size() && !separates(text_[at_])) token.text += text_[at_++];
+      const size_t start = at_;
+      while (at_ < text_.size() && !separates(text_[at_])) ++at_;
+      token.word = std::string_view(text_).substr(start, at_ - start);
     }
     return token;
   }
 
  private:
-  // Not '\0': strchr finds every string's terminator, and a NUL byte taken for a separator
-  // that skipSpaceAndComments() does not skip made next() return empty words forever (a scene
-  // with a NUL byte hung figment-view; found by tests/fuzz/fuzz_scene).
+  // Spaces and the characters that end a word: a table, as each character of an included
+  // volume file (tens of kilobytes of numbers) is looked at here. Not '\0': a NUL byte taken
+  // for a separator that skipSpaceAndComments() does not skip made next() return empty words
+  // forever (a scene with a NUL byte hung figment-view; found by tests/fuzz/fuzz_scene).
   static bool separates(char c) {
-    return std::isspace(static_cast<unsigned char>(c)) || (c != '\0' && std::strchr("{}[]\",#", c) != nullptr);
+    static const std::array<bool, 256> table = [] {
+      std::array<bool, 256> t{};
+      for (int i = 1; i < 256; ++i) t[i] = std::isspace(i) || std::strchr("{}[]\",#", i) != nullptr;
+      return t;
+    }();
+    return table[static_cast<unsigned char>(c)];
   }
 
   void skipSpaceAndComments() {
@@ -124,8 +137,8 @@ class Checker {
     int depth = 0;
     bool afterFile = false, expectName = false;
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
-      if (expectName && (t.kind == Token::kString || (t.kind == Token::kWord && t.text != "="))) {
-        if (!include(t.text, t.line, file, base + depth)) return false;
+      if (expectName && (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
+        if (!include(std::string(t.text()), t.line, file, base + depth)) return false;
       } else if (t.kind == Token::kOpen) {
         if (base + ++depth > kMaxNestingDepth)
           return fail(file, t.line,
@@ -136,8 +149,8 @@ class Checker {
         if (!fileBodies.empty() && fileBodies.back() == depth) fileBodies.pop_back();
         depth = std::max(depth - 1, 0);  // an unmatched close is Coin's syntax error to report
       }
-      expectName = t.kind == Token::kWord && t.text == "name" && !fileBodies.empty() && fileBodies.back() == depth;
-      afterFile = t.kind == Token::kWord && (t.text == "File" || t.text == "SoFile");
+      expectName = t.kind == Token::kWord && t.word == "name" && !fileBodies.empty() && fileBodies.back() == depth;
+      afterFile = t.kind == Token::kWord && (t.word == "File" || t.word == "SoFile");
     }
     chain_.pop_back();
     return true;

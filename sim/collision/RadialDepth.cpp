@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace figment {
 
@@ -33,17 +34,30 @@ RadialDepth::RadialDepth(RadialDepthParameters parameters) : parameters_(std::mo
   side_ = parameters_.direction.cross(parameters_.reference);
   // The table, and the bounds distanceBound() relies on (see the header): each from the
   // function's largest value on a grid of kGrid angles plus pi / kGrid times a bound of
-  // its derivative (every angle lies within pi / kGrid of a grid angle).
+  // its derivative (every angle lies within pi / kGrid of a grid angle). cos k a and sin k a
+  // are the same for every section: taken once per grid angle (per section and bound, they
+  // were most of the time a scene took to read its radial volumes).
   const auto& c = parameters_.coefficients;
   const int harmonics = parameters_.harmonics;
   const size_t sections = c.size();
   const double spacing = parameters_.length / static_cast<double>(sections - 1);
   constexpr int kGrid = 256;
-  const auto largest = [&](auto&& f, double derivativeBound) {
-    double most = 0.0;
-    for (int i = 0; i < kGrid; ++i) most = std::max(most, std::abs(f(2 * M_PI * i / kGrid)));
-    return most + M_PI / kGrid * derivativeBound;
-  };
+  std::vector<double> turningMost(sections, 0.0), slopeMost(sections - 1, 0.0);
+  std::vector<double> cosines(harmonics + 1), sines(harmonics + 1);
+  for (int i = 0; i < kGrid; ++i) {
+    const double a = 2 * M_PI * i / kGrid;
+    for (int k = 1; k <= harmonics; ++k) cosines[k] = std::cos(k * a), sines[k] = std::sin(k * a);
+    for (size_t j = 0; j < sections; ++j) {
+      double turning = 0.0;  // d r_j / d a
+      for (int k = 1; k <= harmonics; ++k) turning += k * (c[j][2 * k] * cosines[k] - c[j][2 * k - 1] * sines[k]);
+      turningMost[j] = std::max(turningMost[j], std::abs(turning));
+      if (j + 1 == sections) break;
+      double change = c[j + 1][0] - c[j][0];  // r_{j+1}(a) - r_j(a)
+      for (int k = 1; k <= harmonics; ++k)
+        change += (c[j + 1][2 * k - 1] - c[j][2 * k - 1]) * cosines[k] + (c[j + 1][2 * k] - c[j][2 * k]) * sines[k];
+      slopeMost[j] = std::max(slopeMost[j], std::abs(change));
+    }
+  }
   for (size_t j = 0; j < sections; ++j) {
     table_.insert(table_.end(), c[j].begin(), c[j].end());
     double amplitude = 0.0, curvature = 0.0;  // sum |harmonic k|, sum k^2 |harmonic k|
@@ -52,27 +66,12 @@ RadialDepth::RadialDepth(RadialDepthParameters parameters) : parameters_(std::mo
       amplitude += a, curvature += k * k * a;
     }
     rMax_ = std::max(rMax_, c[j][0] + amplitude);
-    turning_.push_back(largest(
-        [&](double a) {
-          double d = 0.0;
-          for (int k = 1; k <= harmonics; ++k) d += k * (c[j][2 * k] * std::cos(k * a) - c[j][2 * k - 1] * std::sin(k * a));
-          return d;
-        },
-        curvature));
+    turning_.push_back(turningMost[j] + M_PI / kGrid * curvature);
     if (j + 1 == sections) break;
     double change = 0.0;  // sum k |harmonic k of the difference to the next section|
     for (int k = 1; k <= harmonics; ++k)
       change += k * std::hypot(c[j + 1][2 * k - 1] - c[j][2 * k - 1], c[j + 1][2 * k] - c[j][2 * k]);
-    slope_.push_back(largest(
-                         [&](double a) {
-                           double d = c[j + 1][0] - c[j][0];
-                           for (int k = 1; k <= harmonics; ++k)
-                             d += (c[j + 1][2 * k - 1] - c[j][2 * k - 1]) * std::cos(k * a) +
-                                  (c[j + 1][2 * k] - c[j][2 * k]) * std::sin(k * a);
-                           return d;
-                         },
-                         change) /
-                     spacing);
+    slope_.push_back((slopeMost[j] + M_PI / kGrid * change) / spacing);
   }
 }
 

@@ -34,15 +34,17 @@ const figment::viewer::ImageSize kImage{48, 48};
 
 // Small meshes the seeds name in place of the shipped body and garments (scenes/human.zae,
 // dress.obj), so an input that keeps its MeshFile reads in microseconds, not seconds.
-// tests/fuzz/make_corpus.sh renames them so in the seeds.
+// tests/fuzz/make_corpus.sh renames them so in the seeds. OFF, not OBJ: assimp 5.2's OBJ reader
+// allocates and fills a 16 MB line buffer for any file, which under AddressSanitizer (fresh
+// pages every time) took half of each input's time; fuzz_mesh fuzzes the OBJ reader itself.
 void writeMeshes() {
-  figment::fuzz::writeFile("body.obj",
-                           "v -0.1 0 -0.1\nv 0.1 0 -0.1\nv 0.1 0 0.1\nv -0.1 0 0.1\nv 0 0.4 0\n"
-                           "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\nf 1 3 2\nf 1 4 3\n");
-  figment::fuzz::writeFile("garment.obj",
-                           "v -0.2 0.5 -0.2\nv 0 0.5 -0.2\nv 0.2 0.5 -0.2\nv -0.2 0.5 0\nv 0 0.5 0\n"
-                           "v 0.2 0.5 0\nv -0.2 0.5 0.2\nv 0 0.5 0.2\nv 0.2 0.5 0.2\n"
-                           "f 1 4 5 2\nf 2 5 6 3\nf 4 7 8 5\nf 5 8 9 6\n");
+  figment::fuzz::writeFile("body.off",
+                           "OFF\n5 6 0\n-0.1 0 -0.1\n0.1 0 -0.1\n0.1 0 0.1\n-0.1 0 0.1\n0 0.4 0\n"
+                           "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n3 0 2 1\n3 0 3 2\n");
+  figment::fuzz::writeFile("garment.off",
+                           "OFF\n9 4 0\n-0.2 0.5 -0.2\n0 0.5 -0.2\n0.2 0.5 -0.2\n-0.2 0.5 0\n0 0.5 0\n"
+                           "0.2 0.5 0\n-0.2 0.5 0.2\n0 0.5 0.2\n0.2 0.5 0.2\n"
+                           "4 0 3 4 1\n4 1 4 5 2\n4 3 6 7 4\n4 4 7 8 5\n");
 }
 
 // The Mannequin seeds include the default body's fitted volumes by name.

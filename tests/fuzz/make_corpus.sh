@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Remakes tests/fuzz/corpus/fuzz_scene from the shipped scenes (small ones only, < 8 KB).
 # The names of the shipped meshes become the tiny ones fuzz_scene writes into its working
-# folder (body.obj, garment.obj), so a seed reads in milliseconds; the volume files the
-# Mannequin scenes include are copied there by fuzz_scene too. fuzz_mesh's seeds are
+# folder (body.off, garment.off), so a seed reads in milliseconds; the volume files the
+# Mannequin scenes include are copied there by fuzz_scene too (the second body's scene takes
+# the default body's). The body's collisionExclude goes: the stand-in body has no eyes mesh to
+# leave out, and with it the seed would stop at its MeshFile. fuzz_mesh's seeds are
 # hand-written (no third-party meshes in the repository) and are not touched here.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -11,6 +13,9 @@ for scene in scenes/*.iv scenes/examples/*.iv scenes/hybrid/*.iv; do
   case "$(basename "$scene")" in .*) continue ;; esac  # work files of other runs
   [ "$(stat -c %s "$scene")" -lt 8192 ] || continue
   name=$(echo "${scene#scenes/}" | tr / -)
-  sed -e 's/"human\.zae"/"body.obj"/g' -e 's/"\(dress\|skirt\|tshirt\)\.obj"/"garment.obj"/g' \
-      -e 's/"\.\.\/human-volumes\.iv"/"human-volumes.iv"/g' "$scene" >"$out/$name"
+  sed -e 's/"\(human\.zae\|HUMAN\.blend\)"/"body.off"/g' \
+      -e 's/"\(dress\|skirt\|tshirt\|second-body-dress\)\.obj"/"garment.off"/g' \
+      -e 's/"second-body-volumes\.iv"/"human-volumes.iv"/g' \
+      -e 's/"\.\.\/human-volumes\.iv"/"human-volumes.iv"/g' -e '/collisionExclude "human-highpolyeyesMesh"/d' \
+      "$scene" >"$out/$name"
 done
