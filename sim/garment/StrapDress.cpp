@@ -15,7 +15,8 @@
 // 4. Each strap follows the body's profile in the sagittal plane under it: rays from a centre
 //    on the top edge's height under the strap (midway between its front and back ends) sweep
 //    from the front over the shoulder to the back; on each the outermost crossing of the body's
-//    sections across the strap's band (|x - strap| <= width/2 + 1 cm) below the neck, pushed out until the clearance
+//    sections across the strap's band (|x - strap| <= width/2 + 1 cm, and 1 cm clear of the
+//    neck's side) below the neck, pushed out until the clearance
 //    holds, is a profile point. The profile is resampled by arc length; near the ends it is
 //    blended onto the tube's top-edge vertices, which the strap shares.
 // 5. Windings: counter-clockwise seen from outside by construction (tube: theta grows from +x
@@ -268,6 +269,29 @@ void appendTube(const StrapDressTube& shape, const std::vector<std::vector<doubl
       addQuad(mesh.triangles, vertex(i, j), vertex(i, j + 1), vertex(i + 1, j + 1), vertex(i + 1, j), (i + j) % 2 == 1);
 }
 
+// Where a strap's band is cut (x): the strap's width and kStrapBandMargin either side, but
+// never nearer the neck than kStrapBandMargin. On a body whose neck reaches under the strap's
+// inner side (HUMAN.blend: neck 5.9 cm from the centre, straps at 8 cm on its sloping
+// shoulders) the neck's side up to neckHeight was the body under the strap, which then stood
+// 4 cm above the shoulder.
+struct StrapBandRange {
+  double centreX = 0, halfWidth = 0;  // m
+};
+
+StrapBandRange bandBesideTheNeck(const StrapLanes& strap, const StrapDress& dress, const StrapDressOptions& options) {
+  const double centreX = 0.5 * (strap.x[0] + strap.x[2]), halfWidth = 0.5 * options.strapWidth + kStrapBandMargin;
+  const double side = centreX > dress.neckCentreX ? 1.0 : -1.0;
+  const double neckEdge = dress.neckCentreX + side * (dress.neckHalfWidth + kStrapBandMargin);
+  const double inner = centreX - side * halfWidth, outer = centreX + side * halfWidth;
+  if (side * (inner - neckEdge) >= 0) return {centreX, halfWidth};  // clear of the neck
+  if (side * (outer - neckEdge) < options.strapWidth)
+    throw std::invalid_argument("strapOffset = " + formatNumber(options.strapOffset) +
+                                " puts the straps over the neck, which reaches " + formatNumber(dress.neckHalfWidth) +
+                                " m from the centre: try at least " +
+                                formatNumber(dress.neckHalfWidth + options.strapWidth));
+  return {0.5 * (neckEdge + outer), 0.5 * side * (outer - neckEdge)};
+}
+
 // Appends a strap whose lanes start and end at the tube's top-edge vertices (appendTube first).
 void appendStrap(const TriangleMesh& body, const StrapLanes& strap, const StrapDress& dress,
                  const StrapDressOptions& options, TriangleMesh& mesh) {
@@ -278,8 +302,8 @@ void appendStrap(const TriangleMesh& body, const StrapLanes& strap, const StrapD
     return Vec2(v.z(), v.y());
   };
   const Vec2 centre = 0.5 * (topEdge(strap.frontColumn[1]) + topEdge(strap.backColumn[1]));
-  const std::vector<Segment2> band = strapBand(body, 0.5 * (strap.x[0] + strap.x[2]),
-                                               0.5 * options.strapWidth + kStrapBandMargin, dress.neckHeight);
+  const StrapBandRange range = bandBesideTheNeck(strap, dress, options);
+  const std::vector<Segment2> band = strapBand(body, range.centreX, range.halfWidth, dress.neckHeight);
   const int n = options.strapSegments;
   const std::vector<Vec2> path = strapProfile(band, centre, options.clearance, n);
   std::array<std::vector<int>, 3> lane;
@@ -335,6 +359,13 @@ StrapDress makeStrapDress(const TriangleMesh& body, const StrapDressOptions& opt
   StrapDress dress;
   dress.armpitHeight = armpitHeight(body, slicing);
   dress.neckHeight = neckHeight(body, dress.armpitHeight, slicing);
+  const TorsoSlice neck = sliceTorso(body, dress.neckHeight, slicing);
+  if (!neck.empty()) {
+    dress.neckCentreX = 0.5 * (neck.minX() + neck.maxX());
+    dress.neckHalfWidth = 0.5 * (neck.maxX() - neck.minX());
+  } else {
+    dress.neckCentreX = slicing.torsoCentreX;
+  }
   dress.topHeight = options.topHeight.value_or(dress.armpitHeight - options.topBelowArmpit);
   dress.hemHeight = options.hemHeight.value_or(bounds.min.y() + options.hemHeightRatio * bounds.size().y());
   if (!(dress.topHeight > dress.hemHeight))

@@ -43,6 +43,8 @@ struct StrapDress {
   double hemHeight = 0;     // m, the tube's bottom edge
   double armpitHeight = 0;  // m, as measured on the body
   double neckHeight = 0;    // m, as measured on the body
+  double neckCentreX = 0;   // m, the middle of the torso-band section at neckHeight
+  double neckHalfWidth = 0; // m, half that section's width in x (0 when the section is empty)
   double strapX[2] = {0, 0};  // m, x of the left and right straps' centre lines
 };
 

@@ -180,6 +180,41 @@ TEST(HumanBlend, ArmsEndAtTheHandsAndTheLowerTorsoIsNoSliver) {
   EXPECT_GT(at("waist").y() - at("pelvis").y(), 0.1);
 }
 
+// HUMAN.blend's neck reaches 5.9 cm from its centre line and its shoulders slope, so its
+// dress has straps at 8 cm: their bands (strap and 1 cm either side) reached into the neck,
+// whose side up to the neck's narrowest section was taken for the body under the strap, and
+// the straps stood 4 cm above the shoulders to the neck's height (kinking in the drape).
+// Now a band stops 1 cm short of the neck; a strap over the neck is refused, naming the fix.
+TEST(HumanBlend, TheDressStrapsCrossTheShouldersNotTheNeck) {
+  if (!humanBlendAvailable()) GTEST_SKIP() << "assimp-testmodels' HUMAN.blend is not installed";
+  ImportOptions options;
+  options.metresPerUnit = 0.16;
+  options.upAxis = UpAxis::Z;
+  const TriangleMesh body = importMesh(findModelFile("HUMAN.blend"), options).mesh;
+  StrapDressOptions dressOptions;
+  dressOptions.strapOffset = 0.08;
+  const StrapDress dress = makeStrapDress(body, dressOptions);
+  EXPECT_NEAR(dress.neckHalfWidth, 0.059, 0.003);
+  // The tube's triangles come first and its vertices are numbered first: the rest are the
+  // straps' own vertices.
+  int tubeVertices = 0;
+  for (int t = 0; t < dress.tubeTriangles; ++t)
+    for (int v : dress.mesh.triangles[t]) tubeVertices = std::max(tubeVertices, v + 1);
+  double highest = -1e9;
+  for (size_t v = tubeVertices; v < dress.mesh.vertices.size(); ++v) highest = std::max(highest, dress.mesh.vertices[v].y());
+  // Over the shoulders (0.64 m under the straps' centre lines), clearance and the slope
+  // towards the neck: 0.660 m. Up the neck's side it was 0.681 m, the neck's height less 1 mm.
+  EXPECT_LT(highest, dress.neckHeight - 0.015);
+  try {
+    dressOptions.strapOffset = 0.06;
+    makeStrapDress(body, dressOptions);
+    ADD_FAILURE() << "straps over the neck were made";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("strapOffset = 0.06 puts the straps over the neck"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(BodyTools, RefuseABodyInAnotherUnitAndFrameAtOnceNamingTheFix) {
   if (!humanBlendAvailable()) GTEST_SKIP() << "assimp-testmodels' HUMAN.blend is not installed";
   for (const char* tool : {"figment-fit", "figment-make-dress", "figment-make-skirt", "figment-make-tshirt"}) {
