@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <string_view>
 #include <vector>
 
@@ -110,6 +111,63 @@ bool isAsciiScene(const std::string& text) {
   return text.substr(0, text.find('\n')).find("binary") == std::string::npos;
 }
 
+// The DEF names whose node bodies are open at a point of the text. A USE of one of them
+// puts a node inside its own definition: Coin makes it its own child or field value (a
+// cycle), and when the inner node's read then fails, destroying it unrefs the outer node
+// Coin is still reading, which frees it under the reader (found by fuzz_scene: a comment
+// that swallowed a Mannequin's closing brace put `MannequinSkin { mannequin USE Model }`
+// inside `DEF Model Mannequin`).
+class OpenDefinitions {
+ public:
+  struct Definition {
+    std::string name;
+    int line = 0;   // of its DEF
+    int depth = 0;  // of its body
+  };
+
+  // Takes every token in turn, with the nesting depth after it. Returns the open
+  // definition a USE names, if any.
+  const Definition* see(const Token& t, int depth) {
+    if (t.kind == Token::kClose)
+      while (!open_.empty() && open_.back().depth > depth) open_.pop_back();
+    const Expect expected = expect_;
+    expect_ = Expect::kNothing;
+    if (t.kind == Token::kOpen) {
+      if (expected == Expect::kBody) open_.push_back({pending_, pendingLine_, depth});
+      return nullptr;
+    }
+    if (t.kind != Token::kWord) return nullptr;
+    switch (expected) {
+      case Expect::kDefName:
+        pending_ = std::string(t.word), pendingLine_ = t.line, latest_[pending_] = t.line;
+        expect_ = Expect::kType;
+        return nullptr;
+      case Expect::kType:
+        expect_ = Expect::kBody;
+        return nullptr;
+      case Expect::kUseName: {
+        const auto latest = latest_.find(std::string(t.word));
+        if (latest == latest_.end()) return nullptr;
+        for (const Definition& d : open_)
+          if (d.name == t.word && d.line == latest->second) return &d;
+        return nullptr;
+      }
+      default:
+        if (t.word == "DEF") expect_ = Expect::kDefName;
+        if (t.word == "USE") expect_ = Expect::kUseName;
+        return nullptr;
+    }
+  }
+
+ private:
+  enum class Expect { kNothing, kDefName, kType, kBody, kUseName };
+  Expect expect_ = Expect::kNothing;
+  std::string pending_;
+  int pendingLine_ = 0;
+  std::vector<Definition> open_;               // outermost first
+  std::map<std::string, int, std::less<>> latest_;  // each name's last DEF line: a USE means that one
+};
+
 class Checker {
  public:
   explicit Checker(const fs::path& scene) : scene_(scene) {}
@@ -136,6 +194,7 @@ class Checker {
     std::vector<int> fileBodies;  // depths of the File nodes' bodies open now
     int depth = 0;
     bool afterFile = false, expectName = false;
+    OpenDefinitions definitions;
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
       if (expectName && (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
         if (!include(std::string(t.text()), t.line, file, base + depth)) return false;
@@ -149,6 +208,10 @@ class Checker {
         if (!fileBodies.empty() && fileBodies.back() == depth) fileBodies.pop_back();
         depth = std::max(depth - 1, 0);  // an unmatched close is Coin's syntax error to report
       }
+      if (const OpenDefinitions::Definition* d = definitions.see(t, depth))
+        return fail(file, t.line,
+                    "USE " + d->name + " inside the definition of " + d->name + " (DEF at line " +
+                        std::to_string(d->line) + "): a node cannot hold itself");
       expectName = t.kind == Token::kWord && t.word == "name" && !fileBodies.empty() && fileBodies.back() == depth;
       afterFile = t.kind == Token::kWord && (t.word == "File" || t.word == "SoFile");
     }

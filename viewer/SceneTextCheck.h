@@ -5,7 +5,8 @@
 // bound on either: a scene that includes itself, or 100,000 nested Separators, overflow
 // its stack (SIGSEGV), 10,000 take minutes, and a File naming /dev/zero never ends. The
 // text is cheap to scan, so figment-view scans it first and refuses such a scene in one
-// line, before Coin is given it.
+// line, before Coin is given it. So is a node used inside its own definition (a cycle, and
+// a use after free in Coin's reader when the inner node fails to read).
 
 #include <string>
 
@@ -28,7 +29,8 @@ inline constexpr int kMaxIncludes = 1000;
 // it, else one line in CoinMessages' form: "line 3: nesting depth 257 is more than 256",
 // "line 2: File { name "a.iv" } includes a file already being read: a.iv -> b.iv ->
 // a.iv (in /scenes/b.iv)", "... is not a regular file", "... not found",
-// "... would be 17 includes deep, more than 16".
+// "... would be 17 includes deep, more than 16", "line 9: USE Model inside the
+// definition of Model (DEF at line 4): a node cannot hold itself".
 //
 // Binary Inventor files (and compressed ones) are not checked: their header says so, and
 // their nodes are not braces in text. Coin reads them as before.

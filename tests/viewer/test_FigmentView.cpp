@@ -255,6 +255,11 @@ INSTANTIATE_TEST_SUITE_P(
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
                  {"scene.iv", "line 258", "nesting depth 257 is more than 256"}},
+        BadInput{"NodeUsedInsideItsOwnDefinition",
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Model Separator {\n    Cube { }\n"
+                 "    MannequinSkin { mannequin USE Model  parts [ \"head\" ! ] }\n  }\n}\n",
+                 "",
+                 {"scene.iv", "line 5", "USE Model inside the definition of Model (DEF at line 3)"}},
         BadInput{"TenThousandNestedSeparators", nestedScene("Separator", 10000), "", {"nesting depth 257"}},
         BadInput{"TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "",
                  {"nesting depth 257"}},

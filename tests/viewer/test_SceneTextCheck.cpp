@@ -155,3 +155,30 @@ TEST_F(SceneTextCheckTest, ReadsPastNulBytes) {
             "line 258: nesting depth " + std::to_string(kMaxNestingDepth + 1) + " is more than " +
                 std::to_string(kMaxNestingDepth));
 }
+
+// A node used inside its own definition is a cycle; when the inner node failed to read,
+// destroying it unreffed the outer node Coin was still reading, a use after free (found by
+// tests/fuzz/fuzz_scene; the input is in its corpus as use-inside-own-definition.iv).
+TEST_F(SceneTextCheckTest, RefusesANodeUsedInsideItsOwnDefinition) {
+  EXPECT_EQ(checkSceneText(write("self.iv", kHeader + "DEF A Separator {\n  Cube { }\n  USE A\n}\n")),
+            "line 4: USE A inside the definition of A (DEF at line 2): a node cannot hold itself");
+  EXPECT_EQ(checkSceneText(write("field.iv", kHeader +
+                                                 "DEF Model Group {\n  Separator {\n    MannequinSkin {\n"
+                                                 "      mannequin USE Model\n    }\n  }\n}\n")),
+            "line 5: USE Model inside the definition of Model (DEF at line 2): a node cannot hold itself");
+}
+
+TEST_F(SceneTextCheckTest, TakesAUseAfterItsDefinitionOrOfAnInnerRedefinition) {
+  // After the body closes, and in a field's connection, as the shipped scenes do.
+  EXPECT_EQ(checkSceneText(write("after.iv", kHeader + "Separator {\n  DEF A Cube { }\n  USE A\n}\n")), "");
+  EXPECT_EQ(checkSceneText(write("connection.iv", kHeader +
+                                                      "DEF Model Group { }\nCoordinate3 {\n"
+                                                      "  point = DEF Drape ClothEngine { body USE Model } . positions\n"
+                                                      "}\n")),
+            "");
+  // The name DEFined again inside: USE means the inner node, which is closed.
+  EXPECT_EQ(checkSceneText(write("inner.iv", kHeader + "DEF A Separator {\n  DEF A Cube { }\n  USE A\n}\n")), "");
+  // Names in strings and comments are not nodes.
+  EXPECT_EQ(checkSceneText(write("text.iv", kHeader + "DEF A Separator {\n  Info { string \"USE A\" }  # USE A\n}\n")),
+            "");
+}
