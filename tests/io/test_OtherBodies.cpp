@@ -100,6 +100,14 @@ int lineCount(const std::string& text) { return static_cast<int>(std::count(text
 
 bool humanBlendAvailable() { return !findModelFile("HUMAN.blend").empty(); }
 
+// HUMAN.blend as scenes/second-body.iv reads it: z up, 0.16 m a unit (1.71 m tall).
+TriangleMesh humanBlendInMetres() {
+  ImportOptions options;
+  options.metresPerUnit = 0.16;
+  options.upAxis = UpAxis::Z;
+  return importMesh(findModelFile("HUMAN.blend"), options).mesh;
+}
+
 }  // namespace
 
 TEST(ScaledAndTurnedBody, ComesBackAsTheDefaultBody) {
@@ -162,10 +170,7 @@ TEST(ScaledAndTurnedBody, GetsTheDefaultBodysDress) {
 // way to the armpits, and the waist used to sit 2.4 cm under the chest.
 TEST(HumanBlend, ArmsEndAtTheHandsAndTheLowerTorsoIsNoSliver) {
   if (!humanBlendAvailable()) GTEST_SKIP() << "assimp-testmodels' HUMAN.blend is not installed";
-  ImportOptions options;
-  options.metresPerUnit = 0.16;
-  options.upAxis = UpAxis::Z;
-  const TriangleMesh body = importMesh(findModelFile("HUMAN.blend"), options).mesh;
+  const TriangleMesh body = humanBlendInMetres();
   const Skeleton s = estimateSkeleton(body);
   const auto at = [&](const char* name) {
     return std::find_if(s.joints.begin(), s.joints.end(), [&](const Joint& j) { return j.name == name; })->position;
@@ -187,10 +192,7 @@ TEST(HumanBlend, ArmsEndAtTheHandsAndTheLowerTorsoIsNoSliver) {
 // Now a band stops 1 cm short of the neck; a strap over the neck is refused, naming the fix.
 TEST(HumanBlend, TheDressStrapsCrossTheShouldersNotTheNeck) {
   if (!humanBlendAvailable()) GTEST_SKIP() << "assimp-testmodels' HUMAN.blend is not installed";
-  ImportOptions options;
-  options.metresPerUnit = 0.16;
-  options.upAxis = UpAxis::Z;
-  const TriangleMesh body = importMesh(findModelFile("HUMAN.blend"), options).mesh;
+  const TriangleMesh body = humanBlendInMetres();
   StrapDressOptions dressOptions;
   dressOptions.strapOffset = 0.08;
   const StrapDress dress = makeStrapDress(body, dressOptions);
