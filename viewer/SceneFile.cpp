@@ -1,10 +1,10 @@
 #include "viewer/SceneFile.h"
 
 #include "viewer/CoinMessages.h"
+#include "viewer/ReferenceHoldingInput.h"
 #include "viewer/SceneTextCheck.h"
 
 #include <Inventor/SoDB.h>
-#include <Inventor/SoInput.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <filesystem>
@@ -25,13 +25,15 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   error = checkSceneText(path);
   if (!error.empty()) return nullptr;
   CoinMessages::takeReadErrors(path);  // only this file's errors count
-  SoInput in;
+  ReferenceHoldingInput in;  // a failed connection cannot free what a USE will name
   if (!in.openFile(path.c_str(), TRUE)) {
     error = "cannot open file";
     return nullptr;
   }
   CoinMessages::holdWarnings();
   SoSeparator* root = SoDB::readAll(&in);
+  if (root) root->ref();
+  in.release();  // what the scene does not hold goes now, before its errors are taken
   CoinMessages::releaseWarnings(root != nullptr);
   const std::vector<std::string> errors = CoinMessages::takeReadErrors(path);
   if (!root) {
@@ -39,7 +41,6 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
     error = errors.empty() ? "not an Inventor scene file" : errors.front();
     return nullptr;
   }
-  root->ref();
   return root;
 }
 

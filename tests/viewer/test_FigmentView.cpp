@@ -260,6 +260,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "    MannequinSkin { mannequin USE Model  parts [ \"head\" ! ] }\n  }\n}\n",
                  "",
                  {"scene.iv", "line 5", "USE Model inside the definition of Model (DEF at line 3)"}},
+        // A Coordinate4's point cannot take the engine's positions: the failed connection
+        // destroyed the engine, and the USE after it read freed memory (SIGSEGV).
+        BadInput{"EngineUsedAfterItsConnectionFailed",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Coordinate4 { point = DEF Drape ClothEngine { } . positions }\n"
+                 "  Coordinate3 { point = USE Drape.positions }\n}\n",
+                 "",
+                 {"scene.iv", "ClothEngine 'Drape'", "restPoints is empty"}},
         BadInput{"TenThousandNestedSeparators", nestedScene("Separator", 10000), "", {"nesting depth 257"}},
         BadInput{"TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "",
                  {"nesting depth 257"}},
