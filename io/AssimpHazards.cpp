@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -33,13 +34,22 @@ bool looksLikePly(const std::string& path, const std::string& head) {
          (head.size() == start + 3 || std::isspace(static_cast<unsigned char>(head[start + 3])));
 }
 
+// An element count as a PLY header gives it: decimal digits (assimp 5.2 reads the digits a word
+// begins with and wraps past 2^32). Shown cut short in an error line.
+std::string shownCount(const std::string& word) { return word.size() <= 20 ? word : word.substr(0, 20) + "..."; }
+
 // The header's lines, "ply" to "end_header", as assimp 5.2 reads them without looping: printable
-// text, each line a keyword of the format. "" when they are, else what is wrong.
-std::string plyHeaderProblem(const std::string& head) {
+// text, each line a keyword of the format, and element counts the file's `bytes` can hold. Each
+// element takes at least a byte (a binary property, or an ASCII line's end); assimp 5.2 reads
+// every counted element, seeking once for each past the end of the file, so a count far beyond
+// the file hung it (fuzz_mesh: "element face 6666...60" in a 332-byte file; a million took 4 s).
+// "" when they are, else what is wrong.
+std::string plyHeaderProblem(const std::string& head, std::uintmax_t bytes) {
   static constexpr std::array<std::string_view, 6> kKeywords = {"format", "comment", "obj_info",
                                                                 "element", "property", "end_header"};
   std::istringstream lines(head);
   std::string line;
+  std::uintmax_t elements = 0;  // counted so far, every element
   for (int number = 1; std::getline(lines, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     for (const char c : line)
@@ -55,6 +65,15 @@ std::string plyHeaderProblem(const std::string& head) {
     if (keyword == "end_header") return "";
     if (std::find(kKeywords.begin(), kKeywords.end(), keyword) == kKeywords.end())
       return "PLY header line " + std::to_string(number) + " does not begin with a PLY keyword";
+    if (keyword != "element") continue;
+    std::string name, count;
+    words >> name >> count;
+    const std::string where = "PLY header line " + std::to_string(number) + ": element " + name + " count \"";
+    if (count.empty() || count.size() > 18 || !std::all_of(count.begin(), count.end(), ::isdigit))
+      return where + shownCount(count) + "\" is not a whole number";
+    elements += std::stoull(count);
+    if (elements > bytes)
+      return where + count + "\" makes more elements than the file's " + std::to_string(bytes) + " bytes hold";
   }
   return "PLY header without end_header in its first 64 KiB";
 }
@@ -122,7 +141,9 @@ std::string assimpHazard(const std::string& path) {
   in.read(head.data(), kPlyHeaderBytes);
   head.resize(static_cast<size_t>(std::max<std::streamsize>(in.gcount(), 0)));
   if (looksLikePly(path, head)) {
-    const std::string problem = plyHeaderProblem(head);
+    std::error_code ec;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, ec);
+    const std::string problem = plyHeaderProblem(head, ec ? head.size() : bytes);
     return problem.empty() ? "" : problem + " (assimp 5.2 may never finish reading it)";
   }
   if (looksLikeOff(path, head)) {

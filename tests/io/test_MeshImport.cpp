@@ -269,6 +269,43 @@ TEST(MeshImport, AMalformedPlyHeaderIsAnErrorNotAHang) {
   EXPECT_EQ(good.mesh.triangles.size(), 1u);
 }
 
+// assimp 5.2's PLY reader reads every element its header counts, seeking past the end of the
+// file once for each it lacks: "element face 6666...60" (48 digits) in a 332-byte file ran for
+// hours, a million faces took 4 s (found by tests/fuzz/fuzz_mesh). A count must be a whole
+// number, and all of them together no more than the file's bytes (an element takes at least one).
+TEST(MeshImport, APlyCountingMoreElementsThanItsBytesHoldIsAnErrorNotAHang) {
+  TempDir dir;
+  const auto ply = [](const std::string& faces) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+           "element face " + faces + "\nproperty list uchar int vertex_indices\nend_header\n"
+           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  };
+  const std::string digits48 = std::string(47, '6') + "0";
+  const std::string tail = " (assimp 5.2 may never finish reading it)";
+  const struct {
+    const char* name;
+    std::string faces, error;
+  } cases[] = {
+      {"digits.ply", digits48, "PLY header line 7: element face count \"66666666666666666666...\" is not a whole number"},
+      {"billions.ply", "4000000000",
+       "PLY header line 7: element face count \"4000000000\" makes more elements than the file's 189 bytes hold"},
+      {"million.ply", "1000000",
+       "PLY header line 7: element face count \"1000000\" makes more elements than the file's 186 bytes hold"},
+      {"letters.ply", "1at", "PLY header line 7: element face count \"1at\" is not a whole number"},
+      {"none.ply", "", "PLY header line 7: element face count \"\" is not a whole number"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = dir.file(c.name, ply(c.faces));
+    try {
+      importMesh(path);
+      ADD_FAILURE() << c.name << " was read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), path + ": " + c.error + tail);
+    }
+  }
+  EXPECT_EQ(importMesh(dir.file("one.ply", ply("1"))).mesh.triangles.size(), 1u);
+}
+
 // assimp 5.2's PLY reader flagged a mesh as holding polygons when its face list held none of
 // more than three corners, and its Triangulate step then aborted the program (ai_assert
 // "numOut != pMesh->mNumFaces"; found by tests/fuzz/fuzz_mesh). importMesh sets the flags from

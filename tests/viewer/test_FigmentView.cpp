@@ -267,6 +267,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "  Coordinate3 { point = USE Drape.positions }\n}\n",
                  "",
                  {"scene.iv", "ClothEngine 'Drape'", "restPoints is empty"}},
+        // Found by fuzz_scene: Coin took 9 bytes beginning "MM" for a 3D Studio file, and its
+        // reader never finished.
+        BadInput{"ThreeDStudioBytes", std::string("MM\001\000o\226\215\000\006", 9), "",
+                 {"scene.iv", "a 3D Studio file", "MeshFile"}},
+        BadInput{"BinaryInventor", "#Inventor V2.1 binary\n", "", {"scene.iv", "a binary Inventor file"}},
         BadInput{"TenThousandNestedSeparators", nestedScene("Separator", 10000), "", {"nesting depth 257"}},
         BadInput{"TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "",
                  {"nesting depth 257"}},
@@ -314,6 +319,26 @@ TEST_F(FigmentView, IncludesSeventeenDeepAreOneLine) {
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
   EXPECT_NE(r.err.find("File { name \"f17.iv\" } would be 17 includes deep, more than 16"), std::string::npos)
       << r.err;
+  EXPECT_TRUE(noImageWritten());
+}
+
+// Coin decompresses a gzip scene before reading it, where its nesting was never checked: 2.5 KB
+// of gzip holding 100,000 nested Separators crashed figment-view (SIGSEGV). Compressed scenes
+// are refused, as the scene and as an include.
+TEST_F(FigmentView, ACompressedSceneIsOneLine) {
+  const std::string plain = write("nested.iv", nestedScene("Separator", 100000));
+  ASSERT_EQ(std::system(("gzip -c " + quote(plain) + " > " + quote(path("scene.iv"))).c_str()), 0);
+  ASSERT_LT(fs::file_size(path("scene.iv")), 4000u);
+  const ProcessResult r = run(quote(path("scene.iv")) + " -o " + quote(path("out.png")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err, "figment-view: " + path("scene.iv") + ": a gzip-compressed file: decompress it first\n");
+  EXPECT_TRUE(noImageWritten());
+
+  const std::string including = write("including.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"scene.iv\" } }\n");
+  const ProcessResult included = run(quote(including) + " -o " + quote(path("out.png")));
+  EXPECT_EQ(included.status, 1) << included.err;
+  EXPECT_NE(included.err.find("line 2: File { name \"scene.iv\" } names a gzip-compressed file"), std::string::npos)
+      << included.err;
   EXPECT_TRUE(noImageWritten());
 }
 
