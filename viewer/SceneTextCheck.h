@@ -32,8 +32,10 @@ inline constexpr int kMaxIncludes = 1000;
 // "... would be 17 includes deep, more than 16", "line 9: USE Model inside the
 // definition of Model (DEF at line 4): a node cannot hold itself".
 //
-// Binary Inventor files (and compressed ones) are not checked: their header says so, and
-// their nodes are not braces in text. Coin reads them as before.
+// What is not ASCII text cannot be checked, and is refused, the scene or an include: gzip or
+// bzip2 (Coin decompresses them), binary Inventor, a 3D Studio file (headerless, beginning
+// "MM": Coin's reader can loop forever), anything else without a header: "a gzip-compressed
+// file: decompress it first", "line 3: File { name "g.iv" } names a binary Inventor file: ...".
 std::string checkSceneText(const std::string& path);
 
 }  // namespace figment::viewer
