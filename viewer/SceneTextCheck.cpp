@@ -44,7 +44,7 @@ class Tokenizer {
     if (at_ >= text_.size()) return token;
     const char c = text_[at_];
     if (c == '{' || c == '[' || c == '}' || c == ']') {
-      ++at_;
+      token.word = std::string_view(text_).substr(at_++, 1);
       token.kind = c == '{' || c == '[' ? Token::kOpen : Token::kClose;
     } else if (c == '"') {
       token.kind = Token::kString;
@@ -179,6 +179,15 @@ class OpenDefinitions {
   std::map<std::string, int, std::less<>> latest_;  // each name's last DEF line: a USE means that one
 };
 
+// The field that names the file a node of `type` includes, "" for other nodes: File's name,
+// and an Inline's url, whose first entry Coin reads as a local file the way File does (a
+// scene inlining itself crashed figment-view, one inlining /dev/zero hung it).
+std::string_view includeField(std::string_view type) {
+  if (type == "File" || type == "SoFile") return "name";
+  if (type == "VRMLInline" || type == "SoVRMLInline" || type == "Inline") return "url";
+  return {};
+}
+
 class Checker {
  public:
   explicit Checker(const fs::path& scene) : scene_(scene) {}
@@ -194,11 +203,18 @@ class Checker {
     fs::path canonical;  // what a cycle is found by
   };
 
-  // Where a File node names a file: the file it lies in, its line and how it reads.
+  // A node that includes a file (File, VRMLInline): its type, the field naming the file, and
+  // the depth of its body.
+  struct Includer {
+    std::string_view type, field;
+    int depth = 0;
+  };
+
+  // Where an including node names a file: the file it lies in, its line and how it reads.
   struct Inclusion {
     const fs::path& from;
     int line;
-    const std::string& file;  // File { name "..." }
+    const std::string& file;  // File { name "..." }, VRMLInline { url "..." }
   };
 
   // Checks `file`, whose top level lies `base` levels deep, included `by` a File node (null
@@ -214,38 +230,42 @@ class Checker {
     std::error_code ec;
     chain_.push_back({file, fs::weakly_canonical(file, ec)});
     Tokenizer tokens(text);
-    std::vector<int> fileBodies;  // depths of the File nodes' bodies open now
+    std::vector<Includer> includers;  // the bodies of including nodes open now, innermost last
+    std::string_view pendingType;     // an including node's type, its body to open next
     int depth = 0;
-    bool afterFile = false, expectName = false;
+    bool expectName = false, expectFirstOfList = false;
     OpenDefinitions definitions;
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
-      if (expectName && (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
-        if (!include(std::string(t.text()), t.line, file, base + depth)) return false;
+      if ((expectName || expectFirstOfList) &&
+          (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
+        if (!include(includers.back(), std::string(t.text()), t.line, file, base + depth)) return false;
       } else if (t.kind == Token::kOpen) {
         if (base + ++depth > kMaxNestingDepth)
           return fail(file, t.line,
                       "nesting depth " + std::to_string(base + depth) + " is more than " +
                           std::to_string(kMaxNestingDepth));
-        if (afterFile) fileBodies.push_back(depth);
+        if (!pendingType.empty()) includers.push_back({pendingType, includeField(pendingType), depth});
       } else if (t.kind == Token::kClose) {
-        if (!fileBodies.empty() && fileBodies.back() == depth) fileBodies.pop_back();
+        if (!includers.empty() && includers.back().depth == depth) includers.pop_back();
         depth = std::max(depth - 1, 0);  // an unmatched close is Coin's syntax error to report
       }
       if (const OpenDefinitions::Definition* d = definitions.see(t, depth))
         return fail(file, t.line,
                     "USE " + d->name + " inside the definition of " + d->name + " (DEF at line " +
                         std::to_string(d->line) + "): a node cannot hold itself");
-      expectName = t.kind == Token::kWord && t.word == "name" && !fileBodies.empty() && fileBodies.back() == depth;
-      afterFile = t.kind == Token::kWord && (t.word == "File" || t.word == "SoFile");
+      expectFirstOfList = expectName && t.kind == Token::kOpen && t.word == "[";  // url [ "a.wrl" ... ]
+      expectName = t.kind == Token::kWord && !includers.empty() && includers.back().depth == depth &&
+                   t.word == includers.back().field;
+      pendingType = t.kind == Token::kWord && !includeField(t.word).empty() ? t.word : std::string_view();
     }
     chain_.pop_back();
     return true;
   }
 
-  // The file a File node names at `line` of `from`, its contents `depth` levels deep.
-  bool include(const std::string& name, int line, const fs::path& from, int depth) {
+  // The file an including node names at `line` of `from`, its contents `depth` levels deep.
+  bool include(const Includer& node, const std::string& name, int line, const fs::path& from, int depth) {
     if (name.empty()) return true;  // Coin warns and reads nothing
-    const std::string file = "File { name \"" + name + "\" }";
+    const std::string file = std::string(node.type) + " { " + std::string(node.field) + " \"" + name + "\" }";
     const int includeDepth = static_cast<int>(chain_.size());
     if (includeDepth > kMaxIncludeDepth)
       return fail(from, line,

@@ -16,14 +16,15 @@ namespace figment::viewer {
 // level below the File). Shipped scenes nest about 10 deep; Coin reads 1,000 in well
 // under a second.
 inline constexpr int kMaxNestingDepth = 256;
-// Files open at once through File, one inside another.
+// Files open at once through File or VRMLInline, one inside another.
 inline constexpr int kMaxIncludeDepth = 16;
-// Files read through File in all: a file including the next one twice, 16 deep, would
+// Files read through File or VRMLInline in all: a file including the next one twice, 16 deep, would
 // otherwise have Coin read 65,536 files.
 inline constexpr int kMaxIncludes = 1000;
 
 // Checks the ASCII Inventor (or VRML) text of the scene in `path` and, the way Coin will
-// find them, the files its File nodes name: a File's `name` is looked up as SoInput does
+// find them, the files its File nodes name, and its VRMLInline (or VRML97 Inline) nodes, whose
+// first `url` Coin reads the way it reads a File: each is looked up as SoInput does
 // (as given, that is from the working directory; then in the folder of each file being
 // read, innermost first; then along SoInput's directories). Returns "" when Coin may read
 // it, else one line in CoinMessages' form: "line 3: nesting depth 257 is more than 256",

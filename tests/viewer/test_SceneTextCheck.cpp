@@ -131,6 +131,23 @@ TEST_F(SceneTextCheckTest, BoundsTheIncludesReadInAll) {
             std::string::npos);
 }
 
+// Coin reads the first url of a VRMLInline (an Inline in VRML97) as a local file, as it reads
+// a File's name: a scene inlining itself crashed figment-view (SIGSEGV), one inlining /dev/zero
+// hung it (found trying every node of Coin's that reads a file). Inlines are includes.
+TEST_F(SceneTextCheckTest, TakesAnInlinesUrlForAnInclude) {
+  EXPECT_EQ(checkSceneText(write("self.iv", kHeader + "Separator {\n  VRMLInline { url \"self.iv\" }\n}\n")),
+            "line 3: VRMLInline { url \"self.iv\" } includes a file already being read: self.iv -> self.iv");
+  EXPECT_EQ(checkSceneText(write("zero.iv", kHeader + "VRMLInline {\n  bboxSize 1 1 1\n  url [ \"/dev/zero\", \"a.iv\" ]\n}\n")),
+            "line 4: VRMLInline { url \"/dev/zero\" } is not a regular file");
+  EXPECT_EQ(checkSceneText(write("vrml.wrl", "#VRML V2.0 utf8\nTransform { children Inline { url \"gone.wrl\" } }\n")),
+            "line 2: Inline { url \"gone.wrl\" } not found");
+  write("cube.wrl", "#VRML V2.0 utf8\nShape { geometry Box { } }\n");
+  EXPECT_EQ(checkSceneText(write("ok.iv", kHeader + "Separator { VRMLInline { url [ \"cube.wrl\" ] } }\n")), "");
+  EXPECT_EQ(checkSceneText(write("empty.iv", kHeader + "Separator { VRMLInline { url [ ] } Cube { } }\n")), "");
+  // "url" outside an Inline's own body names nothing.
+  EXPECT_EQ(checkSceneText(write("other.iv", kHeader + "Separator { Info { string \"url\" } }\n")), "");
+}
+
 TEST_F(SceneTextCheckTest, RefusesWhatIsNotARegularFileOrNotThere) {
   EXPECT_EQ(checkSceneText(write("zero.iv", including("/dev/zero"))),
             "line 3: File { name \"/dev/zero\" } is not a regular file");
