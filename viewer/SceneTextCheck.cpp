@@ -188,6 +188,46 @@ std::string_view includeField(std::string_view type) {
   return {};
 }
 
+// The first URL of each EXTERNPROTO (VRML97: `EXTERNPROTO Name [ interface ] "url"`, or a list
+// `[ "url", ... ]`), which Coin's fetch reads as a file the way it reads a File (a scene whose
+// EXTERNPROTO named itself crashed figment-view, one naming /dev/zero hung it).
+class ExternProtoUrls {
+ public:
+  // Takes every token in turn, with the nesting depth after it. Returns the EXTERNPROTO's name
+  // when the token is its first URL, else null.
+  const std::string* see(const Token& t, int depth) {
+    const Stage stage = stage_;
+    stage_ = Stage::kNone;
+    const bool url = t.kind == Token::kString || t.kind == Token::kWord;
+    switch (stage) {
+      case Stage::kNone:
+        if (t.kind == Token::kWord && t.word == "EXTERNPROTO") stage_ = Stage::kName;
+        return nullptr;
+      case Stage::kName:
+        if (t.kind == Token::kWord) name_ = std::string(t.word), stage_ = Stage::kInterface;
+        return nullptr;
+      case Stage::kInterface:
+        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kInInterface, interfaceDepth_ = depth;
+        return nullptr;
+      case Stage::kInInterface:
+        stage_ = t.kind == Token::kClose && depth < interfaceDepth_ ? Stage::kUrl : Stage::kInInterface;
+        return nullptr;
+      case Stage::kUrl:
+        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kFirstOfList;
+        return url ? &name_ : nullptr;
+      case Stage::kFirstOfList:
+        return url ? &name_ : nullptr;
+    }
+    return nullptr;
+  }
+
+ private:
+  enum class Stage { kNone, kName, kInterface, kInInterface, kUrl, kFirstOfList };
+  Stage stage_ = Stage::kNone;
+  std::string name_;
+  int interfaceDepth_ = 0;
+};
+
 class Checker {
  public:
   explicit Checker(const fs::path& scene) : scene_(scene) {}
@@ -235,10 +275,14 @@ class Checker {
     int depth = 0;
     bool expectName = false, expectFirstOfList = false;
     OpenDefinitions definitions;
+    ExternProtoUrls externProtos;
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
       if ((expectName || expectFirstOfList) &&
           (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
-        if (!include(includers.back(), std::string(t.text()), t.line, file, base + depth)) return false;
+        const std::string name(t.text());
+        const Includer& node = includers.back();
+        const std::string what = std::string(node.type) + " { " + std::string(node.field) + " \"" + name + "\" }";
+        if (!include(what, name, t.line, file, base + depth)) return false;
       } else if (t.kind == Token::kOpen) {
         if (base + ++depth > kMaxNestingDepth)
           return fail(file, t.line,
@@ -253,6 +297,15 @@ class Checker {
         return fail(file, t.line,
                     "USE " + d->name + " inside the definition of " + d->name + " (DEF at line " +
                         std::to_string(d->line) + "): a node cannot hold itself");
+      if (const std::string* proto = externProtos.see(t, depth)) {
+        // Coin's fetch reads the file named before any "#ProtoName".
+        const std::string url(t.text());
+        const size_t hash = url.find('#');
+        const std::string what = "EXTERNPROTO " + *proto + " \"" + url + "\"";
+        if (!include(what, hash != std::string::npos && hash >= 1 ? url.substr(0, hash) : url, t.line, file,
+                     base + depth))
+          return false;
+      }
       expectFirstOfList = expectName && t.kind == Token::kOpen && t.word == "[";  // url [ "a.wrl" ... ]
       expectName = t.kind == Token::kWord && !includers.empty() && includers.back().depth == depth &&
                    t.word == includers.back().field;
@@ -262,10 +315,10 @@ class Checker {
     return true;
   }
 
-  // The file an including node names at `line` of `from`, its contents `depth` levels deep.
-  bool include(const Includer& node, const std::string& name, int line, const fs::path& from, int depth) {
+  // The file `name` that `file` (the text naming it: File { name "a.iv" }) names at `line` of
+  // `from`, its contents `depth` levels deep.
+  bool include(const std::string& file, const std::string& name, int line, const fs::path& from, int depth) {
     if (name.empty()) return true;  // Coin warns and reads nothing
-    const std::string file = std::string(node.type) + " { " + std::string(node.field) + " \"" + name + "\" }";
     const int includeDepth = static_cast<int>(chain_.size());
     if (includeDepth > kMaxIncludeDepth)
       return fail(from, line,

@@ -255,6 +255,8 @@ INSTANTIATE_TEST_SUITE_P(
                  {"scene.iv", "line 3", "VRMLInline { url \"scene.iv\" }", "scene.iv -> scene.iv"}},
         BadInput{"InlinesADevice", "#Inventor V2.1 ascii\nSeparator {\n  VRMLInline { url \"/dev/zero\" }\n}\n", "",
                  {"scene.iv", "line 3", "\"/dev/zero\"", "not a regular file"}},
+        BadInput{"ExternProtoOfItself", "#VRML V2.0 utf8\nEXTERNPROTO Foo [ ] \"scene.iv\"\nFoo { }\n", "",
+                 {"scene.iv", "line 2", "EXTERNPROTO Foo \"scene.iv\"", "scene.iv -> scene.iv"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",

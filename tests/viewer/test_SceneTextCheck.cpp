@@ -148,6 +148,22 @@ TEST_F(SceneTextCheckTest, TakesAnInlinesUrlForAnInclude) {
   EXPECT_EQ(checkSceneText(write("other.iv", kHeader + "Separator { Info { string \"url\" } }\n")), "");
 }
 
+// Coin's default EXTERNPROTO fetch reads the first URL (less any "#Name") as a file, as it reads
+// a File: a VRML97 scene whose EXTERNPROTO named itself crashed figment-view (SIGSEGV), one
+// naming /dev/zero hung it. The interface between the brackets names no file.
+TEST_F(SceneTextCheckTest, TakesAnExternProtosFirstUrlForAnInclude) {
+  const std::string vrml = "#VRML V2.0 utf8\n";
+  EXPECT_EQ(checkSceneText(write("self.wrl", vrml + "EXTERNPROTO Foo [ ] \"self.wrl#Foo\"\nFoo { }\n")),
+            "line 2: EXTERNPROTO Foo \"self.wrl#Foo\" includes a file already being read: self.wrl -> self.wrl");
+  EXPECT_EQ(checkSceneText(write("zero.wrl", vrml + "EXTERNPROTO Foo [\n  field MFString names [ \"a\" ]\n]\n"
+                                                    "[ \"/dev/zero\", \"b.wrl\" ]\nFoo { }\n")),
+            "line 5: EXTERNPROTO Foo \"/dev/zero\" is not a regular file");
+  write("protos.wrl", vrml + "PROTO Foo [ ] { Shape { geometry Box { } } }\n");
+  EXPECT_EQ(checkSceneText(write("ok.wrl", vrml + "EXTERNPROTO Foo [ field SFFloat f ] \"protos.wrl#Foo\"\n"
+                                                  "Transform { children Foo { } }\n")),
+            "");
+}
+
 TEST_F(SceneTextCheckTest, RefusesWhatIsNotARegularFileOrNotThere) {
   EXPECT_EQ(checkSceneText(write("zero.iv", including("/dev/zero"))),
             "line 3: File { name \"/dev/zero\" } is not a regular file");
