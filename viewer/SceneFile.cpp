@@ -2,6 +2,7 @@
 
 #include "viewer/CoinMessages.h"
 #include "viewer/ReferenceHoldingInput.h"
+#include "viewer/SceneExpansion.h"
 #include "viewer/SceneTextCheck.h"
 
 #include <Inventor/SoDB.h>
@@ -34,11 +35,17 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   SoSeparator* root = SoDB::readAll(&in);
   if (root) root->ref();
   in.release();  // what the scene does not hold goes now, before its errors are taken
+  // Before any action: one could traverse the graph for hours (SceneExpansion.h).
+  std::string tooLarge;
+  if (root && !(tooLarge = sceneExpansionProblem(root)).empty()) {
+    unrefWithoutRecursion(root);
+    root = nullptr;
+  }
   CoinMessages::releaseWarnings(root != nullptr);
   const std::vector<std::string> errors = CoinMessages::takeReadErrors(path);
   if (!root) {
     // The first error is the cause; later ones are Coin unwinding the parse.
-    error = errors.empty() ? "not an Inventor scene file" : errors.front();
+    error = !tooLarge.empty() ? tooLarge : errors.empty() ? "not an Inventor scene file" : errors.front();
     return nullptr;
   }
   return root;

@@ -72,6 +72,14 @@ std::string clothScene(const std::string& fields, const std::string& before = ""
 }
 
 // `depth` nodes of type `group`, one inside the other, around a Cube: depth + 1 levels.
+// `levels` Groups, each using the one before twice, around a Cube: 2^levels Cubes drawn.
+std::string sharedChainScene(int levels) {
+  std::string text = "#Inventor V2.1 ascii\nDEF L0 Cube { }\n";
+  for (int i = 1; i <= levels; ++i)
+    text += "DEF L" + std::to_string(i) + " Group { USE L" + std::to_string(i - 1) + " USE L" + std::to_string(i - 1) + " }\n";
+  return text;
+}
+
 std::string nestedScene(const std::string& group, int depth) {
   std::string text = "#Inventor V2.1 ascii\n";
   for (int i = 0; i < depth; ++i) text += group + " {\n";
@@ -257,6 +265,14 @@ INSTANTIATE_TEST_SUITE_P(
                  {"scene.iv", "line 3", "\"/dev/zero\"", "not a regular file"}},
         BadInput{"ExternProtoOfItself", "#VRML V2.0 utf8\nEXTERNPROTO Foo [ ] \"scene.iv\"\nFoo { }\n", "",
                  {"scene.iv", "line 2", "EXTERNPROTO Foo \"scene.iv\"", "scene.iv -> scene.iv"}},
+        // Text one level deep whose graph no traversal finishes: 2^40 Cubes, 2.7e13 Cubes.
+        BadInput{"GroupsEachUsingTheOneBeforeTwice", sharedChainScene(40), "",
+                 {"scene.iv", "more than 1000000 nodes", "(passed at Group 'L18')"}},
+        BadInput{"ArrayOfTwentySevenTrillion",
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements1 30000 numElements2 30000 "
+                 "numElements3 30000  Cube { } }\n}\n",
+                 "",
+                 {"scene.iv", "more than 1000000 nodes", "(passed at Array 'Grid')"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",

@@ -1,0 +1,113 @@
+// The look at a read scene graph before any action traverses it: shared nodes and copies
+// are counted as a traversal visits them, and a graph too large or too deep to traverse is
+// refused in one line naming where.
+
+#include "viewer/SceneExpansion.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace figment::viewer;
+
+namespace {
+
+// The graph read from `text` (an Inventor scene, header included), referenced once.
+SoSeparator* read(const std::string& text) {
+  SoDB::init();
+  SoInput in;
+  in.setBuffer(text.data(), text.size());
+  SoSeparator* root = SoDB::readAll(&in);
+  EXPECT_NE(root, nullptr) << text;
+  if (root) root->ref();
+  return root;
+}
+
+// `levels` groups, each using the one before `uses` times, around a Cube.
+std::string sharedChain(int levels, int uses) {
+  std::string text = "#Inventor V2.1 ascii\nDEF L0 Cube { }\n";
+  for (int i = 1; i <= levels; ++i) {
+    text += "DEF L" + std::to_string(i) + " Group {";
+    for (int u = 0; u < uses; ++u) text += " USE L" + std::to_string(i - 1);
+    text += " }\n";
+  }
+  return text;
+}
+
+struct Expanded {
+  SceneExpansion expansion;
+  std::string problem;
+};
+
+Expanded expand(const std::string& text) {
+  SoSeparator* root = read(text);
+  if (!root) return {};
+  Expanded out{expandScene(root), sceneExpansionProblem(root)};
+  root->unref();
+  return out;
+}
+
+}  // namespace
+
+TEST(SceneExpansion, CountsEachUseAndEachCopyAsATraversalVisitsThem) {
+  // Root, L0, L1 (L0 twice), L2 (L1 twice): 1 + 1 + (1 + 2) + (1 + 2 * 3) = 12.
+  EXPECT_EQ(expand(sharedChain(2, 2)).expansion.visits, 12u);
+  EXPECT_EQ(expand(sharedChain(2, 2)).expansion.depth, 4);
+  // An Array of 2 x 3 x 4 Cubes: the root, the Array, 24 Cubes.
+  EXPECT_EQ(expand("#Inventor V2.1 ascii\nArray { numElements1 2 numElements2 3 numElements3 4 Cube { } }\n")
+                .expansion.visits,
+            26u);
+  EXPECT_EQ(expand("#Inventor V2.1 ascii\nMultipleCopy { matrix [ 1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1,"
+                   " 1 0 0 0 0 1 0 0 0 0 1 0 1 0 0 1 ] Cube { } Sphere { } }\n")
+                .expansion.visits,
+            6u);
+  EXPECT_EQ(expand(sharedChain(2, 2)).problem, "");
+}
+
+// 40 groups each using the one before twice draw 2^40 Cubes: figment-view never finished.
+TEST(SceneExpansion, RefusesAGraphThatDrawsMoreThanTheBoundNamingWhere) {
+  const Expanded doubled = expand(sharedChain(40, 2));
+  EXPECT_EQ(doubled.expansion.visits, kMaxNodeVisits + 1);
+  // Every L is also a child of the root: the sum passes a million at L18.
+  EXPECT_EQ(doubled.problem,
+            "the scene would draw more than 1000000 nodes, counting a USEd node once for each use and an "
+            "Array's or MultipleCopy's children once for each copy (passed at Group 'L18')");
+  const Expanded array =
+      expand("#Inventor V2.1 ascii\nDEF Grid Array { numElements1 30000 numElements2 30000 numElements3 30000 "
+             "Cube { } }\n");
+  EXPECT_NE(array.problem.find("more than 1000000 nodes"), std::string::npos) << array.problem;
+  EXPECT_NE(array.problem.find("(passed at Array 'Grid')"), std::string::npos) << array.problem;
+  // 18 levels draw 524,269 nodes, 19 levels 1,048,556.
+  EXPECT_EQ(expand(sharedChain(17, 2)).expansion.visits, 524'269u);
+  EXPECT_EQ(expand(sharedChain(17, 2)).problem, "");
+  EXPECT_NE(expand(sharedChain(18, 2)).problem.find("(passed at Group 'L18')"), std::string::npos);
+}
+
+// 100,000 groups each using the one before once are 100,000 levels deep, in text one deep.
+TEST(SceneExpansion, RefusesAGraphDeeperThanTheBound) {
+  const Expanded deep = expand(sharedChain(kMaxGraphDepth + 10, 1));
+  EXPECT_EQ(deep.expansion.depth, kMaxGraphDepth + 1);
+  EXPECT_NE(deep.problem.find("the scene graph is more than 512 nodes deep, counting through each USE"),
+            std::string::npos)
+      << deep.problem;
+  // The root, 510 groups and the Cube: 512 deep.
+  EXPECT_EQ(expand(sharedChain(kMaxGraphDepth - 2, 1)).problem, "");
+  EXPECT_NE(expand(sharedChain(kMaxGraphDepth - 1, 1)).problem, "");
+}
+
+// Coin destroys a group's children from its destructor, recursively: letting go of 100,000
+// groups each using the one before overflowed the stack (SIGSEGV) after the scene was refused.
+TEST(SceneExpansion, LetsGoOfAGraphOneNodeAtATime) {
+  SoSeparator* root = read(sharedChain(100'000, 1));
+  ASSERT_NE(root, nullptr);
+  EXPECT_EQ(expandScene(root).depth, kMaxGraphDepth + 1);
+  SoNode* cube = root->getChild(0);
+  cube->ref();
+  unrefWithoutRecursion(root);
+  EXPECT_EQ(cube->getRefCount(), 1);  // held by nothing else now
+  cube->unref();
+}
