@@ -12,7 +12,7 @@ namespace figment::viewer {
 // "line 12: Unknown class \"Foo\"", "line 3: MeshFile 'Body': fileName ..." or, from the
 // check of its text before Coin reads it (SceneTextCheck.h), "line 9: nesting depth 257
 // is more than 256", or from the check of the graph read (SceneExpansion.h), "the scene
-// would draw more than 1000000 nodes, ...".
+// would draw more than 20000 nodes, ...".
 // Needs initHeadless() (for the read-error capture) first.
 SoSeparator* readSceneFile(const std::string& path, std::string& error);
 

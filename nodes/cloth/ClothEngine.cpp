@@ -9,16 +9,14 @@
 #include "sim/core/ParameterChecks.h"
 #include "sim/progressive/Decimation.h"
 #include "nodes/SceneFiles.h"
-#include "nodes/SceneSearch.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/progressive/ProgressiveDrape.h"
 
-#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoNodeEngine.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/fields/SoMFNode.h>
 #include <Inventor/lists/SoFieldList.h>
-#include <Inventor/lists/SoPathList.h>
+#include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoNode.h>
 
 #include <chrono>
@@ -28,6 +26,7 @@
 #include <optional>
 #include <type_traits>
 #include <set>
+#include <unordered_set>
 #include <utility>
 
 SO_ENGINE_SOURCE(ClothEngine);
@@ -426,18 +425,20 @@ class EngineCollector {
 namespace figment {
 
 std::vector<ClothEngine*> findClothEngines(SoNode* root) {
-  if (!root) return {};
-  root->ref();  // the search action must not free a graph nobody else holds
-  SoSearchAction search;
-  search.setType(SoNode::getClassTypeId(), TRUE);
-  search.setInterest(SoSearchAction::ALL);
-  search.setSearchingAll(TRUE);
-  search.apply(root);
+  // Each node once, depth first (scene order), every child of every group (a Switch's too).
+  // Not a search action for every node: that makes a path for each way to reach a node, and
+  // each path audits every node along it, so 65,520 paths through shared groups took 4.9 s
+  // (fuzz_scene: 12 s under the sanitizers), growing with the square of the paths.
   EngineCollector collector;
-  const SoPathList& paths = search.getPaths();
-  for (int i = 0; i < paths.getLength(); ++i) collector.visit(figment::fullTail(paths[i]));
-  search.reset();
-  root->unrefNoDelete();
+  std::unordered_set<const SoNode*> seen;
+  for (std::vector<SoNode*> next{root}; !next.empty();) {
+    SoNode* node = next.back();
+    next.pop_back();
+    if (!node || !seen.insert(node).second) continue;
+    collector.visit(node);
+    if (const SoChildList* children = node->getChildren())
+      for (int i = children->getLength() - 1; i >= 0; --i) next.push_back((*children)[i]);
+  }
   return collector.engines;
 }
 

@@ -267,12 +267,12 @@ INSTANTIATE_TEST_SUITE_P(
                  {"scene.iv", "line 2", "EXTERNPROTO Foo \"scene.iv\"", "scene.iv -> scene.iv"}},
         // Text one level deep whose graph no traversal finishes: 2^40 Cubes, 2.7e13 Cubes.
         BadInput{"GroupsEachUsingTheOneBeforeTwice", sharedChainScene(40), "",
-                 {"scene.iv", "more than 1000000 nodes", "(passed at Group 'L18')"}},
+                 {"scene.iv", "more than 20000 nodes", "(passed at Group 'L13')"}},
         BadInput{"ArrayOfTwentySevenTrillion",
                  "#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements1 30000 numElements2 30000 "
                  "numElements3 30000  Cube { } }\n}\n",
                  "",
-                 {"scene.iv", "more than 1000000 nodes", "(passed at Array 'Grid')"}},
+                 {"scene.iv", "more than 20000 nodes", "(passed at Array 'Grid')"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",

@@ -6,6 +6,9 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
+#include <Inventor/misc/SoChildList.h>
+#include <Inventor/nodes/SoCube.h>
+#include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
@@ -69,43 +72,63 @@ TEST(SceneExpansion, CountsEachUseAndEachCopyAsATraversalVisitsThem) {
 }
 
 // 40 groups each using the one before twice draw 2^40 Cubes: figment-view never finished.
+// Shipped scenes make at most 107 visits.
 TEST(SceneExpansion, RefusesAGraphThatDrawsMoreThanTheBoundNamingWhere) {
   const Expanded doubled = expand(sharedChain(40, 2));
   EXPECT_EQ(doubled.expansion.visits, kMaxNodeVisits + 1);
-  // Every L is also a child of the root: the sum passes a million at L18.
+  // Every L is also a child of the root: the sum passes 20,000 at L13 (L12 and those before
+  // make 16,369).
   EXPECT_EQ(doubled.problem,
-            "the scene would draw more than 1000000 nodes, counting a USEd node once for each use and an "
-            "Array's or MultipleCopy's children once for each copy (passed at Group 'L18')");
+            "the scene would draw more than 20000 nodes, counting a USEd node once for each use and an "
+            "Array's or MultipleCopy's children once for each copy (passed at Group 'L13')");
   const Expanded array =
       expand("#Inventor V2.1 ascii\nDEF Grid Array { numElements1 30000 numElements2 30000 numElements3 30000 "
              "Cube { } }\n");
-  EXPECT_NE(array.problem.find("more than 1000000 nodes"), std::string::npos) << array.problem;
+  EXPECT_NE(array.problem.find("more than 20000 nodes"), std::string::npos) << array.problem;
   EXPECT_NE(array.problem.find("(passed at Array 'Grid')"), std::string::npos) << array.problem;
-  // 18 levels draw 524,269 nodes, 19 levels 1,048,556.
-  EXPECT_EQ(expand(sharedChain(17, 2)).expansion.visits, 524'269u);
-  EXPECT_EQ(expand(sharedChain(17, 2)).problem, "");
-  EXPECT_NE(expand(sharedChain(18, 2)).problem.find("(passed at Group 'L18')"), std::string::npos);
+  // 13 levels draw 16,370 nodes, 14 levels 32,753.
+  EXPECT_EQ(expand(sharedChain(12, 2)).expansion.visits, 16'370u);
+  EXPECT_EQ(expand(sharedChain(12, 2)).problem, "");
+  EXPECT_NE(expand(sharedChain(13, 2)).problem.find("(passed at Group 'L13')"), std::string::npos);
 }
 
-// 100,000 groups each using the one before once are 100,000 levels deep, in text one deep.
+// `levels` Groups, each holding the one before, around a Cube; the root holds the last only
+// (a graph a scene makes with Groups held in fields, each using the one before). Referenced once.
+SoSeparator* chainGraph(int levels) {
+  SoDB::init();
+  auto* root = new SoSeparator;
+  root->ref();
+  SoNode* inner = new SoCube;
+  for (int i = 0; i < levels; ++i) {
+    auto* group = new SoGroup;
+    group->addChild(inner);
+    inner = group;
+  }
+  root->addChild(inner);
+  return root;
+}
+
 TEST(SceneExpansion, RefusesAGraphDeeperThanTheBound) {
-  const Expanded deep = expand(sharedChain(kMaxGraphDepth + 10, 1));
-  EXPECT_EQ(deep.expansion.depth, kMaxGraphDepth + 1);
-  EXPECT_NE(deep.problem.find("the scene graph is more than 512 nodes deep, counting through each USE"),
-            std::string::npos)
-      << deep.problem;
+  SoSeparator* deep = chainGraph(kMaxGraphDepth + 10);
+  EXPECT_EQ(expandScene(deep).depth, kMaxGraphDepth + 1);
+  EXPECT_EQ(sceneExpansionProblem(deep),
+            "the scene graph is more than 512 nodes deep, counting through each USE (passed at Group)");
+  deep->unref();
   // The root, 510 groups and the Cube: 512 deep.
-  EXPECT_EQ(expand(sharedChain(kMaxGraphDepth - 2, 1)).problem, "");
-  EXPECT_NE(expand(sharedChain(kMaxGraphDepth - 1, 1)).problem, "");
+  SoSeparator* atBound = chainGraph(kMaxGraphDepth - 2);
+  EXPECT_EQ(sceneExpansionProblem(atBound), "");
+  atBound->unref();
+  SoSeparator* past = chainGraph(kMaxGraphDepth - 1);
+  EXPECT_NE(sceneExpansionProblem(past), "");
+  past->unref();
 }
 
 // Coin destroys a group's children from its destructor, recursively: letting go of 100,000
-// groups each using the one before overflowed the stack (SIGSEGV) after the scene was refused.
+// groups each holding the one before overflowed the stack (SIGSEGV) after the scene was refused.
 TEST(SceneExpansion, LetsGoOfAGraphOneNodeAtATime) {
-  SoSeparator* root = read(sharedChain(100'000, 1));
-  ASSERT_NE(root, nullptr);
-  EXPECT_EQ(expandScene(root).depth, kMaxGraphDepth + 1);
-  SoNode* cube = root->getChild(0);
+  SoSeparator* root = chainGraph(100'000);
+  SoNode* cube = root;
+  while (cube->getChildren()) cube = (*cube->getChildren())[0];
   cube->ref();
   unrefWithoutRecursion(root);
   EXPECT_EQ(cube->getRefCount(), 1);  // held by nothing else now
