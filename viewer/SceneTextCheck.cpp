@@ -257,7 +257,7 @@ class Checker {
     const std::string& file;  // File { name "..." }, VRMLInline { url "..." }
   };
 
-  // Checks `file`, whose top level lies `base` levels deep, included `by` a File node (null
+  // Checks `file`, whose top level lies `base` levels deep, included `by` an including node (null
   // for the scene). False after an error.
   bool checkFile(const fs::path& file, int base, const Inclusion* by) {
     std::ifstream in(file, std::ios::binary);
