@@ -1,6 +1,9 @@
 #include "viewer/SceneExpansion.h"
 
-#include <Inventor/misc/SoChildList.h>
+#include "viewer/NodeLinks.h"
+
+#include <Inventor/fields/SoMFNode.h>
+#include <Inventor/fields/SoSFNode.h>
 #include <Inventor/nodes/SoArray.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoMultipleCopy.h>
@@ -61,19 +64,17 @@ class Expander {
     if (known != subgraphs_.end()) return known->second.inProgress ? past(node) : known->second;
     subgraphs_[node].inProgress = true;
     Subgraph sum{1, 1, false};
-    if (const SoChildList* children = node->getChildren()) {
-      const std::uint64_t n = copies(*node);
-      std::uint64_t childVisits = 0;
-      for (int i = 0; i < children->getLength() && sum.visits < kPastVisits && sum.depth < kPastDepth; ++i) {
-        const Subgraph child = expand((*children)[i], level + 1);
-        childVisits = cappedSum(childVisits, child.visits);
-        sum.depth = std::max(sum.depth, std::min(child.depth + 1, kPastDepth));
-        sum.visits = cappedSum(1, cappedProduct(n, childVisits));
-        // Siblings can pass the bound together: the one that took the sum past it is named,
-        // or the Array or MultipleCopy that multiplied them past it.
-        if ((sum.visits >= kPastVisits || sum.depth >= kPastDepth) && !culprit_)
-          culprit_ = n > 1 ? node : (*children)[i];
-      }
+    const std::vector<SoNode*> links = linkedNodes(*node);
+    const std::uint64_t n = copies(*node);
+    std::uint64_t linkedVisits = 0;
+    for (std::size_t i = 0; i < links.size() && sum.visits < kPastVisits && sum.depth < kPastDepth; ++i) {
+      const Subgraph linked = expand(links[i], level + 1);
+      linkedVisits = cappedSum(linkedVisits, linked.visits);
+      sum.depth = std::max(sum.depth, std::min(linked.depth + 1, kPastDepth));
+      sum.visits = cappedSum(1, cappedProduct(n, linkedVisits));
+      // Siblings can pass the bound together: the one that took the sum past it is named,
+      // or the Array or MultipleCopy that multiplied them past it.
+      if ((sum.visits >= kPastVisits || sum.depth >= kPastDepth) && !culprit_) culprit_ = n > 1 ? node : links[i];
     }
     if ((sum.visits >= kPastVisits || sum.depth >= kPastDepth) && !culprit_) culprit_ = node;
     subgraphs_[node] = sum;
@@ -109,11 +110,18 @@ void unrefWithoutRecursion(SoNode* root) {
     if (!seen.insert(node).second) continue;
     node->ref();
     nodes.push_back(node);
-    if (const SoChildList* children = node->getChildren())
-      for (int i = 0; i < children->getLength(); ++i) next.push_back((*children)[i]);
+    for (SoNode* linked : linkedNodes(*node)) next.push_back(linked);
   }
-  for (SoNode* node : nodes)
+  for (SoNode* node : nodes) {
     if (node->isOfType(SoGroup::getClassTypeId())) static_cast<SoGroup*>(node)->removeAllChildren();
+    for (SoField* field : nodeFields(*node)) {
+      field->disconnect();
+      if (field->isOfType(SoSFNode::getClassTypeId()))
+        static_cast<SoSFNode*>(field)->setValue(nullptr);
+      else
+        static_cast<SoMFNode*>(field)->deleteValues(0);
+    }
+  }
   root->unref();
   for (SoNode* node : nodes) node->unref();  // childless now: each goes on its own
 }

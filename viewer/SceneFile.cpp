@@ -1,6 +1,7 @@
 #include "viewer/SceneFile.h"
 
 #include "viewer/CoinMessages.h"
+#include "viewer/NodeFieldTypes.h"
 #include "viewer/ReferenceHoldingInput.h"
 #include "viewer/SceneExpansion.h"
 #include "viewer/SceneTextCheck.h"
@@ -35,9 +36,12 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   SoSeparator* root = SoDB::readAll(&in);
   if (root) root->ref();
   in.release();  // what the scene does not hold goes now, before its errors are taken
-  // Before any action: one could traverse the graph for hours (SceneExpansion.h).
-  std::string tooLarge;
-  if (root && !(tooLarge = sceneExpansionProblem(root)).empty()) {
+  // Before any action: one could traverse the graph for hours (SceneExpansion.h), or crash
+  // on a node held where another type belongs (NodeFieldTypes.h).
+  std::string refused;
+  if (root) refused = sceneExpansionProblem(root);
+  if (root && refused.empty()) refused = firstMistypedNodeField(root);
+  if (!refused.empty()) {
     unrefWithoutRecursion(root);
     root = nullptr;
   }
@@ -45,7 +49,7 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   const std::vector<std::string> errors = CoinMessages::takeReadErrors(path);
   if (!root) {
     // The first error is the cause; later ones are Coin unwinding the parse.
-    error = !tooLarge.empty() ? tooLarge : errors.empty() ? "not an Inventor scene file" : errors.front();
+    error = !refused.empty() ? refused : errors.empty() ? "not an Inventor scene file" : errors.front();
     return nullptr;
   }
   return root;

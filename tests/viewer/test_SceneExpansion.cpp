@@ -6,6 +6,8 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
+#include <Inventor/VRMLnodes/SoVRMLFontStyle.h>
+#include <Inventor/VRMLnodes/SoVRMLText.h>
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoGroup.h>
@@ -133,4 +135,29 @@ TEST(SceneExpansion, LetsGoOfAGraphOneNodeAtATime) {
   unrefWithoutRecursion(root);
   EXPECT_EQ(cube->getRefCount(), 1);  // held by nothing else now
   cube->unref();
+}
+
+// Nodes held in fields are linked as children are: Coin destroys them recursively too, and
+// letting go of 19,500 VRMLTexts each holding the one before as its fontStyle overflowed the
+// stack (SIGSEGV) after the scene was refused.
+TEST(SceneExpansion, CountsAndLetsGoOfNodesHeldInFields) {
+  SoDB::init();
+  auto* root = new SoSeparator;
+  root->ref();
+  SoNode* held = new SoVRMLFontStyle;
+  held->ref();  // kept, to see it let go of
+  SoNode* fontStyle = held;
+  for (int i = 0; i < 100'000; ++i) {
+    auto* text = new SoVRMLText;
+    text->fontStyle = held;
+    held = text;
+  }
+  root->addChild(held);
+  EXPECT_EQ(expandScene(root).depth, kMaxGraphDepth + 1);
+  EXPECT_NE(sceneExpansionProblem(root).find("more than 512 nodes deep"), std::string::npos);
+  unrefWithoutRecursion(root);
+  EXPECT_EQ(fontStyle->getRefCount(), 1);
+  fontStyle->unref();
+  // A VRMLText holding its fontStyle: two levels below the root, one visit each.
+  EXPECT_EQ(expand("#Inventor V2.1 ascii\nVRMLText { fontStyle VRMLFontStyle { } }\n").expansion.visits, 3u);
 }

@@ -1,0 +1,42 @@
+#include "viewer/NodeLinks.h"
+
+#include <Inventor/fields/SoMFNode.h>
+#include <Inventor/fields/SoSFNode.h>
+#include <Inventor/lists/SoFieldList.h>
+#include <Inventor/misc/SoChildList.h>
+#include <Inventor/nodes/SoNode.h>
+
+#include <unordered_set>
+
+namespace figment::viewer {
+
+std::vector<SoField*> nodeFields(const SoNode& node) {
+  SoFieldList fields;
+  node.getFields(fields);
+  std::vector<SoField*> out;
+  for (int i = 0; i < fields.getLength(); ++i)
+    if (fields[i]->isOfType(SoSFNode::getClassTypeId()) || fields[i]->isOfType(SoMFNode::getClassTypeId()))
+      out.push_back(fields[i]);
+  return out;
+}
+
+std::vector<SoNode*> linkedNodes(const SoNode& node) {
+  std::vector<SoNode*> links;
+  if (const SoChildList* children = node.getChildren())
+    for (int i = 0; i < children->getLength(); ++i) links.push_back((*children)[i]);
+  std::unordered_set<const SoNode*> linked(links.begin(), links.end());
+  const auto addOnce = [&](SoNode* held) {
+    if (held && linked.insert(held).second) links.push_back(held);
+  };
+  for (SoField* field : nodeFields(node)) {
+    if (field->isOfType(SoSFNode::getClassTypeId())) {
+      addOnce(static_cast<SoSFNode*>(field)->getValue());
+    } else {
+      const auto& many = *static_cast<SoMFNode*>(field);
+      for (int i = 0; i < many.getNum(); ++i) addOnce(many[i]);
+    }
+  }
+  return links;
+}
+
+}  // namespace figment::viewer
