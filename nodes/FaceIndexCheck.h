@@ -1,7 +1,9 @@
 #pragma once
-// Whether the indexed shapes of a scene index only the coordinates they have: Coin
-// trusts coordIndex, and one index of 2147483647 has it allocate 2^31 normals
-// (std::bad_alloc) or read far past the coordinates.
+// Whether the shapes of a scene index and count only the data they have: Coin trusts
+// them. One coordIndex of 2147483647 had it allocate 2^31 normals (std::bad_alloc); a
+// materialIndex, normalIndex or textureCoordIndex past its data, a FaceSet counting more
+// vertices than the coordinates, a VRMLIndexedFaceSet's colorIndex past its colors each
+// crashed figment-view (SIGSEGV). The checks themselves are in nodes/shapes/.
 
 #include <string>
 
@@ -9,10 +11,13 @@ class SoNode;
 
 namespace figment {
 
-// Every indexed shape drawn under `root` (ClothingLayer, IndexedFaceSet, IndexedLineSet,
-// ..., under the Switch children drawn now), its coordIndex checked against the
-// coordinates it uses (its vertexProperty's, else the current Coordinate3 or a
-// ClothEngine's positions feeding it): each entry a vertex, or the -1 that ends a face.
+// Every shape drawn under `root` (under the Switch children drawn now) checked against the
+// data it uses: an indexed shape (ClothingLayer, IndexedFaceSet, IndexedLineSet, ...) its
+// coordIndex against its coordinates (its vertexProperty's, else the current Coordinate3 or
+// a ClothEngine's positions feeding it), each entry a vertex or the -1 that ends a face, and
+// its other indices against the data their bindings index; a counted shape (FaceSet,
+// TriangleStripSet, ...) its counts against the coordinates; a VRML97 shape its indices and
+// counts against its own data nodes (shapes/InventorShapeData.h, shapes/VrmlShapeData.h).
 // Returns "" when all are, else one line naming the first bad one, e.g.
 // "ClothingLayer 'Shirt': coordIndex[3] = 2147483647 is not a vertex: the coordinates
 // have 4 points". Reading the coordinates evaluates the engines that feed them: check

@@ -81,3 +81,92 @@ TEST_F(FaceIndexCheckTest, ChecksTheCoordinatesInPlaceWhereTheShapeIsDrawn) {
   // A layer under a Switch that draws nothing is not drawn, so not checked.
   EXPECT_EQ(check(square("Switch { whichChild -1 ClothingLayer", "0 1 9 -1", "}")), "");
 }
+
+namespace {
+
+// A scene of `body` after four points in a Coordinate3 (header added).
+std::string onFourPoints(const std::string& body) {
+  return "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n  " + body +
+         "\n}\n";
+}
+
+const std::string kTwoTriangles = "coordIndex [ 0, 1, 2, -1, 0, 2, 3, -1 ]";
+const std::string kVrmlSquare = "coord VRMLCoordinate { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }";
+
+}  // namespace
+
+// Each of these crashed figment-view (SIGSEGV) before the check: Coin reads the materials,
+// normals and texture coordinates at what the shape's indices say.
+TEST_F(FaceIndexCheckTest, ChecksTheIndicesOfMaterialsNormalsAndTextureCoordinates) {
+  const std::string twoMaterials = "Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n  ";
+  EXPECT_EQ(check(onFourPoints(twoMaterials + "MaterialBinding { value PER_FACE_INDEXED }\n  IndexedFaceSet { " +
+                               kTwoTriangles + " materialIndex [ 1, 0 ] }")),
+            "");
+  EXPECT_EQ(check(onFourPoints(twoMaterials + "MaterialBinding { value PER_FACE_INDEXED }\n  IndexedFaceSet { " +
+                               kTwoTriangles + " materialIndex [ 0, 70000000 ] }")),
+            "IndexedFaceSet: materialIndex[1] = 70000000 is not a material: the shape has 2 materials");
+  EXPECT_EQ(check(onFourPoints("NormalBinding { value PER_VERTEX_INDEXED } Normal { vector [ 0 0 1 ] }\n  "
+                               "IndexedFaceSet { " + kTwoTriangles + " normalIndex [ 0, 0, 0, -1, 0, 2000000000, 0, -1 ] }")),
+            "IndexedFaceSet: normalIndex[5] = 2000000000 is not a normal: the shape has 1 normal");
+  EXPECT_EQ(check(onFourPoints("Texture2 { image 1 1 3 0xff0000 } TextureCoordinate2 { point [ 0 0, 1 0, 1 1 ] }\n  "
+                               "IndexedLineSet { coordIndex [ 0, 1, 2 ] textureCoordIndex [ 0, 1, 3 ] }")),
+            "IndexedLineSet: textureCoordIndex[2] = 3 is not a texture coordinate: the shape has 3 texture coordinates");
+  // Without a texture, texture coordinates are not read.
+  EXPECT_EQ(check(onFourPoints("TextureCoordinate2 { point [ 0 0 ] }\n  IndexedFaceSet { " + kTwoTriangles +
+                               " textureCoordIndex [ 0, 9, 0, -1 ] }")),
+            "");
+  // An index runs along the vertices or the faces, however long it is.
+  EXPECT_EQ(check(onFourPoints(twoMaterials + "MaterialBinding { value PER_FACE_INDEXED }\n  IndexedFaceSet { " +
+                               kTwoTriangles + " materialIndex [ 1 ] }")),
+            "IndexedFaceSet: materialIndex has 1 entry for 2 faces");
+  // A binding per vertex, indexed, without an index of its own reads coordIndex.
+  EXPECT_EQ(check(onFourPoints("Normal { vector [ 0 0 1, 0 0 1, 0 0 1 ] }\n  IndexedFaceSet { " + kTwoTriangles + " }")),
+            "IndexedFaceSet: coordIndex[6] = 3 is not a normal: the shape has 3 normals, and coordIndex indexes them "
+            "as the binding is PER_VERTEX_INDEXED and normalIndex is empty");
+  // A VertexProperty's own colours and binding count where it has them.
+  EXPECT_EQ(check(onFourPoints("IndexedFaceSet { " + kTwoTriangles +
+                               " vertexProperty VertexProperty { orderedRGBA [ 0xff0000ff ] materialBinding PER_VERTEX_INDEXED } }")),
+            "IndexedFaceSet: coordIndex[1] = 1 is not a material: the VertexProperty has 1 material, and coordIndex indexes "
+            "them as the binding is PER_VERTEX_INDEXED and materialIndex is empty");
+}
+
+TEST_F(FaceIndexCheckTest, ChecksWhatCountedShapesDrawAgainstTheCoordinates) {
+  EXPECT_EQ(check(onFourPoints("FaceSet { numVertices [ 3 ] } LineSet { numVertices [ 2, 2 ] } PointSet { }")), "");
+  EXPECT_EQ(check(onFourPoints("DEF Faces FaceSet { numVertices [ 3, 2000000000 ] }")),
+            "FaceSet 'Faces': numVertices draw 2000000003 vertices from startIndex 0: the coordinates have 4 points");
+  EXPECT_EQ(check(onFourPoints("TriangleStripSet { startIndex 2 numVertices [ 3 ] }")),
+            "TriangleStripSet: numVertices draw 3 vertices from startIndex 2: the coordinates have 4 points");
+  EXPECT_EQ(check(onFourPoints("TriangleStripSet { startIndex 2000000000 numVertices [ 3 ] }")),
+            "TriangleStripSet: startIndex = 2000000000 is not a vertex: the coordinates have 4 points");
+  EXPECT_EQ(check(onFourPoints("QuadMesh { verticesPerRow 50000 verticesPerColumn 50000 }")),
+            "QuadMesh: verticesPerRow x verticesPerColumn draw 2500000000 vertices from startIndex 0: the coordinates "
+            "have 4 points");
+  EXPECT_EQ(check(onFourPoints("PointSet { numPoints 5 }")),
+            "PointSet: numPoints draw 5 vertices from startIndex 0: the coordinates have 4 points");
+}
+
+TEST_F(FaceIndexCheckTest, ChecksVrmlShapesAgainstTheirOwnData) {
+  const auto shape = [](const std::string& geometry) { return onFourPoints("VRMLShape { geometry " + geometry + " }"); };
+  EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
+                        " color VRMLColor { color [ 1 0 0, 0 1 0 ] } colorPerVertex FALSE }")),
+            "");
+  // Drawn with a warning before the check.
+  EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " coordIndex [ 0, 1, 2000000000, -1 ] }")),
+            "VRMLIndexedFaceSet: coordIndex[2] = 2000000000 is not a point: the VRMLCoordinate has 4 points");
+  // Crashed figment-view (SIGSEGV).
+  EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
+                        " color VRMLColor { color [ 1 0 0 ] } colorIndex [ 0, 2000000000, 0, -1, 0, 0, 0, -1 ] }")),
+            "VRMLIndexedFaceSet: colorIndex[1] = 2000000000 is not a color: the VRMLColor has 1 color");
+  EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
+                        " color VRMLColor { color [ 1 0 0 ] } colorPerVertex FALSE }")),
+            "VRMLIndexedFaceSet: the VRMLColor has 1 color for 2 faces (colorPerVertex is FALSE and colorIndex is empty)");
+  EXPECT_EQ(check(shape("VRMLIndexedLineSet { " + kVrmlSquare + " coordIndex [ 0, 1, 2, 3 ] color VRMLColor { "
+                        "color [ 1 0 0, 0 1 0 ] } }")),
+            "VRMLIndexedLineSet: coordIndex[2] = 2 is not a color: the VRMLColor has 2 colors, and coordIndex indexes them "
+            "as colorPerVertex is TRUE and colorIndex is empty");
+  EXPECT_EQ(check(shape("VRMLPointSet { " + kVrmlSquare + " color VRMLColor { color [ 1 0 0 ] } }")),
+            "VRMLPointSet: the VRMLColor has 1 color for 4 points: one for each");
+  EXPECT_EQ(check(shape("VRMLElevationGrid { xDimension 3000 zDimension 3000 height [ 0, 0, 0, 0 ] }")),
+            "VRMLElevationGrid: height has 4 values for the 9000000 vertices of its 3000 x 3000 grid");
+  EXPECT_EQ(check(shape("VRMLElevationGrid { xDimension 2 zDimension 2 height [ 0, 0, 0, 0 ] }")), "");
+}

@@ -281,6 +281,23 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"VrmlTextWhoseFontStyleIsAMaterial",
                  "#VRML V2.0 utf8\nShape { geometry Text { string \"A\" fontStyle Material { } } }\n", "",
                  {"scene.iv", "VRMLText: fontStyle holds a VRMLMaterial, where a VRMLFontStyle belongs"}},
+        // Coin reads a shape's data where its indices and counts say: each crashed figment-view.
+        BadInput{"MaterialIndexPastTheMaterials",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
+                 "  MaterialBinding { value PER_FACE_INDEXED }\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                 "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] materialIndex [ 70000000 ] }\n}\n",
+                 "",
+                 {"scene.iv", "IndexedFaceSet: materialIndex[0] = 70000000 is not a material: the shape has 2 materials"}},
+        BadInput{"FaceSetCountingPastTheCoordinates",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                 "  FaceSet { numVertices [ 3, 2000000000 ] }\n}\n",
+                 "",
+                 {"scene.iv", "FaceSet: numVertices draw 2000000003 vertices from startIndex 0: the coordinates have 3 points"}},
+        BadInput{"VrmlColorIndexPastTheColors",
+                 "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] }"
+                 " coordIndex [ 0, 1, 2, -1 ] color Color { color [ 1 0 0 ] } colorIndex [ 0, 2000000000, 0, -1 ] } }\n",
+                 "",
+                 {"scene.iv", "VRMLIndexedFaceSet: colorIndex[1] = 2000000000 is not a color: the VRMLColor has 1 color"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
