@@ -1,11 +1,16 @@
 #include "nodes/FaceIndexCheck.h"
 
 #include "nodes/shapes/InventorShapeData.h"
+#include "nodes/shapes/NurbsShapeData.h"
 #include "nodes/shapes/VrmlShapeData.h"
 
 #include <Inventor/VRMLnodes/SoVRMLGeometry.h>
 #include <Inventor/actions/SoCallbackAction.h>
+#include <Inventor/nodes/SoIndexedNurbsCurve.h>
+#include <Inventor/nodes/SoIndexedNurbsSurface.h>
 #include <Inventor/nodes/SoIndexedShape.h>
+#include <Inventor/nodes/SoNurbsCurve.h>
+#include <Inventor/nodes/SoNurbsSurface.h>
 #include <Inventor/nodes/SoNonIndexedShape.h>
 
 namespace figment {
@@ -31,6 +36,9 @@ std::string firstFaceIndexError(SoNode* root) {
   action.addPreCallback(SoNonIndexedShape::getClassTypeId(), check<SoNonIndexedShape, shapes::countedShapeProblem>,
                         &error);
   action.addPreCallback(SoVRMLGeometry::getClassTypeId(), check<SoVRMLGeometry, vrmlProblem>, &error);
+  for (const SoType nurbs : {SoNurbsSurface::getClassTypeId(), SoIndexedNurbsSurface::getClassTypeId(),
+                             SoNurbsCurve::getClassTypeId(), SoIndexedNurbsCurve::getClassTypeId()})
+    action.addPreCallback(nurbs, check<SoShape, shapes::nurbsShapeProblem>, &error);
   action.apply(root);
   return error;
 }

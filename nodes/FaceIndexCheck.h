@@ -16,8 +16,9 @@ namespace figment {
 // coordIndex against its coordinates (its vertexProperty's, else the current Coordinate3 or
 // a ClothEngine's positions feeding it), each entry a vertex or the -1 that ends a face, and
 // its other indices against the data their bindings index; a counted shape (FaceSet,
-// TriangleStripSet, ...) its counts against the coordinates; a VRML97 shape its indices and
-// counts against its own data nodes (shapes/InventorShapeData.h, shapes/VrmlShapeData.h).
+// TriangleStripSet, ...) its counts against the coordinates; a NURBS shape its control points
+// and knots; a VRML97 shape its indices and counts against its own data nodes
+// (shapes/InventorShapeData.h, shapes/NurbsShapeData.h, shapes/VrmlShapeData.h).
 // Returns "" when all are, else one line naming the first bad one, e.g.
 // "ClothingLayer 'Shirt': coordIndex[3] = 2147483647 is not a vertex: the coordinates
 // have 4 points". Reading the coordinates evaluates the engines that feed them: check

@@ -14,7 +14,9 @@
 #include <Inventor/nodes/SoFaceSet.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoIndexedShape.h>
+#include <Inventor/nodes/SoIndexedMarkerSet.h>
 #include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoMarkerSet.h>
 #include <Inventor/nodes/SoNonIndexedShape.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoQuadMesh.h>
@@ -114,6 +116,16 @@ BoundData textureCoordinates(const SoVertexShape& shape, SoState* state) {
           indexed, indexed};
 }
 
+// Markers are Coin's own and those a program adds; a negative index draws none.
+std::string markerProblem(const SoShape& shape, const SoMFInt32& markerIndex) {
+  const int markers = SoMarkerSet::getNumDefinedMarkers();
+  for (int i = 0; i < markerIndex.getNum(); ++i)
+    if (markerIndex[i] >= markers)
+      return nodeLabel(shape) + ": markerIndex[" + std::to_string(i) + "] = " + std::to_string(markerIndex[i]) +
+             " is not a marker: there are " + std::to_string(markers);
+  return "";
+}
+
 }  // namespace
 
 std::string indexedShapeProblem(const SoIndexedShape& shape, SoState* state) {
@@ -124,6 +136,8 @@ std::string indexedShapeProblem(const SoIndexedShape& shape, SoState* state) {
   if (problem.empty()) problem = boundDataProblem(shape, "normalIndex", shape.normalIndex, normals(shape, state));
   if (problem.empty())
     problem = boundDataProblem(shape, "textureCoordIndex", shape.textureCoordIndex, textureCoordinates(shape, state));
+  if (problem.empty() && shape.isOfType(SoIndexedMarkerSet::getClassTypeId()))
+    problem = markerProblem(shape, static_cast<const SoIndexedMarkerSet&>(shape).markerIndex);
   return problem;
 }
 
@@ -169,6 +183,8 @@ std::string countedShapeProblem(const SoNonIndexedShape& shape, SoState* state) 
       return label + ": numPoints = " + std::to_string(count) + " is neither a count nor the -1 that takes the rest";
     drawn = count == -1 ? 0 : count;
   }
+  if (problem.empty() && shape.isOfType(SoMarkerSet::getClassTypeId()))
+    problem = markerProblem(shape, static_cast<const SoMarkerSet&>(shape).markerIndex);
   if (!problem.empty()) return problem;
   if (start + drawn > points)
     return label + ": " + counts + " draw " + counted(drawn, "vertex", "vertices") + " from startIndex " + std::to_string(start) +

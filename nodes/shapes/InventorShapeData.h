@@ -2,7 +2,8 @@
 // Whether an Inventor shape reads only the data it has. Coin trusts the indices and counts
 // of its shapes: a materialIndex, normalIndex or textureCoordIndex entry past the materials,
 // normals or texture coordinates, or a FaceSet or TriangleStripSet drawing more vertices
-// than there are, each crashed figment-view (SIGSEGV).
+// than there are, a MarkerSet's markerIndex past Coin's markers, each crashed figment-view
+// (SIGSEGV).
 
 #include <string>
 
@@ -16,12 +17,13 @@ namespace figment::shapes {
 // them, as Coin draws it), is an entry of the data it indexes: coordIndex the coordinates;
 // materialIndex, normalIndex and textureCoordIndex their data where the binding indexes them
 // (PER_..._INDEXED), and coordIndex those data too where a per-vertex indexed binding has no
-// index of its own. Else one line naming node, field, entry and value.
+// index of its own; an IndexedMarkerSet's markerIndex Coin's markers. Else one line naming
+// node, field, entry and value.
 std::string indexedShapeProblem(const SoIndexedShape& shape, SoState* state);
 
 // "" when a FaceSet, LineSet, TriangleStripSet, QuadMesh or PointSet, drawn with `state`,
-// draws no more vertices from startIndex than the coordinates have; else one line naming
-// node, fields and counts.
+// draws no more vertices from startIndex than the coordinates have, and a MarkerSet's
+// markerIndex names Coin's markers; else one line naming node, fields and counts.
 std::string countedShapeProblem(const SoNonIndexedShape& shape, SoState* state);
 
 }  // namespace figment::shapes

@@ -170,3 +170,32 @@ TEST_F(FaceIndexCheckTest, ChecksVrmlShapesAgainstTheirOwnData) {
             "VRMLElevationGrid: height has 4 values for the 9000000 vertices of its 3000 x 3000 grid");
   EXPECT_EQ(check(shape("VRMLElevationGrid { xDimension 2 zDimension 2 height [ 0, 0, 0, 0 ] }")), "");
 }
+
+// Each crashed figment-view (SIGSEGV) before the check, but for the short knot vector, which
+// ended in std::bad_array_new_length.
+TEST_F(FaceIndexCheckTest, ChecksNurbsControlPointsAndKnots) {
+  const std::string knots = " uKnotVector [ 0, 0, 1, 1 ] vKnotVector [ 0, 0, 1, 1 ]";
+  EXPECT_EQ(check(onFourPoints("NurbsSurface { numUControlPoints 2 numVControlPoints 2" + knots + " }")), "");
+  EXPECT_EQ(check(onFourPoints("NurbsSurface { numUControlPoints 3 numVControlPoints 2"
+                               " uKnotVector [ 0, 0, 0.5, 1, 1 ] vKnotVector [ 0, 0, 1, 1 ] }")),
+            "NurbsSurface: numUControlPoints x numVControlPoints make 6 control points: the coordinates have 4 points");
+  EXPECT_EQ(check(onFourPoints("NurbsSurface { numUControlPoints 2 numVControlPoints 2"
+                               " uKnotVector [ 0, 0, 1, 1 ] vKnotVector [ 0 ] }")),
+            "NurbsSurface: vKnotVector has 1 knot for 2 control points: it needs the control points plus the order, at least 2");
+  EXPECT_EQ(check(onFourPoints("IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2, 2000000000 ]" +
+                               knots + " }")),
+            "IndexedNurbsSurface: coordIndex[3] = 2000000000 is not a vertex: the coordinates have 4 points");
+  EXPECT_EQ(check(onFourPoints("IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2 ]" +
+                               knots + " }")),
+            "IndexedNurbsSurface: coordIndex has 3 entries for numUControlPoints x numVControlPoints = 4 control points");
+  EXPECT_EQ(check(onFourPoints("NurbsCurve { numControlPoints 5 knotVector [ 0, 0, 0.3, 0.5, 0.7, 1, 1 ] }")),
+            "NurbsCurve: numControlPoints make 5 control points: the coordinates have 4 points");
+}
+
+TEST_F(FaceIndexCheckTest, ChecksMarkersAreCoinsMarkers) {
+  EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 0, 5, -1 ] }")), "");
+  EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 2000000000 ] }")),
+            "MarkerSet: markerIndex[0] = 2000000000 is not a marker: there are 90");  // crashed figment-view
+  EXPECT_EQ(check(onFourPoints("IndexedMarkerSet { coordIndex [ 0, 1 ] markerIndex [ 0, 90 ] }")),
+            "IndexedMarkerSet: markerIndex[1] = 90 is not a marker: there are 90");
+}

@@ -298,6 +298,17 @@ INSTANTIATE_TEST_SUITE_P(
                  " coordIndex [ 0, 1, 2, -1 ] color Color { color [ 1 0 0 ] } colorIndex [ 0, 2000000000, 0, -1 ] } }\n",
                  "",
                  {"scene.iv", "VRMLIndexedFaceSet: colorIndex[1] = 2000000000 is not a color: the VRMLColor has 1 color"}},
+        BadInput{"NurbsSurfacePastTheCoordinates",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] }\n"
+                 "  IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2, 2000000000 ]"
+                 " uKnotVector [ 0, 0, 1, 1 ] vKnotVector [ 0, 0, 1, 1 ] }\n}\n",
+                 "",
+                 {"scene.iv", "IndexedNurbsSurface: coordIndex[3] = 2000000000 is not a vertex: the coordinates have 4 points"}},
+        BadInput{"MarkerPastCoinsMarkers",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0 ] }\n"
+                 "  MarkerSet { markerIndex [ 2000000000 ] }\n}\n",
+                 "",
+                 {"scene.iv", "MarkerSet: markerIndex[0] = 2000000000 is not a marker"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
