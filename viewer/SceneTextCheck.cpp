@@ -1,5 +1,8 @@
 #include "viewer/SceneTextCheck.h"
 
+#include "viewer/SceneTextWatchers.h"
+#include "viewer/SceneTokens.h"
+
 #include <Inventor/SoInput.h>
 #include <Inventor/lists/SbStringList.h>
 
@@ -20,90 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The text's tokens as far as nesting and File names go: words, quoted strings, and the
-// braces and brackets that open and close a level. Outside strings '#' starts a comment
-// (the header line is one) and commas separate values as spaces do. A word is a view into
-// the text (a volume file is thousands of numbers; none is copied); a string is unescaped.
-struct Token {
-  enum Kind { kWord, kString, kOpen, kClose, kEnd };
-  Kind kind = kEnd;
-  std::string_view word;
-  std::string string;
-  int line = 1;
-  std::string_view text() const { return kind == kString ? std::string_view(string) : word; }
-};
-
-class Tokenizer {
- public:
-  explicit Tokenizer(const std::string& text) : text_(text) {}
-
-  Token next() {
-    skipSpaceAndComments();
-    Token token;
-    token.line = line_;
-    if (at_ >= text_.size()) return token;
-    const char c = text_[at_];
-    if (c == '{' || c == '[' || c == '}' || c == ']') {
-      token.word = std::string_view(text_).substr(at_++, 1);
-      token.kind = c == '{' || c == '[' ? Token::kOpen : Token::kClose;
-    } else if (c == '"') {
-      token.kind = Token::kString;
-      token.string = quoted();
-    } else {
-      token.kind = Token::kWord;
-      const size_t start = at_;
-      while (at_ < text_.size() && !separates(text_[at_])) ++at_;
-      token.word = std::string_view(text_).substr(start, at_ - start);
-    }
-    return token;
-  }
-
- private:
-  // Spaces and the characters that end a word: a table, as each character of an included
-  // volume file (tens of kilobytes of numbers) is looked at here. Not '\0': a NUL byte taken
-  // for a separator that skipSpaceAndComments() does not skip made next() return empty words
-  // forever (a scene with a NUL byte hung figment-view; found by tests/fuzz/fuzz_scene).
-  static bool separates(char c) {
-    static const std::array<bool, 256> table = [] {
-      std::array<bool, 256> t{};
-      for (int i = 1; i < 256; ++i) t[i] = std::isspace(i) || std::strchr("{}[]\",#", i) != nullptr;
-      return t;
-    }();
-    return table[static_cast<unsigned char>(c)];
-  }
-
-  void skipSpaceAndComments() {
-    while (at_ < text_.size()) {
-      const char c = text_[at_];
-      if (c == '#') {
-        while (at_ < text_.size() && text_[at_] != '\n') ++at_;
-      } else if (std::isspace(static_cast<unsigned char>(c)) || c == ',') {
-        line_ += c == '\n';
-        ++at_;
-      } else {
-        return;
-      }
-    }
-  }
-
-  // The string from its opening quote to its closing one; a backslash keeps the next
-  // character (\" is a quote in the string, not its end).
-  std::string quoted() {
-    std::string out;
-    for (++at_; at_ < text_.size() && text_[at_] != '"'; ++at_) {
-      if (text_[at_] == '\\' && at_ + 1 < text_.size()) ++at_;
-      line_ += text_[at_] == '\n';
-      out += text_[at_];
-    }
-    ++at_;
-    return out;
-  }
-
-  const std::string& text_;
-  size_t at_ = 0;
-  int line_ = 1;
-};
-
 // "" for text Coin reads as ASCII: a header line ("#Inventor V2.1 ascii", "#VRML V2.0 utf8")
 // that does not say binary; Coin checks the header itself. Anything else is refused, with what
 // it is and what to do, since its nesting and includes cannot be checked from its bytes: Coin
@@ -122,63 +41,6 @@ std::string notAsciiScene(const std::string& text) {
   return "";
 }
 
-// The DEF names whose node bodies are open at a point of the text. A USE of one of them
-// puts a node inside its own definition: Coin makes it its own child or field value (a
-// cycle), and when the inner node's read then fails, destroying it unrefs the outer node
-// Coin is still reading, which frees it under the reader (found by fuzz_scene: a comment
-// that swallowed a Mannequin's closing brace put `MannequinSkin { mannequin USE Model }`
-// inside `DEF Model Mannequin`).
-class OpenDefinitions {
- public:
-  struct Definition {
-    std::string name;
-    int line = 0;   // of its DEF
-    int depth = 0;  // of its body
-  };
-
-  // Takes every token in turn, with the nesting depth after it. Returns the open
-  // definition a USE names, if any.
-  const Definition* see(const Token& t, int depth) {
-    if (t.kind == Token::kClose)
-      while (!open_.empty() && open_.back().depth > depth) open_.pop_back();
-    const Expect expected = expect_;
-    expect_ = Expect::kNothing;
-    if (t.kind == Token::kOpen) {
-      if (expected == Expect::kBody) open_.push_back({pending_, pendingLine_, depth});
-      return nullptr;
-    }
-    if (t.kind != Token::kWord) return nullptr;
-    switch (expected) {
-      case Expect::kDefName:
-        pending_ = std::string(t.word), pendingLine_ = t.line, latest_[pending_] = t.line;
-        expect_ = Expect::kType;
-        return nullptr;
-      case Expect::kType:
-        expect_ = Expect::kBody;
-        return nullptr;
-      case Expect::kUseName: {
-        const auto latest = latest_.find(std::string(t.word));
-        if (latest == latest_.end()) return nullptr;
-        for (const Definition& d : open_)
-          if (d.name == t.word && d.line == latest->second) return &d;
-        return nullptr;
-      }
-      default:
-        if (t.word == "DEF") expect_ = Expect::kDefName;
-        if (t.word == "USE") expect_ = Expect::kUseName;
-        return nullptr;
-    }
-  }
-
- private:
-  enum class Expect { kNothing, kDefName, kType, kBody, kUseName };
-  Expect expect_ = Expect::kNothing;
-  std::string pending_;
-  int pendingLine_ = 0;
-  std::vector<Definition> open_;               // outermost first
-  std::map<std::string, int, std::less<>> latest_;  // each name's last DEF line: a USE means that one
-};
-
 // The field that names the file a node of `type` includes, "" for other nodes: File's name,
 // and an Inline's url, whose first entry Coin reads as a local file the way File does (a
 // scene inlining itself crashed figment-view, one inlining /dev/zero hung it).
@@ -187,46 +49,6 @@ std::string_view includeField(std::string_view type) {
   if (type == "VRMLInline" || type == "SoVRMLInline" || type == "Inline") return "url";
   return {};
 }
-
-// The first URL of each EXTERNPROTO (VRML97: `EXTERNPROTO Name [ interface ] "url"`, or a list
-// `[ "url", ... ]`), which Coin's fetch reads as a file the way it reads a File (a scene whose
-// EXTERNPROTO named itself crashed figment-view, one naming /dev/zero hung it).
-class ExternProtoUrls {
- public:
-  // Takes every token in turn, with the nesting depth after it. Returns the EXTERNPROTO's name
-  // when the token is its first URL, else null.
-  const std::string* see(const Token& t, int depth) {
-    const Stage stage = stage_;
-    stage_ = Stage::kNone;
-    const bool url = t.kind == Token::kString || t.kind == Token::kWord;
-    switch (stage) {
-      case Stage::kNone:
-        if (t.kind == Token::kWord && t.word == "EXTERNPROTO") stage_ = Stage::kName;
-        return nullptr;
-      case Stage::kName:
-        if (t.kind == Token::kWord) name_ = std::string(t.word), stage_ = Stage::kInterface;
-        return nullptr;
-      case Stage::kInterface:
-        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kInInterface, interfaceDepth_ = depth;
-        return nullptr;
-      case Stage::kInInterface:
-        stage_ = t.kind == Token::kClose && depth < interfaceDepth_ ? Stage::kUrl : Stage::kInInterface;
-        return nullptr;
-      case Stage::kUrl:
-        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kFirstOfList;
-        return url ? &name_ : nullptr;
-      case Stage::kFirstOfList:
-        return url ? &name_ : nullptr;
-    }
-    return nullptr;
-  }
-
- private:
-  enum class Stage { kNone, kName, kInterface, kInInterface, kUrl, kFirstOfList };
-  Stage stage_ = Stage::kNone;
-  std::string name_;
-  int interfaceDepth_ = 0;
-};
 
 class Checker {
  public:
@@ -276,6 +98,8 @@ class Checker {
     bool expectName = false, expectFirstOfList = false;
     OpenDefinitions definitions;
     ExternProtoUrls externProtos;
+    OpenPrototypes prototypes;
+    CounterSteps counterSteps;
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
       if ((expectName || expectFirstOfList) &&
           (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
@@ -297,6 +121,11 @@ class Checker {
         return fail(file, t.line,
                     "USE " + d->name + " inside the definition of " + d->name + " (DEF at line " +
                         std::to_string(d->line) + "): a node cannot hold itself");
+      if (const OpenPrototypes::Prototype* p = prototypes.see(t, depth))
+        return fail(file, t.line,
+                    p->name + " { } inside the definition of PROTO " + p->name + " (at line " +
+                        std::to_string(p->line) + "): a prototype cannot hold itself");
+      if (const std::string step = counterSteps.see(t, depth); !step.empty()) return fail(file, t.line, step);
       if (const std::string* proto = externProtos.see(t, depth)) {
         // Coin's fetch reads the file named before any "#ProtoName".
         const std::string url(t.text());

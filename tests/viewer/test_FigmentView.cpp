@@ -309,6 +309,13 @@ INSTANTIATE_TEST_SUITE_P(
                  "  MarkerSet { markerIndex [ 2000000000 ] }\n}\n",
                  "",
                  {"scene.iv", "MarkerSet: markerIndex[0] = 2000000000 is not a marker"}},
+        BadInput{"PrototypeInsideItself", "#VRML V2.0 utf8\nPROTO Loop [ ] { Group { children [ Loop { } ] } }\nLoop { }\n",
+                 "", {"scene.iv", "line 2", "Loop { } inside the definition of PROTO Loop"}},
+        BadInput{"TimeCounterStepOfZero",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Translation { translation = ComposeVec3f {"
+                 " x = TimeCounter { step 0 } .output } .vector }\n  Cube { }\n}\n",
+                 "",
+                 {"scene.iv", "line 3", "TimeCounter { step 0 } divides by zero"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",

@@ -235,3 +235,41 @@ TEST_F(SceneTextCheckTest, TakesAUseAfterItsDefinitionOrOfAnInnerRedefinition) {
   EXPECT_EQ(checkSceneText(write("text.iv", kHeader + "DEF A Separator {\n  Info { string \"USE A\" }  # USE A\n}\n")),
             "");
 }
+
+// Coin expands a prototype instantiated inside its own definition without end: each of these
+// crashed figment-view (SIGSEGV).
+TEST_F(SceneTextCheckTest, RefusesAPrototypeInstantiatedInsideItsOwnDefinition) {
+  const std::string vrml = "#VRML V2.0 utf8\n";
+  EXPECT_EQ(checkSceneText(write("body.wrl", vrml + "PROTO Loop [ ] {\n  Group { children [ Loop { } ] }\n}\nLoop { }\n")),
+            "line 3: Loop { } inside the definition of PROTO Loop (at line 2): a prototype cannot hold itself");
+  EXPECT_EQ(checkSceneText(write("default.wrl", vrml + "PROTO Loop [ field SFNode n Loop { } ] { Group { } }\n")),
+            "line 2: Loop { } inside the definition of PROTO Loop (at line 2): a prototype cannot hold itself");
+  EXPECT_EQ(checkSceneText(write("inner.wrl", vrml + "PROTO Outer [ ] {\n  PROTO Inner [ ] { Outer { } }\n"
+                                                     "  Group { children [ Inner { } ] }\n}\n")),
+            "line 3: Outer { } inside the definition of PROTO Outer (at line 2): a prototype cannot hold itself");
+  // One prototype in another's body, or used after its definition closed, is fine.
+  EXPECT_EQ(checkSceneText(write("ok.wrl", vrml + "PROTO Ball [ field SFFloat r 1 ] { Shape { geometry Sphere { radius IS r } } }\n"
+                                                  "PROTO Two [ ] { Group { children [ Ball { } Ball { r 2 } ] } }\n"
+                                                  "Two { } Ball { }\n")),
+            "");
+}
+
+// Coin divides by a TimeCounter's or Counter's step as the text is read: a step of 0 raised
+// SIGFPE in figment-view.
+TEST_F(SceneTextCheckTest, RefusesACounterStepOfZero) {
+  const auto counter = [this](const std::string& engine) {
+    return checkSceneText(write("counter.iv", "#Inventor V2.1 ascii\nTranslation {\n  translation = ComposeVec3f {\n"
+                                              "    x = " + engine + " .output } .vector\n}\n"));
+  };
+  EXPECT_EQ(counter("TimeCounter { step 0 }"),
+            "line 4: TimeCounter { step 0 } divides by zero: the step must not be 0 (or a multiple of 65536)");
+  EXPECT_EQ(counter("Counter { min 0 max 5 step 65536 reset 2 }"),
+            "line 4: Counter { step 65536 } divides by zero: the step must not be 0 (or a multiple of 65536)");
+  EXPECT_EQ(counter("DEF Ticks TimeCounter { step 0x0 }"),
+            "line 4: TimeCounter { step 0x0 } divides by zero: the step must not be 0 (or a multiple of 65536)");
+  EXPECT_EQ(counter("TimeCounter { step = Calculator { expression \"oa = 0\" } .oa }"),
+            "line 4: TimeCounter { step = ... } takes its step from a connection: Coin divides by the step, and a "
+            "step of 0 crashes it; give the step as a number");
+  EXPECT_EQ(counter("TimeCounter { min 0 max 10 step 2 }"), "");
+  EXPECT_EQ(counter("TimeCounter { }"), "");  // the default step is 1
+}

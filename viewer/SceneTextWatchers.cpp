@@ -1,0 +1,139 @@
+#include "viewer/SceneTextWatchers.h"
+
+#include <cerrno>
+#include <cstdlib>
+
+namespace figment::viewer {
+
+const OpenDefinitions::Definition* OpenDefinitions::see(const Token& t, int depth) {
+    if (t.kind == Token::kClose)
+      while (!open_.empty() && open_.back().depth > depth) open_.pop_back();
+    const Expect expected = expect_;
+    expect_ = Expect::kNothing;
+    if (t.kind == Token::kOpen) {
+      if (expected == Expect::kBody) open_.push_back({pending_, pendingLine_, depth});
+      return nullptr;
+    }
+    if (t.kind != Token::kWord) return nullptr;
+    switch (expected) {
+      case Expect::kDefName:
+        pending_ = std::string(t.word), pendingLine_ = t.line, latest_[pending_] = t.line;
+        expect_ = Expect::kType;
+        return nullptr;
+      case Expect::kType:
+        expect_ = Expect::kBody;
+        return nullptr;
+      case Expect::kUseName: {
+        const auto latest = latest_.find(std::string(t.word));
+        if (latest == latest_.end()) return nullptr;
+        for (const Definition& d : open_)
+          if (d.name == t.word && d.line == latest->second) return &d;
+        return nullptr;
+      }
+      default:
+        if (t.word == "DEF") expect_ = Expect::kDefName;
+        if (t.word == "USE") expect_ = Expect::kUseName;
+        return nullptr;
+    }
+  }
+
+const std::string* ExternProtoUrls::see(const Token& t, int depth) {
+    const Stage stage = stage_;
+    stage_ = Stage::kNone;
+    const bool url = t.kind == Token::kString || t.kind == Token::kWord;
+    switch (stage) {
+      case Stage::kNone:
+        if (t.kind == Token::kWord && t.word == "EXTERNPROTO") stage_ = Stage::kName;
+        return nullptr;
+      case Stage::kName:
+        if (t.kind == Token::kWord) name_ = std::string(t.word), stage_ = Stage::kInterface;
+        return nullptr;
+      case Stage::kInterface:
+        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kInInterface, interfaceDepth_ = depth;
+        return nullptr;
+      case Stage::kInInterface:
+        stage_ = t.kind == Token::kClose && depth < interfaceDepth_ ? Stage::kUrl : Stage::kInInterface;
+        return nullptr;
+      case Stage::kUrl:
+        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kFirstOfList;
+        return url ? &name_ : nullptr;
+      case Stage::kFirstOfList:
+        return url ? &name_ : nullptr;
+    }
+    return nullptr;
+  }
+
+const OpenPrototypes::Prototype* OpenPrototypes::see(const Token& t, int depth) {
+  const std::string_view before = lastWord_;
+  lastWord_ = t.kind == Token::kWord ? t.word : std::string_view();
+  if (t.kind == Token::kClose) {
+    while (!open_.empty() && open_.back().body && depth <= open_.back().depth) open_.pop_back();
+    return nullptr;
+  }
+  const Expect expected = expect_;
+  expect_ = Expect::kNothing;
+  if (expected == Expect::kName && t.kind == Token::kWord) {
+    open_.push_back({std::string(t.word), t.line, depth, false});
+    return nullptr;
+  }
+  if (t.kind == Token::kWord && t.word == "PROTO") expect_ = Expect::kName;
+  if (t.kind != Token::kOpen) return nullptr;
+  // A body opens with the first '{' one level below a PROTO whose interface has closed.
+  if (t.word == "{" && !open_.empty() && !open_.back().body && depth == open_.back().depth + 1 &&
+      before.empty()) {
+    open_.back().body = true;
+    return nullptr;
+  }
+  if (t.word == "{" && !before.empty())
+    for (const Prototype& p : open_)
+      if (p.name == before) return &p;
+  return nullptr;
+}
+
+namespace {
+
+bool isCounter(std::string_view word) {
+  return word == "TimeCounter" || word == "SoTimeCounter" || word == "Counter" || word == "SoCounter";
+}
+
+// Whether Coin reads `word` into a short as 0: "0", "0x0", "-0", or 65536 and its multiples,
+// which wrap to 0. A word that is not a whole number is Coin's read error to report.
+bool shortZero(std::string_view word) {
+  const std::string text(word);
+  char* end = nullptr;
+  errno = 0;
+  const long long value = std::strtoll(text.c_str(), &end, 0);
+  if (end == text.c_str() || *end != '\0') return false;
+  return errno == 0 && value % 65536 == 0;
+}
+
+}  // namespace
+
+std::string CounterSteps::see(const Token& t, int depth) {
+  const Expect expected = expect_;
+  expect_ = Expect::kNothing;
+  if (t.kind == Token::kClose && bodyDepth_ >= 0 && depth < bodyDepth_) bodyDepth_ = -1;
+  if (expected == Expect::kBody && t.kind == Token::kOpen && t.word == "{") {
+    type_ = pendingType_, bodyDepth_ = depth;
+    return "";
+  }
+  if (t.kind != Token::kWord) return "";
+  const std::string counter = std::string(type_) + " { step ";
+  if ((expected == Expect::kStepValue || expected == Expect::kConnection) && t.word == "=")
+    return counter + "= ... } takes its step from a connection: Coin divides by the step, and a step of 0 "
+           "crashes it; give the step as a number";
+  if (expected == Expect::kStepValue) {
+    if (shortZero(t.word))
+      return counter + std::string(t.word) + " } divides by zero: the step must not be 0 (or a multiple of 65536)";
+    expect_ = Expect::kConnection;  // `step 1 = X.output` connects it as well
+    return "";
+  }
+  if (bodyDepth_ >= 0 && depth == bodyDepth_ && t.word == "step") {
+    expect_ = Expect::kStepValue;
+    return "";
+  }
+  if (isCounter(t.word)) pendingType_ = t.word, expect_ = Expect::kBody;
+  return "";
+}
+
+}  // namespace figment::viewer
