@@ -28,7 +28,6 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 #include <Inventor/nodes/SoVertexShape.h>
 
-#include <unordered_set>
 #include <vector>
 
 namespace figment::viewer {
@@ -68,13 +67,6 @@ const std::vector<FieldRule>& fieldRules() {
 
 std::string typeName(SoType type) { return type.getName().getString(); }
 
-std::string describe(const SoNode& node) {
-  std::string text = typeName(node.getTypeId());
-  const SbName name = node.getName();
-  if (name.getLength() > 0) text += std::string(" '") + name.getString() + "'";
-  return text;
-}
-
 std::string article(const std::string& word) {
   return std::string("AEIOU").find(word.front()) == std::string::npos ? "a " + word : "an " + word;
 }
@@ -95,7 +87,7 @@ bool takes(const std::vector<SoType>& types, const SoNode* held) {
 // "" when every node `field` holds is of a type in `rule`, else the line naming the first.
 std::string mistyped(const SoNode& owner, const FieldRule& rule, const SoField& field) {
   const auto line = [&](const std::string& where, const SoNode& held) {
-    return describe(owner) + ": " + where + " holds " + article(describe(held)) + ", where " +
+    return describeNode(owner) + ": " + where + " holds " + article(describeNode(held)) + ", where " +
            belongs(rule.takes) + " belongs";
   };
   if (field.isOfType(SoSFNode::getClassTypeId())) {
@@ -122,16 +114,7 @@ std::string firstMistypedField(const SoNode& node) {
 }  // namespace
 
 std::string firstMistypedNodeField(const SoNode* root) {
-  std::unordered_set<const SoNode*> seen;
-  for (std::vector<const SoNode*> next{root}; !next.empty();) {
-    const SoNode* node = next.back();
-    next.pop_back();
-    if (!node || !seen.insert(node).second) continue;
-    if (std::string problem = firstMistypedField(*node); !problem.empty()) return problem;
-    const std::vector<SoNode*> links = linkedNodes(*node);
-    next.insert(next.end(), links.rbegin(), links.rend());  // scene order: the first link next
-  }
-  return "";
+  return firstProblemAmongLinkedNodes(root, firstMistypedField);
 }
 
 }  // namespace figment::viewer

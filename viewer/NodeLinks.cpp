@@ -10,6 +10,13 @@
 
 namespace figment::viewer {
 
+std::string describeNode(const SoNode& node) {
+  std::string text = node.getTypeId().getName().getString();
+  const SbName name = node.getName();
+  if (name.getLength() > 0) text += std::string(" '") + name.getString() + "'";
+  return text;
+}
+
 std::vector<SoField*> nodeFields(const SoNode& node) {
   SoFieldList fields;
   node.getFields(fields);
@@ -37,6 +44,20 @@ std::vector<SoNode*> linkedNodes(const SoNode& node) {
     }
   }
   return links;
+}
+
+std::string firstProblemAmongLinkedNodes(const SoNode* root,
+                                         const std::function<std::string(const SoNode&)>& visit) {
+  std::unordered_set<const SoNode*> seen;
+  for (std::vector<const SoNode*> next{root}; !next.empty();) {
+    const SoNode* node = next.back();
+    next.pop_back();
+    if (!node || !seen.insert(node).second) continue;
+    if (std::string problem = visit(*node); !problem.empty()) return problem;
+    const std::vector<SoNode*> links = linkedNodes(*node);
+    next.insert(next.end(), links.rbegin(), links.rend());  // the first link next
+  }
+  return "";
 }
 
 }  // namespace figment::viewer

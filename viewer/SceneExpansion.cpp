@@ -90,13 +90,6 @@ class Expander {
   const SoNode* culprit_ = nullptr;
 };
 
-std::string describe(const SoNode& node) {
-  std::string text = node.getTypeId().getName().getString();
-  const SbName name = node.getName();
-  if (name.getLength() > 0) text += std::string(" '") + name.getString() + "'";
-  return text;
-}
-
 }  // namespace
 
 SceneExpansion expandScene(const SoNode* root) { return Expander().run(root); }
@@ -128,7 +121,7 @@ void unrefWithoutRecursion(SoNode* root) {
 
 std::string sceneExpansionProblem(const SoNode* root) {
   const SceneExpansion expansion = expandScene(root);
-  const std::string where = expansion.culprit ? " (passed at " + describe(*expansion.culprit) + ")" : "";
+  const std::string where = expansion.culprit ? " (passed at " + describeNode(*expansion.culprit) + ")" : "";
   if (expansion.depth > kMaxGraphDepth)
     return "the scene graph is more than " + std::to_string(kMaxGraphDepth) +
            " nodes deep, counting through each USE" + where;

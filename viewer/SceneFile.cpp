@@ -1,6 +1,7 @@
 #include "viewer/SceneFile.h"
 
 #include "viewer/CoinMessages.h"
+#include "viewer/NodeFieldRanges.h"
 #include "viewer/NodeFieldTypes.h"
 #include "viewer/ReferenceHoldingInput.h"
 #include "viewer/SceneExpansion.h"
@@ -37,10 +38,12 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   if (root) root->ref();
   in.release();  // what the scene does not hold goes now, before its errors are taken
   // Before any action: one could traverse the graph for hours (SceneExpansion.h), or crash
-  // on a node held where another type belongs (NodeFieldTypes.h).
+  // on a node held where another type belongs (NodeFieldTypes.h) or an index past Coin's
+  // own arrays (NodeFieldRanges.h).
   std::string refused;
   if (root) refused = sceneExpansionProblem(root);
   if (root && refused.empty()) refused = firstMistypedNodeField(root);
+  if (root && refused.empty()) refused = firstFieldOutOfRange(root);
   if (!refused.empty()) {
     unrefWithoutRecursion(root);
     root = nullptr;

@@ -316,6 +316,11 @@ INSTANTIATE_TEST_SUITE_P(
                  " x = TimeCounter { step 0 } .output } .vector }\n  Cube { }\n}\n",
                  "",
                  {"scene.iv", "line 3", "TimeCounter { step 0 } divides by zero"}},
+        BadInput{"TextureUnitBelowZero",  // corrupted the heap (double free)
+                 "#Inventor V2.1 ascii\nSeparator {\n  TextureUnit { unit -5 }\n  Texture2 { image 1 1 3 0xff0000 }\n"
+                 "  Cube { }\n}\n",
+                 "",
+                 {"scene.iv", "TextureUnit: unit = -5 is not a texture unit: 0 to 31"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
