@@ -100,6 +100,7 @@ class Checker {
     ExternProtoUrls externProtos;
     OpenPrototypes prototypes;
     CounterSteps counterSteps;
+    ImageSizes imageSizes(text.size());
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
       if ((expectName || expectFirstOfList) &&
           (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
@@ -126,6 +127,7 @@ class Checker {
                     p->name + " { } inside the definition of PROTO " + p->name + " (at line " +
                         std::to_string(p->line) + "): a prototype cannot hold itself");
       if (const std::string step = counterSteps.see(t, depth); !step.empty()) return fail(file, t.line, step);
+      if (const std::string image = imageSizes.see(t); !image.empty()) return fail(file, t.line, image);
       if (const std::string* proto = externProtos.see(t, depth)) {
         // Coin's fetch reads the file named before any "#ProtoName".
         const std::string url(t.text());

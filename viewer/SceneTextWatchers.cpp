@@ -1,6 +1,7 @@
 #include "viewer/SceneTextWatchers.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cstdlib>
 
 namespace figment::viewer {
@@ -134,6 +135,40 @@ std::string CounterSteps::see(const Token& t, int depth) {
   }
   if (isCounter(t.word)) pendingType_ = t.word, expect_ = Expect::kBody;
   return "";
+}
+
+std::string ImageSizes::see(const Token& t) {
+  if (wanted_ == 0) {
+    if (t.kind != Token::kWord) return "";
+    if (t.word == "images") field_ = t.word, wanted_ = 4;  // Texture3's SFImage3
+    if (t.word == "image" || (t.word.size() == 9 && t.word.substr(0, 5) == "image" &&
+                              (t.word.substr(5, 3) == "Pos" || t.word.substr(5, 3) == "Neg")))
+      field_ = t.word, wanted_ = 3;  // Texture2, Image, BumpMap, VRML PixelTexture; TextureCubeMap's imagePosX...
+    dimensions_.clear();
+    return "";
+  }
+  const std::string text(t.word);
+  char* end = nullptr;
+  const long long value = t.kind == Token::kWord ? std::strtoll(text.c_str(), &end, 0) : 0;
+  if (t.kind != Token::kWord || end == text.c_str() || *end != '\0') {
+    wanted_ = 0;  // not an image size after all, or Coin's read error to report
+    return "";
+  }
+  dimensions_.push_back(value);
+  if (dimensions_.size() < wanted_) return "";
+  wanted_ = 0;
+  long long pixels = 1;
+  std::string size;
+  for (size_t i = 0; i + 1 < dimensions_.size(); ++i) {
+    const auto read = static_cast<short>(dimensions_[i]);  // as Coin reads it, into a short
+    if (read <= 0) return "";  // Coin refuses or reads an empty image
+    pixels *= read;
+    size += (i ? " x " : "") + std::to_string(read);
+  }
+  const size_t left = textSize_ - std::min(textSize_, t.end);
+  if (static_cast<unsigned long long>(pixels) <= left / 2) return "";
+  return std::string(field_) + " " + size + " declares " + std::to_string(pixels) + " pixels, more than the " +
+         std::to_string(left) + " bytes left in the file hold (a number each)";
 }
 
 }  // namespace figment::viewer

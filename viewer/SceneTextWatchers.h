@@ -97,4 +97,24 @@ class CounterSteps {
   int bodyDepth_ = -1;            // its depth; -1: none open
 };
 
+// The size each inline image declares (SFImage: `image 30000 30000 4 ...`, width, height and
+// components; SFImage3: `images` with a depth too). Coin allocates the pixels before it reads
+// them: 30000 x 30000 x 4 overflowed its size and threw std::bad_alloc (an out-of-memory
+// report under AddressSanitizer). Each pixel is one number in the text, so a size the rest of
+// the file cannot hold is refused.
+class ImageSizes {
+ public:
+  explicit ImageSizes(size_t textSize) : textSize_(textSize) {}
+
+  // Takes every token in turn. Returns a problem once an image's size is complete, else "".
+  std::string see(const Token& t);
+
+ private:
+  size_t textSize_;
+  std::string_view field_;    // the image field whose size is being read
+  std::vector<long long> dimensions_;
+  size_t wanted_ = 0;         // numbers in its size: 3, or 4 for SFImage3
+};
+
+
 }  // namespace figment::viewer

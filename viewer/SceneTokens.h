@@ -19,6 +19,7 @@ struct Token {
   std::string_view word;
   std::string string;
   int line = 1;
+  size_t end = 0;  // where in the text the token ends
   std::string_view text() const { return kind == kString ? std::string_view(string) : word; }
 };
 
@@ -44,6 +45,7 @@ class Tokenizer {
       while (at_ < text_.size() && !separates(text_[at_])) ++at_;
       token.word = std::string_view(text_).substr(start, at_ - start);
     }
+    token.end = at_;
     return token;
   }
 

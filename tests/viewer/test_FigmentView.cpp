@@ -321,6 +321,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "  Cube { }\n}\n",
                  "",
                  {"scene.iv", "TextureUnit: unit = -5 is not a texture unit: 0 to 31"}},
+        BadInput{"ImageLargerThanTheFile", "#Inventor V2.1 ascii\nSeparator {\n  Texture2 { image 30000 30000 4 0 }\n}\n", "",
+                 {"scene.iv", "line 3", "image 30000 x 30000 declares 900000000 pixels"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",

@@ -273,3 +273,19 @@ TEST_F(SceneTextCheckTest, RefusesACounterStepOfZero) {
   EXPECT_EQ(counter("TimeCounter { min 0 max 10 step 2 }"), "");
   EXPECT_EQ(counter("TimeCounter { }"), "");  // the default step is 1
 }
+
+// Coin allocates an inline image's pixels before reading them: 30000 x 30000 x 4 overflowed
+// its size and threw std::bad_alloc (an out-of-memory report under AddressSanitizer).
+TEST_F(SceneTextCheckTest, RefusesAnImageLargerThanTheFileHolds) {
+  const auto scene = [this](const std::string& body) {
+    return checkSceneText(write("image.iv", "#Inventor V2.1 ascii\nSeparator {\n  " + body + "\n  Cube { }\n}\n"));
+  };
+  EXPECT_EQ(scene("Texture2 { image 30000 30000 4 0 }"),
+            "line 3: image 30000 x 30000 declares 900000000 pixels, more than the 18 bytes left in the file hold "
+            "(a number each)");
+  EXPECT_EQ(scene("Texture3 { images 100 100 100 3 0xff0000 }"),
+            "line 3: images 100 x 100 x 100 declares 1000000 pixels, more than the 25 bytes left in the file hold "
+            "(a number each)");
+  EXPECT_EQ(scene("Texture2 { image 2 1 3 0xff0000 0x00ff00 }"), "");
+  EXPECT_EQ(scene("Texture2 { image 0 0 0 }"), "");  // empty
+}
