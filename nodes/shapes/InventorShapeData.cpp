@@ -58,7 +58,14 @@ struct BoundData {
 
 std::string boundDataProblem(const SoIndexedShape& shape, const char* field, const SoMFInt32& index,
                              const BoundData& data) {
-  if (!data.byIndex || data.indexed.size == 0) return "";  // none: Coin draws without (or makes normals)
+  if (data.indexed.size == 0) return "";  // none: Coin draws without (or makes normals)
+  // VRML 1.0 means PER_VERTEX per vertex of the shape: Coin reads such data through coordIndex.
+  if (shape.getNodeType() == SoNode::VRML1 && data.binding == SoMaterialBindingElement::PER_VERTEX) {
+    Indexed viaCoordIndex = data.indexed;
+    viaCoordIndex.has += ", and coordIndex indexes them as a VRML 1.0 binding PER_VERTEX does";
+    return indexProblem(shape, "coordIndex", shape.coordIndex, viaCoordIndex);
+  }
+  if (!data.byIndex) return "";
   if (given(index)) {
     std::string problem = indexProblem(shape, field, index, data.indexed);
     // Read along the vertices or the faces, however long the index is.

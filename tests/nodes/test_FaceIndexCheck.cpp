@@ -199,3 +199,15 @@ TEST_F(FaceIndexCheckTest, ChecksMarkersAreCoinsMarkers) {
   EXPECT_EQ(check(onFourPoints("IndexedMarkerSet { coordIndex [ 0, 1 ] markerIndex [ 0, 90 ] }")),
             "IndexedMarkerSet: markerIndex[1] = 90 is not a marker: there are 90");
 }
+
+// In VRML 1.0, PER_VERTEX means per vertex of the shape: Coin reads such materials through
+// coordIndex (a 20,000-point face set read 80 KB past its one material before).
+TEST_F(FaceIndexCheckTest, ReadsAVrml1PerVertexBindingThroughCoordIndex) {
+  const std::string scene = "#VRML V1.0 ascii\nSeparator {\n  MaterialBinding { value PER_VERTEX }\n"
+                            "  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
+                            "  Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n  IndexedFaceSet { coordIndex [ ";
+  EXPECT_EQ(check(scene + "0, 1, 1, -1 ] }\n}\n"), "");
+  EXPECT_EQ(check(scene + "0, 1, 3, -1 ] }\n}\n"),
+            "IndexedFaceSet: coordIndex[2] = 3 is not a material: the shape has 2 materials, and coordIndex indexes "
+            "them as a VRML 1.0 binding PER_VERTEX does");
+}
