@@ -1,6 +1,7 @@
 #include "nodes/shapes/InventorShapeData.h"
 
 #include "nodes/shapes/IndexProblem.h"
+#include "nodes/shapes/ShapeParts.h"
 
 #include <Inventor/elements/SoCoordinateElement.h>
 #include <Inventor/elements/SoLazyElement.h>
@@ -39,6 +40,16 @@ const SoVertexProperty* vertexProperty(const SoVertexShape& shape) {
 int coordinateCount(const SoVertexShape& shape, SoState* state) {
   const SoVertexProperty* own = vertexProperty(shape);
   return own && own->vertex.getNum() > 0 ? own->vertex.getNum() : SoCoordinateElement::getInstance(state)->getNum();
+}
+
+// PER_VERTEX for PER_VERTEX_INDEXED, and so on; OVERALL stays.
+int plainBinding(int binding) {
+  switch (binding) {
+    case SoMaterialBindingElement::PER_PART_INDEXED: return SoMaterialBindingElement::PER_PART;
+    case SoMaterialBindingElement::PER_FACE_INDEXED: return SoMaterialBindingElement::PER_FACE;
+    case SoMaterialBindingElement::PER_VERTEX_INDEXED: return SoMaterialBindingElement::PER_VERTEX;
+    default: return binding;
+  }
 }
 
 // Material and normal bindings share their values (SoMaterialBindingElement's).
@@ -115,12 +126,45 @@ BoundData textureCoordinates(const SoVertexShape& shape, SoState* state) {
     size = own->texCoord.getNum();
   else if (SoTextureCoordinateElement::getType(state) == SoTextureCoordinateElement::EXPLICIT)
     size = SoTextureCoordinateElement::getInstance(state)->getNum();
-  const bool indexed = textured && SoTextureCoordinateBindingElement::get(state) ==
-                                       SoTextureCoordinateBindingElement::PER_VERTEX_INDEXED;
+  const bool indexed = SoTextureCoordinateBindingElement::get(state) ==
+                       SoTextureCoordinateBindingElement::PER_VERTEX_INDEXED;
+  // In material-binding terms; without a texture, none are read.
+  const int binding = !textured ? int(SoMaterialBindingElement::OVERALL)
+                      : indexed ? int(SoMaterialBindingElement::PER_VERTEX_INDEXED)
+                                : int(SoMaterialBindingElement::PER_VERTEX);
   return {{size, "texture coordinate",
            (owned ? "the VertexProperty has " : "the shape has ") + counted(size, "texture coordinate")},
-          indexed ? int(SoMaterialBindingElement::PER_VERTEX_INDEXED) : int(SoMaterialBindingElement::OVERALL),
-          indexed, indexed};
+          binding, textured && indexed, textured && indexed};
+}
+
+// Data bound PER_VERTEX, PER_PART or PER_FACE, taken one after another (as are PER_PART_INDEXED
+// and PER_FACE_INDEXED data without an index of their own): one for each vertex, part or face.
+std::string runningDataProblem(const SoVertexShape& shape, const BoundData& data, const ShapeParts& parts,
+                               bool ownIndexGiven) {
+  if (data.indexed.size == 0) return "";
+  std::int64_t needed = 0;
+  std::string what, binding;
+  switch (data.binding) {
+    case SoMaterialBindingElement::PER_VERTEX:
+      needed = parts.vertices, what = counted(parts.vertices, "vertex", "vertices"), binding = "PER_VERTEX";
+      break;
+    case SoMaterialBindingElement::PER_PART_INDEXED:
+      if (ownIndexGiven) return "";
+      [[fallthrough]];
+    case SoMaterialBindingElement::PER_PART:
+      needed = parts.parts, what = counted(parts.parts, "part"), binding = "PER_PART";
+      break;
+    case SoMaterialBindingElement::PER_FACE_INDEXED:
+      if (ownIndexGiven) return "";
+      [[fallthrough]];
+    case SoMaterialBindingElement::PER_FACE:
+      needed = parts.faces, what = counted(parts.faces, "face"), binding = "PER_FACE";
+      break;
+    default:
+      return "";
+  }
+  if (needed <= data.indexed.size) return "";
+  return nodeLabel(shape) + ": " + data.indexed.has + " for its " + what + " (bound " + binding + ", one each)";
 }
 
 // Markers are Coin's own and those a program adds; a negative index draws none.
@@ -143,6 +187,13 @@ std::string indexedShapeProblem(const SoIndexedShape& shape, SoState* state) {
   if (problem.empty()) problem = boundDataProblem(shape, "normalIndex", shape.normalIndex, normals(shape, state));
   if (problem.empty())
     problem = boundDataProblem(shape, "textureCoordIndex", shape.textureCoordIndex, textureCoordinates(shape, state));
+  if (problem.empty() && shape.getNodeType() != SoNode::VRML1) {
+    const ShapeParts parts = indexedShapeParts(shape);
+    problem = runningDataProblem(shape, materials(shape, state), parts, given(shape.materialIndex));
+    if (problem.empty()) problem = runningDataProblem(shape, normals(shape, state), parts, given(shape.normalIndex));
+    if (problem.empty())
+      problem = runningDataProblem(shape, textureCoordinates(shape, state), parts, given(shape.textureCoordIndex));
+  }
   if (problem.empty() && shape.isOfType(SoIndexedMarkerSet::getClassTypeId()))
     problem = markerProblem(shape, static_cast<const SoIndexedMarkerSet&>(shape).markerIndex);
   return problem;
@@ -196,6 +247,12 @@ std::string countedShapeProblem(const SoNonIndexedShape& shape, SoState* state) 
   if (start + drawn > points)
     return label + ": " + counts + " draw " + counted(drawn, "vertex", "vertices") + " from startIndex " + std::to_string(start) +
            ": the coordinates have " + counted(points, "point");
+  // A shape without indices takes an indexed binding as the plain one (Coin's nonIndexed()).
+  const ShapeParts parts = countedShapeParts(shape, points);
+  for (BoundData data : {materials(shape, state), normals(shape, state), textureCoordinates(shape, state)}) {
+    data.binding = plainBinding(data.binding);
+    if (std::string running = runningDataProblem(shape, data, parts, false); !running.empty()) return running;
+  }
   return "";
 }
 

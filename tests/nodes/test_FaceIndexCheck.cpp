@@ -211,3 +211,30 @@ TEST_F(FaceIndexCheckTest, ReadsAVrml1PerVertexBindingThroughCoordIndex) {
             "IndexedFaceSet: coordIndex[2] = 3 is not a material: the shape has 2 materials, and coordIndex indexes "
             "them as a VRML 1.0 binding PER_VERTEX does");
 }
+
+// Data bound per vertex, part or face are taken one after another: Coin read past one
+// material for a 20,000-vertex FaceSet bound PER_VERTEX without a word before.
+TEST_F(FaceIndexCheckTest, CountsDataTakenOneAfterAnotherAgainstWhatTheyAreFor) {
+  const std::string oneMaterial = "Material { diffuseColor [ 1 0 0 ] }\n  ";
+  EXPECT_EQ(check(onFourPoints(oneMaterial + "MaterialBinding { value PER_VERTEX }\n  FaceSet { numVertices [ 4 ] }")),
+            "FaceSet: the shape has 1 material for its 4 vertices (bound PER_VERTEX, one each)");
+  EXPECT_EQ(check(onFourPoints(oneMaterial + "MaterialBinding { value PER_FACE }\n  IndexedFaceSet { " + kTwoTriangles +
+                               " }")),
+            "IndexedFaceSet: the shape has 1 material for its 2 faces (bound PER_FACE, one each)");
+  // A line set's parts are its segments; PER_FACE_INDEXED without an index counts faces.
+  EXPECT_EQ(check(onFourPoints("Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n  MaterialBinding { value PER_PART }\n"
+                               "  IndexedLineSet { coordIndex [ 0, 1, 2, 3 ] }")),
+            "IndexedLineSet: the shape has 2 materials for its 3 parts (bound PER_PART, one each)");
+  EXPECT_EQ(check(onFourPoints(oneMaterial + "MaterialBinding { value PER_FACE_INDEXED }\n  IndexedFaceSet { " +
+                               kTwoTriangles + " }")),
+            "IndexedFaceSet: the shape has 1 material for its 2 faces (bound PER_FACE, one each)");
+  // A shape without indices takes an indexed binding as the plain one.
+  EXPECT_EQ(check(onFourPoints("Normal { vector [ 0 0 1 ] }\n  LineSet { numVertices [ 4 ] }")),
+            "LineSet: the shape has 1 normal for its 4 vertices (bound PER_VERTEX, one each)");
+  EXPECT_EQ(check(onFourPoints("Texture2 { image 1 1 3 0xff0000 } TextureCoordinate2 { point [ 0 0 ] }\n  PointSet { }")),
+            "PointSet: the shape has 1 texture coordinate for its 4 vertices (bound PER_VERTEX, one each)");
+  // Enough of each.
+  EXPECT_EQ(check(onFourPoints("Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n  MaterialBinding { value PER_FACE }\n"
+                               "  FaceSet { numVertices [ 3 ] } TriangleStripSet { numVertices [ 4 ] }")),
+            "");
+}
