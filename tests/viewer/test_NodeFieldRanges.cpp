@@ -2,10 +2,8 @@
 // corrupted the heap or crashed figment-view, one of 2147483647 ran it out of memory.
 
 #include "viewer/NodeFieldRanges.h"
+#include "support/SceneTestSupport.h"
 
-#include <Inventor/SoDB.h>
-#include <Inventor/SoInput.h>
-#include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
 
@@ -16,16 +14,9 @@ using namespace figment::viewer;
 namespace {
 
 std::string problemIn(const std::string& body) {
-  SoDB::init();
-  const std::string text = "#Inventor V2.1 ascii\n" + body + "\n";
-  SoInput in;
-  in.setBuffer(text.data(), text.size());
-  SoSeparator* root = SoDB::readAll(&in);
-  if (!root) return "unreadable: " + body;
-  root->ref();
-  std::string problem = firstFieldOutOfRange(root);
-  root->unref();
-  return problem;
+  figment::test::initCoin();
+  const figment::test::SceneRoot root = figment::test::readString("#Inventor V2.1 ascii\n" + body + "\n");
+  return root ? firstFieldOutOfRange(root.get()) : "unreadable: " + body;
 }
 
 }  // namespace

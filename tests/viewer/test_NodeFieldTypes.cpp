@@ -4,12 +4,10 @@
 
 #include "viewer/NodeFieldTypes.h"
 #include "viewer/SceneExpansion.h"
+#include "support/SceneTestSupport.h"
 
-#include <Inventor/SoDB.h>
-#include <Inventor/SoInput.h>
 #include <Inventor/VRMLnodes/SoVRMLMaterial.h>
 #include <Inventor/VRMLnodes/SoVRMLText.h>
-#include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
 
@@ -21,16 +19,9 @@ namespace {
 
 // The problem firstMistypedNodeField finds in the Inventor scene `body` (header added).
 std::string problemIn(const std::string& body) {
-  SoDB::init();
-  const std::string text = "#Inventor V2.1 ascii\n" + body + "\n";
-  SoInput in;
-  in.setBuffer(text.data(), text.size());
-  SoSeparator* root = SoDB::readAll(&in);
-  if (!root) return "unreadable: " + body;
-  root->ref();
-  std::string problem = firstMistypedNodeField(root);
-  root->unref();
-  return problem;
+  figment::test::initCoin();
+  const figment::test::SceneRoot root = figment::test::readString("#Inventor V2.1 ascii\n" + body + "\n");
+  return root ? firstMistypedNodeField(root.get()) : "unreadable: " + body;
 }
 
 const std::string kCoordinates = "VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] }";
