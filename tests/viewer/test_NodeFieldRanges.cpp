@@ -4,7 +4,6 @@
 #include "viewer/NodeFieldRanges.h"
 #include "support/SceneTestSupport.h"
 
-
 #include <gtest/gtest.h>
 
 #include <string>
