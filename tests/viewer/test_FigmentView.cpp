@@ -323,6 +323,11 @@ INSTANTIATE_TEST_SUITE_P(
                  {"scene.iv", "TextureUnit: unit = -5 is not a texture unit: 0 to 31"}},
         BadInput{"ImageLargerThanTheFile", "#Inventor V2.1 ascii\nSeparator {\n  Texture2 { image 30000 30000 4 0 }\n}\n", "",
                  {"scene.iv", "line 3", "image 30000 x 30000 declares 900000000 pixels"}},
+        BadInput{"EmptyArrayOfFortyFiveMillion",  // found by fuzz_scene: 19 s to bound the scene
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements2 30000 numElements2 15000"
+                 " numElements3 3000 }\n}\n",
+                 "",
+                 {"scene.iv", "more than 20000 nodes", "(passed at Array 'Grid')"}},
         BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
         BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
