@@ -96,11 +96,8 @@ class Checker {
     std::string_view pendingType;     // an including node's type, its body to open next
     int depth = 0;
     bool expectName = false, expectFirstOfList = false;
-    OpenDefinitions definitions;
+    ReaderHazards hazards(text.size());
     ExternProtoUrls externProtos;
-    OpenPrototypes prototypes;
-    CounterSteps counterSteps;
-    ImageSizes imageSizes(text.size());
     for (Token t = tokens.next(); t.kind != Token::kEnd; t = tokens.next()) {
       if ((expectName || expectFirstOfList) &&
           (t.kind == Token::kString || (t.kind == Token::kWord && t.word != "="))) {
@@ -118,16 +115,7 @@ class Checker {
         if (!includers.empty() && includers.back().depth == depth) includers.pop_back();
         depth = std::max(depth - 1, 0);  // an unmatched close is Coin's syntax error to report
       }
-      if (const OpenDefinitions::Definition* d = definitions.see(t, depth))
-        return fail(file, t.line,
-                    "USE " + d->name + " inside the definition of " + d->name + " (DEF at line " +
-                        std::to_string(d->line) + "): a node cannot hold itself");
-      if (const OpenPrototypes::Prototype* p = prototypes.see(t, depth))
-        return fail(file, t.line,
-                    p->name + " { } inside the definition of PROTO " + p->name + " (at line " +
-                        std::to_string(p->line) + "): a prototype cannot hold itself");
-      if (const std::string step = counterSteps.see(t, depth); !step.empty()) return fail(file, t.line, step);
-      if (const std::string image = imageSizes.see(t); !image.empty()) return fail(file, t.line, image);
+      if (const std::string hazard = hazards.see(t, depth); !hazard.empty()) return fail(file, t.line, hazard);
       if (const std::string* proto = externProtos.see(t, depth)) {
         // Coin's fetch reads the file named before any "#ProtoName".
         const std::string url(t.text());

@@ -171,4 +171,15 @@ std::string ImageSizes::see(const Token& t) {
          std::to_string(left) + " bytes left in the file hold (a number each)";
 }
 
+std::string ReaderHazards::see(const Token& t, int depth) {
+  if (const OpenDefinitions::Definition* d = definitions_.see(t, depth))
+    return "USE " + d->name + " inside the definition of " + d->name + " (DEF at line " + std::to_string(d->line) +
+           "): a node cannot hold itself";
+  if (const OpenPrototypes::Prototype* p = prototypes_.see(t, depth))
+    return p->name + " { } inside the definition of PROTO " + p->name + " (at line " + std::to_string(p->line) +
+           "): a prototype cannot hold itself";
+  if (std::string step = counterSteps_.see(t, depth); !step.empty()) return step;
+  return images_.see(t);
+}
+
 }  // namespace figment::viewer

@@ -116,5 +116,22 @@ class ImageSizes {
   size_t wanted_ = 0;         // numbers in its size: 3, or 4 for SFImage3
 };
 
+// The watchers whose finds are refusals in themselves (an EXTERNPROTO's URL is an include
+// instead): a node or prototype inside its own definition, a counter step of zero, an
+// image larger than the file.
+class ReaderHazards {
+ public:
+  explicit ReaderHazards(size_t textSize) : images_(textSize) {}
+
+  // Takes every token in turn, with the nesting depth after it. Returns the first hazard
+  // this token completes, as one line without its line number, else "".
+  std::string see(const Token& t, int depth);
+
+ private:
+  OpenDefinitions definitions_;
+  OpenPrototypes prototypes_;
+  CounterSteps counterSteps_;
+  ImageSizes images_;
+};
 
 }  // namespace figment::viewer
