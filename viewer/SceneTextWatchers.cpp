@@ -1,8 +1,10 @@
 #include "viewer/SceneTextWatchers.h"
 
-#include <cerrno>
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <cstdlib>
+#include <optional>
 
 namespace figment::viewer {
 
@@ -97,15 +99,30 @@ bool isCounter(std::string_view word) {
   return word == "TimeCounter" || word == "SoTimeCounter" || word == "Counter" || word == "SoCounter";
 }
 
-// Whether Coin reads `word` into a short as 0: "0", "0x0", "-0", or 65536 and its multiples,
-// which wrap to 0. A word that is not a whole number is Coin's read error to report.
-bool shortZero(std::string_view word) {
+// The whole number Coin reads from the start of `word`, and the rest of the word. Coin reads
+// an integer's characters while they last and leaves the rest to its next read: `step 0.5`,
+// `step 08` and `step 0abc` all set 0 (and raised SIGFPE; found by fuzz_scene). None where
+// the word does not start with one ("0x" alone included): Coin's read error to report.
+struct LeadingNumber {
+  long long value;
+  std::string_view rest;
+};
+
+std::optional<LeadingNumber> leadingWholeNumber(std::string_view word) {
   const std::string text(word);
   char* end = nullptr;
   errno = 0;
   const long long value = std::strtoll(text.c_str(), &end, 0);
-  if (end == text.c_str() || *end != '\0') return false;
-  return errno == 0 && value % 65536 == 0;
+  if (end == text.c_str() || errno != 0 || *end == 'x' || *end == 'X') return std::nullopt;
+  return LeadingNumber{value, word.substr(static_cast<size_t>(end - text.c_str()))};
+}
+
+// Whether `word` begins with the field name `name`: Coin's names end at the first character
+// that is not a letter, digit or '_' (`step=X.output` is the field step, connected).
+bool startsWithFieldName(std::string_view word, std::string_view name) {
+  if (!word.starts_with(name)) return false;
+  return word.size() == name.size() ||
+         !(std::isalnum(static_cast<unsigned char>(word[name.size()])) || word[name.size()] == '_');
 }
 
 }  // namespace
@@ -119,22 +136,35 @@ std::string CounterSteps::see(const Token& t, int depth) {
     return "";
   }
   if (t.kind != Token::kWord) return "";
-  const std::string counter = std::string(type_) + " { step ";
-  if ((expected == Expect::kStepValue || expected == Expect::kConnection) && t.word == "=")
-    return counter + "= ... } takes its step from a connection: Coin divides by the step, and a step of 0 "
-           "crashes it; give the step as a number";
-  if (expected == Expect::kStepValue) {
-    if (shortZero(t.word))
-      return counter + std::string(t.word) + " } divides by zero: the step must not be 0 (or a multiple of 65536)";
-    expect_ = Expect::kConnection;  // `step 1 = X.output` connects it as well
-    return "";
-  }
-  if (bodyDepth_ >= 0 && depth == bodyDepth_ && t.word == "step") {
-    expect_ = Expect::kStepValue;
-    return "";
+  if (expected == Expect::kConnection && t.word.starts_with('=')) return connectedStep();
+  if (expected == Expect::kStepValue) return stepValue(t.word);
+  if (bodyDepth_ >= 0 && depth == bodyDepth_ && startsWithFieldName(t.word, "step")) {
+    if (t.word.size() == 4) {
+      expect_ = Expect::kStepValue;
+      return "";
+    }
+    return stepValue(t.word.substr(4));  // `step=X.output`
   }
   if (isCounter(t.word)) pendingType_ = t.word, expect_ = Expect::kBody;
   return "";
+}
+
+std::string CounterSteps::stepValue(std::string_view word) {
+  if (word.starts_with('=')) return connectedStep();
+  const auto number = leadingWholeNumber(word);
+  if (!number) return "";  // Coin's read error
+  if (number->value % 65536 == 0)  // a short holds 65536 as 0
+    return std::string(type_) + " { step " + std::string(word) + " } divides by zero: " +
+           (number->rest.empty() ? "" : "Coin reads it as " + std::to_string(number->value) + "; ") +
+           "the step must not be 0 (or a multiple of 65536)";
+  if (number->rest.starts_with('=')) return connectedStep();  // `step 1=X.output`
+  if (number->rest.empty()) expect_ = Expect::kConnection;    // `step 1 = X.output` connects it as well
+  return "";
+}
+
+std::string CounterSteps::connectedStep() const {
+  return std::string(type_) + " { step = ... } takes its step from a connection: Coin divides by the step, and a "
+         "step of 0 crashes it; give the step as a number";
 }
 
 std::string ImageSizes::see(const Token& t) {
@@ -147,14 +177,14 @@ std::string ImageSizes::see(const Token& t) {
     dimensions_.clear();
     return "";
   }
-  const std::string text(t.word);
-  char* end = nullptr;
-  const long long value = t.kind == Token::kWord ? std::strtoll(text.c_str(), &end, 0) : 0;
-  if (t.kind != Token::kWord || end == text.c_str() || *end != '\0') {
+  // A number Coin reads from the start of a longer word (`4.5`) counts as that number: it
+  // allocates the image before its read of the rest fails.
+  const auto number = t.kind == Token::kWord ? leadingWholeNumber(t.word) : std::nullopt;
+  if (!number) {
     wanted_ = 0;  // not an image size after all, or Coin's read error to report
     return "";
   }
-  dimensions_.push_back(value);
+  dimensions_.push_back(number->value);
   if (dimensions_.size() < wanted_) return "";
   wanted_ = 0;
   long long pixels = 1;

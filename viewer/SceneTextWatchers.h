@@ -90,6 +90,8 @@ class CounterSteps {
   std::string see(const Token& t, int depth);
 
  private:
+  std::string stepValue(std::string_view word);  // the word (or rest of one) after `step`
+  std::string connectedStep() const;
   enum class Expect { kNothing, kBody, kStepValue, kConnection };
   Expect expect_ = Expect::kNothing;
   std::string_view pendingType_;  // "TimeCounter", its body to open next

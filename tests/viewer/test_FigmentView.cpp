@@ -316,6 +316,11 @@ INSTANTIATE_TEST_SUITE_P(
                  " x = TimeCounter { step 0 } .output } .vector }\n  Cube { }\n}\n",
                  "",
                  {"scene.iv", "line 3", "TimeCounter { step 0 } divides by zero"}},
+        BadInput{"TimeCounterStepOfAHalf",  // Coin reads 0 (SIGFPE); found by fuzz_scene
+                 "#Inventor V2.1 ascii\nSeparator {\n  DirectionalLight { intensity = TimeCounter { step 0.5 } .output }\n"
+                 "  Cube { }\n}\n",
+                 "",
+                 {"scene.iv", "line 3", "TimeCounter { step 0.5 } divides by zero: Coin reads it as 0"}},
         BadInput{"TextureUnitBelowZero",  // corrupted the heap (double free)
                  "#Inventor V2.1 ascii\nSeparator {\n  TextureUnit { unit -5 }\n  Texture2 { image 1 1 3 0xff0000 }\n"
                  "  Cube { }\n}\n",

@@ -272,6 +272,23 @@ TEST_F(SceneTextCheckTest, RefusesACounterStepOfZero) {
             "step of 0 crashes it; give the step as a number");
   EXPECT_EQ(counter("TimeCounter { min 0 max 10 step 2 }"), "");
   EXPECT_EQ(counter("TimeCounter { }"), "");  // the default step is 1
+  // Coin reads a whole number from the start of a word and leaves the rest: `step 0.5` sets 0
+  // (SIGFPE; found by fuzz_scene as `step 0` and a stray byte).
+  EXPECT_EQ(counter("TimeCounter { step 0.5 }"),
+            "line 4: TimeCounter { step 0.5 } divides by zero: Coin reads it as 0; the step must not be 0 (or a "
+            "multiple of 65536)");
+  EXPECT_EQ(counter("Counter { step 08 }"),
+            "line 4: Counter { step 08 } divides by zero: Coin reads it as 0; the step must not be 0 (or a "
+            "multiple of 65536)");
+  EXPECT_EQ(counter("TimeCounter { step 2.5 }"), "");
+  // A connection glued to the name or the value is a connection all the same.
+  const std::string connected = "line 4: TimeCounter { step = ... } takes its step from a connection";
+  EXPECT_EQ(counter("TimeCounter { step=Calculator { expression \"oa = 0\" } .oa }").substr(0, connected.size()),
+            connected);
+  EXPECT_EQ(counter("TimeCounter { step 1=Calculator { expression \"oa = 0\" } .oa }").substr(0, connected.size()),
+            connected);
+  EXPECT_EQ(counter("TimeCounter { step 1 =Calculator { expression \"oa = 0\" } .oa }").substr(0, connected.size()),
+            connected);
 }
 
 // Coin allocates an inline image's pixels before reading them: 30000 x 30000 x 4 overflowed
@@ -285,6 +302,10 @@ TEST_F(SceneTextCheckTest, RefusesAnImageLargerThanTheFileHolds) {
             "(a number each)");
   EXPECT_EQ(scene("Texture3 { images 100 100 100 3 0xff0000 }"),
             "line 3: images 100 x 100 x 100 declares 1000000 pixels, more than the 25 bytes left in the file hold "
+            "(a number each)");
+  // Coin reads 4 from `4.5` and allocates before the rest of the word fails its read.
+  EXPECT_EQ(scene("Texture2 { image 30000 30000 4.5 0 }"),
+            "line 3: image 30000 x 30000 declares 900000000 pixels, more than the 18 bytes left in the file hold "
             "(a number each)");
   EXPECT_EQ(scene("Texture2 { image 2 1 3 0xff0000 0x00ff00 }"), "");
   EXPECT_EQ(scene("Texture2 { image 0 0 0 }"), "");  // empty
