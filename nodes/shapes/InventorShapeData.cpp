@@ -167,13 +167,15 @@ std::string runningDataProblem(const SoVertexShape& shape, const BoundData& data
   return nodeLabel(shape) + ": " + data.indexed.has + " for its " + what + " (bound " + binding + ", one each)";
 }
 
-// Markers are Coin's own and those a program adds; a negative index draws none.
+// Markers are Coin's own and those a program adds; NONE (-1) draws none. Coin skips NONE
+// only: another negative index reads before its marker list (4000000000, which an int32 holds
+// as -294967296, crashed; found by fuzz_scene).
 std::string markerProblem(const SoShape& shape, const SoMFInt32& markerIndex) {
   const int markers = SoMarkerSet::getNumDefinedMarkers();
   for (int i = 0; i < markerIndex.getNum(); ++i)
-    if (markerIndex[i] >= markers)
+    if (markerIndex[i] >= markers || markerIndex[i] < SoMarkerSet::NONE)
       return nodeLabel(shape) + ": markerIndex[" + std::to_string(i) + "] = " + std::to_string(markerIndex[i]) +
-             " is not a marker: there are " + std::to_string(markers);
+             " is not a marker: there are " + std::to_string(markers) + " (and -1, none)";
   return "";
 }
 

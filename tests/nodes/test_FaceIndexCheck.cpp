@@ -195,9 +195,14 @@ TEST_F(FaceIndexCheckTest, ChecksNurbsControlPointsAndKnots) {
 TEST_F(FaceIndexCheckTest, ChecksMarkersAreCoinsMarkers) {
   EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 0, 5, -1 ] }")), "");
   EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 2000000000 ] }")),
-            "MarkerSet: markerIndex[0] = 2000000000 is not a marker: there are 90");  // crashed figment-view
+            "MarkerSet: markerIndex[0] = 2000000000 is not a marker: there are 90 (and -1, none)");  // crashed figment-view
   EXPECT_EQ(check(onFourPoints("IndexedMarkerSet { coordIndex [ 0, 1 ] markerIndex [ 0, 90 ] }")),
-            "IndexedMarkerSet: markerIndex[1] = 90 is not a marker: there are 90");
+            "IndexedMarkerSet: markerIndex[1] = 90 is not a marker: there are 90 (and -1, none)");
+  // Coin skips -1 only; 4000000000 is read as -294967296 (crashed; found by fuzz_scene).
+  EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 0, -2 ] }")),
+            "MarkerSet: markerIndex[1] = -2 is not a marker: there are 90 (and -1, none)");
+  EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 4000000000 ] }")),
+            "MarkerSet: markerIndex[0] = -294967296 is not a marker: there are 90 (and -1, none)");
 }
 
 // In VRML 1.0, PER_VERTEX means per vertex of the shape: Coin reads such materials through
