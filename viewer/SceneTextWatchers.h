@@ -81,8 +81,9 @@ class OpenPrototypes {
 
 // The step of each TimeCounter and Counter engine, which Coin divides by (SIGFPE at 0, during
 // the read already): `TimeCounter { step 0 }`, or 65536, which a short holds as 0, crashed
-// figment-view. A step fed by a connection (`step = Calculator { ... }.oa`) is refused too,
-// as its value is not known until Coin divides by it.
+// figment-view. The step is read as Coin reads it, the whole number at the start of its word
+// (`step 0.5` is 0). A step fed by a connection (`step = Calculator { ... }.oa`) is refused
+// too, as its value is not known until Coin divides by it.
 class CounterSteps {
  public:
   // Takes every token in turn, with the nesting depth after it. Returns a problem with the
