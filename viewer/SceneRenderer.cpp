@@ -1,7 +1,7 @@
 #include "viewer/SceneRenderer.h"
 
 #include "nodes/render/StencilRuleElement.h"
-#include "io/AtomicFile.h"
+#include "io/PngFile.h"
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoOffscreenRenderer.h>
@@ -34,10 +34,7 @@ const unsigned char* SceneRenderer::pixels() const { return rendered_ ? renderer
 
 std::string SceneRenderer::writePng(const std::string& path) const {
   if (!rendered_) return "nothing rendered";
-  if (!renderer_->isWriteSupported("png")) return "cannot write PNG: Coin has no simage library";
-  return writeAtomically(path, [this](const std::string& temporary) -> std::string {
-    return renderer_->writeToFile(SbString(temporary.c_str()), "png") ? "" : "cannot write the image";
-  });
+  return figment::writePng(path, {size_.width, size_.height, renderer_->getBuffer()});
 }
 
 }  // namespace figment::viewer

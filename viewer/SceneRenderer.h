@@ -31,8 +31,9 @@ class SceneRenderer {
   // The last image: RGB, 3 bytes per pixel, bottom row first (OpenGL's order).
   const unsigned char* pixels() const;
   const ImageSize& size() const { return size_; }
-  // Writes the last image as PNG (through Coin and simage), atomically: `path` exists
-  // only when the whole image was written. Returns "" on success, else the error.
+  // Writes the last image as PNG (figment::writePng: the same pixels give the same
+  // bytes), atomically: `path` exists only when the whole image was written. Returns ""
+  // on success, else the error.
   std::string writePng(const std::string& path) const;
 
  private:

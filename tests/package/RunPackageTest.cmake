@@ -6,7 +6,7 @@
 # picture's cloth and ball pixels are counted. Last, a plain Coin program reads a
 # FIGMENT scene through the installed lib<Class>.so links.
 #   cmake -DFIGMENT_BINARY_DIR=... -DEXAMPLES_SOURCE_DIR=... -DWORK_DIR=... -DCOUNT_COLOURS=... -DINSTALL_LIBDIR=lib
-#         [-DPLAIN_COIN_READER=... -DPLAIN_COIN_SCENE=...] [-DGENERATOR=...] -P RunPackageTest.cmake
+#         [-DPLAIN_COIN_READER=... -DPLAIN_COIN_SCENE=...] [-DEXPECT_VIEWER=ON] [-DGENERATOR=...] -P RunPackageTest.cmake
 foreach(var FIGMENT_BINARY_DIR EXAMPLES_SOURCE_DIR WORK_DIR COUNT_COLOURS INSTALL_LIBDIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "RunPackageTest.cmake needs -D${var}=...")
@@ -67,6 +67,8 @@ if(EXISTS ${figment_view})
   # below it (600); a cloth that falls through the ball is framed small, 2 m below it
   # (2,400 red pixels).
   run("the picture's cloth and ball" ${COUNT_COLOURS} ${picture} 3000 200)
+elseif(EXPECT_VIEWER)
+  message(FATAL_ERROR "${figment_view} is not installed, though this build has the viewer")
 else()
   message(STATUS "no figment-view installed (a build without the viewer): no picture")
 endif()
