@@ -7,9 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
-#include <thread>
 
 using namespace figment;
 using namespace figment::test;
@@ -73,10 +74,13 @@ TEST(DrapeCache, PastItsBoundTheLeastRecentlyUsedGoFirst) {
   const DrapeCache cache(dir.path(), 12000);
   ASSERT_EQ(cache.store("first", drape), "");
   ASSERT_EQ(cache.store("second", drape), "");
-  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  // Their times of use set hours apart, so the order does not depend on how finely the
+  // file system keeps times: "first" the older.
+  const auto now = std::filesystem::file_time_type::clock::now();
+  std::filesystem::last_write_time(cache.entryPath("first"), now - std::chrono::hours(2));
+  std::filesystem::last_write_time(cache.entryPath("second"), now - std::chrono::hours(1));
   std::string problem;
   ASSERT_TRUE(cache.find("first", problem));  // used: now the more recent of the two
-  std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ASSERT_EQ(cache.store("third", drape), "");
   EXPECT_TRUE(cache.find("first", problem));
   EXPECT_FALSE(cache.find("second", problem));

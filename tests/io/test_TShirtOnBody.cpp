@@ -54,6 +54,10 @@ TEST_F(TShirtOnBody, OneManifoldPieceOfTheChosenTriangles) {
   for (const Triangle& t : shirt().mesh.triangles)
     for (int e = 0; e < 3; ++e) ++use[std::minmax(t[e], t[(e + 1) % 3])];
   for (const auto& [edge, count] : use) ASSERT_LE(count, 2) << edge.first << "-" << edge.second;
+  // One piece, both sides of every inner edge walked oppositely (a garment with a
+  // detached sleeve or a flipped panel fails here).
+  EXPECT_EQ(figment::checks::connectedComponents(shirt().mesh), 1);
+  EXPECT_TRUE(figment::checks::consistentlyOriented(shirt().mesh));
   EXPECT_NEAR(shirt().area, 0.6, 0.1);
 }
 

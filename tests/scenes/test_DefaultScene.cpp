@@ -23,6 +23,7 @@
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoShapeHints.h>
+#include <Inventor/nodes/SoTransform.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
@@ -94,7 +95,7 @@ class DefaultScene : public ::testing::Test {
   // with `plain` the dress is an IndexedFaceSet (the depth buffer alone). With
   // `outsideOnly`, only the dress, as a solid whose back faces are culled: the pixels
   // where its outside faces the viewer (not its inside, seen through the neckline).
-  static figment::test::Image flatRender(double azimuth, bool outsideOnly, bool plain) {
+  static figment::test::Image flatRender(double azimuth, bool outsideOnly, bool plain, float shrink = 1.0f) {
     const ImageSize size{300, 400};
     std::vector<std::function<void()>> undo;
     auto colour = [](float r, float g, float b) {
@@ -110,6 +111,13 @@ class DefaultScene : public ::testing::Test {
     undo.push_back(insert("LeftArm", colour(0, 1, 0), true));
     undo.push_back(insert("RightArm", colour(0, 1, 0), true));
     undo.push_back(insert("Dress", colour(0, 0, 1)));
+    if (shrink != 1.0f) {
+      // Drawn narrower about the torso's vertical axis: into the skin.
+      auto* narrower = new SoTransform;
+      narrower->scaleFactor.setValue(shrink, 1.0f, shrink);
+      narrower->center.setValue(torsoAxis());
+      undo.push_back(insert("Dress", narrower));
+    }
     if (outsideOnly) {
       auto* invisible = new SoDrawStyle;
       invisible->style = SoDrawStyle::INVISIBLE;
@@ -144,6 +152,15 @@ class DefaultScene : public ::testing::Test {
     root->unref();
     for (auto it = undo.rbegin(); it != undo.rend(); ++it) (*it)();
     return image;
+  }
+
+  // The dress's vertical axis: the mean of its draped points in x and z.
+  static SbVec3f torsoAxis() {
+    figment::Vec3 sum = figment::Vec3::Zero();
+    const std::vector<figment::Vec3> points = drapedPositions();
+    for (const figment::Vec3& p : points) sum += p;
+    sum /= double(std::max<size_t>(points.size(), 1));
+    return SbVec3f(float(sum.x()), 0.0f, float(sum.z()));
   }
 
   static SoSeparator* scene_;
@@ -208,7 +225,14 @@ TEST_F(DefaultScene, ShouldersHoldTheDressUp) {
     if (std::abs(v.x()) > 0.08 && std::abs(v.x()) < 0.20 && v.y() < 1.45) shoulderTop = std::max(shoulderTop, v.y());
   double dressTop = -std::numeric_limits<double>::infinity();
   for (const figment::Vec3& p : drapedPositions()) dressTop = std::max(dressTop, p.y());
-  EXPECT_NEAR(dressTop, shoulderTop, 0.10) << "the dress slid off the shoulders";
+  // Resting on them, the straps' top lies above the shoulders' (3.1 mm: the radial
+  // volume stands 1.7 mm off the skin there, the strap 1.4 mm over it) and no more than
+  // the engine's clearance (6 mm) and 2 mm for the volumes' stand-off above: a dress that
+  // sags 1 mm below the shoulder or floats 1 cm above it fails (before, 10 cm passed).
+  const double gap = dressTop - shoulderTop, clearance = engines_.front()->clearance.getValue();
+  RecordProperty("dress_top_above_shoulder_mm", std::to_string(gap * 1000));
+  EXPECT_GT(gap, 0.0) << "the dress slid off the shoulders: its top " << -gap * 1000 << " mm below theirs";
+  EXPECT_LT(gap, clearance + 0.002) << "the dress floats " << gap * 1000 << " mm above the shoulders";
 }
 
 TEST_F(DefaultScene, FrontViewShowsDressAndSkin) {
@@ -231,23 +255,31 @@ TEST_F(DefaultScene, FrontViewShowsDressAndSkin) {
 
 TEST_F(DefaultScene, NoSkinInsideTheDressAndArmsInFrontKeepTheirPixels) {
   // Front, side (60 degrees, the near arm in front of the dress) and back. Where the
-  // dress's outside faces the viewer no torso pixel shows (the depth buffer alone shows
-  // some, where the dress's sections cut chords across the skin), and the arms keep at
-  // least the pixels the depth buffer gives them there.
-  int plainTorso = 0;
+  // dress's outside faces the viewer no torso pixel shows, and the arms keep at least the
+  // pixels the depth buffer gives them there. The draped dress stands off the skin by
+  // its clearance, so the depth buffer alone shows no torso either; the control draws it
+  // 7 % narrower about its axis (into the skin by up to a centimetre): then the depth
+  // buffer alone shows the torso through it (2,236, 1,075 and 906 pixels from the three
+  // views) and the hybrid nodes still none.
   for (double azimuth : {0.0, 60.0, 180.0}) {
-    const std::vector<bool> dress = flatRender(azimuth, true, false).where(figment::test::kBlue);
-    const figment::test::Image hybrid = flatRender(azimuth, false, false);
-    const figment::test::Image plain = flatRender(azimuth, false, true);
-    EXPECT_EQ(hybrid.countWithin(figment::test::kRed, dress), 0) << "azimuth " << azimuth;
-    plainTorso += plain.countWithin(figment::test::kRed, dress);
-    EXPECT_GE(hybrid.countWithin(figment::test::kGreen, dress), plain.countWithin(figment::test::kGreen, dress))
-        << "azimuth " << azimuth;
-    if (azimuth == 60.0) {
-      EXPECT_GT(plain.countWithin(figment::test::kGreen, dress), 100) << "the near arm is in front";
+    for (float shrink : {1.0f, 0.93f}) {
+      const std::vector<bool> dress = flatRender(azimuth, true, false, shrink).where(figment::test::kBlue);
+      const long dressPixels = std::count(dress.begin(), dress.end(), true);
+      ASSERT_GT(dressPixels, 5000) << "azimuth " << azimuth << ": the dress's outside faces the viewer";
+      const figment::test::Image hybrid = flatRender(azimuth, false, false, shrink);
+      const figment::test::Image plain = flatRender(azimuth, false, true, shrink);
+      EXPECT_EQ(hybrid.countWithin(figment::test::kRed, dress), 0) << "azimuth " << azimuth << ", shrink " << shrink;
+      if (shrink < 1.0f) {
+        EXPECT_GT(plain.countWithin(figment::test::kRed, dress), 500) << "azimuth " << azimuth << ": the control";
+        continue;  // the arms are judged on the drape as it is
+      }
+      EXPECT_GE(hybrid.countWithin(figment::test::kGreen, dress), plain.countWithin(figment::test::kGreen, dress))
+          << "azimuth " << azimuth;
+      if (azimuth == 60.0) {
+        EXPECT_GT(plain.countWithin(figment::test::kGreen, dress), 100) << "the near arm is in front";
+      }
     }
   }
-  RecordProperty("plain_torso_pixels_in_dress", plainTorso);
 }
 
 

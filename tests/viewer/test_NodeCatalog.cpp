@@ -4,16 +4,40 @@
 #include "viewer/NodeCatalog.h"
 
 #include <Inventor/SoDB.h>
+#include <Inventor/engines/SoEngine.h>
+#include <Inventor/nodes/SoNode.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 using namespace figment::viewer;
 
 TEST(NodeCatalog, FindsTheTypesARegistrationAdds) {
+  // A registration of one node type and one engine type (abstract types, enough for
+  // Coin's type tree): exactly those two are found, sorted by name.
   SoDB::init();
-  figment::init();  // already known: a second registration adds nothing
+  const std::vector<SoType> added = typesAddedBy([] {
+    SoType::createType(SoEngine::getClassTypeId(), SbName("CatalogProbeEngine"));
+    SoType::createType(SoNode::getClassTypeId(), SbName("CatalogProbeNode"));
+  });
+  ASSERT_EQ(added.size(), 2u);
+  EXPECT_STREQ(added[0].getName().getString(), "CatalogProbeEngine");
+  EXPECT_STREQ(added[1].getName().getString(), "CatalogProbeNode");
+}
+
+TEST(NodeCatalog, ASecondRegistrationOfTheKitAddsNothing) {
+  SoDB::init();
+  // Run alone (as ctest runs each test), the first registration adds the kit; in a
+  // program that registered it before, nothing.
+  const bool knownBefore = SoType::fromName("ClothEngine") != SoType::badType();
+  std::vector<std::string> names;
+  for (SoType type : typesAddedBy([] { figment::init(); })) names.emplace_back(type.getName().getString());
+  if (!knownBefore)
+    for (const char* kit : {"ClothEngine", "ClothingLayer", "DepthSortedGroup", "Mannequin", "StencilSeparator"})
+      EXPECT_NE(std::find(names.begin(), names.end(), kit), names.end()) << kit;
   EXPECT_TRUE(typesAddedBy([] { figment::init(); }).empty());
 }
 

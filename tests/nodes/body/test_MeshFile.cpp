@@ -2,6 +2,7 @@
 // errors as read errors, draws through hidden nodes and offers its collision surface.
 
 #include "nodes/body/MeshFile.h"
+#include "support/MeshChecks.h"
 #include "support/ActionChecks.h"
 #include "support/SceneTestSupport.h"
 #include "io/MeshImport.h"
@@ -184,6 +185,14 @@ TEST_F(MeshFileTest, HumanWithoutEyesIsOneClosedSurface) {
   EXPECT_EQ(body->collisionSurface().vertices.size(), 13380u);
   EXPECT_EQ(body->collisionSurface().triangles.size(), 26756u);
   EXPECT_GT(body->point.getNum(), 13380) << "the eyes are still drawn";
+  // Closed: every edge between two triangles, walked oppositely by them, one piece; and
+  // wound outward (its signed volume is positive, about a body's 0.06 m^3).
+  const figment::TriangleMesh& surface = body->collisionSurface();
+  EXPECT_TRUE(figment::checks::everyEdgeSharedByTwo(surface));
+  EXPECT_TRUE(figment::checks::consistentlyOriented(surface));
+  EXPECT_EQ(figment::checks::connectedComponents(surface), 1);
+  EXPECT_GT(figment::checks::signedVolume(surface), 0.03);
+  EXPECT_LT(figment::checks::signedVolume(surface), 0.12);
 }
 
 TEST_F(MeshFileTest, CropKeepsTheTrianglesCentredInTheBox) {

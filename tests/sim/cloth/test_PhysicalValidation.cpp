@@ -120,7 +120,12 @@ void expectBeamFormulaDroop(Integrator integrator) {
   // q = rho g h per area, D = E h^3 / 12 (nu = 0: a strip is free to curve across, so the
   // plate's 1 - nu^2 would not apply); delta = q L^4 / 8D. E = 4 MPa, L = 10 cm, b = 2 cm;
   // h = 4, 6, 8 mm keep delta / L at 0.069, 0.031, 0.017 (small deflection). The clamp
-  // pins two columns of nodes, so the edge cannot rotate. Tolerance 10 %.
+  // pins two columns of nodes, so the edge cannot rotate. Tolerances, from the case: no
+  // strip droops more than 1 % under the formula (which, for small deflection, is an
+  // upper bound: at delta / L = 0.069 the shortening costs (delta / L)^2 < 0.5 %); right
+  // triangles bend about hinges across the strip and come within 1 % above it (measured
+  // 0.03-0.7 %); the equilateral strip's hinges zig-zag at 30 degrees to its axis, which
+  // leaves it a little softer: within 5 % (measured 3.8-4.4 %).
   const double E = 4e6, L = 0.1, b = 0.02;
   const int n = 12, across = 4;
   const double dx = L / n;
@@ -143,15 +148,17 @@ void expectBeamFormulaDroop(Integrator integrator) {
     const char* name;
     const TriangleMesh& mesh;
     const std::vector<int>&clamp, &tip;
+    double softerBy;  // the most it may droop beyond the formula, a share of it
   };
   const Material cloth;
-  for (const Strip& strip : {Strip{"right triangles", grid, gridClamp, gridTip},
-                             Strip{"equilateral", equilateral, equilateralClamp, equilateralTip}})
+  for (const Strip& strip : {Strip{"right triangles", grid, gridClamp, gridTip, 0.01},
+                             Strip{"equilateral", equilateral, equilateralClamp, equilateralTip, 0.05}})
     for (double h : {0.004, 0.006, 0.008}) {
       const double q = cloth.density * kG * h, D = E * h * h * h / 12.0;
       const double expected = q * std::pow(L, 4) / (8.0 * D);
       const double droop = cantileverDroop(strip.mesh, strip.clamp, strip.tip, E, h, L, dx, integrator);
-      EXPECT_NEAR(droop, expected, 0.10 * expected) << strip.name << ", h = " << h << " m";
+      EXPECT_GT(droop, expected * 0.99) << strip.name << ", h = " << h << " m";
+      EXPECT_LT(droop, expected * (1.0 + strip.softerBy)) << strip.name << ", h = " << h << " m";
     }
 }
 }  // namespace

@@ -100,11 +100,16 @@ TEST(PlateBending, CylindricalBendStoresHalfDKappaSquaredPerArea) {
 TEST(PlateBending, ASaddleCostsEnergy) {
   // Opposite curvatures in two directions cancel in the mean curvature but not in the
   // plate energy: (D/2)(1 - nu)(kappa1^2 + kappa2^2) per area for tr dS = 0.
-  TriangleMesh flat = meshes::grid(20, 20, 0.1, 0.1, Vec3(-0.05, 0, -0.05), Vec3::UnitX(), Vec3::UnitZ());
+  const int n = 20;
+  TriangleMesh flat = meshes::grid(n, n, 0.1, 0.1, Vec3(-0.05, 0, -0.05), Vec3::UnitX(), Vec3::UnitZ());
   const double D = 2e-5, nu = 0.3, k = 2.0;
   const PlateBending bending(flat, D, nu);
   std::vector<Vec3> saddle = flat.vertices;
   for (Vec3& p : saddle) p.y() = 0.5 * k * (p.x() * p.x() - p.z() * p.z());
   const double expected = 0.5 * D * (1 - nu) * 2 * k * k * area(flat);
-  EXPECT_NEAR(bending.energy(saddle), expected, 0.15 * expected);
+  // The discretisation bound of the rolled sheets above: the rim's vertices lack the
+  // hinges beyond them, so the grid holds between 1 - 1.5/n of the energy and all of it
+  // (it holds 96.1 %), 1 % either way for the hinges' own error.
+  EXPECT_LT(bending.energy(saddle), expected * 1.01);
+  EXPECT_GT(bending.energy(saddle), expected * (1.0 - 1.5 / n) * 0.99);
 }
