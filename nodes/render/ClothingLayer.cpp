@@ -160,7 +160,7 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   state->pop();
 }
 
-// Three draws, each one state change, not one per change of facing along the depth
+// Three or four draws, each one state change, not one per change of facing along the depth
 // order (hundreds on a draped garment, and each costs a pipeline flush).
 void ClothingLayer::drawArranged(SoState* state, bool maskedByParts) {
   SbBool depthTest, depthWrite;
@@ -191,6 +191,11 @@ void ClothingLayer::drawArranged(SoState* state, bool maskedByParts) {
   //    facets, as it would have in a single far-to-near pass for cloth that does not
   //    cross itself.
   if (facing > 0 && away > 0) draw(usualTest, GLStencilElement::INSIDE_LAYER, away, facing);
+  // 4. Where a body part marked the stencil (masked only): the depth test decides
+  //    between the part and the facets facing the viewer, so the part stays in front
+  //    where it is in front and cloth in front of it is never cut away (a strap across
+  //    the upper arm lost its outer edge to the arm's mark, in notches).
+  if (facing > 0 && maskedByParts) draw(usualTest, GLStencilElement::ON_PARTS_OUTSIDE_LAYER, away, facing);
   if (away > 0) GLStencilElement::clearLayerBit();
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisableClientState(GL_VERTEX_ARRAY);

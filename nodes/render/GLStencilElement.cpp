@@ -82,6 +82,9 @@ void GLStencilElement::updateGL() const {
     case INSIDE_LAYER:
       use(GL_EQUAL, kLayerBit, kLayerBit, 0);
       break;
+    case ON_PARTS_OUTSIDE_LAYER:
+      use(GL_EQUAL, kPartBit, kLayerBit | kPartBit, 0);
+      break;
   }
 }
 

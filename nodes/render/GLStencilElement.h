@@ -32,6 +32,7 @@ class GLStencilElement : public SoElement {
     OUTSIDE_LAYER, // draw only where the layer bit is clear
     OUTSIDE_LAYER_AND_PARTS,  // ... and the body-part bit too (a masked layer)
     INSIDE_LAYER,  // draw only where the layer bit is set
+    ON_PARTS_OUTSIDE_LAYER,  // draw only where the body-part bit is set and the layer bit clear
   };
   static constexpr unsigned kPartBit = 1, kLayerBit = 2;
 
