@@ -1,9 +1,9 @@
 #include "viewer/SceneFile.h"
 
 #include "viewer/CoinMessages.h"
+#include "viewer/GuardedInput.h"
 #include "viewer/NodeFieldRanges.h"
 #include "viewer/NodeFieldTypes.h"
-#include "viewer/ReferenceHoldingInput.h"
 #include "viewer/SceneExpansion.h"
 #include "viewer/SceneTextCheck.h"
 
@@ -13,6 +13,18 @@
 #include <filesystem>
 
 namespace figment::viewer {
+
+namespace {
+
+// The read error that carries `refusal`, with its line and file: Coin read on past the include
+// it lies in.
+std::string refusedLine(const std::string& refusal, const std::vector<std::string>& errors) {
+  for (const std::string& error : errors)
+    if (error.find(refusal) != std::string::npos) return error;
+  return refusal;
+}
+
+}  // namespace
 
 SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   std::error_code ec;
@@ -28,7 +40,8 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   error = checkSceneText(path);
   if (!error.empty()) return nullptr;
   CoinMessages::takeReadErrors(path);  // only this file's errors count
-  ReferenceHoldingInput in;  // a failed connection cannot free what a USE will name
+  // Holds what DEF names; refuses a field declaration Coin would add to a whole class.
+  GuardedInput in;
   if (!in.openFile(path.c_str(), TRUE)) {
     error = "cannot open file";
     return nullptr;
@@ -41,7 +54,8 @@ SoSeparator* readSceneFile(const std::string& path, std::string& error) {
   // on a node held where another type belongs (NodeFieldTypes.h) or an index past Coin's
   // own arrays (NodeFieldRanges.h).
   std::string refused;
-  if (root) refused = sceneExpansionProblem(root);
+  if (root && !in.refusal().empty()) refused = refusedLine(in.refusal(), CoinMessages::takeReadErrors(path));
+  if (root && refused.empty()) refused = sceneExpansionProblem(root);
   if (root && refused.empty()) refused = firstMistypedNodeField(root);
   if (root && refused.empty()) refused = firstFieldOutOfRange(root);
   if (!refused.empty()) {
