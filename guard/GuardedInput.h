@@ -1,9 +1,9 @@
 #pragma once
-// The SoInput figment-view reads scenes through: it holds what DEF names until the read is
-// over (ReferenceHoldingInput.h), and sees every name and character Coin's reader reads, in
-// the scene and in each file it includes (File, VRMLInline and EXTERNPROTO push their files
-// onto this input), so that a field declaration Coin would add to a whole class is refused
-// before Coin adds it (FieldDeclarations.h).
+// The SoInput the guard reads scenes through (SceneFile.h): it holds what DEF names until the
+// read is over (ReferenceHoldingInput.h), and sees every name and character Coin's reader
+// reads, in the scene and in each file it includes (File, VRMLInline and EXTERNPROTO push their
+// files onto this input), so that a field declaration Coin would add to a whole class is
+// refused before Coin adds it (FieldDeclarations.h).
 
 #include "guard/FieldDeclarations.h"
 #include "guard/ReferenceHoldingInput.h"
