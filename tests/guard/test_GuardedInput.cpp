@@ -50,6 +50,7 @@ int cubeFields() {
 }  // namespace
 
 TEST(GuardedInput, RefusesAFieldDeclarationTheClassDoesNotMatch) {
+  figment::test::initCoin();
   const int before = cubeFields();
   const Read wobble = readThroughGuard(
       "#Inventor V2.1 ascii\nSeparator {\n  Cube { fields [ SFFloat width, SFFloat "
