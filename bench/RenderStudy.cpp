@@ -111,7 +111,9 @@ void report(const std::string& scenePath, const viewer::ImageSize& size, int clo
 std::string studyScene(const std::string& scenePath, const RenderStudyOptions& options, std::ostream& csv) {
   viewer::SceneSession session;
   if (!session.load(scenePath)) return scenePath + ": " + session.loadError();
+  // A drape's error, or a shape the guard refuses to draw (SceneSession::shapeError()).
   session.drape();
+  if (const std::string error = session.firstError(); !error.empty()) return scenePath + ": " + error;
   const viewer::ImageSize size{options.width, options.height};
   session.stage(size, viewer::ViewDirection{30.0, 10.0});
   const int cloth = countTriangles(session.stagedRoot(), ClothingLayer::getClassTypeId());

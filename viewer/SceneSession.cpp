@@ -1,7 +1,8 @@
 #include "viewer/SceneSession.h"
 
-#include "viewer/SceneFile.h"
 #include "viewer/SceneStaging.h"
+
+#include "guard/Guard.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -44,11 +45,13 @@ void SceneSession::clear() {
   staged_ = scene_ = nullptr;
   engines_.clear();
   drapes_.clear();
+  shapeError_.clear();
+  shapesChecked_ = false;
 }
 
 bool SceneSession::load(const std::string& path) {
   clear();
-  scene_ = readSceneFile(path, loadError_);
+  scene_ = guard::readScene(path, loadError_);
   if (!scene_) return false;
   engines_ = findClothEngines(scene_);
   return true;
@@ -67,20 +70,34 @@ const std::vector<EngineDrape>& SceneSession::drape() {
   }
   drapes_.clear();
   for (ClothEngine* engine : engines_) drapes_.push_back(resultOf(*engine));
+  shapeError_.clear();
+  shapesChecked_ = false;
+  if (firstError().empty()) checkShapes();  // a failed drape is its own error, and stages nothing
   return drapes_;
+}
+
+void SceneSession::checkShapes() {
+  // Draped, the coordinates are known: every shape's indices and counts must lie within its
+  // data before anything is drawn or bounded (Coin allocates by the largest index).
+  shapeError_ = guard::checkShapes(scene_);
+  shapesChecked_ = true;
 }
 
 std::string SceneSession::firstError() const {
   for (const EngineDrape& drape : drapes_)
     if (!drape.error.empty()) return drape.error;
-  return "";
+  return shapeError_;
 }
 
 SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view) {
+  if (!shapesChecked_) checkShapes();
+  if (!shapeError_.empty()) return nullptr;  // the box would be read past the shapes' data
   return stage(size, view, sceneBox(scene_, size));
 }
 
 SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box) {
+  if (!shapesChecked_) checkShapes();
+  if (!shapeError_.empty()) return nullptr;
   if (staged_) staged_->unref();
   stagedBox_ = box;
   staged_ = stageScene(scene_, size, view, stagedBox_);

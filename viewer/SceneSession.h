@@ -46,8 +46,8 @@ class SceneSession {
   SceneSession(const SceneSession&) = delete;
   SceneSession& operator=(const SceneSession&) = delete;
 
-  // Reads the scene in `path` (see readSceneFile) and finds its ClothEngines (in scene
-  // order, figment::findClothEngines); nothing simulates yet. Returns false, with
+  // Reads the scene in `path` through the guard (guard::readScene) and finds its ClothEngines
+  // (in scene order, figment::findClothEngines); nothing simulates yet. Returns false, with
   // loadError() one line ("no such file", "line 12: Unknown class \"Foo\""), on failure.
   bool load(const std::string& path);
   const std::string& loadError() const { return loadError_; }
@@ -55,14 +55,22 @@ class SceneSession {
   // Simulates every engine whose output something reads, one after another in scene
   // order (an engine another one feeds from simulates when that one does), and keeps
   // each one's result. Again after an engine's input changed: simulates those again.
+  // Then, when every drape succeeded, checks the shapes against the data they now draw
+  // (guard::checkShapes): shapeError().
   const std::vector<EngineDrape>& drape();
   const std::vector<EngineDrape>& drapes() const { return drapes_; }
-  // The first engine's error, in scene order; "" when every drape succeeded.
+  // The guard's check of the shapes after the last drape: "" when every shape indexes and
+  // counts only the data it has, else one line ("ClothingLayer 'Layer': coordIndex[3] = ...").
+  const std::string& shapeError() const { return shapeError_; }
+  // The first engine's error, in scene order, else the shapes' (shapeError()); "" when every
+  // drape succeeded and every shape may be drawn.
   std::string firstError() const;
 
   // Puts the scene under a root with the camera and light it lacks (see stageScene),
   // looking from `view` (the scene's own camera when none is given). Drape first: the
-  // bounding box read here then shows the draped garments.
+  // bounding box read here then shows the draped garments. Null, with nothing staged, when
+  // the shapes failed their check (shapeError(); checked here when the scene was not draped):
+  // Coin would bound and draw past their data.
   SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view);
   // The same, framing `box` (frames of a time span share one camera: the box of them all).
   SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box);
@@ -77,10 +85,14 @@ class SceneSession {
   const std::vector<ClothEngine*>& engines() const { return engines_; }
 
  private:
+  void checkShapes();
+
   SoSeparator* scene_ = nullptr;   // referenced
   SoSeparator* staged_ = nullptr;  // referenced
   SbBox3f stagedBox_;
   std::string loadError_;
+  std::string shapeError_;
+  bool shapesChecked_ = false;  // since the scene was loaded or last draped
   std::vector<ClothEngine*> engines_;
   std::vector<EngineDrape> drapes_;
 };

@@ -12,7 +12,6 @@
 // command line, 1: anything else, an exception included); no image is left then.
 
 #include "io/DrapeCache.h"
-#include "nodes/FaceIndexCheck.h"
 #include "nodes/Init.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
@@ -242,10 +241,8 @@ int render(const Options& options, const ImagePlan& plan) {
     recorder = std::make_unique<DrapeRecorder>(plan.frameTimes, options.windForce.empty() ? 0.0 : kWindSampleSpacing);
   std::string error = drapeAll(session);
   if (!error.empty()) return fail(options.scene, error);
-  // Draped, the coordinates are known: every face set's indices must lie among them
-  // before anything is drawn or bounded (Coin allocates by the largest index).
-  error = figment::firstFaceIndexError(session.scene());
-  if (!error.empty()) return fail(options.scene, error);
+  // The session's guard checked the draped shapes against their data: nothing is staged past it.
+  if (!session.shapeError().empty()) return fail(options.scene, session.shapeError());
 
   WrittenImages images;
   double renderWall = 0.0;

@@ -3,7 +3,7 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/FieldValues.h"
 #include "nodes/body/CollisionBody.h"
-#include "nodes/CoordIndexFaces.h"
+#include "guard/CoordIndexFaces.h"
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/core/ParameterChecks.h"
 
@@ -44,7 +44,7 @@ TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coo
     return std::invalid_argument(at(i, index[i]) + " is not a vertex: " + pointsName + " has " +
                                  std::to_string(numPoints) + " points");
   };
-  for (const CoordIndexFace& face : coordIndexFaces(index, numIndices)) {
+  for (const guard::CoordIndexFace& face : guard::coordIndexFaces(index, numIndices)) {
     for (int i = face.first; i < face.end; ++i)
       if (index[i] >= numPoints) throw notAVertex(i);
     if (face.end < numIndices && index[face.end] != -1) throw notAVertex(face.end);

@@ -1,6 +1,6 @@
 #include "nodes/render/ClothingLayer.h"
 
-#include "nodes/CoordIndexFaces.h"
+#include "guard/CoordIndexFaces.h"
 #include "nodes/render/FacetOrder.h"
 #include "nodes/render/GLStencilElement.h"
 #include "nodes/render/StencilRule.h"
@@ -60,8 +60,8 @@ figment::ViewPoint viewPoint(SoState* state) {
 // them for the facets seen from behind.
 std::vector<SbVec3f> vertexNormals(const SbVec3f* points, int count, const int32_t* index, int indexCount) {
   std::vector<SbVec3f> normals(count, SbVec3f(0, 0, 0));
-  for (const figment::CoordIndexFace& face : figment::coordIndexFaces(index, indexCount)) {
-    if (!figment::cornersBelow(face, index, count)) continue;
+  for (const figment::guard::CoordIndexFace& face : figment::guard::coordIndexFaces(index, indexCount)) {
+    if (!figment::guard::cornersBelow(face, index, count)) continue;
     const int start = face.first;
     for (int k = start + 1; k + 1 < face.end; ++k) {
       const SbVec3f n = (points[index[k]] - points[index[start]]).cross(points[index[k + 1]] - points[index[start]]);

@@ -1,6 +1,6 @@
 #include "nodes/render/FacetOrder.h"
 
-#include "nodes/CoordIndexFaces.h"
+#include "guard/CoordIndexFaces.h"
 
 #include <algorithm>
 #include <numeric>
@@ -10,9 +10,9 @@ namespace figment {
 std::vector<FacetGeometry> describeFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
                                           int indexCount) {
   std::vector<FacetGeometry> facets;
-  for (const CoordIndexFace& face : coordIndexFaces(coordIndex, indexCount)) {
+  for (const guard::CoordIndexFace& face : guard::coordIndexFaces(coordIndex, indexCount)) {
     const int corners = face.corners();
-    if (corners < 3 || !cornersBelow(face, coordIndex, pointCount)) continue;
+    if (corners < 3 || !guard::cornersBelow(face, coordIndex, pointCount)) continue;
     // Newell's normal: right for any planar polygon and robust for nearly planar ones.
     SbVec3f normal(0, 0, 0), centre(0, 0, 0);
     for (int k = 0; k < corners; ++k) {

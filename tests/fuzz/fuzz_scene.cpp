@@ -1,8 +1,9 @@
-// fuzz_scene: an input is the text of an .iv scene. It goes the way figment-view takes a scene
-// (viewer/main.cpp): read with every FIGMENT node registered (after viewer/SceneTextCheck's look
-// at its text), every ClothEngine draped, the face sets' indices checked, staged and rendered
-// through OSMesa. Errors on the way are expected and fine; a crash, a sanitizer report, a leak,
-// an escaping exception or an input that runs past libFuzzer's -timeout is a finding.
+// fuzz_scene: an input is the text of an .iv scene. It goes the way figment-view takes a scene,
+// through SceneSession: read through the guard with every FIGMENT node registered
+// (guard::readScene), every ClothEngine draped, the shapes checked by the guard
+// (guard::checkShapes), staged and rendered through OSMesa. Errors on the way are expected and
+// fine; a crash, a sanitizer report, a leak, an escaping exception or an input that runs past
+// libFuzzer's -timeout is a finding.
 //
 // Bounds the harness puts on an input, so one input cannot take minutes (figment-view has none:
 // a scene may ask for a long drape on purpose): each engine's maxTime is cut to kMaxSteps steps
@@ -11,7 +12,6 @@
 
 #include "FuzzTempDir.h"
 
-#include "nodes/FaceIndexCheck.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/SceneRenderer.h"
@@ -82,8 +82,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   figment::viewer::SceneSession session;
   if (!session.load("scene.iv")) return 0;
   boundEngines(session.engines());
-  if (!session.drape().empty() && !session.firstError().empty()) return 0;
-  if (!figment::firstFaceIndexError(session.scene()).empty()) return 0;
-  renderer.render(session.stage(kImage, std::nullopt));
+  session.drape();  // then the guard's check of the shapes
+  if (!session.firstError().empty()) return 0;
+  if (SoSeparator* root = session.stage(kImage, std::nullopt)) renderer.render(root);
   return 0;
 }

@@ -51,6 +51,22 @@ run("build examples/" ${CMAKE_COMMAND} --build ${build})
 # The example's application: FIGMENT's kit and SphereVolume linked in.
 run("drape_over_sphere" ${build}/drape_over_sphere ${EXAMPLES_SOURCE_DIR}/sphere-drape.iv)
 
+# A plain Coin program (Coin and figment::guard only) reads through the guard: the example's
+# scene, with FIGMENT's nodes and SphereVolume loaded by name, and the scene of issue 28, an
+# included volumes file declaring a field its CapsuleVolume does not have, refused in one line.
+set(guard_path "${build}:${prefix}/${INSTALL_LIBDIR}")
+run("guarded_read reads sphere-drape.iv" ${CMAKE_COMMAND} -E env "LD_LIBRARY_PATH=${guard_path}"
+    ${build}/guarded_read ${EXAMPLES_SOURCE_DIR}/sphere-drape.iv)
+file(WRITE ${WORK_DIR}/volumes.iv "#Inventor V2.1 ascii\nGroup {\n  CapsuleVolume {\n"
+     "    fields [ SFString part, SFFloat r1e308 ]\n    part \"head\"\n  }\n  CapsuleVolume { part \"neck\" }\n}\n")
+file(WRITE ${WORK_DIR}/bad.iv "#Inventor V2.1 ascii\nSeparator {\n  File { name \"volumes.iv\" }\n}\n")
+execute_process(COMMAND ${CMAKE_COMMAND} -E env "LD_LIBRARY_PATH=${guard_path}" ${build}/guarded_read ${WORK_DIR}/bad.iv
+  RESULT_VARIABLE status ERROR_VARIABLE err OUTPUT_QUIET)
+if(NOT status EQUAL 1 OR NOT err MATCHES "^guarded_read: [^\n]*bad.iv: line 4: CapsuleVolume: fields \\[ SFFloat r1e308 \\] declares a field CapsuleVolume does not have[^\n]*\n$")
+  message(FATAL_ERROR "guarded_read on the scene of issue 28: status ${status}, stderr:\n${err}")
+endif()
+message(STATUS "guarded_read refuses the scene of issue 28: ok ${err}")
+
 # The installed figment-view (a build with the viewer), with only the library path to
 # find the new node. The drape cache is left out: it keys a body by its fields, not by
 # its code.

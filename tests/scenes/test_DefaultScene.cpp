@@ -10,7 +10,7 @@
 #include "sim/collision/MeshCollider.h"
 #include "support/Pixels.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneFile.h"
+#include "guard/SceneFile.h"
 #include "viewer/SceneRenderer.h"
 #include "viewer/SceneStaging.h"
 
@@ -43,7 +43,7 @@ class DefaultScene : public ::testing::Test {
   static void SetUpTestSuite() {
     initHeadless();
     std::string error;
-    scene_ = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
+    scene_ = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
     ASSERT_NE(scene_, nullptr) << error;
     scene_->ref();
     engines_ = figment::findClothEngines(scene_);
@@ -304,7 +304,7 @@ double worstEdgeStrain(ClothEngine& engine) {
 double drapeDefaultDress(const std::function<void(ClothEngine&)>& adjust) {
   initHeadless();
   std::string error;
-  SoSeparator* scene = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
+  SoSeparator* scene = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
   EXPECT_NE(scene, nullptr) << error;
   if (!scene) return INFINITY;
   scene->ref();

@@ -9,7 +9,7 @@
 #include "sim/core/TriangleMesh.h"
 #include "sim/collision/VolumeSetCollider.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneFile.h"
+#include "guard/SceneFile.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -28,7 +28,7 @@ class PosedScene : public ::testing::Test {
   void SetUp() override {
     initHeadless();
     std::string error;
-    scene_ = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/posed.iv", error);
+    scene_ = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/posed.iv", error);
     ASSERT_NE(scene_, nullptr) << error;
     scene_->ref();
     model_ = dynamic_cast<Mannequin*>(SoNode::getByName("Model"));

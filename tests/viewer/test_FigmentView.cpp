@@ -361,6 +361,24 @@ INSTANTIATE_TEST_SUITE_P(
                  {"nesting depth 257"}},
         BadInput{"TenThousandNestedStencilSeparators", nestedScene("StencilSeparator", 10000), "",
                  {"nesting depth 257"}},
+        // Issue 28: Coin added a declared field the node lacks to every node of its class
+        // (SIGSEGV at the next walk over the graph); a field declared with another type was
+        // taken without a word.
+        BadInput{"FieldDeclaredThatTheNodeDoesNotHave",
+                 "#Inventor V2.1 ascii\nSeparator {\n  CapsuleVolume { fields [ SFString part, SFFloat r1e308 ] "
+                 "part \"head\" }\n  CapsuleVolume { part \"neck\" }\n}\n",
+                 "",
+                 {"scene.iv", "line 3", "CapsuleVolume: fields [ SFFloat r1e308 ] declares a field CapsuleVolume "
+                  "does not have"}},
+        BadInput{"FieldDeclaredWithAnotherType",
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Head CapsuleVolume { fields [ SFInt32 r1 ] r1 1 }\n}\n",
+                 "",
+                 {"scene.iv", "line 3", "CapsuleVolume 'Head': fields [ SFInt32 r1 ] declares r1 an SFInt32, but it is "
+                  "an SFFloat"}},
+        BadInput{"CoinNodeDeclaringAFieldItDoesNotHave",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Cube { fields [ SFFloat width, SFFloat wobble ] }\n  Cube { }\n}\n",
+                 "",
+                 {"scene.iv", "line 3", "Cube: fields [ SFFloat wobble ] declares a field Cube does not have"}},
         // Found by mutating scenes/examples (issue 15): each printed several lines.
         BadInput{"IncludeNameAcrossLines",
                  "#Inventor V2.1 ascii\nSeparator {\n  File { name \"incl\n  Switch {\n  ude.iv\" }\n}\n", "",
@@ -377,6 +395,26 @@ TEST_F(FigmentView, TwoFilesThatIncludeEachOtherAreOneLine) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("(in " + path("b.iv") + ")"), std::string::npos) << r.err;
+  EXPECT_TRUE(noImageWritten());
+}
+
+// Issue 28, as a user met it: a volumes file, included by File, whose CapsuleVolume declares a
+// field the node does not have. Coin reads on past an include that fails; the scene is refused.
+TEST_F(FigmentView, AnIncludedFileDeclaringAFieldTheNodeDoesNotHaveIsOneLine) {
+  const std::string volumes = write("volumes.iv",
+                                    "#Inventor V2.1 ascii\nGroup {\n  CapsuleVolume {\n"
+                                    "    fields [ SFString part, SFFloat r1e308 ]\n    part \"head\"\n  }\n"
+                                    "  CapsuleVolume { fields [ SFString part ] part \"neck\" }\n}\n");
+  const std::string scene =
+      write("scene.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"volumes.iv\" }\n  Cube { }\n}\n");
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")));
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
+  EXPECT_NE(r.err.find("scene.iv: line 4: CapsuleVolume: fields [ SFFloat r1e308 ] declares a field CapsuleVolume "
+                       "does not have (in "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("volumes.iv)"), std::string::npos) << r.err;
   EXPECT_TRUE(noImageWritten());
 }
 

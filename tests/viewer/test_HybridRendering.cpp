@@ -9,7 +9,7 @@
 #include "support/TempDir.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneFile.h"
+#include "guard/SceneFile.h"
 #include "viewer/SceneRenderer.h"
 #include "viewer/SceneStaging.h"
 
@@ -38,7 +38,7 @@ class View {
  public:
   View(const std::string& name, double azimuth, double elevation = 15.0) {
     std::string error;
-    scene_ = readSceneFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/hybrid/" + name + ".iv", error);
+    scene_ = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/hybrid/" + name + ".iv", error);
     EXPECT_NE(scene_, nullptr) << error;
     scene_->ref();
     root_ = stageScene(scene_, kSize, ViewDirection{azimuth, elevation});
@@ -223,7 +223,7 @@ Separator {
   figment::test::TempDir dir;
   const std::string path = dir.file("undo.iv", text);
   std::string error;
-  SoSeparator* scene = readSceneFile(path, error);
+  SoSeparator* scene = figment::guard::readScene(path, error);
   ASSERT_NE(scene, nullptr) << error;
   scene->ref();
   SoSeparator* root = stageScene(scene, kSize, ViewDirection{0.0, 0.0});

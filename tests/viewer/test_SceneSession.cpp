@@ -83,3 +83,36 @@ TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) 
   EXPECT_EQ(drapes[1].error, "");
   EXPECT_GT(drapes[1].run.iterations, 0);
 }
+
+// The guard's draw-side check runs in the session, so every program that stages through it
+// (figment-view, figment-bench, the fuzz target) gets it: after the drape, a shape indexing past
+// its draped coordinates is one line, and nothing is staged.
+TEST_F(SceneSessionTest, ChecksTheDrapedShapesAndStagesNothingPastTheirData) {
+  const std::string good = dir_.file("good.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("Drape", "") + "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(good)) << session.loadError();
+  session.drape();
+  EXPECT_EQ(session.shapeError(), "");
+  EXPECT_NE(session.stage({64, 48}, std::nullopt), nullptr);
+
+  std::string text = cloth("Drape", "");
+  text.replace(text.find("IndexedFaceSet { coordIndex [ 0 3 2 1"), 37, "IndexedFaceSet { coordIndex [ 0 3 2 9");
+  const std::string bad = dir_.file("bad.iv", "#Inventor V2.1 ascii\nSeparator {\n" + text + "}\n");
+  ASSERT_TRUE(session.load(bad)) << session.loadError();
+  session.drape();
+  EXPECT_EQ(session.shapeError(), "IndexedFaceSet: coordIndex[3] = 9 is not a vertex: the coordinates have 4 points");
+  EXPECT_EQ(session.firstError(), session.shapeError());
+  EXPECT_EQ(session.stage({64, 48}, std::nullopt), nullptr);
+  EXPECT_EQ(session.stagedRoot(), nullptr);
+}
+
+TEST_F(SceneSessionTest, StagingAnUndrapedSceneChecksItsShapesFirst) {
+  const std::string bad = dir_.file("faces.iv",
+                                    "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                                    "  IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(bad)) << session.loadError();
+  EXPECT_EQ(session.stage({64, 48}, std::nullopt), nullptr);
+  EXPECT_EQ(session.shapeError(),
+            "IndexedFaceSet: coordIndex[2] = 2147483647 is not a vertex: the coordinates have 3 points");
+}

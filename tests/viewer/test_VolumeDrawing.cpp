@@ -5,7 +5,7 @@
 #include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneFile.h"
+#include "guard/SceneFile.h"
 #include "viewer/SceneRenderer.h"
 #include "viewer/SceneStaging.h"
 
@@ -43,7 +43,7 @@ class VolumeDrawing : public ::testing::Test {
   void SetUp() override {
     initHeadless();
     std::string error;
-    scene_ = readSceneFile(dir_.file("volumes.iv", kScene), error);
+    scene_ = figment::guard::readScene(dir_.file("volumes.iv", kScene), error);
     ASSERT_NE(scene_, nullptr) << error;
     scene_->ref();
     SoSearchAction search;
