@@ -4,10 +4,12 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# libpng-dev: PNG files written byte for byte (io/PngFile); python3-pivy: the guard's
+# call from a pivy program (tests/guard/test_GuardC.py).
 packages=(cmake ninja-build g++ pkg-config
-  libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev
+  libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
-  assimp-testmodels python3-matplotlib)
+  assimp-testmodels python3-matplotlib python3-pivy)
 
 missing=()
 for package in "${packages[@]}"; do
