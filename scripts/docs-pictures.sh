@@ -2,11 +2,12 @@
 # Renders every figment-view picture in docs/images again, as the README and docs say
 # each was made (one line a picture: scene, output, options). The charts and the wind
 # animation have their own commands (figment-bench's plot scripts, scripts/wind-figures.py).
-#   scripts/docs-pictures.sh [BUILD_DIR]     (default: build; about a minute on one core)
+#   scripts/docs-pictures.sh [BUILD_DIR]   (default: build; about a minute on one core;
+#   FIGMENT_PICTURES_OUT=DIR writes them there instead, to compare)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 view="${1:-build}/bin/figment-view"
-out=docs/images
+out=${FIGMENT_PICTURES_OUT:-docs/images}
 export OMP_NUM_THREADS=${OMP_NUM_THREADS:-1}
 while read -r scene picture options; do
   [ -z "$scene" ] && continue
@@ -29,9 +30,9 @@ close-fit.iv fig5-2b-hybrid.png --size 360x420
 dress.iv fig5-3a-no-stencil.png --size 360x420 --view 60,10 --keep-stencil-fields
 dress.iv fig5-3b-stencil.png --size 360x420 --view 60,10
 mannequin.iv volumes-radial.png --size 360x560 --show-volumes
-mannequin.iv volumes-radial-side.png --size 360x560 --show-volumes --view 90,10
+mannequin.iv volumes-radial-side.png --size 360x560 --show-volumes --view 60,10
 mannequin-capsules.iv volumes-capsules.png --size 360x560 --show-volumes
 posed.iv posed.png --size 360x560 --view 30,10
 second-body.iv second-body.png --size 360x560
-tshirt.iv tshirt.png --size 360x420
+tshirt.iv tshirt.png --size 360x420 --view 30,10
 LIST
