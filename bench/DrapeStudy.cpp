@@ -5,7 +5,7 @@
 #include "Statistics.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/Init.h"
-#include "viewer/SceneSession.h"
+#include "session/SceneSession.h"
 
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -20,7 +20,7 @@ namespace figment::bench {
 namespace {
 
 // One CSV row and one line on stdout for a drape.
-void report(const std::string& method, bool broadPhase, int run, const viewer::EngineDrape& drape, std::ostream& csv) {
+void report(const std::string& method, bool broadPhase, int run, const session::EngineDrape& drape, std::ostream& csv) {
   const ClothEngine::RunStats& stats = drape.run;
   const double perSecond = stats.iterations / stats.wallSeconds;
   const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
@@ -34,13 +34,13 @@ void report(const std::string& method, bool broadPhase, int run, const viewer::E
 
 // Runs every engine options.repeat times against the body they have now; one CSV row
 // per run and engine. On an engine's error sets `error`.
-void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOptions& options, viewer::SceneSession& session,
+void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOptions& options, session::SceneSession& session,
                 std::ostream& csv, std::string& error) {
   std::vector<double> wall, rate;
-  ClothEngine::setBroadPhase(broadPhase);
+  session.context().broadPhase = broadPhase;
   for (int run = 0; run < options.repeat; ++run) {
     for (ClothEngine* engine : session.engines()) engine->restPoints.touch();  // inputs changed: simulate again
-    for (const viewer::EngineDrape& drape : session.drape()) {
+    for (const session::EngineDrape& drape : session.drape()) {
       if (!drape.error.empty()) {
         error = drape.error;
         return;
@@ -50,12 +50,12 @@ void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOpti
       rate.push_back(drape.run.iterations / drape.run.wallSeconds);
     }
   }
-  ClothEngine::setBroadPhase(true);
+  session.context().broadPhase = true;
   std::cout << method << (broadPhase ? "" : " (no broad phase)") << ": median wall " << median(wall) << " s, median " << median(rate) << " iterations/s\n";
 }
 
 // Times the engines against each body of options.bodies in turn; "" or the error.
-std::string timeEveryBody(const DrapeStudyOptions& options, viewer::SceneSession& session, std::ostream& csv) {
+std::string timeEveryBody(const DrapeStudyOptions& options, session::SceneSession& session, std::ostream& csv) {
   csv << "body,broad_phase,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s\n";
   const std::vector<ClothEngine*>& engines = session.engines();
   std::vector<SoNode*> sceneBodies;
@@ -74,14 +74,14 @@ std::string timeEveryBody(const DrapeStudyOptions& options, viewer::SceneSession
 }
 
 // The scene's method replaced where the options say so.
-void overrideMethod(const DrapeStudyOptions& options, viewer::SceneSession& session) {
+void overrideMethod(const DrapeStudyOptions& options, session::SceneSession& session) {
   for (ClothEngine* engine : session.engines()) {
     if (!options.integrator.empty()) engine->integrator.setValue(SbName(options.integrator.c_str()));
     if (options.timeStep > 0.0) engine->timeStep = options.timeStep;
   }
 }
 
-bool writePositions(const std::string& path, viewer::SceneSession& session) {
+bool writePositions(const std::string& path, session::SceneSession& session) {
   return writeCsv(path, [&](std::ostream& csv) -> std::string {
     csv << std::setprecision(9) << "garment,node,x,y,z\n";
     for (ClothEngine* engine : session.engines()) {
@@ -99,7 +99,7 @@ bool writePositions(const std::string& path, viewer::SceneSession& session) {
 
 int runDrapeStudy(const DrapeStudyOptions& options) {
   figment::init();
-  viewer::SceneSession session;
+  session::SceneSession session;
   if (!session.load(options.scene)) {
     std::cerr << "figment-bench: " << options.scene << ": " << session.loadError() << "\n";
     return 1;

@@ -4,11 +4,11 @@
 #include "Statistics.h"
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/SceneSearch.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "session/SceneStaging.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneSession.h"
-#include "viewer/SceneStaging.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
@@ -45,13 +45,13 @@ int countTriangles(SoNode* root, SoType type) {
 // The staged camera, pointed at the scene from an azimuth, 10 degrees up.
 class Orbit {
  public:
-  Orbit(const viewer::SceneSession& session, const viewer::ImageSize& size)
+  Orbit(const session::SceneSession& session, const session::ImageSize& size)
       : box_(session.stagedBox()), aspect_(float(size.width) / float(size.height)) {
     const SoPathList cameras = findAll(session.stagedRoot(), SoPerspectiveCamera::getClassTypeId());
     camera_ = static_cast<SoPerspectiveCamera*>(cameras[0]->getTail());
   }
   void look(double azimuth) {
-    SoPerspectiveCamera* framing = viewer::framingCamera(box_, viewer::ViewDirection{azimuth, 10.0}, aspect_);
+    SoPerspectiveCamera* framing = session::framingCamera(box_, session::ViewDirection{azimuth, 10.0}, aspect_);
     framing->ref();
     camera_->copyFieldValues(framing);
     framing->unref();
@@ -65,11 +65,11 @@ class Orbit {
 
 // Renders the staged scene in rounds, hybrid and plain alternating. False when there is
 // no off-screen context to render with.
-bool timeRenders(const viewer::SceneSession& session, const RenderStudyOptions& options, Timings& ms) {
-  const viewer::ImageSize size{options.width, options.height};
+bool timeRenders(const session::SceneSession& session, const RenderStudyOptions& options, Timings& ms) {
+  const session::ImageSize size{options.width, options.height};
   SoSeparator* root = session.stagedRoot();
   Orbit orbit(session, size);
-  viewer::SceneRenderer renderer(size);
+  session::SceneRenderer renderer(size);
   viewer::DepthBufferOnly swaps(root);
   const int perRound = std::max(1, options.repeat / kRounds);
   for (int round = 0; round < kRounds; ++round)
@@ -94,7 +94,7 @@ bool timeRenders(const viewer::SceneSession& session, const RenderStudyOptions& 
 }
 
 // The CSV rows and the printed summary of one scene.
-void report(const std::string& scenePath, const viewer::ImageSize& size, int cloth, Timings& ms, std::ostream& csv) {
+void report(const std::string& scenePath, const session::ImageSize& size, int cloth, Timings& ms, std::ostream& csv) {
   for (const char* view : {"first", "still", "orbit"}) {
     const double hybrid = median(ms[{"hybrid", view}]), plain = median(ms[{"plain", view}]);
     const double overhead = 100.0 * (hybrid / plain - 1.0);
@@ -109,13 +109,13 @@ void report(const std::string& scenePath, const viewer::ImageSize& size, int clo
 
 // Loads, drapes, stages and times one scene; "" or what to print after "figment-bench: ".
 std::string studyScene(const std::string& scenePath, const RenderStudyOptions& options, std::ostream& csv) {
-  viewer::SceneSession session;
+  session::SceneSession session;
   if (!session.load(scenePath)) return scenePath + ": " + session.loadError();
   // A drape's error, or a shape the guard refuses to draw (SceneSession::shapeError()).
   session.drape();
   if (const std::string error = session.firstError(); !error.empty()) return scenePath + ": " + error;
-  const viewer::ImageSize size{options.width, options.height};
-  session.stage(size, viewer::ViewDirection{30.0, 10.0});
+  const session::ImageSize size{options.width, options.height};
+  session.stage(size, session::ViewDirection{30.0, 10.0});
   const int cloth = countTriangles(session.stagedRoot(), ClothingLayer::getClassTypeId());
   Timings ms;
   if (!timeRenders(session, options, ms)) return "cannot render (no off-screen context)";

@@ -2,10 +2,11 @@
 
 #include "Statistics.h"
 #include "nodes/Init.h"
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/core/TriangleMesh.h"
 
-#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/engines/SoEngineOutput.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -22,12 +23,9 @@ namespace {
 
 // The Coordinate3 whose points `engine` feeds, or null.
 SoCoordinate3* coordinatesFedBy(SoNode* root, const ClothEngine* engine) {
-  SoSearchAction search;
-  search.setType(SoCoordinate3::getClassTypeId());
-  search.setInterest(SoSearchAction::ALL);
-  search.apply(root);
-  for (int i = 0; i < search.getPaths().getLength(); ++i) {
-    auto* candidate = static_cast<SoCoordinate3*>(search.getPaths()[i]->getTail());
+  const SoPathList found = findAll(root, SoCoordinate3::getClassTypeId());
+  for (int i = 0; i < found.getLength(); ++i) {
+    auto* candidate = static_cast<SoCoordinate3*>(fullTail(found[i]));
     SoEngineOutput* output = nullptr;
     if (candidate->point.getConnectedEngine(output) && output == &engine->positions) return candidate;
   }

@@ -4,7 +4,7 @@
 
 #include "nodes/cloth/ClothEngine.h"
 #include "sim/core/TriangleMesh.h"
-#include "viewer/SceneSession.h"
+#include "session/SceneSession.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
 
@@ -25,7 +25,7 @@ struct RepeatedDrape {
 };
 
 struct SceneGarment {
-  viewer::SceneSession session;  // holds the scene; release() empties it
+  session::SceneSession session;  // holds the scene; release() empties it
   ClothEngine* engine = nullptr;
   SoCoordinate3* coordinates = nullptr;
   std::vector<SbVec3f> rest;

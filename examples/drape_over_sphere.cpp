@@ -8,6 +8,7 @@
 #include "SphereVolume.h"
 
 #include <nodes/Init.h>
+#include <nodes/SceneSearch.h>
 #include <nodes/cloth/ClothEngine.h>
 
 #include <Inventor/SoDB.h>

@@ -11,7 +11,7 @@
 // Each returns one line when it refuses ("line 4: CapsuleVolume: fields [ SFFloat r1e308 ]
 // declares a field CapsuleVolume does not have (in volumes.iv)", "ClothingLayer 'Shirt':
 // coordIndex[3] = 2147483647 is not a vertex: the coordinates have 4 points"); a refused scene
-// is released, never half read. figment::viewer::SceneSession makes both calls, so figment-view,
+// is released, never half read. figment::session::SceneSession makes both calls, so figment-view,
 // figment-bench and the fuzz targets get the same checks. A C program, or a pivy (Python) one
 // through ctypes, makes them through GuardC.h. docs/bad-input.md lists what each refuses.
 

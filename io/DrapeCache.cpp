@@ -1,13 +1,14 @@
 #include "io/DrapeCache.h"
 
 #include "io/AtomicFile.h"
+#include "io/ByteReader.h"
+#include "io/ByteWriter.h"
 #include "io/Fnv1a.h"
 
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <system_error>
@@ -31,54 +32,12 @@ std::uint64_t checksum(const std::vector<unsigned char>& bytes) {
   return hash.value();
 }
 
-template <class T>
-void put(std::vector<unsigned char>& out, const T& value) {
-  const std::size_t at = out.size();
-  out.resize(at + sizeof(T));
-  std::memcpy(out.data() + at, &value, sizeof(T));
-}
-
-template <class T>
-void putArray(std::vector<unsigned char>& out, const std::vector<T>& values) {
-  put(out, static_cast<std::uint64_t>(values.size()));
-  const std::size_t at = out.size(), size = values.size() * sizeof(T);
-  out.resize(at + size);
-  if (size > 0) std::memcpy(out.data() + at, values.data(), size);
-}
-
-// Reads what put/putArray wrote; false when the bytes run out.
-class Reader {
- public:
-  explicit Reader(const std::vector<unsigned char>& bytes) : bytes_(bytes) {}
-  template <class T>
-  bool get(T& value) {
-    if (bytes_.size() - at_ < sizeof(T)) return false;
-    std::memcpy(&value, bytes_.data() + at_, sizeof(T));
-    at_ += sizeof(T);
-    return true;
-  }
-  template <class T>
-  bool getArray(std::vector<T>& values) {
-    std::uint64_t count = 0;
-    if (!get(count) || count > (bytes_.size() - at_) / sizeof(T)) return false;
-    values.resize(count);
-    std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
-    at_ += count * sizeof(T);
-    return true;
-  }
-  bool done() const { return at_ == bytes_.size(); }
-
- private:
-  const std::vector<unsigned char>& bytes_;
-  std::size_t at_ = 0;
-};
-
 std::vector<unsigned char> payloadOf(const CachedDrape& drape) {
-  std::vector<unsigned char> out;
-  putArray(out, drape.positions);
-  putArray(out, drape.sectionIndices);
-  putArray(out, drape.stats);
-  return out;
+  ByteWriter out;
+  out.putArray(drape.positions);
+  out.putArray(drape.sectionIndices);
+  out.putArray(drape.stats);
+  return out.take();
 }
 }  // namespace
 
@@ -104,7 +63,7 @@ std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string&
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
   const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  Reader header(bytes);
+  ByteReader header(bytes);
   std::array<char, 16> magic{};
   std::uint64_t keyDigest = 0, size = 0, sum = 0;
   CachedDrape drape;
@@ -114,7 +73,7 @@ std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string&
   sound = sound && bytes.size() == headerSize + size;
   if (sound) {
     const std::vector<unsigned char> payload(bytes.begin() + headerSize, bytes.end());
-    Reader body(payload);
+    ByteReader body(payload);
     sound = checksum(payload) == sum && body.getArray(drape.positions) && body.getArray(drape.sectionIndices) &&
             body.getArray(drape.stats) && body.done();
   }
@@ -133,14 +92,13 @@ std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) 
   std::filesystem::create_directories(folder_, ec);
   if (ec) return folder_.string() + ": cannot make the cache folder: " + ec.message();
   const std::vector<unsigned char> payload = payloadOf(drape);
-  std::vector<unsigned char> bytes;
-  put(bytes, kMagic);
-  put(bytes, digest(key, 2));
-  put(bytes, static_cast<std::uint64_t>(payload.size()));
-  put(bytes, checksum(payload));
-  const std::size_t headerSize = bytes.size();
-  bytes.resize(headerSize + payload.size());
-  if (!payload.empty()) std::memcpy(bytes.data() + headerSize, payload.data(), payload.size());
+  ByteWriter entry;
+  entry.put(kMagic);
+  entry.put(digest(key, 2));
+  entry.put(static_cast<std::uint64_t>(payload.size()));
+  entry.put(checksum(payload));
+  std::vector<unsigned char> bytes = entry.take();
+  bytes.insert(bytes.end(), payload.begin(), payload.end());
   const std::filesystem::path path = entryPath(key);
   const std::string error = writeAtomically(path.string(), [&](const std::string& temporary) -> std::string {
     std::ofstream out(temporary, std::ios::binary);
@@ -151,6 +109,11 @@ std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) 
   if (!error.empty()) return path.string() + ": " + error;
   trim();
   return "";
+}
+
+void DrapeCache::remove(const std::string& key) const {
+  std::error_code ignored;  // an entry that is not there is removed already
+  std::filesystem::remove(entryPath(key), ignored);
 }
 
 void DrapeCache::trim() const {

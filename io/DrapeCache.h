@@ -2,7 +2,7 @@
 // Finished drapes kept on disk, so rendering another view of a scene, or running it
 // again, does not simulate again. An entry is keyed by a text that holds everything
 // that shaped the drape (nodes/cloth/DrapeKey.h writes it: every engine input, the
-// body, the files they read, the program's own build); its file is named by two 64-bit
+// body, the files they read, the node library's own build); its file is named by two 64-bit
 // digests of the key and carries a third, and a checksum of its contents, so a damaged
 // or foreign entry is found out and dropped, never used. Entries are written through a
 // temporary name; past `maxBytes` the least recently used go first.
@@ -19,7 +19,7 @@ namespace figment {
 struct CachedDrape {
   std::vector<std::array<float, 3>> positions;  // the engine's output, as it gave it
   std::vector<std::int32_t> sectionIndices;     // its levelCoordIndex
-  std::vector<unsigned char> stats;             // the run's statistics, as the engine packs them
+  std::vector<unsigned char> stats;             // the run's statistics, as the engine writes them (its own version)
 };
 
 class DrapeCache {
@@ -35,6 +35,9 @@ class DrapeCache {
   std::optional<CachedDrape> find(const std::string& key, std::string& problem) const;
   // Keeps `drape` under `key`; "" or the error, naming the file or folder.
   std::string store(const std::string& key, const CachedDrape& drape) const;
+  // Removes the entry for `key`, if any: one the engine cannot read (a record of another
+  // version) goes, to be made again.
+  void remove(const std::string& key) const;
   // The file an entry for `key` lives in.
   std::filesystem::path entryPath(const std::string& key) const;
 

@@ -1,9 +1,13 @@
 #pragma once
-// Finding nodes of a type in a scene graph, the way FIGMENT's tools need it.
+// Finding nodes of a type, and the engines that drape, in a scene graph: every scene
+// search FIGMENT needs, in one place.
 
 #include <Inventor/SoType.h>
 #include <Inventor/lists/SoPathList.h>
 
+#include <vector>
+
+class ClothEngine;
 class SoNode;
 class SoPath;
 
@@ -19,5 +23,10 @@ SoPathList findAll(SoNode* root, SoType type);
 // search's path is an SoPath, never an SoFullPath, so the cast is undefined behaviour (UBSan
 // stops on it: "downcast of address ... which does not point to an object of type SoFullPath").
 SoNode* fullTail(const SoPath* path, int fromTail = 0);
+
+// The ClothEngines that feed the scene under `root`, in scene order, each once: engines
+// connected to a field of any node in the graph (inactive Switch children included),
+// of nodes held in node fields, and engines feeding those engines' inputs.
+std::vector<ClothEngine*> findClothEngines(SoNode* root);
 
 }  // namespace figment

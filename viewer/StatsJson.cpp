@@ -10,8 +10,8 @@ namespace figment::viewer {
 
 namespace {
 // How the drape was integrated and how often the paper's stability measures engaged.
-nlohmann::json method(const EngineDrape& drape) {
-  const DrapeMethod& m = drape.method;
+nlohmann::json method(const session::EngineDrape& drape) {
+  const session::DrapeMethod& m = drape.method;
   const bool limited = m.accelerationLimiter != "NONE";
   return {{"integrator", m.integrator},
           {"time_step_s", m.timeStep},
@@ -29,10 +29,10 @@ nlohmann::json body(const CollisionBody::Description& description) {
 }
 }  // namespace
 
-std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<EngineDrape>& drapes,
+std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<session::EngineDrape>& drapes,
                            double renderWallSeconds, const ImageSize& size) {
   nlohmann::json garments = nlohmann::json::array();
-  for (const EngineDrape& drape : drapes) {
+  for (const session::EngineDrape& drape : drapes) {
     const ClothEngine::RunStats& run = drape.run;
     nlohmann::json garment = {{"name", drape.name},
                               {"triangles", run.triangles},
@@ -44,8 +44,8 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
                               {"method", method(drape)},
                               {"body", body(drape.body)}};
     // With a tolerance: what the engine picked and the deviation measured for it.
-    if (run.picked[0] != '\0')
-      garment["picked"] = {{"configuration", std::string(run.picked.data())},
+    if (!run.picked.empty())
+      garment["picked"] = {{"configuration", run.picked},
                            {"measured_worst_mean_dev_pct_height", run.pickedDeviation}};
     // A progressive drape (paper §4): the level it reached, of how many, and its sections.
     // When the end level arrived and how far the garment moved after it (m).

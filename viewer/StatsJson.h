@@ -1,7 +1,7 @@
 #pragma once
 // figment-view --stats: what a render did, as JSON.
 
-#include "viewer/SceneSession.h"
+#include "session/SceneSession.h"
 #include "viewer/ViewOptions.h"
 
 #include <string>
@@ -15,7 +15,7 @@ namespace figment::viewer {
 //    "render_wall_s": ..., "size": [w, h]}
 // with one garment per engine drape, named by its engine's DEF name. Returns "" or the
 // error.
-std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<EngineDrape>& drapes,
+std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<session::EngineDrape>& drapes,
                            double renderWallSeconds, const ImageSize& size);
 
 }  // namespace figment::viewer

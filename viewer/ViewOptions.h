@@ -1,5 +1,8 @@
 #pragma once
-// figment-view's --size, --view, --turntable and --frames values.
+// figment-view's --size, --view, --turntable and --frames values, read into the scene
+// session's own types (session/SessionOptions.h).
+
+#include "session/SessionOptions.h"
 
 #include <optional>
 #include <string>
@@ -7,17 +10,8 @@
 
 namespace figment::viewer {
 
-struct ImageSize {
-  int width = 800;
-  int height = 600;
-};
-
-// Where the camera looks from, in degrees: azimuth about +y from +z (front, 0) towards
-// +x (right, 90), elevation above the horizontal plane, in (-90, 90).
-struct ViewDirection {
-  double azimuth = 0.0;
-  double elevation = 0.0;
-};
+using session::ImageSize;
+using session::ViewDirection;
 
 // "WxH", each 1..16384 pixels; nullopt otherwise.
 std::optional<ImageSize> parseImageSize(const std::string& text);

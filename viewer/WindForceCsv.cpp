@@ -6,14 +6,14 @@
 
 namespace figment::viewer {
 
-std::string writeWindForceCsv(const std::string& path, const std::vector<EngineDrape>& drapes,
-                              const DrapeRecorder& recorder) {
+std::string writeWindForceCsv(const std::string& path, const std::vector<session::EngineDrape>& drapes,
+                              const session::DrapeRecorder& recorder) {
   return writeAtomically(path, [&](const std::string& temporary) -> std::string {
     std::ofstream out(temporary);
     out.precision(9);
     out << "engine,time_s,pressure_Pa,phase_rad,force_x_N,force_y_N,force_z_N,force_N\n";
-    for (const EngineDrape& drape : drapes)
-      for (const WindSample& s : recorder.windSamples(*drape.engine))
+    for (const session::EngineDrape& drape : drapes)
+      for (const session::WindSample& s : recorder.windSamples(*drape.engine))
         out << drape.name << ',' << s.time << ',' << s.pressure << ',' << s.phase << ',' << s.force.x() << ','
             << s.force.y() << ',' << s.force.z() << ',' << s.force.norm() << '\n';
     out.close();

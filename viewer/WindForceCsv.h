@@ -2,8 +2,8 @@
 // figment-view --wind-force: the wind's total force on each garment over simulated time,
 // as CSV, for charts of the paper's Figure 2.2.
 
-#include "viewer/DrapeRecorder.h"
-#include "viewer/SceneSession.h"
+#include "session/DrapeRecorder.h"
+#include "session/SceneSession.h"
 
 #include <string>
 #include <vector>
@@ -14,7 +14,7 @@ namespace figment::viewer {
 // scene order:
 //   engine,time_s,pressure_Pa,phase_rad,force_x_N,force_y_N,force_z_N,force_N
 // (engine: its DEF name; force_N = |force|). Returns "" or the error.
-std::string writeWindForceCsv(const std::string& path, const std::vector<EngineDrape>& drapes,
-                              const DrapeRecorder& recorder);
+std::string writeWindForceCsv(const std::string& path, const std::vector<session::EngineDrape>& drapes,
+                              const session::DrapeRecorder& recorder);
 
 }  // namespace figment::viewer

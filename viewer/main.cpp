@@ -16,17 +16,17 @@
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/SceneSearch.h"
+#include "session/DrapeRecorder.h"
+#include "session/FrameDisplay.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "session/SceneStaging.h"
 #include "viewer/DepthBufferOnly.h"
-#include "viewer/DrapeRecorder.h"
-#include "viewer/FrameDisplay.h"
 #include "viewer/ImagePlan.h"
 #include "viewer/NodeCatalog.h"
 #include "viewer/OffscreenContext.h"
 #include "viewer/PrintableLine.h"
 #include "viewer/ProgressBar.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneSession.h"
-#include "viewer/SceneStaging.h"
 #include "viewer/StatsJson.h"
 #include "viewer/ViewOptions.h"
 #include "viewer/WindForceCsv.h"
@@ -50,6 +50,10 @@
 
 namespace {
 
+using figment::session::DrapeRecorder;
+using figment::session::EngineDrape;
+using figment::session::SceneRenderer;
+using figment::session::SceneSession;
 using figment::viewer::ImagePlan;
 
 struct Options {
@@ -111,7 +115,7 @@ void reportProgress(figment::viewer::ProgressBar& bar, const ClothEngine& engine
                engine.label().c_str(), p.simulatedSeconds, p.maxTime, p.iterations, p.wallSeconds, p.maxSpeed);
 }
 
-void reportFinished(const figment::viewer::EngineDrape& drape) {
+void reportFinished(const EngineDrape& drape) {
   const ClothEngine::RunStats& run = drape.run;
   if (run.wallSeconds < 1.0) return;  // short runs stay quiet
   std::fprintf(stderr, "figment-view: %s: %s after %.3g s simulated (%d steps, %.1f s)\n", drape.label.c_str(),
@@ -141,22 +145,24 @@ void simulateUntil(const std::vector<ClothEngine*>& engines, double seconds) {
 }
 
 // Finished drapes are kept in the user's cache folder (none without one).
-void useDrapeCache(bool use) {
+void useDrapeCache(SceneSession& session, bool use) {
   const std::filesystem::path folder = figment::DrapeCache::userFolder();
-  if (use && !folder.empty()) ClothEngine::setDrapeCache(std::make_shared<figment::DrapeCache>(folder, kCacheBytes));
+  if (use && !folder.empty()) session.context().cache = std::make_shared<figment::DrapeCache>(folder, kCacheBytes);
 }
 
 // Drapes every engine; its errors come before any image. "" or the first error.
-std::string drapeAll(figment::viewer::SceneSession& session) {
+std::string drapeAll(SceneSession& session) {
   figment::viewer::ProgressBar bar(stderr);
   // A bar moves a few times a second; the lines of a log once a second.
-  ClothEngine::setProgressCallback(
-      [&bar](const ClothEngine& engine, const ClothEngine::Progress& p) { reportProgress(bar, engine, p); },
-      bar.shown() ? 0.2 : 1.0);
-  const std::vector<figment::viewer::EngineDrape>& drapes = session.drape();
-  ClothEngine::setProgressCallback({});
+  figment::DrapeContext& context = session.context();
+  context.progress = [&bar](const ClothEngine& engine, const ClothEngine::Progress& p) {
+    reportProgress(bar, engine, p);
+  };
+  context.progressInterval = bar.shown() ? 0.2 : 1.0;
+  const std::vector<EngineDrape>& drapes = session.drape();
+  context.progress = {};
   bar.clear();
-  for (const figment::viewer::EngineDrape& drape : drapes) {
+  for (const EngineDrape& drape : drapes) {
     if (!drape.error.empty()) return drape.error;
     reportFinished(drape);
   }
@@ -168,7 +174,7 @@ std::string drapeAll(figment::viewer::SceneSession& session) {
 
 // Renders the staged root and writes it to `path`; "" or the error, with where it
 // happened in `where`.
-std::string renderImage(SoSeparator* root, const Options& options, figment::viewer::SceneRenderer& renderer,
+std::string renderImage(SoSeparator* root, const Options& options, SceneRenderer& renderer,
                         const std::string& path, double& renderWall, std::string& where) {
   figment::viewer::DepthBufferOnly plain(root);
   plain.use(options.depthBufferOnly);
@@ -182,14 +188,13 @@ std::string renderImage(SoSeparator* root, const Options& options, figment::view
 }
 
 // Shows frame k of every engine the recorder observed.
-void showFrame(const figment::viewer::SceneSession& session, const figment::viewer::DrapeRecorder& recorder,
-               size_t k) {
+void showFrame(const SceneSession& session, const DrapeRecorder& recorder, size_t k) {
   for (ClothEngine* engine : session.engines())
-    if (recorder.observed(*engine)) figment::viewer::showPositions(*engine, recorder.frame(*engine, k));
+    if (recorder.observed(*engine)) figment::session::showPositions(*engine, recorder.frame(*engine, k));
 }
 
 // Frames of a time span, one camera for all: it frames the box that holds every frame.
-std::string renderFrames(figment::viewer::SceneSession& session, const figment::viewer::DrapeRecorder& recorder,
+std::string renderFrames(SceneSession& session, const DrapeRecorder& recorder,
                          const ImagePlan& plan, const Options& options, WrittenImages& images, double& renderWall,
                          std::string& where) {
   for (ClothEngine* engine : session.engines())  // simulated, but not step by step
@@ -199,10 +204,10 @@ std::string renderFrames(figment::viewer::SceneSession& session, const figment::
   SbBox3f box;
   for (size_t k = 0; k < plan.frameTimes.size(); ++k) {
     showFrame(session, recorder, k);
-    box.extendBy(figment::viewer::sceneBox(session.scene(), plan.size));
+    box.extendBy(figment::session::sceneBox(session.scene(), plan.size));
   }
   SoSeparator* root = session.stage(plan.size, plan.views.front(), box);
-  figment::viewer::SceneRenderer renderer(plan.size);
+  SceneRenderer renderer(plan.size);
   for (size_t k = 0; k < plan.frameTimes.size(); ++k) {
     showFrame(session, recorder, k);
     const std::string error = renderImage(root, options, renderer, plan.paths[k], renderWall, where);
@@ -213,9 +218,9 @@ std::string renderFrames(figment::viewer::SceneSession& session, const figment::
 }
 
 // One image per view of the drape.
-std::string renderViews(figment::viewer::SceneSession& session, const ImagePlan& plan, const Options& options,
+std::string renderViews(SceneSession& session, const ImagePlan& plan, const Options& options,
                         WrittenImages& images, double& renderWall, std::string& where) {
-  figment::viewer::SceneRenderer renderer(plan.size);
+  SceneRenderer renderer(plan.size);
   for (size_t i = 0; i < plan.views.size(); ++i) {
     SoSeparator* root = session.stage(plan.size, plan.views[i]);
     const std::string error = renderImage(root, options, renderer, plan.paths[i], renderWall, where);
@@ -226,19 +231,21 @@ std::string renderViews(figment::viewer::SceneSession& session, const ImagePlan&
 }
 
 int render(const Options& options, const ImagePlan& plan) {
-  using namespace figment::viewer;
+  using namespace figment::session;
+using namespace figment::viewer;
   initHeadless();
   SceneSession session;
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
   if (options.showVolumes) showVolumes(session.scene());
   if (!plan.frameTimes.empty()) simulateUntil(session.engines(), plan.frameTimes.back());
   if (options.stopAt > 0) stopAt(session.scene(), options.stopAt);
-  useDrapeCache(!options.noCache);
+  useDrapeCache(session, !options.noCache);
   // Frames and the wind force are recorded while the engines drape (and are then
   // simulated, neither read from nor kept in the drape cache).
   std::unique_ptr<DrapeRecorder> recorder;
   if (!plan.frameTimes.empty() || !options.windForce.empty())
-    recorder = std::make_unique<DrapeRecorder>(plan.frameTimes, options.windForce.empty() ? 0.0 : kWindSampleSpacing);
+    recorder = std::make_unique<DrapeRecorder>(session.sharedContext(), plan.frameTimes,
+                                               options.windForce.empty() ? 0.0 : kWindSampleSpacing);
   std::string error = drapeAll(session);
   if (!error.empty()) return fail(options.scene, error);
   // The session's guard checked the draped shapes against their data: nothing is staged past it.

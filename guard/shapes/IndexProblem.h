@@ -1,5 +1,5 @@
 #pragma once
-// The one-line messages of the shape data check (nodes/FaceIndexCheck.h): which node, which
+// The one-line messages of the shape data check (guard/FaceIndexCheck.h): which node, which
 // field, which entry, and what it indexes past.
 
 #include <cstdint>

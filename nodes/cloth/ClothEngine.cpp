@@ -4,7 +4,9 @@
 #include "nodes/cloth/FieldValues.h"
 #include "io/DrapeCache.h"
 #include "io/ProgressiveScript.h"
+#include "nodes/cloth/DrapeContext.h"
 #include "nodes/cloth/DrapeKey.h"
+#include "nodes/cloth/RunStatsRecord.h"
 #include "nodes/cloth/ToleranceChoice.h"
 #include "sim/core/ParameterChecks.h"
 #include "sim/progressive/Decimation.h"
@@ -12,21 +14,13 @@
 #include "sim/cloth/ClothSolver.h"
 #include "sim/progressive/ProgressiveDrape.h"
 
-#include <Inventor/engines/SoNodeEngine.h>
 #include <Inventor/errors/SoDebugError.h>
-#include <Inventor/fields/SoMFNode.h>
 #include <Inventor/lists/SoFieldList.h>
-#include <Inventor/misc/SoChildList.h>
-#include <Inventor/nodes/SoNode.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <optional>
-#include <type_traits>
-#include <set>
-#include <unordered_set>
 #include <utility>
 
 SO_ENGINE_SOURCE(ClothEngine);
@@ -37,53 +31,19 @@ struct ClothEngine::Impl {
   std::string cacheMessage;
   RunStats stats;
   int evaluations = 0;
+  std::shared_ptr<const figment::DrapeContext> givenContext;  // null: drape as with `none`
+  const figment::DrapeContext none;                           // no cache, no observers
+
+  const figment::DrapeContext& drapeContext() const { return givenContext ? *givenContext : none; }
 
   // Drapes from `engine`'s fields; returns every rest point's position and the sections
   // simulated last. Throws naming the field and value, or the file, that cannot be used.
   std::vector<figment::Vec3> simulate(const ClothEngine& engine, std::vector<figment::Triangle>& sections);
   void recordRun(const figment::DrapeResult& run, int triangles);
-  // The drape cache (setDrapeCache): read an entry into the output, keep a new one.
+  // The context's drape cache: read an entry into the output, keep a new one.
   bool readCached(const std::string& key, int numRest, std::vector<SbVec3f>& result, std::vector<int32_t>& indices);
   void keep(const std::string& key, const std::vector<SbVec3f>& result, const std::vector<int32_t>& indices);
 };
-
-namespace {
-
-ClothEngine::ProgressCallback& progressCallback() {
-  static ClothEngine::ProgressCallback callback;
-  return callback;
-}
-
-double& progressInterval() {
-  static double seconds = 1.0;
-  return seconds;
-}
-
-ClothEngine::StepObserver& stepObserver() {
-  static ClothEngine::StepObserver observer;
-  return observer;
-}
-
-std::shared_ptr<const figment::DrapeCache>& drapeCache() {
-  static std::shared_ptr<const figment::DrapeCache> cache;
-  return cache;
-}
-
-bool& broadPhase() {
-  static bool on = true;
-  return on;
-}
-
-// RunStats travel through the cache as their bytes.
-static_assert(std::is_trivially_copyable_v<ClothEngine::RunStats>);
-
-std::vector<unsigned char> packStats(const ClothEngine::RunStats& stats) {
-  std::vector<unsigned char> bytes(sizeof stats);
-  std::memcpy(bytes.data(), &stats, sizeof stats);
-  return bytes;
-}
-
-}  // namespace
 
 void ClothEngine::initClass() {
   if (classTypeId != SoType::badType()) return;
@@ -171,16 +131,11 @@ SbBool ClothEngine::readInstance(SoInput* in, unsigned short readFlags) {
   return TRUE;
 }
 
-void ClothEngine::setProgressCallback(ProgressCallback callback, double intervalSeconds) {
-  progressCallback() = std::move(callback);
-  progressInterval() = intervalSeconds;
+void ClothEngine::setDrapeContext(std::shared_ptr<const figment::DrapeContext> context) {
+  impl_->givenContext = std::move(context);
 }
 
-void ClothEngine::setStepObserver(StepObserver observer) { stepObserver() = std::move(observer); }
-
-void ClothEngine::setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache) { drapeCache() = std::move(cache); }
-
-void ClothEngine::setBroadPhase(bool on) { broadPhase() = on; }
+const std::shared_ptr<const figment::DrapeContext>& ClothEngine::drapeContext() const { return impl_->givenContext; }
 
 const std::string& ClothEngine::lastCacheMessage() const { return impl_->cacheMessage; }
 
@@ -209,14 +164,14 @@ struct Drape {
   figment::EndLevelSettling settling;
 };
 
-Drape drapeWhole(const ClothEngine& engine, const figment::TriangleMesh& garment,
+Drape drapeWhole(const ClothEngine& engine, const figment::DrapeContext& context, const figment::TriangleMesh& garment,
                  const figment::ClothParameters& parameters, std::shared_ptr<const figment::Collider> body,
                  const DrapeProgressFunction& progress) {
   figment::ClothSolver solver(garment, parameters, std::move(body));
-  if (stepObserver())
-    solver.setStepObserver([&engine](const figment::ClothSolver& s) { stepObserver()(engine, s); });
+  if (context.stepObserver)
+    solver.setStepObserver([&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); });
   Drape out;
-  out.run = solver.run(progress, progressInterval());
+  out.run = solver.run(progress, context.progressInterval);
   out.positions = solver.positions();
   out.sections = garment.triangles;
   return out;
@@ -224,10 +179,10 @@ Drape drapeWhole(const ClothEngine& engine, const figment::TriangleMesh& garment
 
 Drape drapeProgressively(const figment::ProgressiveMesh& mesh, const figment::ClothParameters& parameters,
                          std::shared_ptr<const figment::Collider> body, const figment::ProgressiveSchedule& schedule,
-                         const DrapeProgressFunction& progress) {
+                         const DrapeProgressFunction& progress, double progressInterval) {
   figment::ProgressiveDrape drape(mesh, parameters, std::move(body), schedule);
   Drape out;
-  out.run = drape.run(progress, progressInterval());
+  out.run = drape.run(progress, progressInterval);
   out.positions = drape.fullPositions();
   out.sections = drape.levelTriangles();
   out.level = drape.level();
@@ -263,7 +218,8 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                                        std::vector<figment::Triangle>& sections) {
   const figment::TriangleMesh garment = figment::garmentFromFields(engine.restPoints, engine.coordIndex);
   figment::ClothParameters parameters = figment::parametersFromFields(engine);
-  parameters.broadPhase = broadPhase();
+  const figment::DrapeContext& context = drapeContext();
+  parameters.broadPhase = context.broadPhase;
   figment::requireNonNegative("tolerance", engine.tolerance.getValue());
   const auto start = std::chrono::steady_clock::now();  // choosing and the solver's set-up count too
   std::shared_ptr<const figment::Collider> collider;
@@ -274,7 +230,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   if (engine.tolerance.getValue() > 0.0) {
     const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, garment, parameters);
     collider = choice.body;
-    std::snprintf(stats.picked.data(), stats.picked.size(), "%s", choice.picked.label().c_str());
+    stats.picked = choice.picked.label();
     stats.pickedDeviation = choice.picked.worstMeanDeviation;
     script.clear();
     if (choice.picked.progressive != "off") {
@@ -292,12 +248,13 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     mesh = figment::readProgressiveScript(path, garment);
   }
   const auto progress = [&](const figment::DrapeProgress& p) {
-    if (!progressCallback()) return;
+    if (!context.progress) return;
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-    progressCallback()(engine, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed, wall.count()});
+    context.progress(engine, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed, wall.count()});
   };
-  const Drape drape = mesh ? drapeProgressively(*mesh, parameters, std::move(collider), schedule, progress)
-                           : drapeWhole(engine, garment, parameters, std::move(collider), progress);
+  const Drape drape =
+      mesh ? drapeProgressively(*mesh, parameters, std::move(collider), schedule, progress, context.progressInterval)
+           : drapeWhole(engine, context, garment, parameters, std::move(collider), progress);
   stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   recordRun(drape.run, static_cast<int>(garment.triangles.size()));
   stats.level = drape.level;
@@ -311,17 +268,25 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
 }
 
 // The drape kept under `key`, when it fits this engine's rest points: the output and
-// the statistics set from it.
+// the statistics set from it. An entry whose record this build cannot read (another
+// version, damaged) is removed and said; the drape is then made again and kept anew.
 bool ClothEngine::Impl::readCached(const std::string& key, int numRest, std::vector<SbVec3f>& result,
                                    std::vector<int32_t>& indices) {
   const auto start = std::chrono::steady_clock::now();
-  const std::optional<figment::CachedDrape> cached = drapeCache()->find(key, cacheMessage);
-  if (!cached || static_cast<int>(cached->positions.size()) != numRest || cached->stats.size() != sizeof(RunStats))
+  const figment::DrapeCache& cache = *drapeContext().cache;
+  const std::optional<figment::CachedDrape> cached = cache.find(key, cacheMessage);
+  if (!cached || static_cast<int>(cached->positions.size()) != numRest) return false;
+  std::string problem;
+  std::optional<RunStats> kept = figment::readRunStats(cached->stats, problem);
+  if (!kept) {
+    cache.remove(key);
+    cacheMessage = cache.entryPath(key).string() + ": " + problem + ", removed; draped again";
     return false;
+  }
   result.clear();
   for (const auto& p : cached->positions) result.emplace_back(p[0], p[1], p[2]);
   indices = cached->sectionIndices;
-  std::memcpy(&stats, cached->stats.data(), sizeof stats);
+  stats = std::move(*kept);
   stats.fromCache = true;
   stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;
@@ -332,8 +297,8 @@ void ClothEngine::Impl::keep(const std::string& key, const std::vector<SbVec3f>&
   figment::CachedDrape drape;
   for (const SbVec3f& p : result) drape.positions.push_back({p[0], p[1], p[2]});
   drape.sectionIndices = indices;
-  drape.stats = packStats(stats);
-  const std::string problem = drapeCache()->store(key, drape);
+  drape.stats = figment::writeRunStats(stats);
+  const std::string problem = drapeContext().cache->store(key, drape);
   if (!problem.empty()) cacheMessage = "drape cache: " + problem;
 }
 
@@ -352,7 +317,7 @@ void ClothEngine::evaluate() {
   std::vector<SbVec3f> result(restPoints.getValues(0), restPoints.getValues(0) + numRest);
   std::vector<int32_t> indices;
   std::string key;
-  if (drapeCache() && !stepObserver()) {  // an observed drape must run its steps
+  if (impl_->drapeContext().cache && !impl_->drapeContext().stepObserver) {  // an observed drape runs its steps
     const std::string script = progressiveScript.getValue().getString();
     key = figment::drapeKey(*this, script.empty() ? "" : figment::resolveSceneFile(script, impl_->sceneDirectories));
   }
@@ -383,63 +348,3 @@ void ClothEngine::evaluate() {
   SO_ENGINE_OUTPUT(levelCoordIndex, SoMFInt32, setNum(m));
   SO_ENGINE_OUTPUT(levelCoordIndex, SoMFInt32, setValues(0, m, indices.data()));
 }
-
-// --- finding the engines of a scene ------------------------------------------------
-
-namespace {
-
-// Walks field connections backwards from every container it is given.
-class EngineCollector {
- public:
-  std::vector<ClothEngine*> engines;
-
-  void visit(SoFieldContainer* container) {
-    if (!container || !seen_.insert(container).second) return;
-    if (container->isOfType(ClothEngine::getClassTypeId())) engines.push_back(static_cast<ClothEngine*>(container));
-    SoFieldList fields;
-    container->getFields(fields);
-    for (int i = 0; i < fields.getLength(); ++i) visitField(fields[i]);
-  }
-
- private:
-  std::set<SoFieldContainer*> seen_;
-
-  void visitField(SoField* field) {
-    SoEngineOutput* output = nullptr;
-    if (field->getConnectedEngine(output) && output)
-      visit(output->isNodeEngineOutput() ? static_cast<SoFieldContainer*>(output->getNodeContainer())
-                                         : static_cast<SoFieldContainer*>(output->getContainer()));
-    SoField* master = nullptr;
-    if (field->getConnectedField(master) && master) visit(master->getContainer());
-    // Nodes held in fields (an IndexedFaceSet's vertexProperty) may be fed by engines too.
-    if (field->isOfType(SoSFNode::getClassTypeId())) visit(static_cast<SoSFNode*>(field)->getValue());
-    if (field->isOfType(SoMFNode::getClassTypeId())) {
-      auto* nodes = static_cast<SoMFNode*>(field);
-      for (int i = 0; i < nodes->getNum(); ++i) visit((*nodes)[i]);
-    }
-  }
-};
-
-}  // namespace
-
-namespace figment {
-
-std::vector<ClothEngine*> findClothEngines(SoNode* root) {
-  // Each node once, depth first (scene order), every child of every group (a Switch's too).
-  // Not a search action for every node: that makes a path for each way to reach a node, and
-  // each path audits every node along it, so 65,520 paths through shared groups took 4.9 s
-  // (fuzz_scene: 12 s under the sanitizers), growing with the square of the paths.
-  EngineCollector collector;
-  std::unordered_set<const SoNode*> seen;
-  for (std::vector<SoNode*> next{root}; !next.empty();) {
-    SoNode* node = next.back();
-    next.pop_back();
-    if (!node || !seen.insert(node).second) continue;
-    collector.visit(node);
-    if (const SoChildList* children = node->getChildren())
-      for (int i = children->getLength() - 1; i >= 0; --i) next.push_back((*children)[i]);
-  }
-  return collector.engines;
-}
-
-}  // namespace figment

@@ -11,16 +11,13 @@
 #include <Inventor/fields/SoSFString.h>
 #include <Inventor/fields/SoSFVec3f.h>
 
-#include <array>
 #include <functional>
 #include <memory>
 #include <string>
-#include <vector>
 
-class SoNode;
 namespace figment {
 class ClothSolver;
-class DrapeCache;
+struct DrapeContext;
 }
 
 /*!
@@ -233,15 +230,16 @@ class ClothEngine : public SoEngine {
     // moved from there to the end of the run (mean and largest, m).
     int level = 0, levels = 0, sections = 0;
     double endLevelSeconds = -1.0, meanMoveAfterEndLevel = 0.0, maxMoveAfterEndLevel = 0.0;
-    // The drape came from the drape cache (setDrapeCache): the statistics are the run
-    // that made it, but wallSeconds, which is the time to find and read it.
+    // The drape came from the drape cache (DrapeContext::cache): the statistics are the
+    // run that made it, but wallSeconds, which is the time to find and read it.
     bool fromCache = false;
     // With a tolerance: the configuration picked ("" without) and its measured worst
     // deviation, % of the garment's height.
-    std::array<char, 160> picked{};
+    std::string picked;
     double pickedDeviation = 0.0;
   };
-  // Reported about once per second of wall time while a simulation runs.
+  // Reported about once per second of wall time while a simulation runs
+  // (DrapeContext::progress).
   struct Progress {
     int iterations = 0;
     double simulatedSeconds = 0.0;
@@ -251,32 +249,17 @@ class ClothEngine : public SoEngine {
   };
   using ProgressCallback = std::function<void(const ClothEngine&, const Progress&)>;
 
-  // One callback for all engines (figment-view prints progress on stderr), called about
-  // every `intervalSeconds` of wall time (looked at every 64 steps; 0: every 64 steps);
-  // an empty function removes it. Not for use while an engine is evaluating.
-  static void setProgressCallback(ProgressCallback callback, double intervalSeconds = 1.0);
-
-  // One observer for all engines, called with the engine and its solver once before a
-  // simulation's first step and after every step (figment-view records frames of a
-  // time span and the wind force through it; sim/cloth/ClothSolver.h). Whole-garment
-  // drapes only: a progressive drape's solver changes with its level and is not
-  // observed. While one is set, drapes are simulated, neither read from the drape cache
-  // (a cached drape has no steps to observe) nor kept there. An empty function removes
-  // it. Not for use while an engine is evaluating.
+  // Called with the engine and its solver before a simulation's first step and after
+  // every step (DrapeContext::stepObserver).
   using StepObserver = std::function<void(const ClothEngine&, const figment::ClothSolver&)>;
-  static void setStepObserver(StepObserver observer);
 
-  // A cache of finished drapes for all engines (io/DrapeCache.h), or none (null, the
-  // default: every evaluation simulates). With one, an evaluation whose inputs, body,
-  // script and program match a kept drape (nodes/cloth/DrapeKey.h) reads it instead of
-  // simulating, and one that simulates keeps its drape. figment-view sets it unless
-  // --no-cache. Not for use while an engine is evaluating.
-  static void setDrapeCache(std::shared_ptr<const figment::DrapeCache> cache);
-  // Whether drapes test only the body parts near the garment (the default; sim/collision/
-  // BroadPhaseCollider.h). A drape is the same either way: off only to measure what the
-  // broad phase saves (figment-bench drape --broad-phase off). Not for use while an
-  // engine is evaluating.
-  static void setBroadPhase(bool on);
+  // What this engine drapes with besides its fields: the drape cache, the observers, the
+  // broad phase (nodes/cloth/DrapeContext.h). Its owner (a scene session) hands the same
+  // one to each engine of its scene; null, the default, drapes with no cache and no
+  // observers. Not for use while the engine is evaluating.
+  void setDrapeContext(std::shared_ptr<const figment::DrapeContext> context);
+  const std::shared_ptr<const figment::DrapeContext>& drapeContext() const;
+
   // What the cache had to say in the last evaluation (a damaged entry dropped, a drape
   // that could not be kept), one line; empty otherwise.
   const std::string& lastCacheMessage() const;
@@ -300,12 +283,3 @@ class ClothEngine : public SoEngine {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-namespace figment {
-
-// The ClothEngines that feed the scene under `root`, in scene order, each once: engines
-// connected to a field of any node in the graph (inactive Switch children included),
-// of nodes held in node fields, and engines feeding those engines' inputs.
-std::vector<ClothEngine*> findClothEngines(SoNode* root);
-
-}  // namespace figment

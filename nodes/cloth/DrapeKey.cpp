@@ -23,6 +23,8 @@
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoNode.h>
 
+#include <dlfcn.h>
+
 #include <cinttypes>
 #include <cstdio>
 #include <filesystem>
@@ -135,19 +137,23 @@ void addNode(KeyWriter& key, const std::string& where, SoNode* node, std::set<co
       addNode(key, where + "/" + std::to_string(i), (*children)[i], seen);
 }
 
-std::string executable() {
+// The file that holds this code: the node library (libfigment_nodes.so), whatever program
+// loaded it (figment-view, a test, python3 under pivy); "" when the loader cannot say.
+std::string nodeLibrary() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&drapeKey), &info) == 0 || !info.dli_fname) return "";
   std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string() : self.string();
+  const std::filesystem::path file = std::filesystem::canonical(info.dli_fname, ec);
+  return ec ? std::string(info.dli_fname) : file.string();
 }
 
 }  // namespace
 
 std::string drapeKey(const ClothEngine& engine, const std::string& scriptPath) {
   KeyWriter key;
-  const std::string self = executable();
-  if (self.empty()) key.line("program", __DATE__ " " __TIME__);
-  else key.file("program", self);
+  const std::string library = nodeLibrary();
+  if (library.empty()) key.line("library", __DATE__ " " __TIME__);
+  else key.file("library", library);
   std::set<const SoNode*> seen;
   addFields(key, "engine", engine, seen);
   if (!scriptPath.empty()) key.file("script", scriptPath);

@@ -14,8 +14,8 @@
 
 #include "nodes/cloth/ClothEngine.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneSession.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -30,7 +30,7 @@ namespace {
 
 constexpr double kMaxSteps = 40;
 constexpr double kMaxSimulated = 0.05;  // s
-const figment::viewer::ImageSize kImage{48, 48};
+const figment::session::ImageSize kImage{48, 48};
 
 // Small meshes the seeds name in place of the shipped body and garments (scenes/human.zae,
 // dress.obj), so an input that keeps its MeshFile reads in microseconds, not seconds.
@@ -77,9 +77,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // One renderer for the whole run: its OSMesa context is made on the first render only. Never
   // destroyed: at exit OSMesa's rasterizer threads are gone before static destructors run, and
   // destroying its context then waits for them forever.
-  static auto& renderer = *new figment::viewer::SceneRenderer(kImage);
+  static auto& renderer = *new figment::session::SceneRenderer(kImage);
   figment::fuzz::writeFile("scene.iv", data, size);
-  figment::viewer::SceneSession session;
+  figment::session::SceneSession session;
   if (!session.load("scene.iv")) return 0;
   boundEngines(session.engines());
   session.drape();  // then the guard's check of the shapes

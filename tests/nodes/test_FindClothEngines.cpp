@@ -2,6 +2,7 @@
 // (under a Switch that is off, or reached only through a field connection). It walks each node
 // once: a search action made a path for every way to reach a node, and 65,520 paths through
 // shared groups took 4.9 s (found by tests/fuzz/fuzz_scene).
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "support/SceneTestSupport.h"
 

@@ -1,6 +1,7 @@
 // The default scene end to end: scenes/dress.iv is read, the dress is draped on the
 // default body by the simulation and comes to rest outside the body, held up at the
 // shoulders, and the front view shows both dress and skin.
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/render/ClothingLayer.h"
@@ -11,8 +12,8 @@
 #include "support/Pixels.h"
 #include "viewer/OffscreenContext.h"
 #include "guard/SceneFile.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoEngineOutput.h>
@@ -33,6 +34,7 @@
 #include <cmath>
 #include <limits>
 
+using namespace figment::session;
 using namespace figment::viewer;
 
 namespace {

@@ -1,5 +1,6 @@
 // scenes/posed.iv without draping it: the mannequin posed and sized through its fields,
 // its skin and its collision volumes moved by the same transformations.
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"

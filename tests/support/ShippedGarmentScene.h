@@ -3,6 +3,7 @@
 // (kept for the object's life, so the body loads when the engine drapes), and its
 // ClothEngine.
 
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "support/SceneTestSupport.h"
 

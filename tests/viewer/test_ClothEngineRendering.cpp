@@ -1,9 +1,10 @@
 // Rendering reads the garment's coordinates but simulates only when an input changed.
 
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -11,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+using namespace figment::session;
 using namespace figment::viewer;
 
 TEST(ClothEngineRendering, RenderingAgainDoesNotSimulateAgain) {

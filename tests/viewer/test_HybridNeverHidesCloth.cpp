@@ -12,9 +12,9 @@
 #include "support/Pixels.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneSession.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
 

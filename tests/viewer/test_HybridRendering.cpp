@@ -10,8 +10,8 @@
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 #include "guard/SceneFile.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/SbViewportRegion.h>
@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
 

@@ -3,8 +3,8 @@
 // vertex arrays come out blank with no error.
 
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+using namespace figment::session;
 using namespace figment::viewer;
 
 namespace {

@@ -13,8 +13,8 @@
 #include "support/Pixels.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneSession.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/SbViewportRegion.h>
@@ -34,6 +34,7 @@
 #include <string>
 #include <vector>
 
+using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
 using figment::test::Rgb;

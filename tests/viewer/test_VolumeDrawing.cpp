@@ -6,8 +6,8 @@
 #include "support/TempDir.h"
 #include "viewer/OffscreenContext.h"
 #include "guard/SceneFile.h"
-#include "viewer/SceneRenderer.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -17,6 +17,7 @@
 
 #include <string>
 
+using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
 

@@ -1,6 +1,7 @@
 // ClothEngine: translates fields into a simulation, lazily, and never lets an error
 // escape; findClothEngines finds the engines that feed a scene.
 
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "nodes/body/MeshFile.h"

@@ -1,11 +1,14 @@
-// ClothEngine with the drape cache: a second evaluation with the same inputs reads the
-// kept drape (bit for bit what the simulation gave, without simulating); a damaged
-// entry is dropped, said and draped again; and the key changes with every field of the
-// engine and of the Mannequin it drapes on, one at a time.
+// ClothEngine with the drape cache of its context: a second evaluation with the same
+// inputs reads the kept drape (bit for bit what the simulation gave, without
+// simulating); a damaged entry, or one whose record is of another version, is dropped,
+// said and draped again; the key names the node library's file, not the program's, and
+// changes with every field of the engine and of the Mannequin it drapes on, one at a time.
 #include "io/DrapeCache.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
+#include "nodes/cloth/DrapeContext.h"
 #include "nodes/cloth/DrapeKey.h"
+#include "nodes/cloth/RunStatsRecord.h"
 #include "support/ShippedGarmentScene.h"
 #include "support/TempDir.h"
 
@@ -24,18 +27,20 @@ using namespace figment::test;
 
 namespace {
 
-// Sets the cache for the scope.
-class ScopedDrapeCache {
+// A drape context with a cache in `folder`, handed to `engine`.
+class CachingContext {
  public:
-  explicit ScopedDrapeCache(const std::filesystem::path& folder)
-      : cache_(std::make_shared<figment::DrapeCache>(folder, 1u << 26)) {
-    ClothEngine::setDrapeCache(cache_);
+  CachingContext(const std::filesystem::path& folder, ClothEngine& engine)
+      : cache_(std::make_shared<figment::DrapeCache>(folder, 1u << 26)),
+        context_(std::make_shared<figment::DrapeContext>()) {
+    context_->cache = cache_;
+    engine.setDrapeContext(context_);
   }
-  ~ScopedDrapeCache() { ClothEngine::setDrapeCache(nullptr); }
   const figment::DrapeCache& cache() const { return *cache_; }
 
  private:
   std::shared_ptr<figment::DrapeCache> cache_;
+  std::shared_ptr<figment::DrapeContext> context_;
 };
 
 std::vector<SbVec3f> drape(ClothEngine& engine) {
@@ -129,9 +134,9 @@ SoFieldContainer* mannequinOf(const ShippedGarmentScene& scene) {
 
 TEST(DrapeCacheEngine, ASecondDrapeIsReadBitForBitWithoutSimulating) {
   const TempDir dir;
-  const ScopedDrapeCache cache(dir.path());
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
+  const CachingContext cache(dir.path(), engine);
   const std::vector<SbVec3f> first = drape(engine);
   ASSERT_EQ(engine.lastError(), "");
   EXPECT_FALSE(engine.lastRun().fromCache);
@@ -146,9 +151,9 @@ TEST(DrapeCacheEngine, ASecondDrapeIsReadBitForBitWithoutSimulating) {
 
 TEST(DrapeCacheEngine, ADamagedEntryIsDroppedSaidAndDrapedAgain) {
   const TempDir dir;
-  const ScopedDrapeCache cache(dir.path());
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
+  const CachingContext cache(dir.path(), engine);
   const std::vector<SbVec3f> first = drape(engine);
   const std::filesystem::path entry = cache.cache().entryPath(figment::drapeKey(engine, ""));
   ASSERT_TRUE(std::filesystem::exists(entry));
@@ -163,6 +168,42 @@ TEST(DrapeCacheEngine, ADamagedEntryIsDroppedSaidAndDrapedAgain) {
   EXPECT_NE(engine.lastCacheMessage().find(entry.string()), std::string::npos) << engine.lastCacheMessage();
   EXPECT_TRUE(sameBits(first, second));  // simulated again, to the same bits
   EXPECT_TRUE(std::filesystem::exists(entry));  // and kept again
+}
+
+TEST(DrapeCacheEngine, ARecordOfAnotherVersionIsDroppedSaidAndMadeAgain) {
+  const TempDir dir;
+  const ShippedGarmentScene scene("dress.iv");
+  ClothEngine& engine = *scene.engine();
+  const CachingContext cache(dir.path(), engine);
+  const std::vector<SbVec3f> first = drape(engine);
+  const std::string key = figment::drapeKey(engine, "");
+  std::string problem;
+  std::optional<figment::CachedDrape> entry = cache.cache().find(key, problem);
+  ASSERT_TRUE(entry) << problem;
+  // A sound entry (its checksum matches) whose record says it is of a later version.
+  const std::uint32_t later = figment::kRunStatsRecordVersion + 1;
+  std::memcpy(entry->stats.data(), &later, sizeof later);
+  ASSERT_EQ(cache.cache().store(key, *entry), "");
+  engine.restPoints.touch();
+  const std::vector<SbVec3f> second = drape(engine);
+  EXPECT_FALSE(engine.lastRun().fromCache);
+  EXPECT_NE(engine.lastCacheMessage().find(cache.cache().entryPath(key).string()), std::string::npos);
+  EXPECT_NE(engine.lastCacheMessage().find("version " + std::to_string(later)), std::string::npos)
+      << engine.lastCacheMessage();
+  EXPECT_TRUE(sameBits(first, second));
+  // Made again in this version: the next evaluation reads it.
+  engine.restPoints.touch();
+  EXPECT_TRUE(sameBits(first, drape(engine)));
+  EXPECT_TRUE(engine.lastRun().fromCache);
+  EXPECT_EQ(engine.lastCacheMessage(), "");
+}
+
+TEST(DrapeCacheEngine, TheKeyNamesTheNodeLibraryNotTheProgram) {
+  const ShippedGarmentScene scene("dress.iv");
+  const std::string key = figment::drapeKey(*scene.engine(), "");
+  EXPECT_NE(key.find("library=/"), std::string::npos) << key.substr(0, 200);
+  EXPECT_NE(key.find("libfigment_nodes.so"), std::string::npos) << key.substr(0, 200);
+  EXPECT_EQ(key.find("test_nodes"), std::string::npos) << "the test program is not what drapes";
 }
 
 TEST(DrapeCacheEngine, EveryFieldOfTheEngineChangesTheKey) { expectEveryFieldChangesTheKey("ClothEngine", engineOf); }

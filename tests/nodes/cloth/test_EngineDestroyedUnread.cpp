@@ -2,6 +2,7 @@
 // to read after its ClothEngine destroys the engine unread, and that used to drape the whole
 // maxTime first: a read error took as long as the drape (found by tests/fuzz/fuzz_scene, where
 // a mangled scene took 17 s). The engine now skips a drape nothing can read.
+#include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "support/SceneTestSupport.h"
 

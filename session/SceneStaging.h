@@ -1,7 +1,7 @@
 #pragma once
 // What figment-view adds around a scene so it can be seen: a camera and a light.
 
-#include "viewer/ViewOptions.h"
+#include "session/SessionOptions.h"
 
 #include <Inventor/SbBox3f.h>
 #include <Inventor/SbVec3f.h>
@@ -12,7 +12,7 @@ class SoNode;
 class SoPerspectiveCamera;
 class SoSeparator;
 
-namespace figment::viewer {
+namespace figment::session {
 
 // A perspective camera with a 45 degree vertical field of view looking at the centre of
 // `box` from direction `view` (camera at centre + d * (sin AZ cos EL, sin EL,
@@ -37,4 +37,4 @@ SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optiona
 // coordinates evaluates the ClothEngines that feed them.
 SbBox3f sceneBox(SoNode* scene, const ImageSize& size);
 
-}  // namespace figment::viewer
+}  // namespace figment::session

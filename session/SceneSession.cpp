@@ -1,12 +1,13 @@
-#include "viewer/SceneSession.h"
+#include "session/SceneSession.h"
 
-#include "viewer/SceneStaging.h"
+#include "nodes/SceneSearch.h"
+#include "session/SceneStaging.h"
 
 #include "guard/Guard.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
-namespace figment::viewer {
+namespace figment::session {
 
 namespace {
 
@@ -37,9 +38,15 @@ EngineDrape resultOf(ClothEngine& engine) {
 
 }  // namespace
 
+SceneSession::SceneSession() : SceneSession(std::make_shared<DrapeContext>()) {}
+
+SceneSession::SceneSession(std::shared_ptr<DrapeContext> context)
+    : context_(context ? std::move(context) : std::make_shared<DrapeContext>()) {}
+
 SceneSession::~SceneSession() { clear(); }
 
 void SceneSession::clear() {
+  for (ClothEngine* engine : engines_) engine->setDrapeContext(nullptr);  // one held elsewhere drapes alone
   if (staged_) staged_->unref();
   if (scene_) scene_->unref();
   staged_ = scene_ = nullptr;
@@ -54,6 +61,7 @@ bool SceneSession::load(const std::string& path) {
   scene_ = guard::readScene(path, loadError_);
   if (!scene_) return false;
   engines_ = findClothEngines(scene_);
+  for (ClothEngine* engine : engines_) engine->setDrapeContext(context_);
   return true;
 }
 
@@ -105,4 +113,4 @@ SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<View
   return staged_;
 }
 
-}  // namespace figment::viewer
+}  // namespace figment::session

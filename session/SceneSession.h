@@ -1,20 +1,23 @@
 #pragma once
 // One scene, from file to staged root: load -> drape every engine -> stage, written once
-// for figment-view and figment-bench. Rendering the staged root is SceneRenderer's.
+// for every front end (figment-view, figment-bench, a service). Rendering the staged root
+// is SceneRenderer's.
 
 #include "nodes/body/CollisionBody.h"
 #include "nodes/cloth/ClothEngine.h"
-#include "viewer/ViewOptions.h"
+#include "nodes/cloth/DrapeContext.h"
+#include "session/SessionOptions.h"
 
 #include <Inventor/SbBox3f.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 class SoSeparator;
 
-namespace figment::viewer {
+namespace figment::session {
 
 // How an engine integrated its drape: the fields the statistics report.
 struct DrapeMethod {
@@ -37,18 +40,29 @@ struct EngineDrape {
 };
 
 // The session holds the scene (and, once staged, the staged root) until it is cleared or
-// destroyed. Coin must be initialised first (initHeadless() to render; figment::init()
-// is enough to drape); read errors come as one line only after initHeadless().
+// destroyed, and the drape context its engines drape with: its own drape cache (none
+// unless the front end sets one), observers and broad phase, shared with no other
+// session. Coin must be initialised first (viewer's initHeadless() to render;
+// figment::init() is enough to drape); read errors come as one line only after
+// initHeadless().
 class SceneSession {
  public:
-  SceneSession() = default;
+  // A session with a context of its own (no cache, no observers), or the one given.
+  SceneSession();
+  explicit SceneSession(std::shared_ptr<DrapeContext> context);
   ~SceneSession();
   SceneSession(const SceneSession&) = delete;
   SceneSession& operator=(const SceneSession&) = delete;
 
-  // Reads the scene in `path` through the guard (guard::readScene) and finds its ClothEngines
-  // (in scene order, figment::findClothEngines); nothing simulates yet. Returns false, with
-  // loadError() one line ("no such file", "line 12: Unknown class \"Foo\""), on failure.
+  // What this session's engines drape with. Set it between drapes, never during one.
+  DrapeContext& context() { return *context_; }
+  const DrapeContext& context() const { return *context_; }
+  const std::shared_ptr<DrapeContext>& sharedContext() const { return context_; }
+
+  // Reads the scene in `path` through the guard (guard::readScene), finds its ClothEngines
+  // (in scene order, figment::findClothEngines) and hands each the session's context;
+  // nothing simulates yet. Returns false, with loadError() one line ("no such file",
+  // "line 12: Unknown class \"Foo\""), on failure.
   bool load(const std::string& path);
   const std::string& loadError() const { return loadError_; }
 
@@ -75,7 +89,8 @@ class SceneSession {
   // The same, framing `box` (frames of a time span share one camera: the box of them all).
   SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box);
 
-  // Unreferences the scene and the staged root; the session is empty again.
+  // Takes the context back from the engines and unreferences the scene and the staged
+  // root; the session is empty again (its context stays).
   void clear();
 
   SoSeparator* scene() const { return scene_; }
@@ -93,8 +108,9 @@ class SceneSession {
   std::string loadError_;
   std::string shapeError_;
   bool shapesChecked_ = false;  // since the scene was loaded or last draped
+  std::shared_ptr<DrapeContext> context_;  // never null
   std::vector<ClothEngine*> engines_;
   std::vector<EngineDrape> drapes_;
 };
 
-}  // namespace figment::viewer
+}  // namespace figment::session

@@ -2,7 +2,7 @@
 // a light only where the scene has none.
 
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneStaging.h"
+#include "session/SceneStaging.h"
 
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/nodes/SoCube.h>
@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 
+using namespace figment::session;
 using namespace figment::viewer;
 
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // Renders a staged scene off-screen and writes it as a PNG image.
 
-#include "viewer/ViewOptions.h"
+#include "session/SessionOptions.h"
 
 #include <Inventor/SbColor.h>
 
@@ -11,7 +11,7 @@
 class SoNode;
 class SoOffscreenRenderer;
 
-namespace figment::viewer {
+namespace figment::session {
 
 class SceneRenderer {
  public:
@@ -42,4 +42,4 @@ class SceneRenderer {
   bool rendered_ = false;
 };
 
-}  // namespace figment::viewer
+}  // namespace figment::session

@@ -1,10 +1,10 @@
-#include "viewer/DrapeRecorder.h"
+#include "session/DrapeRecorder.h"
 
 #include "sim/cloth/ClothSolver.h"
 
 #include <cmath>
 
-namespace figment::viewer {
+namespace figment::session {
 
 namespace {
 
@@ -21,13 +21,13 @@ std::vector<SbVec3f> toFloats(const std::vector<Vec3>& x) {
 
 }  // namespace
 
-DrapeRecorder::DrapeRecorder(std::vector<double> frameTimes, double windSpacing)
-    : frameTimes_(std::move(frameTimes)), windSpacing_(windSpacing) {
-  ClothEngine::setStepObserver(
-      [this](const ClothEngine& engine, const ClothSolver& solver) { observe(engine, solver); });
+DrapeRecorder::DrapeRecorder(std::shared_ptr<DrapeContext> context, std::vector<double> frameTimes,
+                             double windSpacing)
+    : context_(std::move(context)), frameTimes_(std::move(frameTimes)), windSpacing_(windSpacing) {
+  context_->stepObserver = [this](const ClothEngine& engine, const ClothSolver& solver) { observe(engine, solver); };
 }
 
-DrapeRecorder::~DrapeRecorder() { ClothEngine::setStepObserver({}); }
+DrapeRecorder::~DrapeRecorder() { context_->stepObserver = {}; }
 
 void DrapeRecorder::observe(const ClothEngine& engine, const ClothSolver& solver) {
   // A run's first call comes before its first step: an engine simulating again starts over.
@@ -63,4 +63,4 @@ const std::vector<WindSample>& DrapeRecorder::windSamples(const ClothEngine& eng
   return found == records_.end() ? none : found->second.wind;
 }
 
-}  // namespace figment::viewer
+}  // namespace figment::session

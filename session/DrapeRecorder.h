@@ -1,17 +1,19 @@
 #pragma once
-// figment-view --frames and --wind-force: what each engine's simulation passed through
-// on its way, recorded by ClothEngine's step observer while the session drapes: the
-// garment's positions at chosen simulated times, and the wind's total force on it.
+// What each engine's simulation passed through on its way (figment-view --frames and
+// --wind-force), recorded by the step observer of a drape context while the session
+// drapes: the garment's positions at chosen simulated times, and the wind's total force.
 
 #include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/DrapeContext.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <Inventor/SbVec3f.h>
 
 #include <map>
+#include <memory>
 #include <vector>
 
-namespace figment::viewer {
+namespace figment::session {
 
 // The wind on a whole garment at one moment (paper §2, Fig. 2.2; sim/cloth/Wind.h).
 struct WindSample {
@@ -25,8 +27,9 @@ class DrapeRecorder {
  public:
   // Records each engine's positions at `frameTimes` (s, ascending) and, when
   // `windSpacing` > 0, the wind force about every `windSpacing` seconds simulated (at
-  // most once a step). Observes every engine until destroyed (ClothEngine::setStepObserver).
-  DrapeRecorder(std::vector<double> frameTimes, double windSpacing);
+  // most once a step). Observes every engine that drapes with `context` (a session's:
+  // SceneSession::sharedContext) until destroyed, as its step observer.
+  DrapeRecorder(std::shared_ptr<DrapeContext> context, std::vector<double> frameTimes, double windSpacing);
   ~DrapeRecorder();
   DrapeRecorder(const DrapeRecorder&) = delete;
   DrapeRecorder& operator=(const DrapeRecorder&) = delete;
@@ -50,9 +53,10 @@ class DrapeRecorder {
   };
   void observe(const ClothEngine& engine, const ClothSolver& solver);
 
+  std::shared_ptr<DrapeContext> context_;
   std::vector<double> frameTimes_;
   double windSpacing_;
   std::map<const ClothEngine*, Record> records_;
 };
 
-}  // namespace figment::viewer
+}  // namespace figment::session

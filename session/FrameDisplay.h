@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace figment::viewer {
+namespace figment::session {
 
 // Puts `positions` (one per rest point) wherever `engine`'s positions output is drawn:
 // each point field it feeds stops following the engine (its connection disabled, not
@@ -16,4 +16,4 @@ namespace figment::viewer {
 // changing it would make them simulate again.
 void showPositions(ClothEngine& engine, const std::vector<SbVec3f>& positions);
 
-}  // namespace figment::viewer
+}  // namespace figment::session

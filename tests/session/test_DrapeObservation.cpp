@@ -1,13 +1,13 @@
-// The hooks figment-view watches a drape through: ClothEngine's progress callback (the
-// progress bar) and step observer (frames of a time span, the wind force), and the
-// DrapeRecorder built on the observer.
+// The hooks figment-view watches a drape through, in its session's drape context: the
+// progress callback (the progress bar) and the step observer (frames of a time span, the
+// wind force), and the DrapeRecorder built on the observer.
 
 #include "io/DrapeCache.h"
 #include "support/TempDir.h"
-#include "viewer/DrapeRecorder.h"
-#include "viewer/FrameDisplay.h"
+#include "session/DrapeRecorder.h"
+#include "session/FrameDisplay.h"
 #include "viewer/OffscreenContext.h"
-#include "viewer/SceneSession.h"
+#include "session/SceneSession.h"
 #include "sim/cloth/ClothSolver.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+using namespace figment::session;
 using namespace figment::viewer;
 
 namespace {
@@ -36,11 +37,6 @@ std::string fallingSquare(double seconds, const std::string& fields = "") {
 class DrapeObservation : public ::testing::Test {
  protected:
   void SetUp() override { initHeadless(); }
-  void TearDown() override {
-    ClothEngine::setProgressCallback({});
-    ClothEngine::setStepObserver({});
-    ClothEngine::setDrapeCache(nullptr);
-  }
   // Loads `text` into the session; its one engine.
   ClothEngine& load(const std::string& text) {
     EXPECT_TRUE(session_.load(dir_.file("scene.iv", text))) << session_.loadError();
@@ -56,12 +52,11 @@ class DrapeObservation : public ::testing::Test {
 TEST_F(DrapeObservation, ProgressComesEvery64StepsWithAZeroInterval) {
   ClothEngine& engine = load(fallingSquare(0.5));  // 500 steps
   std::vector<ClothEngine::Progress> reports;
-  ClothEngine::setProgressCallback(
-      [&](const ClothEngine& from, const ClothEngine::Progress& p) {
-        EXPECT_EQ(&from, &engine);
-        reports.push_back(p);
-      },
-      0.0);
+  session_.context().progress = [&](const ClothEngine& from, const ClothEngine::Progress& p) {
+    EXPECT_EQ(&from, &engine);
+    reports.push_back(p);
+  };
+  session_.context().progressInterval = 0.0;
   ASSERT_EQ(session_.drape().front().error, "");
   ASSERT_EQ(reports.size(), 500u / 64u);  // steps 64, 128, ..., 448
   for (size_t i = 0; i < reports.size(); ++i) {
@@ -74,18 +69,18 @@ TEST_F(DrapeObservation, ProgressComesEvery64StepsWithAZeroInterval) {
 
 TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead) {
   // A kept drape of this very scene would otherwise be read in place of simulating it.
-  ClothEngine::setDrapeCache(std::make_shared<figment::DrapeCache>(dir_.path() / "cache", 1u << 20));
+  session_.context().cache = std::make_shared<figment::DrapeCache>(dir_.path() / "cache", 1u << 20);
   load(fallingSquare(0.05));
   ASSERT_EQ(session_.drape().front().error, "");
   ASSERT_FALSE(session_.drapes().front().run.fromCache);
-  SceneSession again;
+  SceneSession again(session_.sharedContext());  // the same cache
   ASSERT_TRUE(again.load(dir_.file("scene.iv", fallingSquare(0.05))));
   std::vector<double> times;
   std::vector<int> steps;
-  ClothEngine::setStepObserver([&](const ClothEngine&, const figment::ClothSolver& solver) {
+  again.context().stepObserver = [&](const ClothEngine&, const figment::ClothSolver& solver) {
     times.push_back(solver.time());
     steps.push_back(solver.iterations());
-  });
+  };
   ASSERT_EQ(again.drape().front().error, "");
   EXPECT_FALSE(again.drapes().front().run.fromCache);
   ASSERT_EQ(times.size(), 51u);  // before the first step, then after each of 50
@@ -97,7 +92,7 @@ TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead
 
 TEST_F(DrapeObservation, TheRecorderKeepsTheStateAtEachFrameTimeAndTheLastAfterTheRun) {
   ClothEngine& engine = load(fallingSquare(0.2));
-  DrapeRecorder recorder({0.0, 0.1, 0.2, 0.5}, 0.0);
+  DrapeRecorder recorder(session_.sharedContext(), {0.0, 0.1, 0.2, 0.5}, 0.0);
   ASSERT_EQ(session_.drape().front().error, "");
   ASSERT_TRUE(recorder.observed(engine));
   const auto height = [&](size_t k) { return recorder.frame(engine, k).at(0)[1]; };
@@ -112,7 +107,7 @@ TEST_F(DrapeObservation, TheRecorderKeepsTheStateAtEachFrameTimeAndTheLastAfterT
 
 TEST_F(DrapeObservation, AFrameShownReplacesTheDrapeWhereItIsDrawn) {
   ClothEngine& engine = load(fallingSquare(0.1));
-  DrapeRecorder recorder({0.0, 0.1}, 0.0);
+  DrapeRecorder recorder(session_.sharedContext(), {0.0, 0.1}, 0.0);
   ASSERT_EQ(session_.drape().front().error, "");
   auto* points = static_cast<SoCoordinate3*>(SoNode::getByName("Points"));
   ASSERT_NE(points, nullptr);
@@ -128,7 +123,7 @@ TEST_F(DrapeObservation, WindSamplesAreTheModelsForceOnTheWholeGarment) {
   // the force is p(t) * 1 m^2 along +y.
   ClothEngine& engine =
       load(fallingSquare(1.0, "windDirection 0 1 0 windAmplitude 0.5 windFrequency 2 windPhaseInterval 0.25"));
-  DrapeRecorder recorder({}, 0.01);
+  DrapeRecorder recorder(session_.sharedContext(), {}, 0.01);
   ASSERT_EQ(session_.drape().front().error, "");
   const std::vector<WindSample>& samples = recorder.windSamples(engine);
   ASSERT_GE(samples.size(), 100u);

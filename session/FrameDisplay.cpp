@@ -1,4 +1,4 @@
-#include "viewer/FrameDisplay.h"
+#include "session/FrameDisplay.h"
 
 #include "nodes/body/CollisionBody.h"
 
@@ -6,7 +6,7 @@
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/nodes/SoNode.h>
 
-namespace figment::viewer {
+namespace figment::session {
 
 void showPositions(ClothEngine& engine, const std::vector<SbVec3f>& positions) {
   SoFieldList fed;
@@ -25,4 +25,4 @@ void showPositions(ClothEngine& engine, const std::vector<SbVec3f>& positions) {
   }
 }
 
-}  // namespace figment::viewer
+}  // namespace figment::session

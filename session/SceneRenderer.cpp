@@ -1,4 +1,4 @@
-#include "viewer/SceneRenderer.h"
+#include "session/SceneRenderer.h"
 
 #include "nodes/render/StencilRuleElement.h"
 #include "io/PngFile.h"
@@ -7,7 +7,7 @@
 #include <Inventor/SoOffscreenRenderer.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 
-namespace figment::viewer {
+namespace figment::session {
 
 SceneRenderer::SceneRenderer(const ImageSize& size)
     : size_(size),
@@ -37,4 +37,4 @@ std::string SceneRenderer::writePng(const std::string& path) const {
   return figment::writePng(path, {size_.width, size_.height, renderer_->getBuffer()});
 }
 
-}  // namespace figment::viewer
+}  // namespace figment::session

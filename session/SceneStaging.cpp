@@ -1,4 +1,4 @@
-#include "viewer/SceneStaging.h"
+#include "session/SceneStaging.h"
 
 #include "nodes/SceneSearch.h"
 
@@ -17,7 +17,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace figment::viewer {
+namespace figment::session {
 
 namespace {
 
@@ -131,4 +131,4 @@ SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optiona
   return root;
 }
 
-}  // namespace figment::viewer
+}  // namespace figment::session

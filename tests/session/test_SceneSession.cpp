@@ -1,0 +1,266 @@
+// One scene session: a load error is one line; every engine drapes once, in scene order,
+// with its own result and error; staging after the drape simulates nothing again; the
+// guard's shape check runs after the drape and before staging. Two
+// sessions in one process share nothing: each drapes with its own cache and observers.
+
+#include "io/DrapeCache.h"
+#include "nodes/cloth/DrapeKey.h"
+#include "session/SceneSession.h"
+#include "sim/cloth/ClothSolver.h"
+#include "support/TempDir.h"
+#include "viewer/OffscreenContext.h"
+
+#include <Inventor/fields/SoMFVec3f.h>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+using namespace figment::session;
+using namespace figment::viewer;
+
+namespace {
+
+// A falling square of cloth fed by an engine named `name` with `fields`.
+std::string cloth(const std::string& name, const std::string& fields) {
+  return "  Separator {\n    Coordinate3 { point = DEF " + name +
+         " ClothEngine {\n"
+         "      restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+         "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 " + fields + "\n"
+         "    } . positions }\n"
+         "    IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n  }\n";
+}
+
+class SceneSessionTest : public ::testing::Test {
+ protected:
+  void SetUp() override { initHeadless(); }
+  figment::test::TempDir dir_;
+};
+
+}  // namespace
+
+TEST_F(SceneSessionTest, ALoadErrorIsOneLine) {
+  SceneSession session;
+  EXPECT_FALSE(session.load((dir_.path() / "missing.iv").string()));
+  EXPECT_EQ(session.loadError(), "no such file");
+  const std::string unknown = dir_.file("unknown.iv", "#Inventor V2.1 ascii\nSeparator { Frobnicator { } }\n");
+  EXPECT_FALSE(session.load(unknown));
+  EXPECT_NE(session.loadError().find("line 2"), std::string::npos) << session.loadError();
+  EXPECT_EQ(session.loadError().find('\n'), std::string::npos) << session.loadError();
+  EXPECT_EQ(session.scene(), nullptr);
+}
+
+TEST_F(SceneSessionTest, DrapesEveryEngineOnceInSceneOrderWithItsOwnResult) {
+  const std::string scene = dir_.file("two.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("First", "") +
+                                                    cloth("Second", "thickness -0.001") + "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(scene)) << session.loadError();
+  ASSERT_EQ(session.engines().size(), 2u);
+  EXPECT_EQ(session.engines()[0]->evaluationCount(), 0) << "loading simulates nothing";
+
+  const std::vector<EngineDrape>& drapes = session.drape();
+  ASSERT_EQ(drapes.size(), 2u);
+  EXPECT_EQ(drapes[0].name, "First");
+  EXPECT_EQ(drapes[0].label, "ClothEngine 'First'");
+  EXPECT_EQ(drapes[0].error, "");
+  EXPECT_GT(drapes[0].run.iterations, 0);
+  EXPECT_EQ(drapes[0].run.triangles, 2);
+  EXPECT_EQ(drapes[0].method.integrator, "HEUN");
+  EXPECT_EQ(drapes[0].body.kind, "none");
+  EXPECT_EQ(drapes[1].name, "Second");
+  EXPECT_NE(drapes[1].error.find("thickness = -0.001 must be > 0"), std::string::npos) << drapes[1].error;
+  EXPECT_EQ(session.firstError(), drapes[1].error);
+  for (const ClothEngine* engine : session.engines()) EXPECT_EQ(engine->evaluationCount(), 1);
+
+  ASSERT_NE(session.stage({64, 48}, ViewDirection{30.0, 10.0}), nullptr);
+  EXPECT_FALSE(session.stagedBox().isEmpty());
+  for (const ClothEngine* engine : session.engines())
+    EXPECT_EQ(engine->evaluationCount(), 1) << "staging after the drape simulates nothing again";
+}
+
+TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) {
+  const std::string scene =
+      dir_.file("two.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("First", "") + cloth("Second", "") + "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(scene)) << session.loadError();
+  session.drape();
+  session.engines()[1]->friction = 0.2;
+  const std::vector<EngineDrape>& drapes = session.drape();
+  EXPECT_EQ(session.engines()[0]->evaluationCount(), 1);
+  EXPECT_EQ(session.engines()[1]->evaluationCount(), 2);
+  EXPECT_EQ(drapes[1].error, "");
+  EXPECT_GT(drapes[1].run.iterations, 0);
+}
+
+// The guard's draw-side check runs in the session, so every program that stages through it
+// (figment-view, figment-bench, the fuzz target) gets it: after the drape, a shape indexing past
+// its draped coordinates is one line, and nothing is staged.
+TEST_F(SceneSessionTest, ChecksTheDrapedShapesAndStagesNothingPastTheirData) {
+  const std::string good = dir_.file("good.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("Drape", "") + "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(good)) << session.loadError();
+  session.drape();
+  EXPECT_EQ(session.shapeError(), "");
+  EXPECT_NE(session.stage({64, 48}, std::nullopt), nullptr);
+
+  std::string text = cloth("Drape", "");
+  text.replace(text.find("IndexedFaceSet { coordIndex [ 0 3 2 1"), 37, "IndexedFaceSet { coordIndex [ 0 3 2 9");
+  const std::string bad = dir_.file("bad.iv", "#Inventor V2.1 ascii\nSeparator {\n" + text + "}\n");
+  ASSERT_TRUE(session.load(bad)) << session.loadError();
+  session.drape();
+  EXPECT_EQ(session.shapeError(), "IndexedFaceSet: coordIndex[3] = 9 is not a vertex: the coordinates have 4 points");
+  EXPECT_EQ(session.firstError(), session.shapeError());
+  EXPECT_EQ(session.stage({64, 48}, std::nullopt), nullptr);
+  EXPECT_EQ(session.stagedRoot(), nullptr);
+}
+
+TEST_F(SceneSessionTest, StagingAnUndrapedSceneChecksItsShapesFirst) {
+  const std::string bad = dir_.file("faces.iv",
+                                    "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                                    "  IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(bad)) << session.loadError();
+  EXPECT_EQ(session.stage({64, 48}, std::nullopt), nullptr);
+  EXPECT_EQ(session.shapeError(),
+            "IndexedFaceSet: coordIndex[2] = 2147483647 is not a vertex: the coordinates have 3 points");
+}
+
+namespace {
+
+// A box 0.4 m wide whose top is at `top` m, as an OBJ file (faces wound outwards).
+std::string boxObj(double top) {
+  const std::string lo = "0.1", hi = std::to_string(top);
+  return "v -0.2 " + lo + " -0.2\nv 0.2 " + lo + " -0.2\nv 0.2 " + lo + " 0.2\nv -0.2 " + lo + " 0.2\n" +
+         "v -0.2 " + hi + " -0.2\nv 0.2 " + hi + " -0.2\nv 0.2 " + hi + " 0.2\nv -0.2 " + hi + " 0.2\n" +
+         "f 5 8 7\nf 5 7 6\nf 1 2 3\nf 1 3 4\nf 4 3 7\nf 4 7 8\nf 1 5 6\nf 1 6 2\nf 2 6 7\nf 2 7 3\n"
+         "f 1 4 8\nf 1 8 5\n";
+}
+
+// A square of cloth `width` m wide, 0.1 m above the box in `obj`, dropped on it for 0.2 s
+// at steps of 1 ms (200 steps).
+std::string clothOnBox(const std::string& obj, double width, double top) {
+  const std::string h = std::to_string(width / 2), y = std::to_string(top + 0.1);
+  return "#Inventor V2.1 ascii\nSeparator {\n  DEF Body MeshFile { fileName \"" + obj + "\" }\n"
+         "  Coordinate3 { point = DEF Drape ClothEngine {\n    restPoints [ -" + h + " " + y + " -" + h + ", " + h +
+         " " + y + " -" + h + ", " + h + " " + y + " " + h + ", -" + h + " " + y + " " + h + ", 0 " + y + " 0 ]\n"
+         "    coordIndex [ 0 4 1 -1, 1 4 2 -1, 2 4 3 -1, 3 4 0 -1 ]  body USE Body  timeStep 0.001  maxTime 0.2\n"
+         "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 4 1 -1, 1 4 2 -1, 2 4 3 -1, 3 4 0 -1 ] }\n}\n";
+}
+
+// The draped points where the scene's one engine feeds them (a new connection to its
+// output would evaluate it again).
+std::vector<SbVec3f> drapedPositions(const SceneSession& session) {
+  const auto* points = static_cast<const SoMFVec3f*>(session.engines().front()->positions[0]);
+  return {points->getValues(0), points->getValues(0) + points->getNum()};
+}
+
+bool sameBits(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(SbVec3f)) == 0;
+}
+
+std::set<std::filesystem::path> filesIn(const std::filesystem::path& folder) {
+  std::set<std::filesystem::path> files;
+  std::error_code none;  // a folder never made holds nothing
+  for (const auto& entry : std::filesystem::directory_iterator(folder, none)) files.insert(entry.path());
+  return files;
+}
+
+// What a session's observers saw: the engines they were called for, and how often.
+struct Watch {
+  std::set<const ClothEngine*> progressFrom, stepsFrom;
+  int progressReports = 0, stepCalls = 0;
+
+  // Progress every 64 steps; it leaves the cache in use.
+  void watchProgress(figment::DrapeContext& context) {
+    context.progress = [this](const ClothEngine& engine, const ClothEngine::Progress&) {
+      progressFrom.insert(&engine);
+      ++progressReports;
+    };
+    context.progressInterval = 0.0;
+  }
+  // Every step; an observed drape is simulated, not read from the cache.
+  void watchSteps(figment::DrapeContext& context) {
+    context.stepObserver = [this](const ClothEngine& engine, const figment::ClothSolver&) {
+      stepsFrom.insert(&engine);
+      ++stepCalls;
+    };
+  }
+};
+
+}  // namespace
+
+TEST_F(SceneSessionTest, TwoSessionsInOneProcessKeepTheirOwnCachesAndObservers) {
+  const std::string sceneA = dir_.file("a/scene.iv", clothOnBox("box.obj", 0.6, 0.5));
+  const std::string sceneB = dir_.file("b/scene.iv", clothOnBox("box.obj", 0.3, 0.7));
+  dir_.file("a/box.obj", boxObj(0.5));
+  dir_.file("b/box.obj", boxObj(0.7));
+  // Each scene alone, with nothing set: the drape to compare with.
+  std::vector<SbVec3f> aloneA, aloneB;
+  int stepsA = 0, stepsB = 0;
+  for (auto [scene, positions, steps] : {std::tuple{sceneA, &aloneA, &stepsA}, std::tuple{sceneB, &aloneB, &stepsB}}) {
+    SceneSession alone;
+    ASSERT_TRUE(alone.load(scene)) << alone.loadError();
+    ASSERT_EQ(alone.drape().front().error, "");
+    *positions = drapedPositions(alone);
+    *steps = alone.drapes().front().run.iterations;
+  }
+  ASSERT_FALSE(sameBits(aloneA, aloneB));
+  ASSERT_GE(stepsA, 128);  // enough for progress reports
+  ASSERT_GE(stepsB, 128);
+
+  // Both loaded and set up before either drapes: a setting shared between them would
+  // be the second one's for both.
+  SceneSession a, b;
+  ASSERT_TRUE(a.load(sceneA)) << a.loadError();
+  ASSERT_TRUE(b.load(sceneB)) << b.loadError();
+  const std::filesystem::path folderA = dir_.path() / "cache-a", folderB = dir_.path() / "cache-b";
+  a.context().cache = std::make_shared<figment::DrapeCache>(folderA, 1u << 20);
+  b.context().cache = std::make_shared<figment::DrapeCache>(folderB, 1u << 20);
+  Watch watchA, watchB;
+  watchA.watchProgress(a.context());
+  watchB.watchProgress(b.context());
+  ASSERT_EQ(a.drape().front().error, "");
+  ASSERT_EQ(b.drape().front().error, "");
+  EXPECT_TRUE(sameBits(drapedPositions(a), aloneA));
+  EXPECT_TRUE(sameBits(drapedPositions(b), aloneB));
+  const ClothEngine* engineA = a.engines().front();
+  const ClothEngine* engineB = b.engines().front();
+  EXPECT_EQ(watchA.progressFrom, std::set<const ClothEngine*>{engineA});
+  EXPECT_EQ(watchB.progressFrom, std::set<const ClothEngine*>{engineB});
+  EXPECT_EQ(watchA.progressReports, stepsA / 64);
+  EXPECT_EQ(watchB.progressReports, stepsB / 64);
+  // Each cache folder holds its own scene's drape, and only that.
+  EXPECT_EQ(filesIn(folderA), std::set{a.context().cache->entryPath(figment::drapeKey(*engineA, ""))});
+  EXPECT_EQ(filesIn(folderB), std::set{b.context().cache->entryPath(figment::drapeKey(*engineB, ""))});
+
+  // Step observers, both set before either drapes again: each sees its own steps only.
+  watchA.watchSteps(a.context());
+  watchB.watchSteps(b.context());
+  a.engines().front()->restPoints.touch();
+  b.engines().front()->restPoints.touch();
+  ASSERT_EQ(a.drape().front().error, "");
+  ASSERT_EQ(b.drape().front().error, "");
+  EXPECT_TRUE(sameBits(drapedPositions(a), aloneA));
+  EXPECT_TRUE(sameBits(drapedPositions(b), aloneB));
+  EXPECT_EQ(watchA.stepsFrom, std::set<const ClothEngine*>{engineA});
+  EXPECT_EQ(watchB.stepsFrom, std::set<const ClothEngine*>{engineB});
+  EXPECT_EQ(watchA.stepCalls, stepsA + 1);  // before the first step, then after each
+  EXPECT_EQ(watchB.stepCalls, stepsB + 1);
+}
+
+TEST_F(SceneSessionTest, AnEngineLeftByItsSessionDrapesWithoutItsContext) {
+  const std::string scene = dir_.file("one.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("Only", "") + "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(scene)) << session.loadError();
+  ClothEngine* engine = session.engines().front();
+  EXPECT_EQ(engine->drapeContext(), session.sharedContext());
+  engine->ref();
+  session.clear();
+  EXPECT_EQ(engine->drapeContext(), nullptr);
+  engine->unref();
+}
