@@ -3,7 +3,9 @@
 // drape cache writes its entries and the engine its record of a run, field by field
 // (never a whole struct's bytes, whose padding and layout are the compiler's).
 
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -31,13 +33,14 @@ class ByteWriter {
     put(static_cast<std::uint64_t>(text.size()));
     append(text.data(), text.size());
   }
-  const std::vector<unsigned char>& bytes() const { return bytes_; }
   std::vector<unsigned char> take() { return std::move(bytes_); }
 
  private:
+  // Byte by byte: GCC 12 warns, wrongly, of an overflow where a range is inserted or
+  // copied into a vector just grown, once inlined (-Wstringop-overflow).
   void append(const void* data, std::size_t size) {
     const auto* first = static_cast<const unsigned char*>(data);
-    bytes_.insert(bytes_.end(), first, first + size);
+    std::copy_n(first, size, std::back_inserter(bytes_));
   }
   std::vector<unsigned char> bytes_;
 };
