@@ -51,6 +51,10 @@ run("build examples/" ${CMAKE_COMMAND} --build ${build})
 # The example's application: FIGMENT's kit and SphereVolume linked in.
 run("drape_over_sphere" ${build}/drape_over_sphere ${EXAMPLES_SOURCE_DIR}/sphere-drape.iv)
 
+# A second front end on the installed scene session: two sessions with one drape context,
+# the second reading the first's drape from the context's cache.
+run("session_drape" ${build}/session_drape ${EXAMPLES_SOURCE_DIR}/sphere-drape.iv ${WORK_DIR}/session-cache)
+
 # A plain Coin program (Coin and figment::guard only) reads through the guard: the example's
 # scene, with FIGMENT's nodes and SphereVolume loaded by name, and the scene of issue 28, an
 # included volumes file declaring a field its CapsuleVolume does not have, refused in one line.
