@@ -10,6 +10,10 @@ std::string writeAtomically(const std::string& path,
                             const std::function<std::string(const std::string& temporaryPath)>& write) {
   namespace fs = std::filesystem;
   const fs::path target(path);
+  // The folder is made as needed, so an output may name one that does not exist yet.
+  std::error_code made;
+  if (!target.parent_path().empty()) fs::create_directories(target.parent_path(), made);
+  if (made) return "cannot make the folder " + target.parent_path().string() + ": " + made.message();
   // Same folder, so the rename cannot cross file systems; same extension, so writers
   // that choose the format by extension still see it.
   fs::path temporary = target.parent_path() / ".";

@@ -2,6 +2,8 @@
 
 #include "io/AtomicFile.h"
 
+#include <cerrno>
+#include <cstring>
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -66,7 +68,7 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
     std::ofstream out(temporary);
     out << stats.dump(2) << "\n";
     out.close();
-    return out ? "" : "cannot write the file";
+    return out ? "" : std::string("cannot write the file: ") + std::strerror(errno);
   });
 }
 

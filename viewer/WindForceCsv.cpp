@@ -2,6 +2,8 @@
 
 #include "io/AtomicFile.h"
 
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 
 namespace figment::viewer {
@@ -17,7 +19,7 @@ std::string writeWindForceCsv(const std::string& path, const std::vector<session
         out << drape.name << ',' << s.time << ',' << s.pressure << ',' << s.phase << ',' << s.force.x() << ','
             << s.force.y() << ',' << s.force.z() << ',' << s.force.norm() << '\n';
     out.close();
-    return out ? "" : "cannot write the wind force";
+    return out ? "" : std::string("cannot write the wind force: ") + std::strerror(errno);
   });
 }
 

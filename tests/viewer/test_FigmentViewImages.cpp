@@ -143,12 +143,28 @@ TEST_F(FigmentViewImages, ATurntableGoesAroundTheScene) {
 
 TEST_F(FigmentViewImages, AnErrorAfterSomeImagesLeavesNone) {
   const std::string scene = write("cloth.iv", fallingSquare(0.01));
-  // The statistics come after the images, into a folder that does not exist.
+  // The statistics come after the images, into a folder that cannot be made (a file
+  // stands where it would be).
+  write("a-file", "x");
   const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) +
-                              " --size 80x60 --turntable 3 --stats " + quote(path("missing/stats.json")));
+                              " --size 80x60 --turntable 3 --stats " + quote(path("a-file/stats.json")));
   EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.err.find("missing/stats.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a-file/stats.json: cannot make the folder"), std::string::npos) << r.err;
   EXPECT_EQ(images(), std::set<std::string>{});
+}
+
+TEST_F(FigmentViewImages, MakesTheFoldersItsOutputsNameAndSaysWhyItCannot) {
+  const std::string scene = write("cloth.iv", fallingSquare(0.01));
+  const ProcessResult made = run(quote(scene) + " -o " + quote(path("new/deeper/out.png")) + " --size 80x60 --stats " +
+                                 quote(path("stats/run.json")));
+  ASSERT_EQ(made.status, 0) << made.err;
+  EXPECT_EQ(figment::test::readPng(path("new/deeper/out.png")).width, 80);
+  EXPECT_TRUE(fs::is_regular_file(path("stats/run.json")));
+  write("a-file", "x");
+  const ProcessResult refused = run(quote(scene) + " -o " + quote(path("a-file/out.png")) + " --size 80x60");
+  EXPECT_EQ(refused.status, 1);
+  EXPECT_NE(refused.err.find("a-file/out.png: cannot make the folder"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("Not a directory"), std::string::npos) << refused.err;
 }
 
 TEST_F(FigmentViewImages, BadImageOptionsAreOneLineNamingTheOptionAndValue) {
