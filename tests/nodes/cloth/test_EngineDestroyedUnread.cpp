@@ -13,24 +13,27 @@
 
 namespace {
 
+// A ClothEngine on a 5 x 5 grid whose youngsModulus makes any drape fail at once with a
+// message naming the engine and the field, so whether it draped is seen without a clock;
+// with `thenABadCube`, a Cube after it fails to read.
+std::string engineScene(bool thenABadCube) {
+  const figment::test::Grid g = figment::test::grid(5, 0.4, 1.0);
+  return "#Inventor V2.1 ascii\nSeparator {\n"
+         "  DEF Rest Coordinate3 { point [ " + g.points + " ] }\n"
+         "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+         "    restPoints = USE Rest.point\n"
+         "    coordIndex [ " + g.coordIndex + " ]\n"
+         "    youngsModulus -1\n"
+         "  } . positions }\n" +
+         std::string(thenABadCube ? "  Cube { width \"not a number\" }\n" : "") + "}\n";
+}
+
 TEST(ClothEngineDestroyedUnread, AReadErrorAfterAnEngineComesWithoutDraping) {
   figment::test::initCoin();
-  const figment::test::Grid g = figment::test::grid(5, 0.4, 1.0);
-  // Whether the engine drapes is seen without a clock: its youngsModulus makes any drape
-  // fail at once with a message naming the ClothEngine and the field. Only the Cube's
-  // error may come out.
-  const std::string text = "#Inventor V2.1 ascii\nSeparator {\n"
-                           "  DEF Rest Coordinate3 { point [ " + g.points + " ] }\n"
-                           "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-                           "    restPoints = USE Rest.point\n"
-                           "    coordIndex [ " + g.coordIndex + " ]\n"
-                           "    youngsModulus -1\n"
-                           "  } . positions }\n"
-                           "  Cube { width \"not a number\" }\n"
-                           "}\n";
   figment::test::CapturedErrors errors;
-  const figment::test::SceneRoot root = figment::test::readString(text);
+  const figment::test::SceneRoot root = figment::test::readString(engineScene(true));
   EXPECT_EQ(root, nullptr);
+  // Only the Cube's error may come out.
   EXPECT_NE(errors.all().find("width"), std::string::npos) << errors.all();
   EXPECT_EQ(errors.all().find("youngsModulus"), std::string::npos) << "the engine draped: " << errors.all();
 }
@@ -38,17 +41,8 @@ TEST(ClothEngineDestroyedUnread, AReadErrorAfterAnEngineComesWithoutDraping) {
 TEST(ClothEngineDestroyedUnread, TheSameEngineReadDrapesAndReportsTheField) {
   // The control: read whole and evaluated, the engine does report its youngsModulus.
   figment::test::initCoin();
-  const figment::test::Grid g = figment::test::grid(5, 0.4, 1.0);
-  const std::string text = "#Inventor V2.1 ascii\nSeparator {\n"
-                           "  DEF Rest Coordinate3 { point [ " + g.points + " ] }\n"
-                           "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-                           "    restPoints = USE Rest.point\n"
-                           "    coordIndex [ " + g.coordIndex + " ]\n"
-                           "    youngsModulus -1\n"
-                           "  } . positions }\n"
-                           "}\n";
   figment::test::CapturedErrors errors;
-  const figment::test::SceneRoot root = figment::test::readString(text);
+  const figment::test::SceneRoot root = figment::test::readString(engineScene(false));
   ASSERT_NE(root, nullptr) << errors.all();
   const std::vector<ClothEngine*> engines = figment::findClothEngines(root.get());
   ASSERT_EQ(engines.size(), 1u);
