@@ -54,15 +54,19 @@ TEST(MeshExport, ReplacesAnOlderFile) {
 }
 
 TEST(MeshExport, UnwritablePathNamesItAndLeavesNothing) {
+  // A missing folder is made (writeAtomically); one under a file cannot be.
   const TempDir dir;
-  const std::string path = (dir.path() / "no-such-folder" / "strip.obj").string();
+  const std::string file = dir.file("a-file", "x");
+  const std::string path = file + "/strip.obj";
   try {
     exportObj(strip(), path);
     FAIL() << "no exception";
   } catch (const std::runtime_error& error) {
     EXPECT_EQ(std::string(error.what()).rfind(path + ": ", 0), 0u) << error.what();
   }
-  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  int entries = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir.path())) ++entries;
+  EXPECT_EQ(entries, 1) << "only the file that stands in the way";
 }
 
 TEST(MeshExport, RejectsEmptyAndBrokenMeshes) {
