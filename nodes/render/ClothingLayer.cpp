@@ -3,6 +3,7 @@
 #include "guard/CoordIndexFaces.h"
 #include "nodes/render/FacetOrder.h"
 #include "nodes/render/GLStencilElement.h"
+#include "nodes/render/StencilDecisionElement.h"
 #include "nodes/render/StencilRule.h"
 #include "nodes/render/StencilRuleElement.h"
 
@@ -29,6 +30,7 @@ void ClothingLayer::initClass() {
   if (classTypeId != SoType::badType()) return;
   GLStencilElement::initClass();
   StencilRuleElement::initClass();
+  StencilDecisionElement::initClass();
   SO_NODE_INIT_CLASS(ClothingLayer, SoIndexedFaceSet, "IndexedFaceSet");
 }
 

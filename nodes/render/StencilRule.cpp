@@ -1,5 +1,7 @@
 #include "nodes/render/StencilRule.h"
 
+#include "nodes/render/StencilDecisionElement.h"
+
 #include "nodes/SceneSearch.h"
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/render/StencilSeparator.h"
@@ -92,19 +94,6 @@ SoNode* appliedRoot(SoAction* action) {
   return nullptr;
 }
 
-// What a decision was made for.
-struct DecisionKey {
-  const SoNode* root = nullptr;
-  SbUniqueId rootId = 0;
-  SbMatrix affine, projection;
-  SbViewportRegion viewport;
-
-  bool operator==(const DecisionKey& other) const {
-    return root == other.root && rootId == other.rootId && affine == other.affine &&
-           projection == other.projection && viewport == other.viewport;
-  }
-};
-
 }  // namespace
 
 bool StencilDecision::writes(const SoNode* separator) const {
@@ -133,23 +122,17 @@ StencilDecision decideStencil(SoNode* root, const SbViewportRegion& viewport, co
 }
 
 const StencilDecision& decideStencil(SoGLRenderAction* action) {
-  // One decision, for the last view and scene rendered: the usual case is one scene
-  // rendered again and again, and a change of either only costs a new decision.
-  static DecisionKey decidedFor;
-  static StencilDecision decision;
   SoState* state = action->getState();
   SoNode* root = appliedRoot(action);
   const SbViewVolume& view = SoViewVolumeElement::get(state);
-  DecisionKey key;
+  StencilDecisionElement::Key key;
   key.root = root;
   key.rootId = root ? root->getNodeId() : 0;
   view.getMatrices(key.affine, key.projection);
   key.viewport = SoViewportRegionElement::get(state);
-  if (!(key == decidedFor)) {
-    decision = root ? decideStencil(root, key.viewport, view) : StencilDecision{};
-    decidedFor = key;
-  }
-  return decision;
+  return StencilDecisionElement::decisionFor(state, key, [&] {
+    return root ? decideStencil(root, key.viewport, view) : StencilDecision{};
+  });
 }
 
 }  // namespace figment

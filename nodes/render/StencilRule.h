@@ -32,9 +32,10 @@ struct StencilDecision {
 StencilDecision decideStencil(SoNode* root, const SbViewportRegion& viewport, const SbViewVolume& view);
 
 // decideStencil() for the render `action` is doing now: the scene it was applied to,
-// the view volume and viewport of the camera traversed so far. Kept while neither the
-// scene (its node id), the view nor the viewport changes, so a frame decides once and
-// a still camera re-draws without deciding again.
+// the view volume and viewport of the camera traversed so far. Kept in the action's
+// state (StencilDecisionElement) while neither the scene (its node id), the view nor
+// the viewport changes, so a frame decides once and a still camera re-draws without
+// deciding again; each action keeps its own.
 const StencilDecision& decideStencil(SoGLRenderAction* action);
 
 }  // namespace figment

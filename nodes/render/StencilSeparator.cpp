@@ -2,6 +2,7 @@
 
 #include "nodes/render/GLStencilElement.h"
 #include "nodes/render/StencilRule.h"
+#include "nodes/render/StencilDecisionElement.h"
 #include "nodes/render/StencilRuleElement.h"
 
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -14,6 +15,7 @@ void StencilSeparator::initClass() {
   if (classTypeId != SoType::badType()) return;
   GLStencilElement::initClass();
   StencilRuleElement::initClass();
+  StencilDecisionElement::initClass();
   SO_NODE_INIT_CLASS(StencilSeparator, SoSeparator, "Separator");
 }
 
