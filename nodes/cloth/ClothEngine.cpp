@@ -12,7 +12,7 @@
 #include "sim/progressive/Decimation.h"
 #include "nodes/SceneFiles.h"
 #include "sim/cloth/ClothSolver.h"
-#include "sim/progressive/ProgressiveDrape.h"
+#include "sim/drape/GarmentDrape.h"
 
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/lists/SoFieldList.h>
@@ -152,45 +152,6 @@ std::string ClothEngine::label() const {
 
 namespace {
 
-using DrapeProgressFunction = std::function<void(const figment::DrapeProgress&)>;
-
-// What a drape leaves: the run, every rest point's position, the sections simulated
-// last (the garment's numbering) and, when progressive, the level reached.
-struct Drape {
-  figment::DrapeResult run;
-  std::vector<figment::Vec3> positions;
-  std::vector<figment::Triangle> sections;
-  int level = 0, levels = 0;
-  figment::EndLevelSettling settling;
-};
-
-Drape drapeWhole(const ClothEngine& engine, const figment::DrapeContext& context, const figment::TriangleMesh& garment,
-                 const figment::ClothParameters& parameters, std::shared_ptr<const figment::Collider> body,
-                 const DrapeProgressFunction& progress) {
-  figment::ClothSolver solver(garment, parameters, std::move(body));
-  if (context.stepObserver)
-    solver.setStepObserver([&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); });
-  Drape out;
-  out.run = solver.run(progress, context.progressInterval);
-  out.positions = solver.positions();
-  out.sections = garment.triangles;
-  return out;
-}
-
-Drape drapeProgressively(const figment::ProgressiveMesh& mesh, const figment::ClothParameters& parameters,
-                         std::shared_ptr<const figment::Collider> body, const figment::ProgressiveSchedule& schedule,
-                         const DrapeProgressFunction& progress, double progressInterval) {
-  figment::ProgressiveDrape drape(mesh, parameters, std::move(body), schedule);
-  Drape out;
-  out.run = drape.run(progress, progressInterval);
-  out.positions = drape.fullPositions();
-  out.sections = drape.levelTriangles();
-  out.level = drape.level();
-  out.levels = mesh.levels();
-  out.settling = drape.endLevelSettling();
-  return out;
-}
-
 // coordIndex for triangles, each ended by -1.
 std::vector<int32_t> faceIndices(const std::vector<figment::Triangle>& triangles) {
   std::vector<int32_t> indices;
@@ -247,14 +208,16 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     if (path.empty()) throw std::runtime_error("progressiveScript \"" + script + "\" not found");
     mesh = figment::readProgressiveScript(path, garment);
   }
-  const auto progress = [&](const figment::DrapeProgress& p) {
+  figment::DrapeRequest request{garment, parameters, std::move(collider), std::move(mesh), schedule};
+  if (context.stepObserver)
+    request.stepObserver = [&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); };
+  request.progress = [&](const figment::DrapeProgress& p) {
     if (!context.progress) return;
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
     context.progress(engine, Progress{p.iterations, p.simulatedTime, parameters.maxTime, p.maxSpeed, wall.count()});
   };
-  const Drape drape =
-      mesh ? drapeProgressively(*mesh, parameters, std::move(collider), schedule, progress, context.progressInterval)
-           : drapeWhole(engine, context, garment, parameters, std::move(collider), progress);
+  request.progressInterval = context.progressInterval;
+  figment::GarmentDrape drape = figment::drapeGarment(request);
   stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   recordRun(drape.run, static_cast<int>(garment.triangles.size()));
   stats.level = drape.level;

@@ -1,0 +1,37 @@
+#include "sim/drape/GarmentDrape.h"
+
+#include <utility>
+
+namespace figment {
+
+namespace {
+
+GarmentDrape drapeWhole(const DrapeRequest& request) {
+  ClothSolver solver(request.garment, request.parameters, request.body);
+  if (request.stepObserver) solver.setStepObserver(request.stepObserver);
+  GarmentDrape out;
+  out.run = solver.run(request.progress, request.progressInterval);
+  out.positions = solver.positions();
+  out.sections = request.garment.triangles;
+  return out;
+}
+
+GarmentDrape drapeProgressively(const DrapeRequest& request) {
+  ProgressiveDrape drape(*request.progressive, request.parameters, request.body, request.schedule);
+  GarmentDrape out;
+  out.run = drape.run(request.progress, request.progressInterval);
+  out.positions = drape.fullPositions();
+  out.sections = drape.levelTriangles();
+  out.level = drape.level();
+  out.levels = request.progressive->levels();
+  out.settling = drape.endLevelSettling();
+  return out;
+}
+
+}  // namespace
+
+GarmentDrape drapeGarment(const DrapeRequest& request) {
+  return request.progressive ? drapeProgressively(request) : drapeWhole(request);
+}
+
+}  // namespace figment

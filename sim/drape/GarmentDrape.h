@@ -1,0 +1,49 @@
+#pragma once
+// One garment's drape from plain data: the garment, its parameters, the body to collide
+// with and, when draped level by level, its progressive mesh and schedule; out come
+// where every rest point rests and what the run did. ClothEngine (nodes/cloth) reads
+// its fields and chooses the method, then asks this; a front end without Coin asks it
+// directly.
+
+#include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/ClothSolver.h"
+#include "sim/collision/Collider.h"
+#include "sim/core/TriangleMesh.h"
+#include "sim/progressive/ProgressiveDrape.h"
+#include "sim/progressive/ProgressiveMesh.h"
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace figment {
+
+struct DrapeRequest {
+  TriangleMesh garment;  // its rest shape, which is also where the drape starts
+  ClothParameters parameters;
+  std::shared_ptr<const Collider> body;
+  // Set: the garment is draped level by level from this mesh (paper §4), by `schedule`.
+  std::optional<ProgressiveMesh> progressive;
+  ProgressiveSchedule schedule;
+  // Called before the first step and after every step of a whole-garment drape (a
+  // progressive drape's solver changes with its level and is not observed).
+  ClothSolver::StepObserver stepObserver;
+  // Called about every `progressInterval` s of wall time (0: every 64 steps).
+  std::function<void(const DrapeProgress&)> progress;
+  double progressInterval = 1.0;
+};
+
+struct GarmentDrape {
+  DrapeResult run;
+  std::vector<Vec3> positions;     // every rest point's
+  std::vector<Triangle> sections;  // those simulated last, in the garment's numbering
+  int level = 0, levels = 0;       // progressive only: the level reached, of how many
+  EndLevelSettling settling;       // progressive only: after the full detail arrived
+};
+
+// Throws SimulationError (sim/cloth/ClothSolver.h) when the simulation blows up, and
+// std::invalid_argument naming the parameter when one cannot be used.
+GarmentDrape drapeGarment(const DrapeRequest& request);
+
+}  // namespace figment

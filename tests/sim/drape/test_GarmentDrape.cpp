@@ -1,0 +1,71 @@
+// drapeGarment: a sheet dropped on a ball, whole and level by level. The request's
+// garment, parameters and body make the drape; a whole drape reports every step to its
+// observer and returns the garment's own sections, a progressive one the level it
+// reached; both rest on the ball, not in it.
+#include "sim/collision/MeshCollider.h"
+#include "sim/drape/GarmentDrape.h"
+#include "sim/progressive/Decimation.h"
+#include "support/TestMeshes.h"
+
+#include <gtest/gtest.h>
+
+using namespace figment;
+
+namespace {
+constexpr double kRadius = 0.15;  // m, the ball
+
+DrapeRequest sheetOnBall() {
+  DrapeRequest request;
+  // A 50 cm sheet of 16 x 16 quads, 2 cm above the ball.
+  request.garment =
+      meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
+  request.parameters.integrator = Integrator::Implicit;
+  request.parameters.timeStep = 1.0 / 50.0;
+  request.parameters.maxTime = 6.0;
+  request.body = std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24));
+  return request;
+}
+
+// The lowest point over the ball's top (it hangs below the top) and no point inside.
+void expectRestsOnTheBall(const std::vector<Vec3>& positions) {
+  double lowest = 1.0;
+  for (const Vec3& p : positions) {
+    EXPECT_GT(p.norm(), kRadius - 1e-3) << p.transpose();
+    lowest = std::min(lowest, p.y());
+  }
+  EXPECT_LT(lowest, 0.5 * kRadius);  // the corners hang down past the ball's equator area
+}
+}  // namespace
+
+TEST(GarmentDrape, AWholeDrapeIsTheSolversAndReportsEveryStep) {
+  DrapeRequest request = sheetOnBall();
+  int observed = 0;
+  request.stepObserver = [&observed](const ClothSolver&) { ++observed; };
+  const GarmentDrape drape = drapeGarment(request);
+  ASSERT_TRUE(drape.run.atRest);
+  EXPECT_EQ(observed, drape.run.iterations + 1);  // before the first step and after each
+  EXPECT_EQ(drape.sections.size(), request.garment.triangles.size());
+  EXPECT_EQ(drape.levels, 0);
+  expectRestsOnTheBall(drape.positions);
+
+  ClothSolver solver(request.garment, request.parameters, request.body);
+  solver.run({}, 1.0);
+  ASSERT_EQ(solver.positions().size(), drape.positions.size());
+  for (size_t i = 0; i < drape.positions.size(); ++i) EXPECT_EQ(solver.positions()[i], drape.positions[i]);
+}
+
+TEST(GarmentDrape, AProgressiveDrapeEndsAtItsFullLevelWithEveryRestPoint) {
+  DrapeRequest request = sheetOnBall();
+  request.progressive = decimate(request.garment, DecimationOptions{.targetFaces = 120});
+  request.schedule = ProgressiveSchedule{0, -1, 0.0};
+  int observed = 0;
+  request.stepObserver = [&observed](const ClothSolver&) { ++observed; };
+  const GarmentDrape drape = drapeGarment(request);
+  EXPECT_EQ(observed, 0);  // its solver changes with the level: not observed
+  EXPECT_GT(drape.levels, 0);
+  EXPECT_EQ(drape.level, drape.levels);
+  EXPECT_EQ(drape.sections.size(), request.garment.triangles.size());
+  ASSERT_EQ(drape.positions.size(), request.garment.vertices.size());
+  EXPECT_GE(drape.settling.arrival, 0.0);
+  expectRestsOnTheBall(drape.positions);
+}
