@@ -1,15 +1,16 @@
 #pragma once
 // The FIGMENT physical model of one garment (paper §2): triangular sections with
 // stretch/shear stresses, plate bending from the angles at the joints between them
-// (sim/cloth/PlateBending.h), gravity, air resistance and wind (sim/cloth/Wind.h), acting on nodes
-// whose masses are lumped from the sections (rho h A / 3 per corner).
+// (sim/cloth/PlateBending.h), and the node terms (sim/cloth/NodeTerms.h): gravity, air
+// resistance and wind (sim/cloth/Wind.h), acting on nodes whose masses are lumped from
+// the sections (rho h A / 3 per corner).
 // Collisions and friction are contact events, handled by the solver after each step.
 
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/MembraneElement.h"
+#include "sim/cloth/NodeTerms.h"
 #include "sim/cloth/PlateBending.h"
 #include "sim/core/TriangleMesh.h"
-#include "sim/cloth/Wind.h"
 
 #include <vector>
 
@@ -38,16 +39,17 @@ class ClothModel {
   };
   const LimiterCounts& limiterCounts() const { return counts_; }
 
-  const std::vector<double>& masses() const { return masses_; }  // kg
+  const std::vector<double>& masses() const { return nodes_.masses(); }  // kg
   const std::vector<MembraneElement>& sections() const { return sections_; }
   const PlateBending& bending() const { return bending_; }
-  size_t nodeCount() const { return masses_.size(); }
+  const NodeTerms& nodes() const { return nodes_; }
+  size_t nodeCount() const { return nodes_.masses().size(); }
 
   // The wind's total force on the garment at positions x and time t, N: the sum of
   // every section's p(t) A |n . w| w (what the integrators apply; zero when no wind
   // blows). For reports and charts (figment-view --wind-force).
   Vec3 totalWindForce(const std::vector<Vec3>& x, double t) const;
-  const Wind& wind() const { return wind_; }
+  const Wind& wind() const { return nodes_.wind(); }
 
  private:
   void addWindForces(const std::vector<Vec3>& x, double t) const;
@@ -56,10 +58,7 @@ class ClothModel {
   ClothParameters parameters_;
   std::vector<MembraneElement> sections_;
   PlateBending bending_;
-  std::vector<double> masses_;
-  std::vector<double> inverseMasses_;
-  std::vector<double> areas_;  // lumped node area, m^2 (air resistance acts on it)
-  Wind wind_;
+  NodeTerms nodes_;
   mutable std::vector<Vec3> force_;
   mutable LimiterCounts counts_;
 };

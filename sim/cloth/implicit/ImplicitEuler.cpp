@@ -17,15 +17,14 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& par
 }
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
-  const std::vector<double>& m = system_.masses();
-  filter_.reset(m.size());
-  for (size_t i = 0; i < m.size(); ++i) {
+  const NodeTerms& nodes = system_.model().nodes();
+  filter_.reset(pinned.size());
+  for (size_t i = 0; i < pinned.size(); ++i) {
     if (pinned[i]) {
       filter_.kind[i] = NodeFilter::Fixed;  // keeps its (zero) velocity
-    } else if (m[i] <= 0.0) {
-      // A node of degenerate sections only: nothing acts on it but gravity.
-      filter_.kind[i] = NodeFilter::Fixed;
-      filter_.prescribed[i] = dt * parameters_.gravity;
+    } else if (nodes.floats(i)) {
+      filter_.kind[i] = NodeFilter::Fixed;  // moved by gravity alone
+      filter_.prescribed[i] = dt * nodes.gravity();
     }
   }
 }

@@ -28,7 +28,7 @@ AssemblyPlan assemblyPlan(const ClothModel& model, const std::vector<BendingSten
 }  // namespace
 
 ImplicitSystem::ImplicitSystem(const ClothModel& model, const ClothParameters& parameters)
-    : model_(model), parameters_(parameters), wind_(parameters.wind) {
+    : model_(model), parameters_(parameters) {
   const PlateBending& bending = model.bending();
   for (const PlateBending::SectionForm& section : bending.sectionForms())
     stencils_.push_back(bendingStencil(bending, section));
@@ -38,9 +38,6 @@ ImplicitSystem::ImplicitSystem(const ClothModel& model, const ClothParameters& p
   moments_.resize(stencils_.size());
   plan_ = assemblyPlan(model, stencils_, jointBound_);
   matrix_ = plan_.pattern();
-  nodeArea_.assign(n, 0.0);
-  for (const MembraneElement& section : model.sections())
-    for (int i : section.corners()) nodeArea_[i] += section.restArea() / 3.0;
   angles_.resize(bending.joints().size());
   forceSlots_.resize(plan_.vectorSlots());
   stiffnessVelocitySlots_.resize(plan_.vectorSlots());
@@ -61,8 +58,9 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
   const int membranes = static_cast<int>(sections.size());
   const int joints = static_cast<int>(angles_.size());
   const int bendingSections = static_cast<int>(stencils_.size());
-  const bool windBlows = wind_.blows();
-  const double pressure = windBlows ? wind_.pressure(t) : 0.0;  // before the threads: Wind draws lazily
+  const NodeTerms& nodes = model_.nodes();
+  const bool windBlows = nodes.wind().blows();
+  const double pressure = windBlows ? nodes.wind().pressure(t) : 0.0;  // before the threads: Wind draws lazily
 #pragma omp parallel
   {
 #pragma omp for schedule(static)
@@ -70,8 +68,7 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
       const ElementOutput out = slots(e);
       membraneContribution(sections[e], x, v, parameters_.material, parameters_.strainRateDamping, weights, out);
       if (!windBlows) continue;
-      const Triangle& c = sections[e].corners();
-      const Vec3 wind = windCornerForce(x[c[0]], x[c[1]], x[c[2]], pressure, wind_.direction());
+      const Vec3 wind = nodes.windCornerForce(sections[e], x, pressure);
       for (int a = 0; a < 3; ++a) out.force[a] += wind;
     }
 #pragma omp for schedule(static)
@@ -98,12 +95,10 @@ void ImplicitSystem::assemble(const std::vector<Vec3>& x, const std::vector<Vec3
   computeElements(x, v, t, weights);
   plan_.gatherVectors(forceSlots_, force_);
   plan_.gatherVectors(stiffnessVelocitySlots_, stiffnessVelocity_);
-  const std::vector<double>& m = model_.masses();
-  const double k = parameters_.airResistance;
+  const NodeTerms& nodes = model_.nodes();
   for (size_t i = 0; i < force_.size(); ++i) {
-    // Gravity, and air resistance on the node's share of cloth area.
-    force_[i] += m[i] * parameters_.gravity - k * nodeArea_[i] * v[i];
-    diagonal_[i] = weights.mass * m[i] + weights.damping * k * nodeArea_[i];
+    force_[i] += nodes.weight(i) - nodes.drag(i, v[i]);
+    diagonal_[i] = weights.mass * nodes.masses()[i] + nodes.weightedDragRate(i, weights.damping);
   }
   plan_.gatherBlocks(blockSlots_, diagonal_, matrix_);
 }

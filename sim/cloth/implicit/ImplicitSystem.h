@@ -36,6 +36,7 @@ class ImplicitSystem {
   // Penalty contacts add their terms to the diagonal blocks after assembly.
   BlockSparseMatrix& matrix() { return matrix_; }
   const std::vector<double>& masses() const { return model_.masses(); }  // kg
+  const ClothModel& model() const { return model_; }
 
  private:
   void computeElements(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t,
@@ -44,10 +45,8 @@ class ImplicitSystem {
 
   const ClothModel& model_;
   ClothParameters parameters_;
-  Wind wind_;
   AssemblyPlan plan_;  // elements: the membrane sections, then the bending sections
   std::vector<BendingStencil> stencils_;
-  std::vector<double> nodeArea_;  // m^2, a third of each section's rest area
   std::vector<JointAngle> angles_;
   bool jointBound_ = false;
   std::vector<JointBending> joints_;
