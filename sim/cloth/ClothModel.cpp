@@ -34,6 +34,7 @@ std::vector<MembraneElement> sectionsOf(const TriangleMesh& rest) {
 
 ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& parameters)
     : parameters_(parameters),
+      law_(parameters.material),
       sections_(sectionsOf(checkedGarment(rest))),
       bending_(rest, parameters.material.bendingStiffness(), parameters.material.poissonRatio),
       nodes_(sections_, rest.vertices.size(), parameters) {
@@ -51,7 +52,7 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   const double damping = limited ? 0.0 : parameters_.strainRateDamping;
   for (const MembraneElement& section : sections_)
     counts_.clampedSections +=
-        section.addForces(x, v, parameters_.material, damping, parameters_.strainLimit, force_);
+        section.addForces(x, v, law_, damping, parameters_.strainLimit, force_);
   bending_.addForces(x, force_);
   a.assign(n, Vec3::Zero());
   if (limited) {
@@ -59,7 +60,7 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     limitAccelerations(a);
     std::fill(force_.begin(), force_.end(), Vec3::Zero());
     for (const MembraneElement& section : sections_)
-      section.addDampingForces(x, v, parameters_.material, parameters_.strainRateDamping, force_);
+      section.addDampingForces(x, v, law_, parameters_.strainRateDamping, force_);
   }
   if (nodes_.wind().blows()) addWindForces(x, t);
   for (size_t i = 0; i < n; ++i) {

@@ -41,6 +41,7 @@ class ClothModel {
 
   const std::vector<double>& masses() const { return nodes_.masses(); }  // kg
   const std::vector<MembraneElement>& sections() const { return sections_; }
+  const PlaneStressLaw& law() const { return law_; }
   const PlateBending& bending() const { return bending_; }
   const NodeTerms& nodes() const { return nodes_; }
   size_t nodeCount() const { return nodes_.masses().size(); }
@@ -56,6 +57,7 @@ class ClothModel {
   void limitAccelerations(std::vector<Vec3>& a) const;
 
   ClothParameters parameters_;
+  PlaneStressLaw law_;
   std::vector<MembraneElement> sections_;
   PlateBending bending_;
   NodeTerms nodes_;

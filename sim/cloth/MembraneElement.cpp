@@ -35,21 +35,11 @@ Eigen::Vector3d MembraneElement::strain(const std::vector<Vec3>& x) const {
   return {E(0, 0), E(1, 1), E(0, 1)};
 }
 
-PlaneStress MembraneElement::stress(const Eigen::Vector3d& e, const Material& m) const {
-  const double nu = m.poissonRatio;
-  const double k = m.youngsModulus / (1.0 - nu * nu);
-  return {k * (e[0] + nu * e[1]), k * (e[1] + nu * e[0]), m.youngsModulus / (1.0 + nu) * e[2]};
+double MembraneElement::energy(const std::vector<Vec3>& x, const PlaneStressLaw& law) const {
+  return restArea_ * law.thickness() * law.energyDensity(strain(x));
 }
 
-double MembraneElement::energy(const std::vector<Vec3>& x, const Material& m) const {
-  const Eigen::Vector3d e = strain(x);
-  const double nu = m.poissonRatio;
-  const double density = 0.5 * m.youngsModulus / (1.0 - nu * nu) * (e[0] * e[0] + e[1] * e[1] + 2.0 * nu * e[0] * e[1]) +
-                         m.youngsModulus / (1.0 + nu) * e[2] * e[2];
-  return restArea_ * m.thickness * density;
-}
-
-bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const PlaneStressLaw& law,
                                 double tauDamping, double strainLimit, std::vector<Vec3>& force) const {
   const Matrix32 F = edgeMatrix(corners_, x) * restInverse_;
   const Eigen::Matrix2d FtF = F.transpose() * F;
@@ -64,28 +54,28 @@ bool MembraneElement::addForces(const std::vector<Vec3>& x, const std::vector<Ve
     const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);
     e += tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1));
   }
-  addStressForces(F, e, material, force);
+  addStressForces(F, e, law, force);
   return clamped;
 }
 
-void MembraneElement::addStressForces(const Matrix32& F, const Eigen::Vector3d& e, const Material& material,
+void MembraneElement::addStressForces(const Matrix32& F, const Eigen::Vector3d& e, const PlaneStressLaw& law,
                                       std::vector<Vec3>& force) const {
-  const PlaneStress s = stress(e, material);
+  const PlaneStress s = law.stress(e);
   Eigen::Matrix2d S;
   S << s.sigmaU, s.tauUV, s.tauUV, s.sigmaV;
-  const Matrix32 H = -(restArea_ * material.thickness) * F * S * restInverse_.transpose();
+  const Matrix32 H = -(restArea_ * law.thickness()) * F * S * restInverse_.transpose();
   force[corners_[1]] += H.col(0);
   force[corners_[2]] += H.col(1);
   force[corners_[0]] -= H.col(0) + H.col(1);
 }
 
 void MembraneElement::addDampingForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                                       const Material& material, double tauDamping, std::vector<Vec3>& force) const {
+                                       const PlaneStressLaw& law, double tauDamping, std::vector<Vec3>& force) const {
   if (!(tauDamping > 0.0)) return;
   const Matrix32 F = edgeMatrix(corners_, x) * restInverse_;
   const Matrix32 Fdot = edgeMatrix(corners_, v) * restInverse_;
   const Eigen::Matrix2d rate = 0.5 * (Fdot.transpose() * F + F.transpose() * Fdot);
-  addStressForces(F, tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1)), material, force);
+  addStressForces(F, tauDamping * Eigen::Vector3d(rate(0, 0), rate(1, 1), rate(0, 1)), law, force);
 }
 
 }  // namespace figment

@@ -5,28 +5,23 @@
 // Based on: the constant-strain triangle with St. Venant-Kirchhoff plane stress
 // (e.g. Volino, Magnenat-Thalmann & Faure, "A simple approach to nonlinear tensile
 // stiffness for accurate cloth simulation", ACM TOG 2009), which keeps the paper's
-// material parameters (E, nu, h) and its stress components.
+// material parameters (E, nu, h) and its stress components (sim/cloth/PlaneStressLaw.h).
 //
 //   rest frame (u, v) in the section's plane;  Dm = [X1-X0, X2-X0] in (u, v)  (2x2)
 //   F   = [x1-x0, x2-x0] Dm^-1                 deformation gradient (3x2)
 //   eps = (F^T F - I) / 2                       Green strain: eps_uu, eps_vv, eps_uv
-//   sigma_u  = E/(1-nu^2) (eps_uu + nu eps_vv)   sigma_v = E/(1-nu^2) (eps_vv + nu eps_uu)
-//   tau_uv   = E/(1+nu) eps_uv                   (= 2 G eps_uv)
+//   sigma_u, sigma_v, tau_uv = the law's stress of eps
 //   forces on corners 1, 2: -A h F S Dm^-T, corner 0: minus their sum (N)
 // A strain-rate term eps' * tauDamping (Kelvin-Voigt) is added to eps in the stress;
 // it damps the fast in-plane modes an explicit integrator cannot resolve and vanishes
 // at rest, so it does not change the draped shape.
 
-#include "sim/cloth/Material.h"
+#include "sim/cloth/PlaneStressLaw.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <Eigen/Core>
 
 namespace figment {
-
-struct PlaneStress {
-  double sigmaU, sigmaV, tauUV;  // Pa
-};
 
 class MembraneElement {
  public:
@@ -40,26 +35,25 @@ class MembraneElement {
 
   // Green strain (eps_uu, eps_vv, eps_uv) of the section at positions x.
   Eigen::Vector3d strain(const std::vector<Vec3>& x) const;
-  PlaneStress stress(const Eigen::Vector3d& strain, const Material& material) const;
 
-  // Elastic energy A h [E/(2(1-nu^2)) (eps_uu^2 + eps_vv^2 + 2 nu eps_uu eps_vv)
-  //                     + E/(1+nu) eps_uv^2]  (J); its negative gradient is the force.
-  double energy(const std::vector<Vec3>& x, const Material& material) const;
+  // Elastic energy A h w(eps) (J, w the law's energy density); its negative gradient is
+  // the force.
+  double energy(const std::vector<Vec3>& x, const PlaneStressLaw& law) const;
 
   // Adds the elastic (and strain-rate damping) forces of this section to `force`. With
   // strainLimit > 0 each strain component is first clamped into [-limit, limit] (the
   // paper's strain clamping: a section distorted beyond a realistic range pulls no
   // harder than at the range's edge). Returns whether the clamp changed a strain.
-  bool addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+  bool addForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const PlaneStressLaw& law,
                  double tauDamping, double strainLimit, std::vector<Vec3>& force) const;
   // Adds the strain-rate damping forces alone (addForces with tauDamping adds them too):
   // for an acceleration limiter that must cut the elastic pull, never the damping.
-  void addDampingForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Material& material,
+  void addDampingForces(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const PlaneStressLaw& law,
                         double tauDamping, std::vector<Vec3>& force) const;
 
  private:
   // Adds the forces of the stress that strain `e` gives, at deformation gradient F.
-  void addStressForces(const Eigen::Matrix<double, 3, 2>& F, const Eigen::Vector3d& e, const Material& material,
+  void addStressForces(const Eigen::Matrix<double, 3, 2>& F, const Eigen::Vector3d& e, const PlaneStressLaw& law,
                        std::vector<Vec3>& force) const;
 
   Triangle corners_;

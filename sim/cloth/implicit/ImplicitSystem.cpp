@@ -66,7 +66,7 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
 #pragma omp for schedule(static)
     for (int e = 0; e < membranes; ++e) {
       const ElementOutput out = slots(e);
-      membraneContribution(sections[e], x, v, parameters_.material, parameters_.strainRateDamping, weights, out);
+      membraneContribution(sections[e], x, v, model_.law(), parameters_.strainRateDamping, weights, out);
       if (!windBlows) continue;
       const Vec3 wind = nodes.windCornerForce(sections[e], x, pressure);
       for (int a = 0; a < 3; ++a) out.force[a] += wind;

@@ -18,14 +18,6 @@ Eigen::Matrix2d positivePart(const Eigen::Matrix2d& S) {
 }
 
 namespace {
-// The plane-stress matrix in (E_uu, E_vv, E_uv): energy density e^T C e / 2.
-Eigen::Matrix3d planeStressMatrix(const Material& m) {
-  const double nu = m.poissonRatio, k = m.youngsModulus / (1.0 - nu * nu);
-  Eigen::Matrix3d C;
-  C << k, k * nu, 0.0, k * nu, k, 0.0, 0.0, 0.0, 2.0 * m.youngsModulus / (1.0 + nu);
-  return C;
-}
-
 Matrix32 deformation(const Triangle& c, const std::vector<Vec3>& x, const Eigen::Matrix2d& restInverse) {
   Matrix32 D;
   D.col(0) = x[c[1]] - x[c[0]];
@@ -35,7 +27,7 @@ Matrix32 deformation(const Triangle& c, const std::vector<Vec3>& x, const Eigen:
 }  // namespace
 
 void membraneContribution(const MembraneElement& section, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                          const Material& material, double tauDamping, const SystemWeights& weights,
+                          const PlaneStressLaw& law, double tauDamping, const SystemWeights& weights,
                           const ElementOutput& out) {
   const Triangle& c = section.corners();
   const Eigen::Matrix2d& R = section.restInverse();
@@ -53,10 +45,10 @@ void membraneContribution(const MembraneElement& section, const std::vector<Vec3
   Eigen::Vector3d stressStrain = strain;  // e + tau e'
   if (tauDamping > 0.0)
     for (int a = 0; a < 3; ++a) stressStrain += tauDamping * (B[a] * v[c[a]]);
-  const double volume = section.restArea() * material.thickness;
-  const Eigen::Matrix3d C = planeStressMatrix(material);
+  const double volume = section.restArea() * law.thickness();
+  const Eigen::Matrix3d& C = law.tangent();
   const Eigen::Vector3d stress = C * stressStrain;  // (S_uu, S_vv, 2 S_uv)
-  const PlaneStress elastic = section.stress(strain, material);
+  const PlaneStress elastic = law.stress(strain);
   Eigen::Matrix2d S;
   S << elastic.sigmaU, elastic.tauUV, elastic.tauUV, elastic.sigmaV;
   const Eigen::Matrix2d Splus = positivePart(S);

@@ -4,8 +4,8 @@
 // strain clamping, an explicit stability measure).
 //
 // With F = sum_a x_a beta_a^T (beta from Dm^-1), Green strain e = (E_uu, E_vv, E_uv),
-// e' = sum_a B_a v_a its rate, C the plane-stress matrix in these components (shear
-// weight 4G) and V = A h:
+// e' = sum_a B_a v_a its rate, C the plane-stress law's tangent (PlaneStressLaw.h) and
+// V = A h:
 //   force     f_a  = -V B_a^T C (e + tau e')                      (= -V F S beta_a)
 //   stiffness K_ab =  V B_a^T C B_b  +  V (beta_a^T S+ beta_b) I3
 //   damping   C_ab =  tau V B_a^T C B_b                          (strain-rate damping)
@@ -27,7 +27,7 @@ namespace figment {
 
 // Writes the section's 3 forces, K v and 9 weighted blocks (corner order) into `out`.
 void membraneContribution(const MembraneElement& section, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
-                          const Material& material, double tauDamping, const SystemWeights& weights,
+                          const PlaneStressLaw& law, double tauDamping, const SystemWeights& weights,
                           const ElementOutput& out);
 
 // S with its negative eigenvalues set to zero.
