@@ -45,17 +45,23 @@ std::array<Vec3, 4> BendingJoint::angleGradient(const Vec3& x0, const Vec3& x1, 
   return Hinge(x0, x1, x2, x3).gradient(x0, x2, x3);
 }
 
-double BendingJoint::angleChange(const std::vector<Vec3>& x) const {
-  double d = angle(x[corners_[0]], x[corners_[1]], x[corners_[2]], x[corners_[3]]) - restAngle_;
+namespace {
+// theta - theta0 wrapped into (-pi, pi].
+double wrapped(double d) {
   if (d > M_PI) d -= 2.0 * M_PI;
   if (d < -M_PI) d += 2.0 * M_PI;
   return d;
 }
+}  // namespace
 
-void BendingJoint::addMomentForces(const std::vector<Vec3>& x, double moment, std::vector<Vec3>& force) const {
+double BendingJoint::angleChange(const std::vector<Vec3>& x) const {
+  return wrapped(angle(x[corners_[0]], x[corners_[1]], x[corners_[2]], x[corners_[3]]) - restAngle_);
+}
+
+JointAngle BendingJoint::measure(const std::vector<Vec3>& x) const {
   const Vec3 &x0 = x[corners_[0]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
-  const auto gradient = Hinge(x0, x[corners_[1]], x2, x3).gradient(x0, x2, x3);
-  for (int k = 0; k < 4; ++k) force[corners_[k]] -= moment * gradient[k];
+  const Hinge hinge(x0, x[corners_[1]], x2, x3);
+  return {wrapped(hinge.angle() - restAngle_), hinge.gradient(x0, x2, x3)};
 }
 
 }  // namespace figment

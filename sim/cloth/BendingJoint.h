@@ -14,6 +14,13 @@
 
 namespace figment {
 
+// A joint's angle change theta - theta0 at some positions and its gradient dtheta/dx at
+// its four corners (1/m).
+struct JointAngle {
+  double change = 0.0;
+  std::array<Vec3, 4> gradient;
+};
+
 class BendingJoint {
  public:
   // Corners: shared edge (e0, e1), opposite o2 of section A = (e0, e1, o2), o3 of B.
@@ -25,8 +32,8 @@ class BendingJoint {
 
   // theta - theta0 at x, wrapped into (-pi, pi] (the shortest way back to rest).
   double angleChange(const std::vector<Vec3>& x) const;
-  // The forces of a moment M = dW/dtheta about the joint: force -= M dtheta/dx.
-  void addMomentForces(const std::vector<Vec3>& x, double moment, std::vector<Vec3>& force) const;
+  // The angle change and its gradient at x, from one look at the hinge.
+  JointAngle measure(const std::vector<Vec3>& x) const;
 
   // Signed dihedral angle between the section normals: 0 when flat, > 0 when the sections
   // fold towards A's normal; the same whichever section is A when the winding agrees.

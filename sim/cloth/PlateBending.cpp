@@ -1,5 +1,7 @@
 #include "sim/cloth/PlateBending.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -70,11 +72,44 @@ PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double po
     SectionForm section{static_cast<int>(s), jointOf[s], neighbourOf[s], signOf[s], signOf[s], false,
                         Eigen::Matrix3d::Zero()};
     if (!bendingForm(rest, rest.triangles[s], stiffness, poissonRatio, section.form)) continue;
-    if (section.joints != std::array<int, 3>{-1, -1, -1}) sections_.push_back(section);
+    if (section.joints == std::array<int, 3>{-1, -1, -1}) continue;
+    sections_.push_back(section);
+    stencils_.push_back(stencilOf(section));
   }
   triangles_ = rest.triangles;
-  angleChange_.resize(joints_.size());
-  moment_.resize(joints_.size());
+  linkJoints();
+}
+
+PlateBending::Stencil PlateBending::stencilOf(const SectionForm& section) const {
+  Stencil stencil;
+  for (int r = 0; r < 3; ++r) {
+    stencil.local[r].fill(-1);
+    if (section.joints[r] < 0) continue;
+    const std::array<int, 4>& corners = joints_[section.joints[r]].corners();
+    for (int k = 0; k < 4; ++k) {
+      auto at = std::find(stencil.nodes.begin(), stencil.nodes.end(), corners[k]);
+      if (at == stencil.nodes.end()) at = stencil.nodes.insert(at, corners[k]);
+      stencil.local[r][k] = static_cast<int>(at - stencil.nodes.begin());
+    }
+  }
+  return stencil;
+}
+
+void PlateBending::linkJoints() {
+  jointSections_.assign(joints_.size(), JointSections{});
+  for (int s = 0; s < static_cast<int>(sections_.size()); ++s) {
+    if (sections_[s].held) continue;
+    for (int r = 0; r < 3; ++r) {
+      const int j = sections_[s].joints[r];
+      if (j < 0) continue;
+      JointSections& joint = jointSections_[j];
+      const int at = joint.section[0] < 0 ? 0 : 1;
+      joint.section[at] = s;
+      joint.side[at] = r;
+      const double scale = sections_[s].scale[r];
+      joint.stiffness += scale * scale * sections_[s].form.row(r).cwiseAbs().sum();
+    }
+  }
 }
 
 void PlateBending::hold(const std::vector<char>& heldNodes) {
@@ -86,41 +121,156 @@ void PlateBending::hold(const std::vector<char>& heldNodes) {
     for (int k = 0; k < 3; ++k)
       s.scale[k] = s.sign[k] * (s.neighbours[k] >= 0 && heldTriangle[s.neighbours[k]] ? 2.0 : 1.0);
   }
+  linkJoints();
 }
 
-void PlateBending::measureAngles(const std::vector<Vec3>& x) const {
-  for (size_t j = 0; j < joints_.size(); ++j) angleChange_[j] = joints_[j].angleChange(x);
-}
-
-Eigen::Vector3d PlateBending::angleChanges(const SectionForm& s) const {
+Eigen::Vector3d PlateBending::sectionMoments(int s, const std::vector<JointAngle>& angles) const {
+  const SectionForm& section = sections_[s];
+  if (section.held) return Eigen::Vector3d::Zero();
   Eigen::Vector3d d = Eigen::Vector3d::Zero();
   for (int k = 0; k < 3; ++k)
-    if (s.joints[k] >= 0) d[k] = s.scale[k] * angleChange_[s.joints[k]];
-  return d;
+    if (section.joints[k] >= 0) d[k] = section.scale[k] * angles[section.joints[k]].change;
+  return section.form * d;
+}
+
+double PlateBending::jointMoment(int j, const std::vector<Eigen::Vector3d>& moments) const {
+  const JointSections& joint = jointSections_[j];
+  double moment = 0.0;
+  for (int at = 0; at < 2; ++at) {
+    const int s = joint.section[at];
+    if (s >= 0) moment += sections_[s].scale[joint.side[at]] * moments[s][joint.side[at]];
+  }
+  return moment;
+}
+
+void PlateBending::jointForces(double moment, const JointAngle& angle, Vec3* force) {
+  // Where no section bends the joint its gradient is not needed (nor finite, always).
+  for (int k = 0; k < 4; ++k) force[k] = moment != 0.0 ? Vec3(-(moment * angle.gradient[k])) : Vec3::Zero();
+}
+
+void PlateBending::sectionForces(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,
+                                 Vec3* force) const {
+  const SectionForm& section = sections_[s];
+  const Stencil& stencil = stencils_[s];
+  std::fill(force, force + stencil.nodes.size(), Vec3::Zero());
+  if (section.held) return;
+  for (int r = 0; r < 3; ++r) {
+    if (section.joints[r] < 0) continue;
+    const JointAngle& angle = angles[section.joints[r]];
+    for (int corner = 0; corner < 4; ++corner)
+      force[stencil.local[r][corner]] -= (section.scale[r] * moments[r]) * angle.gradient[corner];
+  }
 }
 
 double PlateBending::energy(const std::vector<Vec3>& x) const {
-  measureAngles(x);
+  std::vector<JointAngle> angles(joints_.size());
+  for (size_t j = 0; j < joints_.size(); ++j) angles[j].change = joints_[j].angleChange(x);
   double total = 0.0;
-  for (const SectionForm& s : sections_) {
-    if (s.held) continue;
-    const Eigen::Vector3d d = angleChanges(s);
-    total += 0.5 * d.dot(s.form * d);
+  for (size_t s = 0; s < sections_.size(); ++s) {
+    const SectionForm& section = sections_[s];
+    if (section.held) continue;
+    Eigen::Vector3d d = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      if (section.joints[k] >= 0) d[k] = section.scale[k] * angles[section.joints[k]].change;
+    total += 0.5 * d.dot(section.form * d);
   }
   return total;
 }
 
 void PlateBending::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const {
-  measureAngles(x);
-  std::fill(moment_.begin(), moment_.end(), 0.0);
-  for (const SectionForm& s : sections_) {
-    if (s.held) continue;
-    const Eigen::Vector3d dWdd = s.form * angleChanges(s);
-    for (int k = 0; k < 3; ++k)
-      if (s.joints[k] >= 0) moment_[s.joints[k]] += s.scale[k] * dWdd[k];
+  angles_.resize(joints_.size());
+  moments_.resize(sections_.size());
+  for (size_t j = 0; j < joints_.size(); ++j) angles_[j] = jointAngle(static_cast<int>(j), x);
+  for (size_t s = 0; s < sections_.size(); ++s) moments_[s] = sectionMoments(static_cast<int>(s), angles_);
+  for (size_t j = 0; j < joints_.size(); ++j) {
+    std::array<Vec3, 4> f;
+    jointForces(jointMoment(static_cast<int>(j), moments_), angles_[j], f.data());
+    for (int k = 0; k < 4; ++k) force[joints_[j].corners()[k]] += f[k];
   }
-  for (size_t j = 0; j < joints_.size(); ++j)
-    if (moment_[j] != 0.0) joints_[j].addMomentForces(x, moment_[j], force);
+}
+
+namespace {
+// What Gauss-Newton leaves out, M_r d2theta_r/dx2 with M_r the joint's moment, can
+// outweigh J^T Q J where a fold bends hard, and a step that underestimates the
+// stiffness overshoots: the node flips back and forth each step (seen at the free
+// edges of cloth folded over a ball at dt = 1/30 s). The angle's second derivatives
+// are of the order of its squared gradient (1/height^2), so |M_r| |dtheta_r/dx_a|^2 I
+// on each corner's diagonal bounds them: positive semi-definite, and zero at rest.
+constexpr double kBound = 2.0;
+}  // namespace
+
+void PlateBending::addAngleCurvatureBound(int s, const std::vector<JointAngle>& angles,
+                                          const Eigen::Vector3d& moments, const std::vector<Vec3>& v,
+                                          const SystemWeights& weights, const ElementOutput& out) const {
+  const SectionForm& section = sections_[s];
+  const Stencil& stencil = stencils_[s];
+  if (section.held) return;
+  const int k = static_cast<int>(stencil.nodes.size());
+  for (int r = 0; r < 3; ++r) {
+    if (section.joints[r] < 0) continue;
+    const double jointMoment = kBound * std::abs(section.scale[r] * moments[r]);
+    const JointAngle& angle = angles[section.joints[r]];
+    for (int corner = 0; corner < 4; ++corner) {
+      const int a = stencil.local[r][corner];
+      const double stiffness = jointMoment * angle.gradient[corner].squaredNorm();
+      out.stiffnessTimesVelocity[a] += stiffness * v[stencil.nodes[a]];
+      out.blocks[a * k + a].diagonal().array() += weights.stiffness * stiffness;
+    }
+  }
+}
+
+void PlateBending::sectionStiffness(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,
+                                    const std::vector<Vec3>& v, const SystemWeights& weights,
+                                    const ElementOutput& out) const {
+  const SectionForm& section = sections_[s];
+  const Stencil& stencil = stencils_[s];
+  const int k = static_cast<int>(stencil.nodes.size());
+  // G[a]: column r = scale_r dtheta_r/dx_a, so J's block at node a is G[a]^T.
+  std::array<Eigen::Matrix3d, 6> G;
+  for (int a = 0; a < k; ++a) G[a].setZero();
+  for (int r = 0; r < 3 && !section.held; ++r) {
+    if (section.joints[r] < 0) continue;
+    const JointAngle& angle = angles[section.joints[r]];
+    for (int corner = 0; corner < 4; ++corner)
+      G[stencil.local[r][corner]].col(r) = section.scale[r] * angle.gradient[corner];
+  }
+  std::array<Eigen::Matrix3d, 6> GQ;
+  Eigen::Vector3d Jv = Eigen::Vector3d::Zero();
+  for (int a = 0; a < k; ++a) {
+    GQ[a] = G[a] * section.form;
+    Jv += G[a].transpose() * v[stencil.nodes[a]];
+  }
+  for (int a = 0; a < k; ++a) {
+    out.stiffnessTimesVelocity[a] = GQ[a] * Jv;
+    for (int b = 0; b < k; ++b) out.blocks[a * k + b] = weights.stiffness * (GQ[a] * G[b].transpose());
+  }
+  addAngleCurvatureBound(s, angles, moments, v, weights, out);
+}
+
+void PlateBending::jointStiffness(int j, const JointAngle& angle, const std::vector<Eigen::Vector3d>& moments,
+                                  const std::vector<Vec3>& v, const SystemWeights& weights,
+                                  const ElementOutput& out) const {
+  const JointSections& joint = jointSections_[j];
+  if (joint.section[0] < 0) {  // on no free section: a clamp's, or one left out as degenerate
+    for (int a = 0; a < 4; ++a) out.stiffnessTimesVelocity[a] = Vec3::Zero();
+    for (int b = 0; b < 16; ++b) out.blocks[b].setZero();
+    return;
+  }
+  double jointMoment = 0.0;  // for the curvature bound, as addAngleCurvatureBound's
+  for (int at = 0; at < 2; ++at) {
+    const int s = joint.section[at];
+    if (s >= 0) jointMoment += std::abs(sections_[s].scale[joint.side[at]] * moments[s][joint.side[at]]);
+  }
+  const std::array<int, 4>& corners = joints_[j].corners();
+  double rate = 0.0;  // dtheta/dt
+  for (int a = 0; a < 4; ++a) rate += angle.gradient[a].dot(v[corners[a]]);
+  for (int a = 0; a < 4; ++a) {
+    const double bound = kBound * jointMoment * angle.gradient[a].squaredNorm();
+    out.stiffnessTimesVelocity[a] = (joint.stiffness * rate) * angle.gradient[a] + bound * v[corners[a]];
+    for (int b = 0; b < 4; ++b)
+      out.blocks[a * 4 + b] = (weights.stiffness * joint.stiffness) * (angle.gradient[a] * angle.gradient[b].transpose());
+    out.blocks[a * 4 + a].diagonal().array() += weights.stiffness * bound;
+  }
 }
 
 }  // namespace figment

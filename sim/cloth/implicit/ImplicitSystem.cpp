@@ -1,5 +1,7 @@
 #include "sim/cloth/implicit/ImplicitSystem.h"
 
+#include <algorithm>
+
 #include "sim/cloth/implicit/MembraneHessian.h"
 
 namespace figment {
@@ -7,19 +9,20 @@ namespace figment {
 namespace {
 // The plan's elements: the membrane sections, the bending sections, then (with the
 // joint-wise bound) the joints, which carry the bending blocks instead of the sections.
-AssemblyPlan assemblyPlan(const ClothModel& model, const std::vector<BendingStencil>& stencils, bool jointBound) {
+AssemblyPlan assemblyPlan(const ClothModel& model, bool jointBound) {
   std::vector<std::vector<int>> nodes;
   std::vector<char> withBlocks;
   for (const MembraneElement& section : model.sections()) {
     nodes.push_back({section.corners()[0], section.corners()[1], section.corners()[2]});
     withBlocks.push_back(1);
   }
-  for (const BendingStencil& stencil : stencils) {
-    nodes.push_back(stencil.nodes);
+  const PlateBending& bending = model.bending();
+  for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
+    nodes.push_back(bending.stencilNodes(s));
     withBlocks.push_back(!jointBound);
   }
   if (jointBound)
-    for (const BendingJoint& joint : model.bending().joints()) {
+    for (const BendingJoint& joint : bending.joints()) {
       nodes.push_back({joint.corners().begin(), joint.corners().end()});
       withBlocks.push_back(1);
     }
@@ -30,19 +33,15 @@ AssemblyPlan assemblyPlan(const ClothModel& model, const std::vector<BendingSten
 ImplicitSystem::ImplicitSystem(const ClothModel& model, const ClothParameters& parameters)
     : model_(model), parameters_(parameters) {
   const PlateBending& bending = model.bending();
-  for (const PlateBending::SectionForm& section : bending.sectionForms())
-    stencils_.push_back(bendingStencil(bending, section));
-  const int n = static_cast<int>(model.nodeCount());
   jointBound_ = parameters.implicitSolver.bending == BendingStiffness::Joints;
-  if (jointBound_) joints_ = jointBendings(bending);
-  moments_.resize(stencils_.size());
-  plan_ = assemblyPlan(model, stencils_, jointBound_);
+  moments_.resize(bending.sectionForms().size());
+  plan_ = assemblyPlan(model, jointBound_);
   matrix_ = plan_.pattern();
   angles_.resize(bending.joints().size());
   forceSlots_.resize(plan_.vectorSlots());
   stiffnessVelocitySlots_.resize(plan_.vectorSlots());
   blockSlots_.resize(plan_.blockSlots());
-  diagonal_.resize(n);
+  diagonal_.resize(model.nodeCount());
 }
 
 ElementOutput ImplicitSystem::slots(int element) {
@@ -57,7 +56,6 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
   const PlateBending& bending = model_.bending();
   const int membranes = static_cast<int>(sections.size());
   const int joints = static_cast<int>(angles_.size());
-  const int bendingSections = static_cast<int>(stencils_.size());
   const NodeTerms& nodes = model_.nodes();
   const bool windBlows = nodes.wind().blows();
   const double pressure = windBlows ? nodes.wind().pressure(t) : 0.0;  // before the threads: Wind draws lazily
@@ -72,21 +70,30 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
       for (int a = 0; a < 3; ++a) out.force[a] += wind;
     }
 #pragma omp for schedule(static)
-    for (int j = 0; j < joints; ++j) angles_[j] = jointAngle(bending.joints()[j], x);
-    if (jointBound_) {
+    for (int j = 0; j < joints; ++j) angles_[j] = bending.jointAngle(j, x);
+    computeBending(v, weights);
+  }
+}
+
+void ImplicitSystem::computeBending(const std::vector<Vec3>& v, const SystemWeights& weights) {
+  // Called inside computeElements' parallel region: each loop shares out its elements.
+  const PlateBending& bending = model_.bending();
+  const int membranes = static_cast<int>(model_.sections().size());
+  const int sections = static_cast<int>(moments_.size()), joints = static_cast<int>(angles_.size());
 #pragma omp for schedule(static)
-      for (int s = 0; s < bendingSections; ++s)
-        moments_[s] = bendingSectionForces(bending.sectionForms()[s], stencils_[s], angles_, slots(membranes + s));
+  for (int s = 0; s < sections; ++s) {
+    const ElementOutput out = slots(membranes + s);
+    moments_[s] = bending.sectionMoments(s, angles_);
+    bending.sectionForces(s, angles_, moments_[s], out.force);
+    if (!jointBound_) bending.sectionStiffness(s, angles_, moments_[s], v, weights, out);
+    else std::fill(out.stiffnessTimesVelocity, out.stiffnessTimesVelocity + bending.stencilNodes(s).size(), Vec3::Zero());
+  }
+  if (!jointBound_) return;
 #pragma omp for schedule(static)
-      for (int j = 0; j < joints; ++j) {
-        const ElementOutput out = slots(membranes + bendingSections + j);
-        jointBendingContribution(joints_[j], bending, angles_[j], moments_, bending.joints()[j].corners(), v, weights, out);
-      }
-    } else {
-#pragma omp for schedule(static)
-      for (int s = 0; s < bendingSections; ++s)
-        bendingContribution(bending.sectionForms()[s], stencils_[s], angles_, v, weights, slots(membranes + s));
-    }
+  for (int j = 0; j < joints; ++j) {
+    const ElementOutput out = slots(membranes + sections + j);
+    std::fill(out.force, out.force + 4, Vec3::Zero());
+    bending.jointStiffness(j, angles_[j], moments_, v, weights, out);
   }
 }
 

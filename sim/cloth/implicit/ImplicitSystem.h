@@ -7,7 +7,7 @@
 //
 //   forces()                  f(x, v, t) per node, N
 //   stiffnessTimesVelocity()  K v per node, N/s (K = -df/dx, projected: MembraneHessian.h,
-//                             BendingHessian.h)
+//                             sim/cloth/PlateBending.h)
 //   matrix()                  A = mass M + damping C + stiffness K, C = -df/dv (strain-rate
 //                             damping and air resistance); the wind's derivative is left out
 //
@@ -17,7 +17,6 @@
 
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/implicit/AssemblyPlan.h"
-#include "sim/cloth/implicit/BendingHessian.h"
 
 #include <vector>
 
@@ -41,15 +40,17 @@ class ImplicitSystem {
  private:
   void computeElements(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double t,
                        const SystemWeights& weights);
+  void computeBending(const std::vector<Vec3>& v, const SystemWeights& weights);
   ElementOutput slots(int element);
 
   const ClothModel& model_;
   ClothParameters parameters_;
-  AssemblyPlan plan_;  // elements: the membrane sections, then the bending sections
-  std::vector<BendingStencil> stencils_;
+  // Elements: the membrane sections, the bending sections, then (with the `joints` form
+  // of the bending stiffness) the joints, which carry the bending blocks instead of the
+  // sections.
+  AssemblyPlan plan_;
   std::vector<JointAngle> angles_;
   bool jointBound_ = false;
-  std::vector<JointBending> joints_;
   std::vector<Eigen::Vector3d> moments_;
   std::vector<Vec3> forceSlots_, stiffnessVelocitySlots_;
   std::vector<Block3> blockSlots_;

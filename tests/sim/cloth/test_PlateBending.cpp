@@ -1,13 +1,18 @@
 // Plate bending from the joints' angles: forces are minus the energy's gradient, a curved
-// rest shape is at rest, and a cylindrical bend of curvature kappa stores D kappa^2 / 2 per
-// area on right-triangle and equilateral meshes, in either direction.
+// rest shape is at rest, a cylindrical bend of curvature kappa stores D kappa^2 / 2 per
+// area on right-triangle and equilateral meshes, in either direction; the stiffness is
+// minus the forces' derivative where Gauss-Newton is exact, and the joint-wise form
+// bounds the section-wise one.
 #include "support/FiniteDifferences.h"
 #include "support/TestMeshes.h"
 #include "sim/cloth/PlateBending.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+
 #include <cmath>
+#include <random>
 
 using namespace figment;
 
@@ -23,6 +28,62 @@ std::vector<Vec3> swapXZ(std::vector<Vec3> x) {
   for (Vec3& p : x) std::swap(p.x(), p.z());
   return x;
 }
+// The bending forces at x, from the joints (the explicit integrators') or from the sections.
+std::vector<Vec3> jointForces(const PlateBending& bending, const std::vector<Vec3>& x) {
+  std::vector<Vec3> force(x.size(), Vec3::Zero());
+  bending.addForces(x, force);
+  return force;
+}
+std::vector<Vec3> sectionForces(const PlateBending& bending, const std::vector<Vec3>& x) {
+  std::vector<JointAngle> angles;
+  for (size_t j = 0; j < bending.joints().size(); ++j) angles.push_back(bending.jointAngle(static_cast<int>(j), x));
+  std::vector<Vec3> force(x.size(), Vec3::Zero());
+  for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
+    std::array<Vec3, 6> local;
+    bending.sectionForces(s, angles, bending.sectionMoments(s, angles), local.data());
+    for (size_t a = 0; a < bending.stencilNodes(s).size(); ++a) force[bending.stencilNodes(s)[a]] += local[a];
+  }
+  return force;
+}
+
+// The stiffness K (weights: stiffness 1) as a dense matrix, in either form.
+Eigen::MatrixXd stiffness(const PlateBending& bending, const std::vector<Vec3>& x, bool jointWise) {
+  const int n = static_cast<int>(x.size());
+  std::vector<JointAngle> angles;
+  for (size_t j = 0; j < bending.joints().size(); ++j) angles.push_back(bending.jointAngle(static_cast<int>(j), x));
+  std::vector<Eigen::Vector3d> moments;
+  for (size_t s = 0; s < bending.sectionForms().size(); ++s) moments.push_back(bending.sectionMoments(static_cast<int>(s), angles));
+  const std::vector<Vec3> still(n, Vec3::Zero());
+  const SystemWeights weights{0.0, 0.0, 1.0};
+  Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  auto add = [&](const std::vector<int>& nodes, const std::array<Block3, 36>& blocks) {
+    const int k = static_cast<int>(nodes.size());
+    for (int a = 0; a < k; ++a)
+      for (int b = 0; b < k; ++b) K.block<3, 3>(3 * nodes[a], 3 * nodes[b]) += blocks[a * k + b];
+  };
+  std::array<Vec3, 6> force, Kv;
+  std::array<Block3, 36> blocks;
+  if (jointWise)
+    for (int j = 0; j < static_cast<int>(bending.joints().size()); ++j) {
+      bending.jointStiffness(j, angles[j], moments, still, weights, {force.data(), Kv.data(), blocks.data()});
+      const std::array<int, 4>& c = bending.joints()[j].corners();
+      add({c.begin(), c.end()}, blocks);
+    }
+  else
+    for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
+      bending.sectionStiffness(s, angles, moments[s], still, weights, {force.data(), Kv.data(), blocks.data()});
+      add(bending.stencilNodes(s), blocks);
+    }
+  return K;
+}
+
+// A 4 x 4 grid curved into a shallow cylinder (rest angles not zero).
+TriangleMesh curvedSheet() {
+  TriangleMesh sheet = meshes::grid(4, 4, 0.1, 0.1, Vec3(-0.05, 0.05, 0), Vec3::UnitX(), -Vec3::UnitY());
+  for (Vec3& x : sheet.vertices) x.z() = 2.0 * x.x() * x.x();
+  return sheet;
+}
+
 double area(const TriangleMesh& mesh) {
   double total = 0.0;
   for (const Triangle& t : mesh.triangles)
@@ -112,4 +173,48 @@ TEST(PlateBending, ASaddleCostsEnergy) {
   // (it holds 96.1 %), 1 % either way for the hinges' own error.
   EXPECT_LT(bending.energy(saddle), expected * 1.01);
   EXPECT_GT(bending.energy(saddle), expected * (1.0 - 1.5 / n) * 0.99);
+}
+
+TEST(PlateBending, TheSectionsSumTheJointsForces) {
+  // The implicit step sums the bending forces per section, the explicit ones per joint.
+  const TriangleMesh rest = curvedSheet();
+  std::vector<Vec3> x = rest.vertices;
+  for (Vec3& p : x) p.z() -= 3.0 * p.y() * p.y();
+  const std::vector<Vec3> joints = jointForces(PlateBending(rest, 2e-5, 0.3), x);
+  const std::vector<Vec3> sections = sectionForces(PlateBending(rest, 2e-5, 0.3), x);
+  double largest = 0.0;
+  for (const Vec3& f : joints) largest = std::max(largest, f.norm());
+  ASSERT_GT(largest, 0.0);
+  for (size_t i = 0; i < x.size(); ++i) EXPECT_LT((joints[i] - sections[i]).norm(), 1e-12 * largest) << "node " << i;
+}
+
+TEST(PlateBending, StiffnessIsMinusTheForceDerivativeAtTheRestAngles) {
+  // Moved rigidly, the sheet keeps its rest angles: d = 0, where Gauss-Newton is exact
+  // and the curvature bound vanishes, so K = -df/dx.
+  const TriangleMesh rest = curvedSheet();
+  const PlateBending bending(rest, 2e-5, 0.3);
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Vec3(1, -1, 2).normalized()).toRotationMatrix();
+  std::vector<Vec3> x;
+  for (const Vec3& p : rest.vertices) x.push_back(rotation * p + Vec3(0.01, 0.02, -0.03));
+  const Eigen::MatrixXd K = stiffness(bending, x, false);
+  const Eigen::MatrixXd numerical =
+      meshes::numericalJacobian([&](const std::vector<Vec3>& p) { return jointForces(bending, p); }, x, 1e-7);
+  ASSERT_GT(K.norm(), 0.0);
+  EXPECT_LT((K + numerical).norm(), 1e-6 * K.norm());
+}
+
+TEST(PlateBending, TheJointWiseStiffnessBoundsTheSectionWiseOne) {
+  // On a bent sheet, w^T K_joints w >= w^T K_sections w for every w (random ones here).
+  const TriangleMesh rest = curvedSheet();
+  const PlateBending bending(rest, 2e-5, 0.3);
+  std::vector<Vec3> x = rest.vertices;
+  for (Vec3& p : x) p.z() -= 3.0 * p.y() * p.y();
+  const Eigen::MatrixXd joints = stiffness(bending, x, true), sections = stiffness(bending, x, false);
+  std::mt19937_64 random(5);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 20; ++trial) {
+    Eigen::VectorXd w(joints.rows());
+    for (int i = 0; i < w.size(); ++i) w[i] = normal(random);
+    EXPECT_GE(w.dot(joints * w), w.dot(sections * w) * (1.0 - 1e-12)) << trial;
+  }
 }
