@@ -1,6 +1,7 @@
 #include "sim/cloth/ClothModel.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -51,16 +52,16 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
   // the strain-rate damping is added after it; without, one pass adds both.
   const double damping = limited ? 0.0 : parameters_.strainRateDamping;
   for (const MembraneElement& section : sections_)
-    counts_.clampedSections +=
-        section.addForces(x, v, law_, damping, parameters_.strainLimit, force_);
+    counts_.clampedSections += addSectionForces(section, x, v, {true, damping, parameters_.strainLimit});
   bending_.addForces(x, force_);
   a.assign(n, Vec3::Zero());
   if (limited) {
     for (size_t i = 0; i < n; ++i) a[i] = force_[i] * nodes_.inverseMass(i);
     limitAccelerations(a);
     std::fill(force_.begin(), force_.end(), Vec3::Zero());
-    for (const MembraneElement& section : sections_)
-      section.addDampingForces(x, v, law_, parameters_.strainRateDamping, force_);
+    if (parameters_.strainRateDamping > 0.0)
+      for (const MembraneElement& section : sections_)
+        addSectionForces(section, x, v, {false, parameters_.strainRateDamping, 0.0});
   }
   if (nodes_.wind().blows()) addWindForces(x, t);
   for (size_t i = 0; i < n; ++i) {
@@ -71,6 +72,14 @@ void ClothModel::accelerations(const std::vector<Vec3>& x, const std::vector<Vec
     force_[i] -= nodes_.drag(i, v[i]);
     a[i] += force_[i] * nodes_.inverseMass(i) + nodes_.gravity();
   }
+}
+
+bool ClothModel::addSectionForces(const MembraneElement& section, const std::vector<Vec3>& x,
+                                  const std::vector<Vec3>& v, const MembraneRequest& request) const {
+  std::array<Vec3, 3> f;
+  const bool clamped = section.evaluate(x, v, law_, request, nullptr, {f.data(), nullptr, nullptr});
+  for (int a = 0; a < 3; ++a) force_[section.corners()[a]] += f[a];
+  return clamped;
 }
 
 void ClothModel::addWindForces(const std::vector<Vec3>& x, double t) const {

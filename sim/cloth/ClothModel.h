@@ -53,6 +53,9 @@ class ClothModel {
   const Wind& wind() const { return nodes_.wind(); }
 
  private:
+  // Adds a section's forces; returns whether its strain was clamped.
+  bool addSectionForces(const MembraneElement& section, const std::vector<Vec3>& x, const std::vector<Vec3>& v,
+                        const MembraneRequest& request) const;
   void addWindForces(const std::vector<Vec3>& x, double t) const;
   void limitAccelerations(std::vector<Vec3>& a) const;
 

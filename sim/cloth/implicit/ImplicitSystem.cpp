@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "sim/cloth/implicit/MembraneHessian.h"
 
 namespace figment {
 
@@ -64,7 +63,7 @@ void ImplicitSystem::computeElements(const std::vector<Vec3>& x, const std::vect
 #pragma omp for schedule(static)
     for (int e = 0; e < membranes; ++e) {
       const ElementOutput out = slots(e);
-      membraneContribution(sections[e], x, v, model_.law(), parameters_.strainRateDamping, weights, out);
+      sections[e].evaluate(x, v, model_.law(), {true, parameters_.strainRateDamping, 0.0}, &weights, out);
       if (!windBlows) continue;
       const Vec3 wind = nodes.windCornerForce(sections[e], x, pressure);
       for (int a = 0; a < 3; ++a) out.force[a] += wind;

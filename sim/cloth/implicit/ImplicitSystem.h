@@ -6,8 +6,8 @@
 // acceleration limiting).
 //
 //   forces()                  f(x, v, t) per node, N
-//   stiffnessTimesVelocity()  K v per node, N/s (K = -df/dx, projected: MembraneHessian.h,
-//                             sim/cloth/PlateBending.h)
+//   stiffnessTimesVelocity()  K v per node, N/s (K = -df/dx, projected:
+//                             sim/cloth/MembraneElement.h, PlateBending.h)
 //   matrix()                  A = mass M + damping C + stiffness K, C = -df/dv (strain-rate
 //                             damping and air resistance); the wind's derivative is left out
 //

@@ -4,7 +4,6 @@
 #include "support/FiniteDifferences.h"
 #include "support/TestMeshes.h"
 #include "sim/cloth/implicit/ImplicitSystem.h"
-#include "sim/cloth/implicit/MembraneHessian.h"
 
 #include <gtest/gtest.h>
 
@@ -157,15 +156,4 @@ TEST(ImplicitSystem, CompressedSectionsKeepThePositiveSemiDefiniteStiffness) {
   EXPECT_LT((K - K.transpose()).norm(), 1e-9 * K.norm());
   const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(K).eigenvalues();
   EXPECT_GT(eigenvalues.minCoeff(), -1e-9 * eigenvalues.maxCoeff());
-}
-
-TEST(MembraneHessian, PositivePartClampsTheNegativeEigenvalue) {
-  Eigen::Matrix2d S;
-  S << 3.0, 1.0, 1.0, -2.0;
-  const Eigen::Matrix2d plus = positivePart(S);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> original(S), clamped(plus);
-  EXPECT_NEAR(clamped.eigenvalues()[0], 0.0, 1e-12);
-  EXPECT_NEAR(clamped.eigenvalues()[1], original.eigenvalues()[1], 1e-12);
-  EXPECT_EQ(positivePart(Eigen::Matrix2d::Identity()), Eigen::Matrix2d::Identity());
-  EXPECT_EQ(positivePart(-Eigen::Matrix2d::Identity()), Eigen::Matrix2d::Zero());
 }
