@@ -148,20 +148,6 @@ void PlateBending::jointForces(double moment, const JointAngle& angle, Vec3* for
   for (int k = 0; k < 4; ++k) force[k] = moment != 0.0 ? Vec3(-(moment * angle.gradient[k])) : Vec3::Zero();
 }
 
-void PlateBending::sectionForces(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,
-                                 Vec3* force) const {
-  const SectionForm& section = sections_[s];
-  const Stencil& stencil = stencils_[s];
-  std::fill(force, force + stencil.nodes.size(), Vec3::Zero());
-  if (section.held) return;
-  for (int r = 0; r < 3; ++r) {
-    if (section.joints[r] < 0) continue;
-    const JointAngle& angle = angles[section.joints[r]];
-    for (int corner = 0; corner < 4; ++corner)
-      force[stencil.local[r][corner]] -= (section.scale[r] * moments[r]) * angle.gradient[corner];
-  }
-}
-
 double PlateBending::energy(const std::vector<Vec3>& x) const {
   std::vector<JointAngle> angles(joints_.size());
   for (size_t j = 0; j < joints_.size(); ++j) angles[j].change = joints_[j].angleChange(x);

@@ -27,8 +27,7 @@
 //   angles    per joint j: theta_j - theta0_j and g_j = dtheta_j/dx (BendingJoint)
 //   moments   per section: m = Q d = dW/dd (zero for a clamp)
 //   forces    per joint: M_j = sum over its sections of scale_r m_r = dW/dtheta_j,
-//             f = -M_j g_j on its four corners (the implicit step sums the same terms
-//             per section instead, -scale_r m_r g_r: sectionForces)
+//             f = -M_j g_j on its four corners
 // and, for an implicit step, the stiffness K = -df/dx in one of two forms:
 //   sections  K = J^T Q J over the section's stencil (its corners and the opposite
 //             corners across its joints, up to 6 nodes), J = dd/dx: Gauss-Newton, the
@@ -92,8 +91,6 @@ class PlateBending {
   double jointMoment(int j, const std::vector<Eigen::Vector3d>& moments) const;
   // Joint j's forces -M_j g_j, corner order (zeros where M_j = 0).
   static void jointForces(double moment, const JointAngle& angle, Vec3* force);
-  // Section s's share of the forces, -scale_r m_r g_r over its joints r, stencil order.
-  void sectionForces(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments, Vec3* force) const;
 
   // Stiffness, `sections` form: section s's K v and weighted blocks, stencil order.
   void sectionStiffness(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,

@@ -6,8 +6,9 @@
 namespace figment {
 
 namespace {
-// The plan's elements: the membrane sections, the bending sections, then (with the
-// joint-wise bound) the joints, which carry the bending blocks instead of the sections.
+// The plan's elements: the membrane sections, the bending sections (with the `sections`
+// form of the bending stiffness only: they carry its blocks), then the joints, which
+// carry the bending forces and, in the `joints` form, the blocks.
 AssemblyPlan assemblyPlan(const ClothModel& model, bool jointBound) {
   std::vector<std::vector<int>> nodes;
   std::vector<char> withBlocks;
@@ -16,15 +17,15 @@ AssemblyPlan assemblyPlan(const ClothModel& model, bool jointBound) {
     withBlocks.push_back(1);
   }
   const PlateBending& bending = model.bending();
-  for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
-    nodes.push_back(bending.stencilNodes(s));
-    withBlocks.push_back(!jointBound);
-  }
-  if (jointBound)
-    for (const BendingJoint& joint : bending.joints()) {
-      nodes.push_back({joint.corners().begin(), joint.corners().end()});
+  if (!jointBound)
+    for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
+      nodes.push_back(bending.stencilNodes(s));
       withBlocks.push_back(1);
     }
+  for (const BendingJoint& joint : bending.joints()) {
+    nodes.push_back({joint.corners().begin(), joint.corners().end()});
+    withBlocks.push_back(jointBound);
+  }
   return AssemblyPlan(static_cast<int>(model.nodeCount()), nodes, withBlocks);
 }
 }  // namespace
@@ -33,6 +34,7 @@ ImplicitSystem::ImplicitSystem(const ClothModel& model, const ClothParameters& p
     : model_(model), parameters_(parameters) {
   const PlateBending& bending = model.bending();
   jointBound_ = parameters.implicitSolver.bending == BendingStiffness::Joints;
+  jointElements_ = static_cast<int>(model.sections().size() + (jointBound_ ? 0 : bending.sectionForms().size()));
   moments_.resize(bending.sectionForms().size());
   plan_ = assemblyPlan(model, jointBound_);
   matrix_ = plan_.pattern();
@@ -80,19 +82,20 @@ void ImplicitSystem::computeBending(const std::vector<Vec3>& v, const SystemWeig
   const int membranes = static_cast<int>(model_.sections().size());
   const int sections = static_cast<int>(moments_.size()), joints = static_cast<int>(angles_.size());
 #pragma omp for schedule(static)
-  for (int s = 0; s < sections; ++s) {
-    const ElementOutput out = slots(membranes + s);
-    moments_[s] = bending.sectionMoments(s, angles_);
-    bending.sectionForces(s, angles_, moments_[s], out.force);
-    if (!jointBound_) bending.sectionStiffness(s, angles_, moments_[s], v, weights, out);
-    else std::fill(out.stiffnessTimesVelocity, out.stiffnessTimesVelocity + bending.stencilNodes(s).size(), Vec3::Zero());
-  }
-  if (!jointBound_) return;
+  for (int s = 0; s < sections; ++s) moments_[s] = bending.sectionMoments(s, angles_);
 #pragma omp for schedule(static)
   for (int j = 0; j < joints; ++j) {
-    const ElementOutput out = slots(membranes + sections + j);
-    std::fill(out.force, out.force + 4, Vec3::Zero());
-    bending.jointStiffness(j, angles_[j], moments_, v, weights, out);
+    const ElementOutput out = slots(jointElements_ + j);
+    PlateBending::jointForces(bending.jointMoment(j, moments_), angles_[j], out.force);
+    if (jointBound_) bending.jointStiffness(j, angles_[j], moments_, v, weights, out);
+    else std::fill(out.stiffnessTimesVelocity, out.stiffnessTimesVelocity + 4, Vec3::Zero());
+  }
+  if (jointBound_) return;
+#pragma omp for schedule(static)
+  for (int s = 0; s < sections; ++s) {
+    const ElementOutput out = slots(membranes + s);
+    std::fill(out.force, out.force + bending.stencilNodes(s).size(), Vec3::Zero());
+    bending.sectionStiffness(s, angles_, moments_[s], v, weights, out);
   }
 }
 

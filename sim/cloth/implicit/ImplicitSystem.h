@@ -45,10 +45,11 @@ class ImplicitSystem {
 
   const ClothModel& model_;
   ClothParameters parameters_;
-  // Elements: the membrane sections, the bending sections, then (with the `joints` form
-  // of the bending stiffness) the joints, which carry the bending blocks instead of the
-  // sections.
+  // Elements: the membrane sections, the bending sections (with the `sections` form of
+  // the bending stiffness: they carry its blocks), the joints (the bending forces and, in
+  // the `joints` form, the blocks).
   AssemblyPlan plan_;
+  int jointElements_ = 0;  // the first joint's element
   std::vector<JointAngle> angles_;
   bool jointBound_ = false;
   std::vector<Eigen::Vector3d> moments_;

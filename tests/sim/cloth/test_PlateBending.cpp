@@ -28,24 +28,12 @@ std::vector<Vec3> swapXZ(std::vector<Vec3> x) {
   for (Vec3& p : x) std::swap(p.x(), p.z());
   return x;
 }
-// The bending forces at x, from the joints (the explicit integrators') or from the sections.
+// The bending forces at x.
 std::vector<Vec3> jointForces(const PlateBending& bending, const std::vector<Vec3>& x) {
   std::vector<Vec3> force(x.size(), Vec3::Zero());
   bending.addForces(x, force);
   return force;
 }
-std::vector<Vec3> sectionForces(const PlateBending& bending, const std::vector<Vec3>& x) {
-  std::vector<JointAngle> angles;
-  for (size_t j = 0; j < bending.joints().size(); ++j) angles.push_back(bending.jointAngle(static_cast<int>(j), x));
-  std::vector<Vec3> force(x.size(), Vec3::Zero());
-  for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
-    std::array<Vec3, 6> local;
-    bending.sectionForces(s, angles, bending.sectionMoments(s, angles), local.data());
-    for (size_t a = 0; a < bending.stencilNodes(s).size(); ++a) force[bending.stencilNodes(s)[a]] += local[a];
-  }
-  return force;
-}
-
 // The stiffness K (weights: stiffness 1) as a dense matrix, in either form.
 Eigen::MatrixXd stiffness(const PlateBending& bending, const std::vector<Vec3>& x, bool jointWise) {
   const int n = static_cast<int>(x.size());
@@ -173,19 +161,6 @@ TEST(PlateBending, ASaddleCostsEnergy) {
   // (it holds 96.1 %), 1 % either way for the hinges' own error.
   EXPECT_LT(bending.energy(saddle), expected * 1.01);
   EXPECT_GT(bending.energy(saddle), expected * (1.0 - 1.5 / n) * 0.99);
-}
-
-TEST(PlateBending, TheSectionsSumTheJointsForces) {
-  // The implicit step sums the bending forces per section, the explicit ones per joint.
-  const TriangleMesh rest = curvedSheet();
-  std::vector<Vec3> x = rest.vertices;
-  for (Vec3& p : x) p.z() -= 3.0 * p.y() * p.y();
-  const std::vector<Vec3> joints = jointForces(PlateBending(rest, 2e-5, 0.3), x);
-  const std::vector<Vec3> sections = sectionForces(PlateBending(rest, 2e-5, 0.3), x);
-  double largest = 0.0;
-  for (const Vec3& f : joints) largest = std::max(largest, f.norm());
-  ASSERT_GT(largest, 0.0);
-  for (size_t i = 0; i < x.size(); ++i) EXPECT_LT((joints[i] - sections[i]).norm(), 1e-12 * largest) << "node " << i;
 }
 
 TEST(PlateBending, StiffnessIsMinusTheForceDerivativeAtTheRestAngles) {

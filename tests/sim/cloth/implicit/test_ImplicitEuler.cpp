@@ -61,7 +61,11 @@ std::vector<Vec3> drapeWithThreads(int threads) {
 TEST(ImplicitEuler, SheetDroppedOnABallEndsOutsideItAtRest) {
   for (const double timeStep : {1.0 / 30.0, 1.0 / 50.0}) {
     SCOPED_TRACE(testing::Message() << "dt = " << timeStep << " s");
-    const ClothParameters p = implicitDrape(timeStep);
+    ClothParameters p = implicitDrape(timeStep);
+    // At 1/30 s the folds creep just above the rest speed for seconds, and when they
+    // stop moves with the forces' last bits: 161 steps (5.4 s) at 3254c78, 186 with
+    // only gravity and air summed in another order. 8 s leaves room for that.
+    p.maxTime = 8.0;
     auto body = ball();
     ClothSolver solver(sheetAboveBall(), p, body);
     const DrapeResult result = solver.run();
