@@ -58,10 +58,21 @@ double BendingJoint::angleChange(const std::vector<Vec3>& x) const {
   return wrapped(angle(x[corners_[0]], x[corners_[1]], x[corners_[2]], x[corners_[3]]) - restAngle_);
 }
 
-JointAngle BendingJoint::measure(const std::vector<Vec3>& x) const {
+AngleGradient BendingJoint::gradient(const std::vector<Vec3>& x) const {
+  return angleGradient(x[corners_[0]], x[corners_[1]], x[corners_[2]], x[corners_[3]]);
+}
+
+void BendingJoint::momentForces(double moment, const std::vector<Vec3>& x, Vec3* force) const {
+  if (moment == 0.0) return momentForces(moment, AngleGradient{}, force);
+  const Vec3 &x0 = x[corners_[0]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
+  momentForces(moment, Hinge(x0, x[corners_[1]], x2, x3).gradient(x0, x2, x3), force);
+}
+
+double BendingJoint::measure(const std::vector<Vec3>& x, AngleGradient& gradient) const {
   const Vec3 &x0 = x[corners_[0]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
   const Hinge hinge(x0, x[corners_[1]], x2, x3);
-  return {wrapped(hinge.angle() - restAngle_), hinge.gradient(x0, x2, x3)};
+  gradient = hinge.gradient(x0, x2, x3);
+  return wrapped(hinge.angle() - restAngle_);
 }
 
 }  // namespace figment

@@ -14,12 +14,8 @@
 
 namespace figment {
 
-// A joint's angle change theta - theta0 at some positions and its gradient dtheta/dx at
-// its four corners (1/m).
-struct JointAngle {
-  double change = 0.0;
-  std::array<Vec3, 4> gradient;
-};
+// dtheta/dx of a joint's angle at its four corners (1/m).
+using AngleGradient = std::array<Vec3, 4>;
 
 class BendingJoint {
  public:
@@ -32,8 +28,18 @@ class BendingJoint {
 
   // theta - theta0 at x, wrapped into (-pi, pi] (the shortest way back to rest).
   double angleChange(const std::vector<Vec3>& x) const;
-  // The angle change and its gradient at x, from one look at the hinge.
-  JointAngle measure(const std::vector<Vec3>& x) const;
+  // The angle change at x, and its gradient into `gradient`, from one look at the hinge.
+  double measure(const std::vector<Vec3>& x, AngleGradient& gradient) const;
+  // dtheta/dx at x for the four corners.
+  AngleGradient gradient(const std::vector<Vec3>& x) const;
+
+  // The forces of a moment M = dW/dtheta about the joint, f = -M dtheta/dx, corner order:
+  // from the gradient, or measuring it at x. Zeros where M = 0, without the gradient
+  // (it is not needed there, nor always finite).
+  static void momentForces(double moment, const AngleGradient& gradient, Vec3* force) {
+    for (int k = 0; k < 4; ++k) force[k] = moment != 0.0 ? Vec3(-(moment * gradient[k])) : Vec3::Zero();
+  }
+  void momentForces(double moment, const std::vector<Vec3>& x, Vec3* force) const;
 
   // Signed dihedral angle between the section normals: 0 when flat, > 0 when the sections
   // fold towards A's normal; the same whichever section is A when the winding agrees.

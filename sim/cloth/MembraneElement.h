@@ -38,7 +38,7 @@
 // is added; K and D describe the unclamped force.
 
 #include "sim/cloth/PlaneStressLaw.h"
-#include "sim/cloth/implicit/ElementOutput.h"
+#include "sim/cloth/ElementOutput.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <Eigen/Core>

@@ -107,6 +107,7 @@ void PlateBending::linkJoints() {
       joint.section[at] = s;
       joint.side[at] = r;
       const double scale = sections_[s].scale[r];
+      joint.scale[at] = scale;
       joint.stiffness += scale * scale * sections_[s].form.row(r).cwiseAbs().sum();
     }
   }
@@ -124,53 +125,30 @@ void PlateBending::hold(const std::vector<char>& heldNodes) {
   linkJoints();
 }
 
-Eigen::Vector3d PlateBending::sectionMoments(int s, const std::vector<JointAngle>& angles) const {
-  const SectionForm& section = sections_[s];
-  if (section.held) return Eigen::Vector3d::Zero();
-  Eigen::Vector3d d = Eigen::Vector3d::Zero();
-  for (int k = 0; k < 3; ++k)
-    if (section.joints[k] >= 0) d[k] = section.scale[k] * angles[section.joints[k]].change;
-  return section.form * d;
-}
-
-double PlateBending::jointMoment(int j, const std::vector<Eigen::Vector3d>& moments) const {
-  const JointSections& joint = jointSections_[j];
-  double moment = 0.0;
-  for (int at = 0; at < 2; ++at) {
-    const int s = joint.section[at];
-    if (s >= 0) moment += sections_[s].scale[joint.side[at]] * moments[s][joint.side[at]];
-  }
-  return moment;
-}
-
-void PlateBending::jointForces(double moment, const JointAngle& angle, Vec3* force) {
-  // Where no section bends the joint its gradient is not needed (nor finite, always).
-  for (int k = 0; k < 4; ++k) force[k] = moment != 0.0 ? Vec3(-(moment * angle.gradient[k])) : Vec3::Zero();
-}
-
 double PlateBending::energy(const std::vector<Vec3>& x) const {
-  std::vector<JointAngle> angles(joints_.size());
-  for (size_t j = 0; j < joints_.size(); ++j) angles[j].change = joints_[j].angleChange(x);
+  std::vector<double> changes(joints_.size());
+  for (size_t j = 0; j < joints_.size(); ++j) changes[j] = joints_[j].angleChange(x);
   double total = 0.0;
   for (size_t s = 0; s < sections_.size(); ++s) {
     const SectionForm& section = sections_[s];
     if (section.held) continue;
     Eigen::Vector3d d = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k)
-      if (section.joints[k] >= 0) d[k] = section.scale[k] * angles[section.joints[k]].change;
+      if (section.joints[k] >= 0) d[k] = section.scale[k] * changes[section.joints[k]];
     total += 0.5 * d.dot(section.form * d);
   }
   return total;
 }
 
 void PlateBending::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const {
-  angles_.resize(joints_.size());
-  moments_.resize(sections_.size());
-  for (size_t j = 0; j < joints_.size(); ++j) angles_[j] = jointAngle(static_cast<int>(j), x);
-  for (size_t s = 0; s < sections_.size(); ++s) moments_[s] = sectionMoments(static_cast<int>(s), angles_);
+  std::vector<double> changes(joints_.size());
+  std::vector<AngleGradient> gradients(joints_.size());
+  std::vector<Eigen::Vector3d> moments(sections_.size());
+  for (size_t j = 0; j < joints_.size(); ++j) changes[j] = joints_[j].measure(x, gradients[j]);
+  for (size_t s = 0; s < sections_.size(); ++s) moments[s] = sectionMoments(static_cast<int>(s), changes);
   for (size_t j = 0; j < joints_.size(); ++j) {
     std::array<Vec3, 4> f;
-    jointForces(jointMoment(static_cast<int>(j), moments_), angles_[j], f.data());
+    BendingJoint::momentForces(jointMoment(static_cast<int>(j), moments), gradients[j], f.data());
     for (int k = 0; k < 4; ++k) force[joints_[j].corners()[k]] += f[k];
   }
 }
@@ -185,7 +163,7 @@ namespace {
 constexpr double kBound = 2.0;
 }  // namespace
 
-void PlateBending::addAngleCurvatureBound(int s, const std::vector<JointAngle>& angles,
+void PlateBending::addAngleCurvatureBound(int s, const std::vector<AngleGradient>& gradients,
                                           const Eigen::Vector3d& moments, const std::vector<Vec3>& v,
                                           const SystemWeights& weights, const ElementOutput& out) const {
   const SectionForm& section = sections_[s];
@@ -195,17 +173,17 @@ void PlateBending::addAngleCurvatureBound(int s, const std::vector<JointAngle>& 
   for (int r = 0; r < 3; ++r) {
     if (section.joints[r] < 0) continue;
     const double jointMoment = kBound * std::abs(section.scale[r] * moments[r]);
-    const JointAngle& angle = angles[section.joints[r]];
+    const AngleGradient& gradient = gradients[section.joints[r]];
     for (int corner = 0; corner < 4; ++corner) {
       const int a = stencil.local[r][corner];
-      const double stiffness = jointMoment * angle.gradient[corner].squaredNorm();
+      const double stiffness = jointMoment * gradient[corner].squaredNorm();
       out.stiffnessTimesVelocity[a] += stiffness * v[stencil.nodes[a]];
       out.blocks[a * k + a].diagonal().array() += weights.stiffness * stiffness;
     }
   }
 }
 
-void PlateBending::sectionStiffness(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,
+void PlateBending::sectionStiffness(int s, const std::vector<AngleGradient>& gradients, const Eigen::Vector3d& moments,
                                     const std::vector<Vec3>& v, const SystemWeights& weights,
                                     const ElementOutput& out) const {
   const SectionForm& section = sections_[s];
@@ -216,9 +194,9 @@ void PlateBending::sectionStiffness(int s, const std::vector<JointAngle>& angles
   for (int a = 0; a < k; ++a) G[a].setZero();
   for (int r = 0; r < 3 && !section.held; ++r) {
     if (section.joints[r] < 0) continue;
-    const JointAngle& angle = angles[section.joints[r]];
+    const AngleGradient& gradient = gradients[section.joints[r]];
     for (int corner = 0; corner < 4; ++corner)
-      G[stencil.local[r][corner]].col(r) = section.scale[r] * angle.gradient[corner];
+      G[stencil.local[r][corner]].col(r) = section.scale[r] * gradient[corner];
   }
   std::array<Eigen::Matrix3d, 6> GQ;
   Eigen::Vector3d Jv = Eigen::Vector3d::Zero();
@@ -230,10 +208,10 @@ void PlateBending::sectionStiffness(int s, const std::vector<JointAngle>& angles
     out.stiffnessTimesVelocity[a] = GQ[a] * Jv;
     for (int b = 0; b < k; ++b) out.blocks[a * k + b] = weights.stiffness * (GQ[a] * G[b].transpose());
   }
-  addAngleCurvatureBound(s, angles, moments, v, weights, out);
+  addAngleCurvatureBound(s, gradients, moments, v, weights, out);
 }
 
-void PlateBending::jointStiffness(int j, const JointAngle& angle, const std::vector<Eigen::Vector3d>& moments,
+void PlateBending::jointStiffness(int j, const AngleGradient& gradient, const std::vector<Eigen::Vector3d>& moments,
                                   const std::vector<Vec3>& v, const SystemWeights& weights,
                                   const ElementOutput& out) const {
   const JointSections& joint = jointSections_[j];
@@ -245,16 +223,17 @@ void PlateBending::jointStiffness(int j, const JointAngle& angle, const std::vec
   double jointMoment = 0.0;  // for the curvature bound, as addAngleCurvatureBound's
   for (int at = 0; at < 2; ++at) {
     const int s = joint.section[at];
-    if (s >= 0) jointMoment += std::abs(sections_[s].scale[joint.side[at]] * moments[s][joint.side[at]]);
+    if (s >= 0) jointMoment += std::abs(joint.scale[at] * moments[s][joint.side[at]]);
   }
   const std::array<int, 4>& corners = joints_[j].corners();
   double rate = 0.0;  // dtheta/dt
-  for (int a = 0; a < 4; ++a) rate += angle.gradient[a].dot(v[corners[a]]);
+  for (int a = 0; a < 4; ++a) rate += gradient[a].dot(v[corners[a]]);
   for (int a = 0; a < 4; ++a) {
-    const double bound = kBound * jointMoment * angle.gradient[a].squaredNorm();
-    out.stiffnessTimesVelocity[a] = (joint.stiffness * rate) * angle.gradient[a] + bound * v[corners[a]];
+    const double bound = kBound * jointMoment * gradient[a].squaredNorm();
+    out.stiffnessTimesVelocity[a] = (joint.stiffness * rate) * gradient[a] + bound * v[corners[a]];
     for (int b = 0; b < 4; ++b)
-      out.blocks[a * 4 + b] = (weights.stiffness * joint.stiffness) * (angle.gradient[a] * angle.gradient[b].transpose());
+      out.blocks[a * 4 + b] =
+          (weights.stiffness * joint.stiffness) * (gradient[a] * gradient[b].transpose());
     out.blocks[a * 4 + a].diagonal().array() += weights.stiffness * bound;
   }
 }

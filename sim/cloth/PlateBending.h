@@ -27,7 +27,7 @@
 //   angles    per joint j: theta_j - theta0_j and g_j = dtheta_j/dx (BendingJoint)
 //   moments   per section: m = Q d = dW/dd (zero for a clamp)
 //   forces    per joint: M_j = sum over its sections of scale_r m_r = dW/dtheta_j,
-//             f = -M_j g_j on its four corners
+//             f = -M_j g_j on its four corners (BendingJoint::momentForces)
 // and, for an implicit step, the stiffness K = -df/dx in one of two forms:
 //   sections  K = J^T Q J over the section's stencil (its corners and the opposite
 //             corners across its joints, up to 6 nodes), J = dd/dx: Gauss-Newton, the
@@ -45,7 +45,7 @@
 // folds and wrinkles", SCA 2003; the Gauss-Newton form as in Baraff & Witkin 1998.
 
 #include "sim/cloth/BendingJoint.h"
-#include "sim/cloth/implicit/ElementOutput.h"
+#include "sim/cloth/ElementOutput.h"
 #include "sim/core/TriangleMesh.h"
 
 #include <Eigen/Core>
@@ -65,7 +65,8 @@ class PlateBending {
   void hold(const std::vector<char>& heldNodes);
 
   double energy(const std::vector<Vec3>& x) const;
-  // Adds the forces at x to `force` (the three passes, one after another).
+  // Adds the forces at x to `force` (the three passes, one after another, on one
+  // thread; ClothModel runs them for the integrators).
   void addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force) const;
 
   const std::vector<BendingJoint>& joints() const { return joints_; }
@@ -86,17 +87,15 @@ class PlateBending {
   const std::vector<int>& stencilNodes(int s) const { return stencils_[s].nodes; }
 
   // The passes, one element each (independent: any order, any thread).
-  JointAngle jointAngle(int j, const std::vector<Vec3>& x) const { return joints_[j].measure(x); }
-  Eigen::Vector3d sectionMoments(int s, const std::vector<JointAngle>& angles) const;
+  // (The angles: joints()[j].angleChange, .measure.) `changes`: every joint's.
+  Eigen::Vector3d sectionMoments(int s, const std::vector<double>& changes) const;
   double jointMoment(int j, const std::vector<Eigen::Vector3d>& moments) const;
-  // Joint j's forces -M_j g_j, corner order (zeros where M_j = 0).
-  static void jointForces(double moment, const JointAngle& angle, Vec3* force);
 
   // Stiffness, `sections` form: section s's K v and weighted blocks, stencil order.
-  void sectionStiffness(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,
+  void sectionStiffness(int s, const std::vector<AngleGradient>& gradients, const Eigen::Vector3d& moments,
                         const std::vector<Vec3>& v, const SystemWeights& weights, const ElementOutput& out) const;
   // Stiffness, `joints` form: joint j's K v and weighted blocks, corner order.
-  void jointStiffness(int j, const JointAngle& angle, const std::vector<Eigen::Vector3d>& moments,
+  void jointStiffness(int j, const AngleGradient& gradient, const std::vector<Eigen::Vector3d>& moments,
                       const std::vector<Vec3>& v, const SystemWeights& weights, const ElementOutput& out) const;
 
  private:
@@ -107,13 +106,14 @@ class PlateBending {
   };
   // The free sections a joint joins (in section order) and its bound's weight w_j.
   struct JointSections {
-    std::array<int, 2> section{-1, -1};  // -1: none
-    std::array<int, 2> side{0, 0};       // the joint's index r in each
-    double stiffness = 0.0;              // w_j, N*m
+    std::array<int, 2> section{-1, -1};     // -1: none
+    std::array<int, 2> side{0, 0};          // the joint's index r in each
+    std::array<double, 2> scale{0.0, 0.0};  // each section's scale_r (kept here: read at every evaluation)
+    double stiffness = 0.0;                 // w_j, N*m
   };
   Stencil stencilOf(const SectionForm& section) const;
   void linkJoints();  // jointSections_ from the sections' forms and clamps
-  void addAngleCurvatureBound(int s, const std::vector<JointAngle>& angles, const Eigen::Vector3d& moments,
+  void addAngleCurvatureBound(int s, const std::vector<AngleGradient>& gradients, const Eigen::Vector3d& moments,
                               const std::vector<Vec3>& v, const SystemWeights& weights, const ElementOutput& out) const;
 
   std::vector<BendingJoint> joints_;
@@ -121,8 +121,27 @@ class PlateBending {
   std::vector<Stencil> stencils_;
   std::vector<JointSections> jointSections_;
   std::vector<Triangle> triangles_;
-  mutable std::vector<JointAngle> angles_;        // addForces' scratch
-  mutable std::vector<Eigen::Vector3d> moments_;  // addForces' scratch
 };
+
+// The passes run for every joint and section at every force evaluation: inline.
+
+inline Eigen::Vector3d PlateBending::sectionMoments(int s, const std::vector<double>& changes) const {
+  const SectionForm& section = sections_[s];
+  if (section.held) return Eigen::Vector3d::Zero();
+  Eigen::Vector3d d = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (section.joints[k] >= 0) d[k] = section.scale[k] * changes[section.joints[k]];
+  return section.form * d;
+}
+
+inline double PlateBending::jointMoment(int j, const std::vector<Eigen::Vector3d>& moments) const {
+  const JointSections& joint = jointSections_[j];
+  double moment = 0.0;
+  for (int at = 0; at < 2; ++at) {
+    const int s = joint.section[at];
+    if (s >= 0) moment += joint.scale[at] * moments[s][joint.side[at]];
+  }
+  return moment;
+}
 
 }  // namespace figment

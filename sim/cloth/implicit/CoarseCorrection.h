@@ -13,7 +13,7 @@
 //
 // A_c is built and factored (sparse LDL^T, Eigen) once per solve; its pattern once.
 
-#include "sim/cloth/implicit/BlockSparseMatrix.h"
+#include "sim/cloth/BlockSparseMatrix.h"
 #include "sim/cloth/implicit/NodeFilter.h"
 
 #include <Eigen/SparseCholesky>

@@ -25,7 +25,7 @@
 // Far nodes skip the body's queries: each keeps a lower bound of its distance.
 
 #include "sim/cloth/ClothParameters.h"
-#include "sim/cloth/implicit/BlockSparseMatrix.h"
+#include "sim/cloth/BlockSparseMatrix.h"
 #include "sim/collision/Collider.h"
 
 #include <memory>

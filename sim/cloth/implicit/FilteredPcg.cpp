@@ -1,6 +1,6 @@
 #include "sim/cloth/implicit/FilteredPcg.h"
 
-#include "sim/cloth/implicit/ParallelLoops.h"
+#include "sim/cloth/ParallelLoops.h"
 
 #include <algorithm>
 

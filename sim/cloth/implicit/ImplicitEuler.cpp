@@ -7,17 +7,18 @@ namespace figment {
 ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& parameters,
                              std::shared_ptr<const Collider> body)
     : parameters_(parameters),
-      system_(model, parameters),
+      model_(model),
       contacts_(parameters.implicitSolver.contacts == ContactModel::Constraints ? body : nullptr, parameters,
                 model.nodeCount()),
       stop_{parameters.implicitSolver.tolerance, parameters.implicitSolver.maxIterations} {
-  if (parameters.implicitSolver.preconditioner == Preconditioner::TwoLevel) pcg_ = FilteredPcg(system_.matrix());
+  system_.matrix = model.matrixPattern();
+  if (parameters.implicitSolver.preconditioner == Preconditioner::TwoLevel) pcg_ = FilteredPcg(system_.matrix);
   if (parameters.implicitSolver.contacts == ContactModel::Penalty)
     penalties_ = std::make_unique<ContactPenalty>(std::move(body), parameters, model.nodeCount());
 }
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
-  const NodeTerms& nodes = system_.model().nodes();
+  const NodeTerms& nodes = model_.nodes();
   filter_.reset(pinned.size());
   for (size_t i = 0; i < pinned.size(); ++i) {
     if (pinned[i]) {
@@ -38,23 +39,23 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
   for (int solve = 0;; ++solve) {
     for (size_t i = 0; i < n; ++i) b_[i] = rhs_[i] + friction[i];
     // A solve after the first starts from the last one's answer.
-    lastSolve_ = pcg_.solve(system_.matrix(), b_, filter_, stop_, change_, solve > 0);
+    lastSolve_ = pcg_.solve(system_.matrix, b_, filter_, stop_, change_, solve > 0);
     costs_.solverIterations += lastSolve_.iterations;
     costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
     // The constraints' impulses: what the solve added beyond the forces and the friction.
-    system_.matrix().multiply(change_, impulse_);
+    system_.matrix.multiply(change_, impulse_);
     for (size_t i = 0; i < n; ++i) impulse_[i] -= b_[i];
-    const double changed = contacts_.update(impulse_, v, change_, system_.masses(), filter_);
+    const double changed = contacts_.update(impulse_, v, change_, model_.masses(), filter_);
     if (changed <= kResolveShare * total || solve + 1 >= kMaxSolves) break;
   }
 }
 
 void ImplicitEuler::solveWithPenalties(const std::vector<Vec3>& v, double dt) {
   for (int solve = 0;; ++solve) {
-    lastSolve_ = pcg_.solve(system_.matrix(), rhs_, filter_, stop_, change_, solve > 0);
+    lastSolve_ = pcg_.solve(system_.matrix, rhs_, filter_, stop_, change_, solve > 0);
     costs_.solverIterations += lastSolve_.iterations;
     costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
-    if (solve + 1 >= kMaxSolves || !penalties_->update(v, change_, dt, system_.matrix(), rhs_)) break;
+    if (solve + 1 >= kMaxSolves || !penalties_->update(v, change_, dt, system_.matrix, rhs_)) break;
   }
 }
 
@@ -79,14 +80,17 @@ void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, c
   fixNodes(pinned, dt);
   contacts_.constrain(x, v, dt, firstStep, filter_);
   costs_.contactSeconds += lap(clock);
-  system_.assemble(x, v, t, SystemWeights{1.0, dt, dt * dt});
+  const SystemWeights weights{1.0, dt, dt * dt};
+  ClothModel::Request request;
+  request.system = &weights;
+  model_.evaluate(x, v, t, request, system_);
   costs_.assemblySeconds += lap(clock);
   rhs_.resize(n);
-  const std::vector<Vec3>& f = system_.forces();
-  const std::vector<Vec3>& Kv = system_.stiffnessTimesVelocity();
+  const std::vector<Vec3>& f = system_.forces;
+  const std::vector<Vec3>& Kv = system_.stiffnessTimesVelocity;
   for (size_t i = 0; i < n; ++i) rhs_[i] = dt * (f[i] - dt * Kv[i]);
   if (penalties_) {
-    penalties_->add(x, v, system_.masses(), dt, firstStep, system_.matrix(), rhs_);
+    penalties_->add(x, v, model_.masses(), dt, firstStep, system_.matrix, rhs_);
     costs_.contactSeconds += lap(clock);
     solveWithPenalties(v, dt);
   } else {

@@ -1,7 +1,8 @@
 #pragma once
 // Backward Euler for the garment, linearised once per step (Baraff & Witkin, "Large
 // steps in cloth simulation", SIGGRAPH 1998): with K = -df/dx, C = -df/dv at the step's
-// start (ImplicitSystem.h), the velocity change y solves
+// start (ClothModel::evaluate, the explicit integrators' model without their stability
+// measures: strain clamping, acceleration limiting), the velocity change y solves
 //
 //   (M + dt C + dt^2 K) y = dt (f(x, v, t) - dt K v),   v' = v + y,   x' = x + dt v'
 //
@@ -17,7 +18,7 @@
 #include "sim/cloth/implicit/ContactPenalty.h"
 #include "sim/cloth/implicit/FilteredPcg.h"
 #include "sim/cloth/implicit/ImplicitStepCosts.h"
-#include "sim/cloth/implicit/ImplicitSystem.h"
+#include "sim/cloth/ClothModel.h"
 
 #include <memory>
 #include <vector>
@@ -49,7 +50,8 @@ class ImplicitEuler {
   static constexpr double kResolveShare = 0.03;
 
   ClothParameters parameters_;
-  ImplicitSystem system_;
+  const ClothModel& model_;  // kept by reference
+  ClothModel::Evaluation system_;
   ContactConstraints contacts_;
   std::unique_ptr<ContactPenalty> penalties_;  // instead of contacts_ where the parameters say so
   FilteredPcg pcg_;

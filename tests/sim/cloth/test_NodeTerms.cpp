@@ -15,7 +15,8 @@ struct Garment {
   std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0.2, 0), Vec3(0.1, 0.2, 0.05), Vec3(0.3, 0, 0)};
   std::vector<MembraneElement> sections;
   Garment() {
-    for (const Triangle& t : {Triangle{0, 1, 2}, Triangle{1, 3, 2}}) sections.emplace_back(t, x[t[0]], x[t[1]], x[t[2]]);
+    for (const Triangle& t : {Triangle{0, 1, 2}, Triangle{1, 3, 2}})
+      sections.emplace_back(t, x[t[0]], x[t[1]], x[t[2]]);
   }
 };
 

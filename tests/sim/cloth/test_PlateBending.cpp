@@ -37,10 +37,12 @@ std::vector<Vec3> jointForces(const PlateBending& bending, const std::vector<Vec
 // The stiffness K (weights: stiffness 1) as a dense matrix, in either form.
 Eigen::MatrixXd stiffness(const PlateBending& bending, const std::vector<Vec3>& x, bool jointWise) {
   const int n = static_cast<int>(x.size());
-  std::vector<JointAngle> angles;
-  for (size_t j = 0; j < bending.joints().size(); ++j) angles.push_back(bending.jointAngle(static_cast<int>(j), x));
+  std::vector<double> changes(bending.joints().size());
+  std::vector<AngleGradient> gradients(bending.joints().size());
+  for (size_t j = 0; j < bending.joints().size(); ++j) changes[j] = bending.joints()[j].measure(x, gradients[j]);
   std::vector<Eigen::Vector3d> moments;
-  for (size_t s = 0; s < bending.sectionForms().size(); ++s) moments.push_back(bending.sectionMoments(static_cast<int>(s), angles));
+  for (size_t s = 0; s < bending.sectionForms().size(); ++s)
+    moments.push_back(bending.sectionMoments(static_cast<int>(s), changes));
   const std::vector<Vec3> still(n, Vec3::Zero());
   const SystemWeights weights{0.0, 0.0, 1.0};
   Eigen::MatrixXd K = Eigen::MatrixXd::Zero(3 * n, 3 * n);
@@ -53,13 +55,13 @@ Eigen::MatrixXd stiffness(const PlateBending& bending, const std::vector<Vec3>& 
   std::array<Block3, 36> blocks;
   if (jointWise)
     for (int j = 0; j < static_cast<int>(bending.joints().size()); ++j) {
-      bending.jointStiffness(j, angles[j], moments, still, weights, {force.data(), Kv.data(), blocks.data()});
+      bending.jointStiffness(j, gradients[j], moments, still, weights, {force.data(), Kv.data(), blocks.data()});
       const std::array<int, 4>& c = bending.joints()[j].corners();
       add({c.begin(), c.end()}, blocks);
     }
   else
     for (int s = 0; s < static_cast<int>(bending.sectionForms().size()); ++s) {
-      bending.sectionStiffness(s, angles, moments[s], still, weights, {force.data(), Kv.data(), blocks.data()});
+      bending.sectionStiffness(s, gradients, moments[s], still, weights, {force.data(), Kv.data(), blocks.data()});
       add(bending.stencilNodes(s), blocks);
     }
   return K;

@@ -2,7 +2,7 @@
 // constrained ones take their prescribed values, and the answer does not depend on the
 // thread count (the loop runs in one parallel region above kParallelSolveNodes nodes).
 #include "sim/cloth/implicit/FilteredPcg.h"
-#include "sim/cloth/implicit/ParallelLoops.h"
+#include "sim/cloth/ParallelLoops.h"
 
 #include <gtest/gtest.h>
 #include <omp.h>

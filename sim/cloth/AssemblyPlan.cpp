@@ -1,4 +1,4 @@
-#include "sim/cloth/implicit/AssemblyPlan.h"
+#include "sim/cloth/AssemblyPlan.h"
 
 namespace figment {
 

@@ -1,11 +1,11 @@
 #pragma once
-// Deterministic parallel assembly. Each element (a membrane section, a bending stencil)
+// Deterministic parallel assembly. Each element (sim/cloth/ClothModel.h lists them)
 // writes its local 3x3 blocks and node vectors into slots of its own, in parallel with
 // the others; the plan then sums, for each matrix block and each node, the slots that
 // belong there, in one fixed order (by slot index). No two threads ever add into the
 // same place, so the result is the same, bit for bit, whatever the thread count.
 
-#include "sim/cloth/implicit/BlockSparseMatrix.h"
+#include "sim/cloth/BlockSparseMatrix.h"
 
 #include <vector>
 

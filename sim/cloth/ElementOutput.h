@@ -1,12 +1,13 @@
 #pragma once
-// What one element (a membrane section, a bending stencil) contributes to the linear
-// system of a backward Euler step, written into its own slots (AssemblyPlan):
+// What one element of the cloth model (a membrane section, a bending joint or section,
+// the wind on a section) writes into its own slots (AssemblyPlan): its forces and, for a
+// backward Euler step, its share of K v and of
 //
 //   A = mass M + damping C + stiffness K      (weights: 1, dt, dt^2 in a step)
 //
 // with K = -df/dx (projected to stay positive semi-definite) and C = -df/dv.
 
-#include "sim/cloth/implicit/BlockSparseMatrix.h"
+#include "sim/cloth/BlockSparseMatrix.h"
 
 namespace figment {
 

@@ -1,6 +1,6 @@
-#include "sim/cloth/implicit/BlockSparseMatrix.h"
+#include "sim/cloth/BlockSparseMatrix.h"
 
-#include "sim/cloth/implicit/ParallelLoops.h"
+#include "sim/cloth/ParallelLoops.h"
 
 #include <algorithm>
 
