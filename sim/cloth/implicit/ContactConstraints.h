@@ -23,7 +23,9 @@
 //     had away from the body (the push-out never launches it); any node inside the
 //     clearance at the end (a free node that ran into the body, a held one on a curved
 //     surface) gets the explicit path's response (sim/cloth/ContactResponse.h): it ends
-//     on the surface + clearance.
+//     on the surface + clearance. A held node pressing on the body that ended a little
+//     above the clearance (sliding along its tangent plane over a curved surface) is
+//     put back on it, so it stays held (followSurface).
 // Far nodes skip the body's queries, as in the explicit path: each keeps a lower bound
 // of its distance, lowered by its motion.
 
@@ -60,6 +62,10 @@ class ContactConstraints {
   double band() const { return band_; }
 
  private:
+  // A held node pressing on the body that ended the step just above the clearance (it
+  // slid along its tangent plane over a curved surface) is put back on the clearance,
+  // with no velocity away from the body.
+  void followSurface(Vec3& x, Vec3& v, double& distanceBound) const;
   void stick(int i, const Vec3& v, NodeFilter& filter);
   void slide(int i, NodeFilter& filter);
   double updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart, double mass,
