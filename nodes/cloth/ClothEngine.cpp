@@ -208,7 +208,11 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     if (path.empty()) throw std::runtime_error("progressiveScript \"" + script + "\" not found");
     mesh = figment::readProgressiveScript(path, garment);
   }
-  figment::DrapeRequest request{garment, parameters, std::move(collider), std::move(mesh), schedule};
+  figment::DrapeRequest request{.garment = garment,
+                                .parameters = parameters,
+                                .body = std::move(collider),
+                                .progressive = std::move(mesh),
+                                .schedule = schedule};
   if (context.stepObserver)
     request.stepObserver = [&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); };
   request.progress = [&](const figment::DrapeProgress& p) {
