@@ -20,17 +20,17 @@
 namespace figment {
 
 struct DrapeRequest {
-  TriangleMesh garment;  // its rest shape, which is also where the drape starts
-  ClothParameters parameters;
-  std::shared_ptr<const Collider> body;
+  TriangleMesh garment{};  // its rest shape, which is also where the drape starts
+  ClothParameters parameters{};
+  std::shared_ptr<const Collider> body{};
   // Set: the garment is draped level by level from this mesh (paper §4), by `schedule`.
-  std::optional<ProgressiveMesh> progressive;
-  ProgressiveSchedule schedule;
+  std::optional<ProgressiveMesh> progressive{};
+  ProgressiveSchedule schedule{};
   // Called before the first step and after every step of a whole-garment drape (a
   // progressive drape's solver changes with its level and is not observed).
-  ClothSolver::StepObserver stepObserver;
+  ClothSolver::StepObserver stepObserver{};
   // Called about every `progressInterval` s of wall time (0: every 64 steps).
-  std::function<void(const DrapeProgress&)> progress;
+  std::function<void(const DrapeProgress&)> progress{};
   double progressInterval = 1.0;
 };
 
