@@ -3,13 +3,13 @@
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]...
 //                [--turntable N] [--frames T0:T1:N] [--wind-force OUT.csv]
 //                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
-//                [--show-volumes] [--stop-at N] [--no-cache]
+//                [--show-volumes] [--stop-at N] [--no-cache] [--export OUT.glb|.gltf|.obj [--export-body]]
 //   figment-view --list-nodes
 //
 // The scene drapes once, however many images it gives (views, a turntable, or the
 // frames of a time span); every image is written atomically. Every error is one line on
 // stderr, "figment-view: <file or option>: <what>", and a non-zero exit status (2: bad
-// command line, 1: anything else, an exception included); no image is left then.
+// command line, 1: anything else, an exception included); no image or export is left then.
 
 #include "io/DrapeCache.h"
 #include "nodes/Init.h"
@@ -18,6 +18,7 @@
 #include "nodes/SceneSearch.h"
 #include "session/DrapeRecorder.h"
 #include "session/FrameDisplay.h"
+#include "session/SceneExport.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
 #include "session/SceneStaging.h"
@@ -65,6 +66,8 @@ struct Options {
   std::string frames;
   std::string windForce;
   std::string stats;
+  std::string exportPath;  // --export; "" = none
+  bool exportBody = false;
   bool keepStencilFields = false;
   bool depthBufferOnly = false;
   bool showVolumes = false;
@@ -84,8 +87,8 @@ int fail(const std::string& where, const std::string& message, int status = 1) {
   return status;
 }
 
-// The images written so far, removed again unless the run succeeds: an error after
-// them (another image, the statistics, an exception) leaves no image behind.
+// The images (and export files) written so far, removed again unless the run succeeds:
+// an error after them (another image, the statistics, an exception) leaves none behind.
 class WrittenImages {
  public:
   WrittenImages() = default;
@@ -230,9 +233,20 @@ std::string renderViews(SceneSession& session, const ImagePlan& plan, const Opti
   return "";
 }
 
-int render(const Options& options, const ImagePlan& plan) {
+// --export: the drape as it ended (before any frame is shown), its files kept for removal
+// should a later step fail.
+std::string exportDrape(const SceneSession& session, const Options& options, WrittenImages& outputs) {
+  std::vector<std::string> written;
+  const std::string error =
+      figment::session::exportScene(session.scene(), {options.exportBody}, options.exportPath, &written);
+  for (std::string& path : written) outputs.add(std::move(path));
+  return error;
+}
+
+int render(const Options& options, const std::optional<ImagePlan>& images) {
   using namespace figment::session;
-using namespace figment::viewer;
+  using namespace figment::viewer;
+  const ImagePlan plan = images.value_or(ImagePlan{});  // no -o: an export alone
   initHeadless();
   SceneSession session;
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
@@ -251,11 +265,16 @@ using namespace figment::viewer;
   // The session's guard checked the draped shapes against their data: nothing is staged past it.
   if (!session.shapeError().empty()) return fail(options.scene, session.shapeError());
 
-  WrittenImages images;
+  WrittenImages outputs;
+  if (!options.exportPath.empty()) {
+    error = exportDrape(session, options, outputs);
+    if (!error.empty()) return fail("--export " + options.exportPath, error);
+  }
   double renderWall = 0.0;
   std::string where;
-  error = plan.frameTimes.empty() ? renderViews(session, plan, options, images, renderWall, where)
-                                  : renderFrames(session, *recorder, plan, options, images, renderWall, where);
+  if (images)
+    error = plan.frameTimes.empty() ? renderViews(session, plan, options, outputs, renderWall, where)
+                                    : renderFrames(session, *recorder, plan, options, outputs, renderWall, where);
   if (!error.empty()) return fail(where, error);
   if (!options.windForce.empty()) {
     error = writeWindForceCsv(options.windForce, session.drapes(), *recorder);
@@ -265,7 +284,7 @@ using namespace figment::viewer;
     error = writeStatsJson(options.stats, options.scene, session.drapes(), renderWall, plan.size);
     if (!error.empty()) return fail(options.stats, error);
   }
-  images.keep();
+  outputs.keep();
   return 0;
 }
 
@@ -323,6 +342,12 @@ void describeOptions(CLI::App& app, Options& options) {
   app.add_flag("--no-cache", options.noCache,
                "Drape even where the drape cache ($XDG_CACHE_HOME/figment, else ~/.cache/figment) holds this "
                "drape, and keep nothing there");
+  app.add_option("--export", options.exportPath,
+                 "After draping, write the draped garments here, one mesh each with its Material's diffuse colour "
+                 "and smooth normals, in metres, y up: .glb or .gltf (glTF 2.0; a .gltf gets its .bin beside it) or "
+                 ".obj (with its .mtl). Written whole or not at all. With it, -o is optional");
+  app.add_flag("--export-body", options.exportBody,
+               "With --export: the body too (every other shape the scene draws, one mesh each)");
   app.add_flag("--list-nodes", options.listNodes,
                "Print FIGMENT's node and engine types with each field's type and default value (from Coin's "
                "field data), and exit");
@@ -331,6 +356,7 @@ void describeOptions(CLI::App& app, Options& options) {
       "Examples:\n"
       "  figment-view scenes/dress.iv -o dress.png --view front --view 30,10 --view back  (dress-0/1/2.png)\n"
       "  figment-view scenes/dress.iv -o turn.png --turntable 8 --view 0,10               (turn-0 ... turn-7.png)\n"
+      "  figment-view scenes/dress.iv --export dress.glb --export-body                    (the drape for Blender)\n"
       "  figment-view scenes/wind.iv -o wind/frame.png --frames 0.5:4.4:40 --wind-force wind.csv");
 }
 
@@ -348,12 +374,18 @@ int run(int argc, char** argv, Options& options) {
   }
   if (options.listNodes) return listNodes();
   if (options.scene.empty()) return fail("usage", "scene is required (see --help)", 2);
-  if (options.output.empty()) return fail("usage", "--output is required (see --help)", 2);
+  if (options.output.empty() && options.exportPath.empty())
+    return fail("usage", "--output or --export is required (see --help)", 2);
+  if (options.exportBody && options.exportPath.empty())
+    return fail("usage", "--export-body needs --export (see --help)", 2);
+  if (!options.exportPath.empty() && !figment::meshSetFormatOf(options.exportPath))
+    return fail("--export " + options.exportPath, "unknown extension (.glb, .gltf or .obj)", 2);
+  if (options.output.empty()) return render(options, std::nullopt);
 
   figment::viewer::ImageOptionError error;
   const std::optional<ImagePlan> plan = figment::viewer::planImages(
       {options.output, options.size, options.views, options.turntable, options.frames}, error);
-  return plan ? render(options, *plan) : fail(error.option, error.message, 2);
+  return plan ? render(options, plan) : fail(error.option, error.message, 2);
 }
 
 }  // namespace
