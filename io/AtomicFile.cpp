@@ -1,9 +1,10 @@
 #include "io/AtomicFile.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
-#include <unistd.h>
 
 namespace figment {
 

@@ -5,17 +5,17 @@
 
 #include "io/MeshSetExport.h"
 
-#include "io/AtomicFile.h"
-
-#include <assimp/Exporter.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/Exporter.hpp>
 #include <cctype>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
+
+#include "io/AtomicFile.h"
 
 namespace figment {
 
@@ -119,9 +119,12 @@ std::string checkMeshes(const std::vector<ColouredMesh>& meshes) {
 
 const char* exporterId(MeshSetFormat format) {
   switch (format) {
-    case MeshSetFormat::Glb: return "glb2";
-    case MeshSetFormat::Gltf: return "gltf2";
-    case MeshSetFormat::Obj: return "obj";
+    case MeshSetFormat::Glb:
+      return "glb2";
+    case MeshSetFormat::Gltf:
+      return "gltf2";
+    case MeshSetFormat::Obj:
+      return "obj";
   }
   return "";
 }

@@ -2,23 +2,23 @@
 // Several coloured meshes (metres, y up) in one file others read: a draped outfit for
 // Blender or a web viewer (glTF 2.0, binary or text, or Wavefront OBJ with its .mtl).
 
-#include "sim/core/TriangleMesh.h"
-
 #include <array>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "sim/core/TriangleMesh.h"
+
 namespace figment {
 
 // One mesh of the set, with its own material.
 struct ColouredMesh {
-  std::string name;                   // the glTF node, mesh and material name; the OBJ group
-  TriangleMesh mesh;                  // m, y up; triangles counter-clockwise seen from the front
-  std::vector<Vec3> normals;          // one unit vector per vertex
-  std::array<float, 3> colour{};      // diffuse (glTF base colour), each 0..1
-  float opacity = 1.0f;               // 0..1
-  bool twoSided = false;              // cloth is seen from both sides (glTF doubleSided)
+  std::string name;               // the glTF node, mesh and material name; the OBJ group
+  TriangleMesh mesh;              // m, y up; triangles counter-clockwise seen from the front
+  std::vector<Vec3> normals;      // one unit vector per vertex
+  std::array<float, 3> colour{};  // diffuse (glTF base colour), each 0..1
+  float opacity = 1.0f;           // 0..1
+  bool twoSided = false;          // cloth is seen from both sides (glTF doubleSided)
 };
 
 enum class MeshSetFormat { Glb, Gltf, Obj };

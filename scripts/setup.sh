@@ -15,12 +15,22 @@ missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
+# node and npm: the Khronos glTF validator for the export tests (tools/gltf). Debian's
+# nodejs and npm unless a node with its npm is already there (another vendor's, say).
+command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
 if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}" >&2
   sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+# The validator at the version and integrity hash package-lock.json pins; again only when
+# the lock file changed since.
+if [ ! -f tools/gltf/node_modules/.package-lock.json ] ||
+  [ tools/gltf/package-lock.json -nt tools/gltf/node_modules/.package-lock.json ]; then
+  (cd tools/gltf && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
 fi
 
 build=${FIGMENT_BUILD_DIR:-build}

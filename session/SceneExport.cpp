@@ -5,9 +5,6 @@
 
 #include "session/SceneExport.h"
 
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/render/ClothingLayer.h"
-
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SoFullPath.h>
 #include <Inventor/SoPrimitiveVertex.h>
@@ -26,11 +23,16 @@
 #include <set>
 #include <stdexcept>
 
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
+
 namespace figment::session {
 
 namespace {
 
-Vec3 toVec3(const SbVec3f& v) { return Vec3(v[0], v[1], v[2]); }
+Vec3 toVec3(const SbVec3f& v) {
+  return Vec3(v[0], v[1], v[2]);
+}
 
 // The nearest DEF name on the path to the node being traversed, itself first; `fallback`
 // when none is named.
@@ -121,8 +123,8 @@ class Gatherer {
  private:
   static SoCallbackAction::Response atCoordinates(void* self, SoCallbackAction*, const SoNode* node);
   static SoCallbackAction::Response atFaceSet(void* self, SoCallbackAction* action, const SoNode* node);
-  static void atTriangle(void* self, SoCallbackAction* action, const SoPrimitiveVertex* a,
-                         const SoPrimitiveVertex* b, const SoPrimitiveVertex* c);
+  static void atTriangle(void* self, SoCallbackAction* action, const SoPrimitiveVertex* a, const SoPrimitiveVertex* b,
+                         const SoPrimitiveVertex* c);
   void addCorner(ShapeTriangles& shape, SoCallbackAction* action, const SoPrimitiveVertex* v, Triangle& t, int k);
 
   ExportContent content_;
@@ -175,8 +177,8 @@ SoCallbackAction::Response Gatherer::atFaceSet(void* self, SoCallbackAction* act
   return SoCallbackAction::PRUNE;
 }
 
-void Gatherer::atTriangle(void* self, SoCallbackAction* action, const SoPrimitiveVertex* a,
-                          const SoPrimitiveVertex* b, const SoPrimitiveVertex* c) {
+void Gatherer::atTriangle(void* self, SoCallbackAction* action, const SoPrimitiveVertex* a, const SoPrimitiveVertex* b,
+                          const SoPrimitiveVertex* c) {
   auto* gatherer = static_cast<Gatherer*>(self);
   const SoNode* node = action->getCurPathTail();
   auto [found, added] = gatherer->otherIndex_.try_emplace(node, gatherer->others_.size());

@@ -4,10 +4,10 @@
 // Written once for every front end: figment-view --export writes a file, a service
 // answers with GLB bytes made in memory.
 
-#include "io/MeshSetExport.h"
-
 #include <string>
 #include <vector>
+
+#include "io/MeshSetExport.h"
 
 class SoNode;
 

@@ -1,19 +1,19 @@
 // Coloured mesh sets out through assimp: each format reads back mesh for mesh, with its
 // name, vertices and colour; the files appear whole with their companions, or not at all.
-#include "io/MeshSetExport.h"
-#include "support/TempDir.h"
-
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "io/MeshSetExport.h"
+#include "support/TempDir.h"
 
 using namespace figment;
 using figment::test::TempDir;

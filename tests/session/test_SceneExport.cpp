@@ -4,31 +4,30 @@
 // to a plain IndexedFaceSet counts as a garment; transforms and clockwise faces are
 // honoured; bad paths are one line and leave nothing.
 
-#include "session/SceneExport.h"
-#include "session/SceneSession.h"
-#include "io/MeshImport.h"
-#include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoEngineOutput.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
-
-#include <assimp/Importer.hpp>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
+#include <assimp/Importer.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
+
+#include "io/MeshImport.h"
+#include "session/SceneExport.h"
+#include "session/SceneSession.h"
+#include "support/TempDir.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 
@@ -38,19 +37,28 @@ constexpr const char* kDress = FIGMENT_SOURCE_DIR "/scenes/dress.iv";
 
 class SceneExportTest : public ::testing::Test {
  protected:
+  // The default dress, draped once for every test that exports it (an export changes
+  // nothing in the scene); none when the default body is not installed.
+  static void SetUpTestSuite() {
+    figment::viewer::initHeadless();
+    if (figment::findModelFile("human.zae").empty()) return;
+    dress_ = new SceneSession;
+    ASSERT_TRUE(dress_->load(kDress)) << dress_->loadError();
+    dress_->drape();
+    ASSERT_EQ(dress_->firstError(), "");
+  }
+  static void TearDownTestSuite() {
+    delete dress_;
+    dress_ = nullptr;
+  }
   void SetUp() override { figment::viewer::initHeadless(); }
   std::string path(const std::string& name) const { return (dir_.path() / name).string(); }
-  // The default dress draped in `session`; false when the default body is not installed.
-  static bool drapeDress(SceneSession& session) {
-    if (figment::findModelFile("human.zae").empty()) return false;
-    EXPECT_TRUE(session.load(kDress)) << session.loadError();
-    EXPECT_EQ(session.firstError(), "");
-    session.drape();
-    EXPECT_EQ(session.firstError(), "");
-    return true;
-  }
+
+  static SceneSession* dress_;
   figment::test::TempDir dir_;
 };
+
+SceneSession* SceneExportTest::dress_ = nullptr;
 
 // The first diffuse colour of the Material beside the node named `name` (in its Separator).
 SbColor materialBeside(SoNode* scene, const char* name) {
@@ -119,8 +127,8 @@ void expectTheDrape(const aiScene* read, SceneSession& session) {
 TEST_F(SceneExportTest, TheDressAsGlbPassesTheKhronosValidator) {
   if (std::system("command -v node > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "node is not installed (scripts/setup.sh installs nodejs and the validator)";
-  SceneSession session;
-  if (!drapeDress(session)) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  if (!dress_) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  SceneSession& session = *dress_;
   for (const bool body : {false, true}) {
     const std::string glb = path(body ? "dressed.glb" : "dress.glb");
     ASSERT_EQ(exportScene(session.scene(), {body}, glb), "");
@@ -131,7 +139,8 @@ TEST_F(SceneExportTest, TheDressAsGlbPassesTheKhronosValidator) {
     std::ifstream in(report);
     const nlohmann::json figures = nlohmann::json::parse(in, nullptr, false);
     ASSERT_FALSE(figures.is_discarded()) << "the validator gave no report (status " << status
-                                         << "; run scripts/setup.sh to install it): see " << path("validator-errors.txt");
+                                         << "; run scripts/setup.sh to install it): see "
+                                         << path("validator-errors.txt");
     std::cout << glb.substr(glb.rfind('/') + 1) << ": " << figures.dump() << "\n";
     EXPECT_EQ(figures.at("errors"), 0) << figures.dump();
     EXPECT_EQ(status, 0);
@@ -139,8 +148,8 @@ TEST_F(SceneExportTest, TheDressAsGlbPassesTheKhronosValidator) {
 }
 
 TEST_F(SceneExportTest, TheDressAsGlbReadsBackNodeForNode) {
-  SceneSession session;
-  if (!drapeDress(session)) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  if (!dress_) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  SceneSession& session = *dress_;
   const std::string glb = path("dress.glb");
   std::vector<std::string> written;
   ASSERT_EQ(exportScene(session.scene(), {}, glb, &written), "");
@@ -156,8 +165,8 @@ TEST_F(SceneExportTest, TheDressAsGlbReadsBackNodeForNode) {
 
 // OBJ lists a vertex per face corner: joined again, one per node.
 TEST_F(SceneExportTest, TheDressAsObjReadsBackNodeForNode) {
-  SceneSession session;
-  if (!drapeDress(session)) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  if (!dress_) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  SceneSession& session = *dress_;
   const std::string obj = path("dress.obj");
   std::vector<std::string> written;
   ASSERT_EQ(exportScene(session.scene(), {}, obj, &written), "");
@@ -168,8 +177,8 @@ TEST_F(SceneExportTest, TheDressAsObjReadsBackNodeForNode) {
 
 // With the body: the dress first, then each skin part drawn, named for its DEF, in skin colour.
 TEST_F(SceneExportTest, TheBodyComesWhenAskedAsGlbBytesInMemory) {
-  SceneSession session;
-  if (!drapeDress(session)) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  if (!dress_) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
+  SceneSession& session = *dress_;
   std::string error = "unset";
   const std::vector<unsigned char> bytes = exportGlb(session.scene(), {true}, error);
   ASSERT_EQ(error, "");
@@ -227,19 +236,18 @@ TEST_F(SceneExportTest, GarmentsAreInTheWorldFrameFacingTheirFront) {
 // and a Cube are not, and come only with the body (the Cube's 6 faces: 24 corners, shared
 // only where position and normal agree).
 TEST_F(SceneExportTest, AnyFaceSetADrapeFeedsIsAGarmentTheRestComesWithTheBody) {
-  const std::string scene = dir_.file(
-      "cloth.iv",
-      "#Inventor V2.1 ascii\nSeparator {\n"
-      "  Separator {\n"
-      "    Coordinate3 { point = DEF Drape ClothEngine {\n"
-      "      restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-      "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 } . positions }\n"
-      "    DEF Cloth IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n"
-      "  }\n"
-      "  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
-      "  DEF Fixed IndexedFaceSet { coordIndex [ 0 1 2 -1 ] }\n"
-      "  DEF Box Cube { }\n"
-      "}\n");
+  const std::string scene = dir_.file("cloth.iv",
+                                      "#Inventor V2.1 ascii\nSeparator {\n"
+                                      "  Separator {\n"
+                                      "    Coordinate3 { point = DEF Drape ClothEngine {\n"
+                                      "      restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+                                      "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 } . positions }\n"
+                                      "    DEF Cloth IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n"
+                                      "  }\n"
+                                      "  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                                      "  DEF Fixed IndexedFaceSet { coordIndex [ 0 1 2 -1 ] }\n"
+                                      "  DEF Box Cube { }\n"
+                                      "}\n");
   SceneSession session;
   ASSERT_TRUE(session.load(scene)) << session.loadError();
   session.drape();
