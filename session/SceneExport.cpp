@@ -10,6 +10,7 @@
 #include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/elements/SoCoordinateElement.h>
+#include <Inventor/elements/SoDrawStyleElement.h>
 #include <Inventor/elements/SoLazyElement.h>
 #include <Inventor/elements/SoModelMatrixElement.h>
 #include <Inventor/elements/SoShapeHintsElement.h>
@@ -55,6 +56,12 @@ ColouredMesh styledMesh(SoCallbackAction* action, const std::string& name, int m
   part.opacity = 1.0f - SoLazyElement::getTransparency(state, materialIndex);
   part.twoSided = SoShapeHintsElement::getShapeType(state) != SoShapeHintsElement::SOLID;
   return part;
+}
+
+// A shape drawn as lines or points (an edge overlay, a wireframe) or not at all has no
+// surface to export.
+bool drawnFilled(SoCallbackAction* action) {
+  return SoDrawStyleElement::get(action->getState()) == SoDrawStyleElement::FILLED;
 }
 
 bool clockwise(SoCallbackAction* action) {
@@ -158,6 +165,7 @@ SoCallbackAction::Response Gatherer::atCoordinates(void* self, SoCallbackAction*
 // face set goes on to the triangle callback.
 SoCallbackAction::Response Gatherer::atFaceSet(void* self, SoCallbackAction* action, const SoNode* node) {
   auto* gatherer = static_cast<Gatherer*>(self);
+  if (!drawnFilled(action)) return SoCallbackAction::PRUNE;
   const auto* shape = static_cast<const SoIndexedFaceSet*>(node);
   const auto* vertices = static_cast<const SoVertexProperty*>(shape->vertexProperty.getValue());
   const SoCoordinateElement* state = SoCoordinateElement::getInstance(action->getState());
@@ -180,10 +188,11 @@ SoCallbackAction::Response Gatherer::atFaceSet(void* self, SoCallbackAction* act
 void Gatherer::atTriangle(void* self, SoCallbackAction* action, const SoPrimitiveVertex* a, const SoPrimitiveVertex* b,
                           const SoPrimitiveVertex* c) {
   auto* gatherer = static_cast<Gatherer*>(self);
+  if (!drawnFilled(action)) return;
   const SoNode* node = action->getCurPathTail();
   auto [found, added] = gatherer->otherIndex_.try_emplace(node, gatherer->others_.size());
   if (added) {
-    const std::string fallback = "shape-" + std::to_string(gatherer->others_.size());
+    const std::string fallback = "body-" + std::to_string(gatherer->others_.size());
     gatherer->others_.push_back({styledMesh(action, nearestName(action, fallback), a->getMaterialIndex()), {}});
   }
   ShapeTriangles& shape = gatherer->others_[found->second];

@@ -20,7 +20,7 @@ struct ExportContent {
 
 // The meshes of `scene` as it now stands (drape it first: SceneSession::drape), in the
 // scene's world frame (metres, y up), traversed as Coin draws it (a Switch's hidden
-// child is left out):
+// child is left out; so is a shape drawn as lines or points, a DrawStyle's edge overlay):
 //   - one garment per face set that draws a drape: every ClothingLayer, and every
 //     IndexedFaceSet whose coordinates are a Coordinate3 fed by a ClothEngine. Its
 //     vertices are the coordinates its coordIndex uses, in their order (all of a
@@ -30,7 +30,7 @@ struct ExportContent {
 //   - with `content.body`, one mesh per other shape that gives triangles (a
 //     MannequinSkin: its triangles as Coin generates them, vertices shared where
 //     position and normal agree).
-// Each is named for the nearest DEF name above it, coloured by the Material's first
+// Each is named for the nearest DEF name above it (else garment-N, body-N), coloured by the Material's first
 // diffuse colour and transparency in force there. Throws std::runtime_error naming the
 // node for a face index past its coordinates.
 std::vector<ColouredMesh> sceneMeshes(SoNode* scene, const ExportContent& content);
