@@ -12,11 +12,11 @@
 namespace figment::viewer {
 
 struct ImageOptions {
-  std::string output;              // -o
-  std::string size;                // --size
-  std::vector<std::string> views;  // --view, in the order given
-  std::string turntable;           // --turntable; "" = none
-  std::string frames;              // --frames; "" = none
+  std::string output{};              // -o
+  std::string size{};                // --size
+  std::vector<std::string> views{};  // --view, in the order given
+  std::string turntable{};           // --turntable; "" = none
+  std::string frames{};              // --frames; "" = none
 };
 
 struct ImagePlan {

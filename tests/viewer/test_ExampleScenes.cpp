@@ -75,6 +75,6 @@ TEST_P(ExampleScene, RendersNonEmptyPixels) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleScene, ::testing::ValuesIn(exampleNames()),
-                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+                         [](const ::testing::TestParamInfo<std::string>& scene) { return scene.param; });
 
 }  // namespace

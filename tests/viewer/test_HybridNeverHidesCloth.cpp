@@ -139,9 +139,9 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, HybridNeverHidesCloth,
                                            "skirt-capsules.iv", "skirt-triangles.iv", "tshirt.iv", "wind.iv",
                                            "hybrid/forearm.iv", "hybrid/layers.iv", "hybrid/poke-through.iv",
                                            "hybrid/shirt.iv", "hybrid/three-layers.iv"),
-                         [](const auto& info) {
+                         [](const auto& scene) {
                            std::string name;
-                           for (char c : info.param)
+                           for (char c : scene.param)
                              if (std::isalnum(static_cast<unsigned char>(c))) name += c;
                            return name;
                          });
