@@ -30,7 +30,11 @@ std::string bytesOf(const std::string& path) {
 std::vector<unsigned char> gradient(int width, int height) {
   std::vector<unsigned char> rgb;
   for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x) rgb.insert(rgb.end(), {(unsigned char)(40 * x), (unsigned char)(90 * y), 7});
+    for (int x = 0; x < width; ++x) {
+      rgb.push_back(static_cast<unsigned char>(40 * x));
+      rgb.push_back(static_cast<unsigned char>(90 * y));
+      rgb.push_back(7);
+    }
   return rgb;
 }
 

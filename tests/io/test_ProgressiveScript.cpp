@@ -85,7 +85,7 @@ TEST(ProgressiveScript, ADamagedLineIsNamed) {
   writeProgressiveScript(decimate(garment, DecimationOptions{.targetFaces = 30}), good);
   std::string text = readAll(good);
   const size_t fifth = text.find("\nsplit ", text.find("\nsplit ", text.find("\nsplit ") + 1) + 1);
-  text.replace(fifth + 7, 1, "x");  // the third split's kept vertex is no number
+  text[fifth + 7] = 'x';  // the third split's kept vertex is no number
   const std::string bad = dir.file("bad.pm", text);
   EXPECT_EQ(errorOf(bad, garment), bad + ":6: not a split");
   EXPECT_EQ(errorOf((dir.path() / "none.pm").string(), garment), (dir.path() / "none.pm").string() + ": cannot be read");

@@ -69,8 +69,8 @@ INSTANTIATE_TEST_SUITE_P(
         Reproducer{"face-index-of-two-to-the-31.iv", "coordIndex[2] = 2147483647 is not a vertex"},
         // The guard's input holds the engine the failed connection would have freed.
         Reproducer{"engine-freed-by-a-failed-connection.iv", ""}),
-    [](const ::testing::TestParamInfo<Reproducer>& info) {
-      std::string name = info.param.file.substr(0, info.param.file.find('.'));
+    [](const ::testing::TestParamInfo<Reproducer>& reproducer) {
+      std::string name = reproducer.param.file.substr(0, reproducer.param.file.find('.'));
       for (char& c : name)
         if (c == '-') c = '_';
       return name;
