@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <csetjmp>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -59,6 +60,22 @@ std::string writePng(const std::string& path, const RgbImageView& image) {
     if (std::fclose(file) != 0 && error.empty()) error = std::string("cannot write the image: ") + std::strerror(errno);
     return error;
   });
+}
+
+std::string encodePng(const RgbImageView& image, std::string& bytes) {
+  bytes.clear();
+  if (image.width <= 0 || image.height <= 0 || !image.bottomRowFirst) return "no image to write";
+  // A FILE over a growing buffer (POSIX open_memstream), so the rows go through the same
+  // writer as a file's: the same picture gives the same bytes either way.
+  char* buffer = nullptr;
+  size_t length = 0;
+  std::FILE* stream = open_memstream(&buffer, &length);
+  if (!stream) return std::string("cannot encode the image: ") + std::strerror(errno);
+  std::string error = writeRows(stream, image);
+  if (std::fclose(stream) != 0 && error.empty()) error = std::string("cannot encode the image: ") + std::strerror(errno);
+  if (error.empty()) bytes.assign(buffer, length);
+  std::free(buffer);
+  return error;
 }
 
 }  // namespace figment

@@ -19,4 +19,8 @@ struct RgbImageView {
 // Returns "" on success, else why not (the system's reason where there is one).
 std::string writePng(const std::string& path, const RgbImageView& image);
 
+// The same PNG bytes in memory (a service answers with them, no file between): `bytes`
+// holds the file writePng would write. Returns "" on success, else why not.
+std::string encodePng(const RgbImageView& image, std::string& bytes);
+
 }  // namespace figment

@@ -65,6 +65,15 @@ bool SceneSession::load(const std::string& path) {
   return true;
 }
 
+void SceneSession::adopt(SoSeparator* scene) {
+  clear();
+  scene_ = scene;
+  if (!scene_) return;
+  scene_->ref();
+  engines_ = findClothEngines(scene_);
+  for (ClothEngine* engine : engines_) engine->setDrapeContext(context_);
+}
+
 const std::vector<EngineDrape>& SceneSession::drape() {
   std::vector<int> before;
   for (const ClothEngine* engine : engines_) before.push_back(engine->evaluationCount());

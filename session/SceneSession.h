@@ -64,6 +64,10 @@ class SceneSession {
   // nothing simulates yet. Returns false, with loadError() one line ("no such file",
   // "line 12: Unknown class \"Foo\""), on failure.
   bool load(const std::string& path);
+  // Takes `scene`, a graph a front end built in code from its own nodes (a service's, from
+  // a request's parameters: no scene text is read), as load() takes a file's: finds its
+  // ClothEngines and hands each the session's context. The session references it.
+  void adopt(SoSeparator* scene);
   const std::string& loadError() const { return loadError_; }
 
   // Simulates every engine whose output something reads, one after another in scene

@@ -88,6 +88,18 @@ TEST(PngFile, HoldsOnlyTheImageAndTheSameImageGivesTheSameBytes) {
   EXPECT_NE(bytesOf(a), bytesOf(b));
 }
 
+TEST(PngFile, EncodedInMemoryIsTheFileWritePngWrites) {
+  const figment::test::TempDir dir;
+  const std::vector<unsigned char> rgb = gradient(5, 3);
+  const std::string file = (dir.path() / "a.png").string();
+  ASSERT_EQ(writePng(file, RgbImageView{5, 3, rgb.data()}), "");
+  std::string bytes;
+  ASSERT_EQ(encodePng(RgbImageView{5, 3, rgb.data()}, bytes), "");
+  EXPECT_EQ(bytes, bytesOf(file));  // check-tests: bytes are the subject
+  EXPECT_NE(encodePng(RgbImageView{0, 3, rgb.data()}, bytes), "");
+  EXPECT_TRUE(bytes.empty());
+}
+
 TEST(PngFile, AFolderThatCannotBeMadeIsAnErrorSayingWhy) {
   const figment::test::TempDir dir;
   const std::vector<unsigned char> rgb = gradient(2, 2);

@@ -11,6 +11,9 @@
 #include "viewer/OffscreenContext.h"
 
 #include <Inventor/fields/SoMFVec3f.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoSeparator.h>
 
 #include <gtest/gtest.h>
 
@@ -262,5 +265,36 @@ TEST_F(SceneSessionTest, AnEngineLeftByItsSessionDrapesWithoutItsContext) {
   engine->ref();
   session.clear();
   EXPECT_EQ(engine->drapeContext(), nullptr);
+  engine->unref();
+}
+
+TEST_F(SceneSessionTest, AdoptsAGraphBuiltInCodeAsALoadedOne) {
+  // A front end's own graph: a square of cloth fed by an engine made in code, no text read.
+  ClothEngine* engine = new ClothEngine;
+  const float square[4][3] = {{-0.5f, 1, -0.5f}, {0.5f, 1, -0.5f}, {0.5f, 1, 0.5f}, {-0.5f, 1, 0.5f}};
+  engine->restPoints.setValues(0, 4, square);
+  const int32_t faces[] = {0, 3, 2, 1, -1};
+  engine->coordIndex.setValues(0, 5, faces);
+  engine->maxTime = 0.01;
+  auto* root = new SoSeparator;
+  auto* coordinates = new SoCoordinate3;
+  coordinates->point.connectFrom(&engine->positions);
+  auto* shape = new SoIndexedFaceSet;
+  shape->coordIndex.setValues(0, 5, faces);
+  root->addChild(coordinates);
+  root->addChild(shape);
+  SceneSession session;
+  session.adopt(root);
+  ASSERT_EQ(session.engines().size(), 1u);
+  EXPECT_EQ(session.engines().front(), engine);
+  EXPECT_EQ(engine->drapeContext(), session.sharedContext());
+  const std::vector<EngineDrape>& drapes = session.drape();
+  ASSERT_EQ(drapes.size(), 1u);
+  EXPECT_EQ(drapes.front().error, "");
+  EXPECT_GT(drapes.front().run.iterations, 0);  // it simulated
+  EXPECT_NE(session.stage(ImageSize{64, 48}, ViewDirection{}), nullptr);
+  engine->ref();
+  session.clear();
+  EXPECT_EQ(engine->drapeContext(), nullptr);  // the session let it go
   engine->unref();
 }

@@ -1,0 +1,169 @@
+#include "serve/HttpService.h"
+
+#include "serve/Catalogue.h"
+#include "serve/Digest.h"
+#include "serve/RenderRequest.h"
+#include "serve/WebAssets.h"
+
+#include <httplib.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+namespace figment::serve {
+
+namespace {
+
+constexpr const char* kJson = "application/json";
+constexpr int kHttpThreads = 64;  // connections served at once; renders wait in the pool's bounded queue
+
+void sendJson(httplib::Response& response, int status, const nlohmann::json& body) {
+  response.status = status;
+  response.set_header("Cache-Control", "no-store");
+  response.set_content(body.dump(), kJson);
+}
+
+// Whether If-None-Match names `tag` (weak comparison, as RFC 9110 says for it).
+bool matches(const std::string& ifNoneMatch, const std::string& tag) {
+  size_t start = 0;
+  while (start < ifNoneMatch.size()) {
+    const size_t comma = std::min(ifNoneMatch.find(',', start), ifNoneMatch.size());
+    std::string item = ifNoneMatch.substr(start, comma - start);
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    if (item.rfind("W/", 0) == 0) item.erase(0, 2);
+    if (item == tag || item == "*") return true;
+    start = comma + 1;
+  }
+  return false;
+}
+
+std::string regexFor(std::string_view path) {
+  std::string pattern;
+  for (char c : path) pattern += (c == '.' ? std::string("\\.") : std::string(1, c));
+  return pattern;
+}
+
+nlohmann::json limitsJson() {
+  return {{"imageSide", {RequestLimits::kMinSide, RequestLimits::kMaxSide}},
+          {"imagePixels", RequestLimits::kMaxPixels},
+          {"garments", RequestLimits::kMaxGarments},
+          {"parameters", RequestLimits::kMaxParameters},
+          {"valueBytes", RequestLimits::kMaxValueLength},
+          {"view", {{"azimuth", {-360, 360}}, {"elevation", {-60, 80}}}}};
+}
+
+const char* errorText(int status) {
+  switch (status) {
+    case 404: return "no such path";
+    case 405: return "method not allowed";
+    case 413: return "request too large";
+    case 414: return "URL too long";
+    case 431: return "headers too large";
+    default: return status >= 500 ? "server error" : "bad request";
+  }
+}
+
+}  // namespace
+
+HttpService::HttpService(const ServeOptions& options, const std::string& program)
+    : options_(options), build_(Digest::buildDigest()), images_(options.imageCacheBytes),
+      server_(std::make_unique<httplib::Server>()) {
+  PoolOptions pool;
+  pool.program = program;
+  pool.arguments = {"--worker", "--scenes", options_.scenesFolder, "--cache", options_.cacheFolder};
+  pool.workers = std::max(1, options_.workers);
+  pool.queue = options_.queue > 0 ? options_.queue : 4 * pool.workers;
+  pool.timeLimit = options_.timeLimit;
+  pool_ = std::make_unique<WorkerPool>(pool);
+  server_->new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
+  server_->set_keep_alive_max_count(1000);
+  server_->set_payload_max_length(0);  // GET only: no request carries a body
+  addRoutes();
+}
+
+HttpService::~HttpService() = default;
+
+const std::vector<std::string>& HttpService::routes() {
+  static const std::vector<std::string> paths = {"/",        "/app.js",        "/style.css",    "/healthz",
+                                                 "/openapi.json", "/api/catalogue", "/api/render"};
+  return paths;
+}
+
+void HttpService::addRoutes() {
+  for (const WebAsset& asset : webAssets())
+    server_->Get(regexFor(asset.path), [&asset](const httplib::Request&, httplib::Response& response) {
+      response.set_header("Cache-Control", "no-cache");
+      const std::string type(asset.type);
+      response.set_content(std::string(asset.content), type.rfind("text/", 0) == 0 ? type + "; charset=utf-8" : type);
+    });
+  server_->Get("/healthz", [this](const httplib::Request&, httplib::Response& response) { health(response); });
+  server_->Get("/api/catalogue", [](const httplib::Request&, httplib::Response& response) {
+    nlohmann::json catalogue = Catalogue::toJson();
+    catalogue["limits"] = limitsJson();
+    response.set_header("Cache-Control", "public, max-age=300");
+    response.set_content(catalogue.dump(), kJson);
+  });
+  server_->Get("/api/render", [this](const httplib::Request& request, httplib::Response& response) {
+    render(request, response);
+  });
+  // Every refusal as JSON, httplib's own (404, 414, ...) included; a handler's JSON stays.
+  server_->set_error_handler([](const httplib::Request&, httplib::Response& response) {
+    if (response.body.empty()) sendJson(response, response.status, {{"error", errorText(response.status)}});
+  });
+  server_->set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
+    sendJson(response, 500, {{"error", "server error"}});
+  });
+}
+
+void HttpService::health(httplib::Response& response) const {
+  const WorkerPool::Load load = pool_->load();
+  sendJson(response, 200,
+           {{"status", "ok"}, {"workers", load.workers}, {"busy", load.busy}, {"queued", load.queued},
+            {"restarts", load.restarts}, {"imageCacheBytes", images_.bytes()}});
+}
+
+void HttpService::render(const httplib::Request& request, httplib::Response& response) {
+  const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
+  auto parsed = RenderRequest::parse(parameters);
+  if (auto* error = std::get_if<ParameterError>(&parsed))
+    return sendJson(response, 400, {{"error", error->error}, {"parameter", error->parameter},
+                                    {"value", error->value}, {"accepted", error->accepted}});
+  const std::string canonical = std::get<RenderRequest>(parsed).canonical();
+  const std::string tag = "\"" + Digest().add(canonical).add(build_).hex() + "\"";
+  const auto answer = [&](const std::string& png, bool hit) {
+    response.set_header("ETag", tag);
+    response.set_header("Cache-Control", "public, max-age=86400");
+    response.set_header("X-Figment-Cache", hit ? "hit" : "miss");
+    response.set_content(png, "image/png");
+  };
+  if (matches(request.get_header_value("If-None-Match"), tag)) {
+    response.status = 304;  // the tag names the picture: the client has it
+    response.set_header("ETag", tag);
+    response.set_header("Cache-Control", "public, max-age=86400");
+    return;
+  }
+  if (std::shared_ptr<const std::string> png = images_.find(tag)) return answer(*png, true);
+  std::shared_ptr<const RenderResult> result = pool_->render(canonical);
+  if (!result) {
+    response.set_header("Retry-After", "2");
+    return sendJson(response, 503, {{"error", "too many renders waiting; try again"}});
+  }
+  if (result->status != 200)
+    return sendJson(response, result->status, nlohmann::json::parse(result->body, nullptr, false));
+  images_.store(tag, std::make_shared<const std::string>(result->body));
+  answer(result->body, result->drapeFromCache);
+}
+
+int HttpService::bind(std::string& error) {
+  const int port = options_.port == 0 ? server_->bind_to_any_port(options_.host)
+                                      : (server_->bind_to_port(options_.host, options_.port) ? options_.port : -1);
+  if (port < 0) error = "cannot listen on " + options_.host + ":" + std::to_string(options_.port);
+  return port;
+}
+
+void HttpService::run() { server_->listen_after_bind(); }
+
+void HttpService::stop() { server_->stop(); }
+
+}  // namespace figment::serve

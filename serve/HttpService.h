@@ -1,0 +1,49 @@
+#pragma once
+// figment-serve's HTTP side (cpp-httplib): the routes, their headers and errors, the
+// in-memory image cache in front of the worker pool. Every answer but a PNG, the page and
+// a 304 is JSON; an unknown path is 404 JSON and reads no file.
+
+#include "serve/ImageCache.h"
+#include "serve/ServeOptions.h"
+#include "serve/WorkerPool.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace httplib {
+class Server;
+struct Request;
+struct Response;
+}  // namespace httplib
+
+namespace figment::serve {
+
+class HttpService {
+ public:
+  // `program` is this program (started again for each worker in its worker mode).
+  HttpService(const ServeOptions& options, const std::string& program);
+  ~HttpService();
+
+  // Binds (port 0: any free one); the port taken, or -1 with `error` set.
+  int bind(std::string& error);
+  // Serves until stop().
+  void run();
+  void stop();
+
+  // Every path the service answers, as /openapi.json lists them.
+  static const std::vector<std::string>& routes();
+
+ private:
+  void addRoutes();
+  void render(const httplib::Request& request, httplib::Response& response);
+  void health(httplib::Response& response) const;
+
+  ServeOptions options_;
+  std::string build_;  // Digest::buildDigest()
+  std::unique_ptr<WorkerPool> pool_;
+  ImageCache images_;
+  std::unique_ptr<httplib::Server> server_;
+};
+
+}  // namespace figment::serve

@@ -1,0 +1,173 @@
+#include "serve/OutfitScene.h"
+
+#include "serve/Wardrobe.h"
+
+#include "nodes/body/CollisionGroup.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MannequinSkin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/GarmentSurface.h"
+#include "nodes/render/ClothingLayer.h"
+
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShapeHints.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace figment::serve {
+
+namespace {
+
+SbColor colourOf(const std::string& hex) {
+  const long value = std::strtol(hex.c_str(), nullptr, 16);
+  return SbColor(float((value >> 16) & 0xff) / 255.f, float((value >> 8) & 0xff) / 255.f, float(value & 0xff) / 255.f);
+}
+
+SoMaterial* material(const SbColor& diffuse, float specular, float shininess) {
+  auto* node = new SoMaterial;
+  node->diffuseColor = diffuse;
+  node->specularColor = SbColor(specular, specular, specular + (shininess > 0.25f ? 0.05f : 0.f));
+  node->shininess = shininess;
+  return node;
+}
+
+SoShapeHints* hints(bool solid) {
+  auto* node = new SoShapeHints;
+  node->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+  node->shapeType = solid ? SoShapeHints::SOLID : SoShapeHints::UNKNOWN_SHAPE_TYPE;
+  node->creaseAngle = 1.0f;
+  return node;
+}
+
+void addLights(SoSeparator* root, const LightPreset& preset) {
+  for (const LightPreset::Light& light : preset.lights) {
+    auto* node = new SoDirectionalLight;
+    node->direction = SbVec3f(float(light.direction[0]), float(light.direction[1]), float(light.direction[2]));
+    node->intensity = float(light.intensity);
+    node->color = SbColor(float(light.colour[0]), float(light.colour[1]), float(light.colour[2]));
+    root->addChild(node);
+  }
+}
+
+Mannequin* mannequin(const RenderRequest& request, const Wardrobe& wardrobe) {
+  auto* model = new Mannequin;
+  model->body = wardrobe.body();
+  const Pose& pose = *Catalogue::pose(request.pose);
+  for (size_t i = 0; i < pose.joints.size(); ++i) {
+    const auto& r = pose.rotations[i];
+    model->rotatedJoints.set1Value(int(i), pose.joints[i].c_str());
+    model->rotations.set1Value(int(i), SbRotation(SbVec3f(float(r[0]), float(r[1]), float(r[2])), float(r[3])));
+  }
+  const BodyFactors factors = Catalogue::bodyFactors(request.body);
+  model->height = float(factors.height);
+  model->chest = float(factors.chest);
+  model->waist = float(factors.waist);
+  model->hips = float(factors.hips);
+  model->addChild(wardrobe.volumes());
+  return model;
+}
+
+// The pattern's rest shape at a size: widened about its own vertical axis (the middle of
+// its extent in x and z), heights kept.
+void restShape(ClothEngine* engine, const MeshFile* pattern, double girth) {
+  const int n = pattern->point.getNum();
+  const SbVec3f* points = pattern->point.getValues(0);
+  float lo[2] = {points[0][0], points[0][2]}, hi[2] = {lo[0], lo[1]};
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = std::min(lo[k], points[i][2 * k]);
+      hi[k] = std::max(hi[k], points[i][2 * k]);
+    }
+  const float cx = 0.5f * (lo[0] + hi[0]), cz = 0.5f * (lo[1] + hi[1]);
+  engine->restPoints.setNum(n);
+  SbVec3f* out = engine->restPoints.startEditing();
+  for (int i = 0; i < n; ++i)
+    out[i] = SbVec3f(cx + float(girth) * (points[i][0] - cx), points[i][1], cz + float(girth) * (points[i][2] - cz));
+  engine->restPoints.finishEditing();
+}
+
+// Cotton jersey as the shipped scenes drape it: backward Euler at 1/20 s.
+ClothEngine* engineFor(const GarmentStyle& style, bool layered, SoNode* body) {
+  auto* engine = new ClothEngine;
+  engine->body = body;
+  engine->thickness = 0.0006;
+  engine->density = 300;
+  engine->youngsModulus = 1e6;
+  engine->poissonRatio = 0.3;
+  engine->integrator.set("IMPLICIT");
+  if (layered || style.penaltyContacts) engine->contactModel.set("PENALTY");
+  engine->timeStep = 0.05;
+  engine->maxTime = style.maxTime;
+  engine->restSpeed = 0.01;
+  engine->restWindow = 0.25;
+  engine->friction = 0.5;
+  engine->clearance = 0.006;
+  return engine;
+}
+
+struct Draped {
+  ClothEngine* engine;
+  const MeshFile* pattern;
+};
+
+// What the next garment out collides with: the mannequin and every garment beneath.
+SoNode* bodyUnder(Mannequin* model, const std::vector<Draped>& beneath) {
+  if (beneath.empty()) return model;
+  auto* group = new CollisionGroup;
+  group->body = model;
+  for (size_t i = 0; i < beneath.size(); ++i) {
+    auto* surface = new GarmentSurface;
+    surface->point.connectFrom(&beneath[i].engine->positions);
+    surface->coordIndex.connectFrom(const_cast<SoMFInt32*>(&beneath[i].pattern->coordIndex));
+    surface->thickness = 0.002f;
+    group->layers.set1Value(int(i), surface);
+  }
+  return group;
+}
+
+SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const MeshFile* pattern) {
+  auto* separator = new SoSeparator;
+  separator->addChild(material(colourOf(item.colour), 0.15f, 0.3f));
+  separator->addChild(hints(false));  // cloth is seen from both sides
+  auto* coordinates = new SoCoordinate3;
+  coordinates->point.connectFrom(&engine->positions);
+  separator->addChild(coordinates);
+  auto* layer = new ClothingLayer;
+  layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
+  separator->addChild(layer);
+  return separator;
+}
+
+}  // namespace
+
+SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe) {
+  auto* root = new SoSeparator;
+  addLights(root, *Catalogue::light(request.light));
+  auto* body = new SoSeparator;
+  body->addChild(material(colourOf(request.skin), 0.1f, 0.2f));
+  body->addChild(hints(true));
+  Mannequin* model = mannequin(request, wardrobe);
+  body->addChild(model);
+  auto* skin = new MannequinSkin;
+  skin->mannequin = model;
+  body->addChild(skin);
+  root->addChild(body);
+  std::vector<Draped> beneath;
+  for (const OutfitItem& item : request.outfit) {
+    const GarmentStyle& style = *Catalogue::style(item.style);
+    const MeshFile* pattern = wardrobe.pattern(item.style);
+    ClothEngine* engine = engineFor(style, !beneath.empty(), bodyUnder(model, beneath));
+    restShape(engine, pattern, Catalogue::size(item.size)->girth);
+    engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
+    root->addChild(garment(item, engine, pattern));
+    beneath.push_back({engine, pattern});
+  }
+  return root;
+}
+
+}  // namespace figment::serve

@@ -1,0 +1,239 @@
+#include "serve/RenderRequest.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+namespace figment::serve {
+
+namespace {
+
+const char* const kNames[] = {"stature", "bust", "chest", "waist", "hips", "skin",
+                              "pose",    "outfit", "light", "view", "size"};
+
+ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
+                   const std::string& accepted) {
+  return {error, parameter, value.substr(0, 64), accepted};
+}
+
+std::string format(const char* pattern, double a, double b = 0) {
+  char text[64];
+  std::snprintf(text, sizeof text, pattern, a, b);
+  return text;
+}
+
+// A plain decimal number, nothing before or after it; no inf or nan.
+bool number(const std::string& text, double& value) {
+  if (text.empty() || text.size() > 32) return false;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value, std::chars_format::fixed);
+  return ec == std::errc() && ptr == end && std::isfinite(value);
+}
+
+bool isHex6(const std::string& text) {
+  return text.size() == 6 && std::all_of(text.begin(), text.end(), [](char c) { return std::isxdigit((unsigned char)c); });
+}
+
+std::string lower(std::string text) {
+  for (char& c : text) c = char(std::tolower((unsigned char)c));
+  return text;
+}
+
+std::string namesOf(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + name;
+  return out;
+}
+
+template <class T>
+std::string namesOf(const std::vector<T>& items) {
+  std::vector<std::string> names;
+  for (const T& item : items) names.push_back(item.name);
+  return namesOf(names);
+}
+
+std::optional<ParameterError> measurement(const std::string& name, const std::string& value, double& out) {
+  const MeasureRange& range = Catalogue::measure(name == "chest" ? "bust" : name);
+  const std::string accepted = format("%.2f to %.2f (metres)", range.minimum, range.maximum);
+  double v = 0;
+  if (!number(value, v)) return bad(name, value, "not a number", accepted);
+  if (v < range.minimum || v > range.maximum) return bad(name, value, "out of range", accepted);
+  out = std::round(v * 1000.0) / 1000.0;  // mm
+  return std::nullopt;
+}
+
+std::optional<ParameterError> skinTone(const std::string& value, std::string& out) {
+  const std::string text = lower(value.size() == 7 && value[0] == '#' ? value.substr(1) : value);
+  for (const NamedColour& tone : Catalogue::skinTones())
+    if (tone.name == text) return out = tone.hex, std::nullopt;
+  if (isHex6(text)) return out = text, std::nullopt;
+  return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(Catalogue::skinTones()));
+}
+
+std::optional<ParameterError> outfitItem(const std::string& value, const std::string& item, OutfitItem& out) {
+  const std::string accepted = "style:size[:rrggbb], styles " + namesOf(Catalogue::styles()) + "; sizes " +
+                               namesOf(Catalogue::sizes());
+  const size_t a = item.find(':'), b = a == std::string::npos ? a : item.find(':', a + 1);
+  if (a == std::string::npos) return bad("outfit", value, "a garment without a size: " + item.substr(0, 32), accepted);
+  out.style = item.substr(0, a);
+  out.size = item.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
+  const GarmentStyle* style = Catalogue::style(out.style);
+  if (!style) return bad("outfit", value, "no style named " + out.style.substr(0, 32), accepted);
+  if (!Catalogue::size(out.size)) return bad("outfit", value, "no size named " + out.size.substr(0, 32), accepted);
+  out.colour = b == std::string::npos ? style->defaultColour : lower(item.substr(b + 1));
+  if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + out.colour.substr(0, 32), accepted);
+  return std::nullopt;
+}
+
+std::optional<ParameterError> outfit(const std::string& value, std::vector<OutfitItem>& out) {
+  out.clear();
+  if (value.empty() || value == "none") return std::nullopt;  // the body alone
+  std::set<std::string> styles;
+  size_t start = 0;
+  while (start <= value.size()) {
+    const size_t comma = std::min(value.find(',', start), value.size());
+    if (int(out.size()) == RequestLimits::kMaxGarments)
+      return bad("outfit", value, "too many garments", "at most 3, innermost first");
+    OutfitItem item;
+    if (auto error = outfitItem(value, value.substr(start, comma - start), item)) return error;
+    if (!styles.insert(item.style).second)
+      return bad("outfit", value, "a style worn twice: " + item.style, "each style once");
+    out.push_back(item);
+    start = comma + 1;
+  }
+  return std::nullopt;
+}
+
+std::optional<ParameterError> view(const std::string& value, double& azimuth, double& elevation) {
+  const std::string accepted = "AZ,EL in degrees (AZ -360 to 360, EL -60 to 80), or front, back, left, right";
+  const std::map<std::string, double> named = {{"front", 0}, {"right", 90}, {"back", 180}, {"left", 270}};
+  if (auto it = named.find(value); it != named.end()) return azimuth = it->second, elevation = 0, std::nullopt;
+  const size_t comma = value.find(',');
+  double az = 0, el = 0;
+  if (comma == std::string::npos || !number(value.substr(0, comma), az) || !number(value.substr(comma + 1), el))
+    return bad("view", value, "not a view", accepted);
+  if (std::abs(az) > 360 || el < -60 || el > 80) return bad("view", value, "out of range", accepted);
+  az = std::round(az * 10.0) / 10.0;
+  azimuth = std::fmod(az + 360.0, 360.0);
+  elevation = std::round(el * 10.0) / 10.0 + 0.0;  // + 0.0: no "-0.0"
+  return std::nullopt;
+}
+
+std::optional<ParameterError> imageSize(const std::string& value, int& width, int& height) {
+  const std::string accepted = "WxH, each side 64 to 1600 pixels, at most 1600x1200 pixels in all";
+  const size_t x = value.find('x');
+  int w = 0, h = 0;
+  const char* begin = value.data();
+  const char* end = begin + value.size();
+  if (x == std::string::npos || x == 0 || x + 1 == value.size() || value.size() > 9)
+    return bad("size", value, "not a size", accepted);
+  auto [p1, e1] = std::from_chars(begin, begin + x, w);
+  auto [p2, e2] = std::from_chars(begin + x + 1, end, h);
+  if (e1 != std::errc() || p1 != begin + x || e2 != std::errc() || p2 != end)
+    return bad("size", value, "not a size", accepted);
+  if (w < RequestLimits::kMinSide || h < RequestLimits::kMinSide || w > RequestLimits::kMaxSide ||
+      h > RequestLimits::kMaxSide || w * h > RequestLimits::kMaxPixels)
+    return bad("size", value, "too small or too large", accepted);
+  width = w, height = h;
+  return std::nullopt;
+}
+
+// The parameters as a map, each named once, each known.
+std::variant<std::map<std::string, std::string>, ParameterError> byName(const RenderRequest::Parameters& parameters) {
+  std::map<std::string, std::string> values;
+  const std::vector<std::string> known(std::begin(kNames), std::end(kNames));
+  if (int(parameters.size()) > RequestLimits::kMaxParameters)
+    return bad("", "", "too many parameters", "at most 16");
+  for (const auto& [name, value] : parameters) {
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      return bad(name.substr(0, 64), value, "unknown parameter", namesOf(known));
+    if (value.size() > RequestLimits::kMaxValueLength) return bad(name, value, "value too long", "at most 200 bytes");
+    if (!values.emplace(name, value).second) return bad(name, value, "given twice", "each parameter once");
+  }
+  if (values.count("bust") && values.count("chest") && values["bust"] != values["chest"])
+    return bad("chest", values["chest"], "bust and chest differ", "one of them, or both the same");
+  return values;
+}
+
+std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::string, std::string>& values) {
+  std::optional<ParameterError> error;
+  for (const auto& [name, value] : values) {
+    if (name == "stature") error = measurement(name, value, request.body.stature);
+    else if (name == "bust" || name == "chest") error = measurement(name, value, request.body.bust);
+    else if (name == "waist") error = measurement(name, value, request.body.waist);
+    else if (name == "hips") error = measurement(name, value, request.body.hips);
+    else if (name == "skin") error = skinTone(value, request.skin);
+    else if (name == "pose")
+      error = Catalogue::pose(value) ? (request.pose = value, std::nullopt)
+                                     : std::optional(bad(name, value, "no such pose", namesOf(Catalogue::poses())));
+    else if (name == "light")
+      error = Catalogue::light(value) ? (request.light = value, std::nullopt)
+                                      : std::optional(bad(name, value, "no such light", namesOf(Catalogue::lights())));
+    else if (name == "outfit") error = outfit(value, request.outfit);
+    else if (name == "view") error = view(value, request.azimuth, request.elevation);
+    else if (name == "size") error = imageSize(value, request.width, request.height);
+    if (error) return error;
+  }
+  return std::nullopt;
+}
+
+RenderRequest defaults() {
+  RenderRequest request;
+  const auto rounded = [](const char* name) { return std::round(Catalogue::measure(name).reference * 1000.0) / 1000.0; };
+  request.body = {rounded("stature"), rounded("bust"), rounded("waist"), rounded("hips")};
+  request.skin = "cc9473";
+  request.pose = "rest";
+  request.outfit = {{"dress", "M", Catalogue::style("dress")->defaultColour}};
+  request.light = "studio";
+  return request;
+}
+
+}  // namespace
+
+std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameters& parameters) {
+  auto values = byName(parameters);
+  if (auto* error = std::get_if<ParameterError>(&values)) return *error;
+  RenderRequest request = defaults();
+  if (auto error = fill(request, std::get<std::map<std::string, std::string>>(values))) return *error;
+  return request;
+}
+
+std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text) {
+  Parameters parameters;
+  size_t start = 0;
+  while (start < text.size()) {
+    const size_t amp = std::min(text.find('&', start), text.size());
+    const std::string pair = text.substr(start, amp - start);
+    const size_t eq = pair.find('=');
+    parameters.emplace_back(pair.substr(0, eq), eq == std::string::npos ? "" : pair.substr(eq + 1));
+    start = amp + 1;
+  }
+  return parse(parameters);
+}
+
+std::string RenderRequest::drapeKey() const {
+  std::string text = format("stature=%.3f&bust=%.3f", body.stature, body.bust) +
+                     format("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&pose=" + pose + "&outfit=";
+  for (size_t i = 0; i < outfit.size(); ++i) text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size;
+  return text;
+}
+
+std::string RenderRequest::sceneKey() const {
+  std::string text = format("stature=%.3f&bust=%.3f", body.stature, body.bust) +
+                     format("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&skin=" + skin + "&pose=" + pose +
+                     "&outfit=";
+  for (size_t i = 0; i < outfit.size(); ++i)
+    text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size + ":" + outfit[i].colour;
+  if (outfit.empty()) text += "none";
+  return text + "&light=" + light;
+}
+
+std::string RenderRequest::canonical() const {
+  return sceneKey() + format("&view=%.1f,%.1f", azimuth, elevation) + "&size=" + std::to_string(width) + "x" +
+         std::to_string(height);
+}
+
+}  // namespace figment::serve

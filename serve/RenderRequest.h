@@ -1,0 +1,70 @@
+#pragma once
+// GET /api/render's parameters, checked and made canonical. A request is parameters
+// only: names from the catalogue, numbers and hex colours; nothing in it names a file or
+// holds scene text. Two requests that draw the same picture have the same canonical()
+// text, so its digest names the image (the ETag) and identical requests in flight drape
+// once.
+
+#include "serve/Catalogue.h"
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace figment::serve {
+
+// One garment of the outfit, innermost first.
+struct OutfitItem {
+  std::string style;   // a Catalogue style
+  std::string size;    // a Catalogue size
+  std::string colour;  // rrggbb, lower case
+};
+
+// What is wrong with a request, as the 400 answer's JSON says it.
+struct ParameterError {
+  std::string error;      // one line
+  std::string parameter;  // the parameter's name ("" for the request as a whole)
+  std::string value;      // what was given (cut to 64 bytes)
+  std::string accepted;   // what is accepted
+};
+
+// Limits on what one request may ask (docs/service.md).
+struct RequestLimits {
+  static constexpr int kMinSide = 64, kMaxSide = 1600;  // pixels
+  static constexpr int kMaxPixels = 1600 * 1200;
+  static constexpr int kMaxGarments = 3;
+  static constexpr int kMaxParameters = 16;
+  static constexpr size_t kMaxValueLength = 200;  // bytes
+};
+
+class RenderRequest {
+ public:
+  using Parameters = std::vector<std::pair<std::string, std::string>>;
+
+  // The request from decoded query parameters; absent ones take the defaults (the default
+  // body, in the dress, studio light, from the front, 800x600).
+  static std::variant<RenderRequest, ParameterError> parse(const Parameters& parameters);
+
+  // name=value&... in a fixed order, numbers rounded to what changes the picture (mm,
+  // tenths of a degree): parse(canonical()) gives the same request.
+  std::string canonical() const;
+  // The part that shapes the drape (body, pose, garment styles and sizes): requests that
+  // differ only in colours, light, view or size share one drape.
+  std::string drapeKey() const;
+  // The part that shapes the scene (all but view and size).
+  std::string sceneKey() const;
+  // Parses canonical text back (the worker's side of the pipe).
+  static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text);
+
+  BodyMeasures body;           // m
+  std::string skin;            // rrggbb
+  std::string pose;            // a Catalogue pose
+  std::vector<OutfitItem> outfit;
+  std::string light;           // a Catalogue light
+  double azimuth = 0, elevation = 0;  // degrees
+  int width = 800, height = 600;      // pixels
+};
+
+}  // namespace figment::serve

@@ -1,0 +1,82 @@
+#include "serve/RenderWorker.h"
+
+#include "serve/FrameChannel.h"
+#include "serve/OutfitScene.h"
+#include "serve/RenderRequest.h"
+
+#include "io/DrapeCache.h"
+#include "io/PngFile.h"
+
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <nlohmann/json.hpp>
+
+namespace figment::serve {
+
+namespace {
+
+constexpr std::uintmax_t kCacheBytes = 1024u << 20;  // the drape cache's bound on disk
+
+RenderWorker::Answer failure(int status, const std::string& error) {
+  return {status, nlohmann::json{{"error", error}}.dump(), false};
+}
+
+}  // namespace
+
+RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder) {
+  startError_ = wardrobe_.read(scenesFolder);
+  if (!cacheFolder.empty()) session_.context().cache = std::make_shared<DrapeCache>(cacheFolder, kCacheBytes);
+}
+
+void RenderWorker::serve(const FrameChannel& channel) {
+  std::string canonical;
+  while (channel.receive(canonical, FrameChannel::Clock::time_point::max()) == FrameChannel::Result::kOk) {
+    Answer answer;
+    try {
+      answer = render(canonical);
+    } catch (const std::exception& e) {
+      answer = failure(500, e.what());
+      sceneKey_.clear();  // the scene may be half made: build it again next time
+    }
+    const nlohmann::json header = {{"status", answer.status}, {"drapeCache", answer.drapeFromCache ? "hit" : "miss"}};
+    if (!channel.send(header.dump()) || !channel.send(answer.body)) return;
+  }
+}
+
+RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
+  auto parsed = RenderRequest::parseCanonical(canonical);
+  if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
+  const RenderRequest& request = std::get<RenderRequest>(parsed);
+  if (request.sceneKey() != sceneKey_) {
+    sceneKey_.clear();
+    session_.adopt(OutfitScene::build(request, wardrobe_));
+    const std::vector<session::EngineDrape>& drapes = session_.drape();
+    const std::string error = session_.firstError();
+    if (!error.empty()) {
+      session_.clear();
+      return failure(500, "the outfit did not drape: " + error);
+    }
+    sceneFromCache_ = true;
+    for (const session::EngineDrape& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.run.fromCache;
+    sceneKey_ = request.sceneKey();
+    return drawView(request);
+  }
+  Answer answer = drawView(request);
+  answer.drapeFromCache = true;  // the scene was kept from the last request: no drape
+  return answer;
+}
+
+RenderWorker::Answer RenderWorker::drawView(const RenderRequest& request) {
+  const session::ImageSize size{request.width, request.height};
+  if (!session_.stage(size, session::ViewDirection{request.azimuth, request.elevation}))
+    return failure(500, "the outfit cannot be drawn: " + session_.shapeError());
+  if (!renderer_ || renderer_->size().width != size.width || renderer_->size().height != size.height)
+    renderer_ = std::make_unique<session::SceneRenderer>(size);
+  if (std::string error = renderer_->render(session_.stagedRoot()); !error.empty()) return failure(500, error);
+  Answer answer{200, "", sceneFromCache_};
+  if (std::string error = encodePng({size.width, size.height, renderer_->pixels()}, answer.body); !error.empty())
+    return failure(500, error);
+  return answer;
+}
+
+}  // namespace figment::serve

@@ -1,0 +1,50 @@
+#pragma once
+// A worker process's loop: reads a request's canonical text from the server, builds its
+// scene (OutfitScene), drapes it with the worker's own SceneSession and DrapeContext
+// (the drape cache on disk, shared with the other workers), renders the view and sends
+// back a JSON header and the PNG. The scene of the last request is kept: another view
+// or size of it renders without building or draping again.
+
+#include "serve/Wardrobe.h"
+
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+
+#include <memory>
+#include <string>
+
+namespace figment::serve {
+
+class FrameChannel;
+class RenderRequest;
+
+class RenderWorker {
+ public:
+  // Drapes kept in `cacheFolder` (none when empty); body and patterns from `scenesFolder`.
+  RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder);
+
+  // "" when the wardrobe read, else why not (the worker then exits).
+  const std::string& startError() const { return startError_; }
+
+  // Answers requests until the server closes the channel.
+  void serve(const FrameChannel& channel);
+
+  struct Answer {
+    int status = 500;
+    std::string body;  // PNG, or JSON {"error": ...}
+    bool drapeFromCache = false;
+  };
+  Answer render(const std::string& canonical);
+
+ private:
+  Answer drawView(const RenderRequest& request);
+
+  Wardrobe wardrobe_;
+  std::string startError_;
+  session::SceneSession session_;
+  std::string sceneKey_;        // the request whose scene the session holds; "" for none
+  bool sceneFromCache_ = false;
+  std::unique_ptr<session::SceneRenderer> renderer_;
+};
+
+}  // namespace figment::serve

@@ -1,0 +1,19 @@
+#pragma once
+// How figment-serve runs: its command line's values (serve/main.cpp), plain data.
+
+#include <string>
+
+namespace figment::serve {
+
+struct ServeOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;              // 0: any free port (the one taken is printed)
+  int workers = 1;              // worker processes
+  int queue = 0;                // requests waiting at most; 0: four per worker
+  double timeLimit = 60;        // s per render
+  std::string cacheFolder;      // drapes kept on disk; "" for none
+  std::string scenesFolder;     // the body and patterns
+  size_t imageCacheBytes = 64u << 20;  // rendered images kept in memory
+};
+
+}  // namespace figment::serve

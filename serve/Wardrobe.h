@@ -1,0 +1,40 @@
+#pragma once
+// What every scene a worker builds shares, read once when the worker starts: the default
+// body's mesh and fitted collision volumes, and each catalogue style's pattern. The files
+// are the catalogue's (Catalogue.h), found in the scenes folder; nothing here is named
+// by a request.
+
+#include <Inventor/nodes/SoNode.h>
+
+#include <map>
+#include <string>
+
+class MeshFile;
+
+namespace figment::serve {
+
+class Wardrobe {
+ public:
+  Wardrobe() = default;
+  ~Wardrobe();
+  Wardrobe(const Wardrobe&) = delete;
+  Wardrobe& operator=(const Wardrobe&) = delete;
+
+  // Reads the body, its volumes and the patterns from `scenesFolder`; "" or one line
+  // naming what did not read. Coin and FIGMENT's nodes must be initialised.
+  std::string read(const std::string& scenesFolder);
+
+  MeshFile* body() const { return body_; }
+  // The File node holding the body's SkeletonJoints and collision volumes.
+  SoNode* volumes() const { return volumes_; }
+  // A style's pattern (its rest shape), null when the catalogue has no such style.
+  MeshFile* pattern(const std::string& style) const;
+
+ private:
+  SoNode* root_ = nullptr;  // referenced: holds everything below
+  MeshFile* body_ = nullptr;
+  SoNode* volumes_ = nullptr;
+  std::map<std::string, MeshFile*> patterns_;
+};
+
+}  // namespace figment::serve

@@ -1,0 +1,65 @@
+#include "serve/WorkerProcess.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+namespace figment::serve {
+
+WorkerProcess::WorkerProcess(std::string program, std::vector<std::string> arguments)
+    : program_(std::move(program)), arguments_(std::move(arguments)) {}
+
+WorkerProcess::~WorkerProcess() { stop(); }
+
+std::string WorkerProcess::start() {
+  stop();
+  int fds[2];
+  // Close-on-exec: no worker inherits another's socket (or the server's listening one,
+  // closed in the child below).
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, fds) != 0)
+    return std::string("cannot make a socket pair: ") + std::strerror(errno);
+  std::vector<char*> argv;
+  argv.push_back(program_.data());
+  for (std::string& argument : arguments_) argv.push_back(argument.data());
+  argv.push_back(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return std::string("cannot start a worker: ") + std::strerror(errno);
+  }
+  if (pid == 0) {
+    // The child: only async-signal-safe calls until exec.
+    if (fds[1] == kWorkerFd ? ::fcntl(kWorkerFd, F_SETFD, 0) < 0 : ::dup2(fds[1], kWorkerFd) < 0) ::_exit(127);
+    ::close_range(kWorkerFd + 1, ~0u, 0);
+    // The server's blocked stop signals and ignored SIGPIPE would outlive exec.
+    sigset_t none;
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    ::signal(SIGPIPE, SIG_DFL);
+    ::execv(program_.c_str(), argv.data());
+    ::_exit(127);
+  }
+  ::close(fds[1]);
+  pid_ = pid;
+  channel_ = FrameChannel(fds[0]);
+  return "";
+}
+
+void WorkerProcess::stop() {
+  if (pid_ > 0) {
+    ::kill(pid_, SIGKILL);
+    while (::waitpid(pid_, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
+  if (channel_.fd() >= 0) ::close(channel_.fd());
+  pid_ = -1;
+  channel_ = FrameChannel();
+}
+
+}  // namespace figment::serve

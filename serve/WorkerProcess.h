@@ -1,0 +1,41 @@
+#pragma once
+// One render worker: this same program started again in its worker mode (fork + exec, so
+// the worker has Coin, OSMesa and its drape context to itself), talking over a Unix
+// socket pair. The server side holds it; a worker that dies or hangs is killed and
+// started again by its owner.
+
+#include "serve/FrameChannel.h"
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace figment::serve {
+
+class WorkerProcess {
+ public:
+  // `program` and its arguments; the worker's end of the socket is given to it as fd 3.
+  WorkerProcess(std::string program, std::vector<std::string> arguments);
+  ~WorkerProcess();
+  WorkerProcess(const WorkerProcess&) = delete;
+  WorkerProcess& operator=(const WorkerProcess&) = delete;
+
+  // Starts the worker; "" or why not.
+  std::string start();
+  bool running() const { return pid_ > 0; }
+  pid_t pid() const { return pid_; }
+  const FrameChannel& channel() const { return channel_; }
+  // SIGKILL, then waits for it: nothing of it is left.
+  void stop();
+
+  static constexpr int kWorkerFd = 3;
+
+ private:
+  std::string program_;
+  std::vector<std::string> arguments_;
+  pid_t pid_ = -1;
+  FrameChannel channel_;
+};
+
+}  // namespace figment::serve

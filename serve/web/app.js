@@ -1,0 +1,118 @@
+// The shopper's page: choices -> GET /api/render's parameters -> the picture. Measurements
+// are typed in cm and sent in metres; the catalogue (GET /api/catalogue) fills the lists.
+"use strict";
+
+const state = { azimuth: 0, catalogue: null, timer: null };
+const byId = (id) => document.getElementById(id);
+const measures = ["stature", "bust", "waist", "hips"];
+
+function option(select, value, text) {
+  const o = document.createElement("option");
+  o.value = value;
+  o.textContent = text || value;
+  select.appendChild(o);
+}
+
+function garmentRow(index, catalogue) {
+  const row = document.createElement("div");
+  row.className = "garment";
+  const style = document.createElement("select");
+  style.id = "style-" + index;
+  style.setAttribute("aria-label", "Garment " + (index + 1));
+  option(style, "", "(none)");
+  catalogue.styles.forEach((s) => option(style, s.name));
+  const size = document.createElement("select");
+  size.id = "size-" + index;
+  size.setAttribute("aria-label", "Size of garment " + (index + 1));
+  catalogue.styles[0].sizes.forEach((s) => option(size, s));
+  size.value = "M";
+  const colour = document.createElement("input");
+  colour.type = "color";
+  colour.id = "colour-" + index;
+  colour.setAttribute("aria-label", "Colour of garment " + (index + 1));
+  style.addEventListener("change", () => {
+    const s = catalogue.styles.find((x) => x.name === style.value);
+    if (s) colour.value = "#" + s.defaultColour;
+  });
+  [style, size, colour].forEach((e) => { row.appendChild(e); e.addEventListener("change", schedule); });
+  return row;
+}
+
+function outfit() {
+  const items = [];
+  for (let i = 0; byId("style-" + i); i++) {
+    const style = byId("style-" + i).value;
+    if (style) items.push(style + ":" + byId("size-" + i).value + ":" + byId("colour-" + i).value.slice(1));
+  }
+  return items.length ? items.join(",") : "none";
+}
+
+function query() {
+  const p = new URLSearchParams();
+  for (const m of measures) p.set(m, (Number(byId(m).value) / 100).toFixed(3));
+  for (const k of ["skin", "pose", "light"]) p.set(k, byId(k).value);
+  p.set("outfit", outfit());
+  p.set("view", state.azimuth + ",5");
+  p.set("size", "480x640");
+  return p.toString();
+}
+
+async function show() {
+  const url = "/api/render?" + query();
+  byId("status").textContent = "Draping…";
+  byId("error").textContent = "";
+  const response = await fetch(url);
+  if (!response.ok) {
+    const body = await response.json().catch(() => ({ error: response.statusText }));
+    byId("error").textContent = body.parameter
+      ? body.parameter + ": " + body.error + " (accepted: " + body.accepted + ")"
+      : body.error;
+    byId("status").textContent = "";
+    return;
+  }
+  const blob = await response.blob();
+  const img = byId("picture");
+  if (img.dataset.url) URL.revokeObjectURL(img.dataset.url);
+  img.dataset.url = URL.createObjectURL(blob);
+  img.dataset.query = url;
+  img.src = img.dataset.url;
+  byId("status").textContent = "Shown (" + (response.headers.get("X-Figment-Cache") || "") + ")";
+}
+
+function schedule() {
+  clearTimeout(state.timer);
+  state.timer = setTimeout(show, 250);
+}
+
+function turn(step) {
+  state.azimuth = (state.azimuth + step + 360) % 360;
+  const names = { 0: "front", 90: "right", 180: "back", 270: "left" };
+  byId("angle").textContent = names[state.azimuth] || state.azimuth + "°";
+  show();
+}
+
+async function start() {
+  const catalogue = await (await fetch("/api/catalogue")).json();
+  state.catalogue = catalogue;
+  for (const m of measures) {
+    const range = catalogue.measurements[m];
+    const input = byId(m);
+    input.min = Math.ceil(range.min * 100);
+    input.max = Math.floor(range.max * 100);
+    input.value = Math.round(range.default * 100);
+    input.addEventListener("change", schedule);
+  }
+  catalogue.skinTones.forEach((t) => option(byId("skin"), t.name));
+  byId("skin").value = "medium";
+  catalogue.poses.forEach((p) => option(byId("pose"), p));
+  catalogue.lights.forEach((l) => option(byId("light"), l));
+  for (const k of ["skin", "pose", "light"]) byId(k).addEventListener("change", schedule);
+  for (let i = 0; i < catalogue.limits.garments; i++) byId("garments").appendChild(garmentRow(i, catalogue));
+  byId("style-0").value = "dress";
+  byId("colour-0").value = "#" + catalogue.styles.find((s) => s.name === "dress").defaultColour;
+  byId("turn-left").addEventListener("click", () => turn(-30));
+  byId("turn-right").addEventListener("click", () => turn(30));
+  show();
+}
+
+start();

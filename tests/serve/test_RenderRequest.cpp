@@ -1,0 +1,93 @@
+// A render request's parameters: defaults, canonical text that reads back to itself, and
+// every class of bad parameter refused with the parameter, its value and what is accepted.
+
+#include "serve/RenderRequest.h"
+
+#include <gtest/gtest.h>
+
+using namespace figment::serve;
+
+namespace {
+
+RenderRequest ok(const RenderRequest::Parameters& parameters) {
+  auto parsed = RenderRequest::parse(parameters);
+  if (auto* error = std::get_if<ParameterError>(&parsed)) ADD_FAILURE() << error->parameter << ": " << error->error;
+  return std::holds_alternative<RenderRequest>(parsed) ? std::get<RenderRequest>(parsed) : RenderRequest{};
+}
+
+ParameterError refused(const RenderRequest::Parameters& parameters) {
+  auto parsed = RenderRequest::parse(parameters);
+  EXPECT_TRUE(std::holds_alternative<ParameterError>(parsed)) << "accepted";
+  return std::holds_alternative<ParameterError>(parsed) ? std::get<ParameterError>(parsed) : ParameterError{};
+}
+
+}  // namespace
+
+TEST(RenderRequest, NoParametersIsTheDefaultBodyInTheDress) {
+  const RenderRequest request = ok({});
+  EXPECT_EQ(request.canonical(),
+            "stature=1.659&bust=0.891&waist=0.696&hips=0.939&skin=cc9473&pose=rest&outfit=dress:M:1f40b3"
+            "&light=studio&view=0.0,0.0&size=800x600");
+}
+
+TEST(RenderRequest, CanonicalTextReadsBackToItself) {
+  const RenderRequest request = ok({{"stature", "1.7204"}, {"chest", "0.95"}, {"skin", "Tan"},
+                                    {"outfit", "tshirt:L:2E7D32,skirt:S"}, {"view", "-30,10.04"},
+                                    {"size", "320x240"}, {"light", "warm"}, {"pose", "relaxed"}});
+  EXPECT_EQ(request.canonical(),
+            "stature=1.720&bust=0.950&waist=0.696&hips=0.939&skin=a86b45&pose=relaxed"
+            "&outfit=tshirt:L:2e7d32,skirt:S:8c1f33&light=warm&view=330.0,10.0&size=320x240");
+  auto again = RenderRequest::parseCanonical(request.canonical());
+  ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
+  EXPECT_EQ(std::get<RenderRequest>(again).canonical(), request.canonical());
+}
+
+TEST(RenderRequest, ColoursLightAndViewShareTheDrape) {
+  const RenderRequest a = ok({{"outfit", "dress:M:111111"}, {"view", "back"}, {"light", "soft"}});
+  const RenderRequest b = ok({{"outfit", "dress:M:222222"}});
+  EXPECT_EQ(a.drapeKey(), b.drapeKey());
+  EXPECT_NE(a.canonical(), b.canonical());
+  EXPECT_NE(ok({{"outfit", "dress:L"}}).drapeKey(), b.drapeKey());  // the control: a size drapes anew
+}
+
+TEST(RenderRequest, EveryClassOfBadParameterNamesItsParameterValueAndRange) {
+  struct Case {
+    RenderRequest::Parameters parameters;
+    std::string parameter, error;
+  };
+  const std::vector<Case> cases = {
+      {{{"stature", "tall"}}, "stature", "not a number"},
+      {{{"stature", "170"}}, "stature", "out of range"},
+      {{{"waist", "nan"}}, "waist", "not a number"},
+      {{{"bust", "0.9"}, {"chest", "1.0"}}, "chest", "bust and chest differ"},
+      {{{"skin", "green"}}, "skin", "not a skin tone"},
+      {{{"pose", "../../etc"}}, "pose", "no such pose"},
+      {{{"light", "laser"}}, "light", "no such light"},
+      {{{"outfit", "cape:M"}}, "outfit", "no style named cape"},
+      {{{"outfit", "dress:XXS"}}, "outfit", "no size named XXS"},
+      {{{"outfit", "dress"}}, "outfit", "a garment without a size: dress"},
+      {{{"outfit", "dress:M:blue"}}, "outfit", "not a colour: blue"},
+      {{{"outfit", "dress:M,dress:L"}}, "outfit", "a style worn twice: dress"},
+      {{{"outfit", "tshirt:M,skirt:M,dress:M,tshirt:S"}}, "outfit", "too many garments"},
+      {{{"view", "sideways"}}, "view", "not a view"},
+      {{{"view", "0,90"}}, "view", "out of range"},
+      {{{"size", "800"}}, "size", "not a size"},
+      {{{"size", "4000x3000"}}, "size", "too small or too large"},
+      {{{"size", "1600x1600"}}, "size", "too small or too large"},
+      {{{"file", "/etc/passwd"}}, "file", "unknown parameter"},
+      {{{"pose", "rest"}, {"pose", "rest"}}, "pose", "given twice"},
+      {{{"skin", std::string(300, 'a')}}, "skin", "value too long"},
+  };
+  for (const Case& c : cases) {
+    const ParameterError error = refused(c.parameters);
+    EXPECT_EQ(error.parameter, c.parameter) << c.error;
+    EXPECT_EQ(error.error, c.error) << c.parameter;
+    EXPECT_FALSE(error.accepted.empty()) << c.parameter;
+    EXPECT_LE(error.value.size(), 64u);
+  }
+}
+
+TEST(RenderRequest, TheBodyAloneIsAnEmptyOutfit) {
+  EXPECT_TRUE(ok({{"outfit", "none"}}).outfit.empty());
+  EXPECT_TRUE(ok({{"outfit", ""}}).outfit.empty());
+}

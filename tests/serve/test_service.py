@@ -1,0 +1,206 @@
+#!/usr/bin/env python3
+"""figment-serve end to end, each case on a server this test starts on a loopback port:
+every endpoint, 304, every class of 400, 404 on traversal without reading a file, limits,
+a worker killed with SIGKILL mid-request (that request fails, the next succeeds), and an
+overload answered 503 with Retry-After, the server still serving. No timings asserted.
+
+    test_service.py FIGMENT-SERVE [unittest options]
+"""
+import json
+import os
+import signal
+import sys
+import threading
+import time
+import unittest
+import urllib.parse
+
+from ServeSupport import Server, count_near, png_pixels
+
+EXECUTABLE = None
+SMALL = "size=160x200"  # renders stay small: the test checks pictures, not detail
+
+
+def render_path(**parameters):
+    query = dict(size="160x200")
+    query.update(parameters)
+    return "/api/render?" + urllib.parse.urlencode(query)
+
+
+class Endpoints(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.server = Server(EXECUTABLE, "--workers", "2")
+
+    @classmethod
+    def tearDownClass(cls):
+        status = cls.server.stop()
+        if status != 0:
+            raise AssertionError("figment-serve exited with %d" % status)
+
+    def test_healthz(self):
+        status, body = self.server.json("/healthz")
+        self.assertEqual(status, 200)
+        self.assertEqual(body["status"], "ok")
+        self.assertEqual(body["workers"], 2)
+
+    def test_openapi_lists_every_route_and_each_answers(self):
+        status, document = self.server.json("/openapi.json")
+        self.assertEqual(status, 200)
+        self.assertTrue(document["openapi"].startswith("3."))
+        for path in document["paths"]:
+            code, headers, _ = self.server.request(path + ("?" + SMALL if path == "/api/render" else ""))
+            self.assertEqual(code, 200, path)
+
+    def test_catalogue(self):
+        status, catalogue = self.server.json("/api/catalogue")
+        self.assertEqual(status, 200)
+        names = [style["name"] for style in catalogue["styles"]]
+        self.assertIn("dress", names)
+        for style in catalogue["styles"]:
+            self.assertIn("M", style["sizes"])
+            self.assertTrue(all(len(c) == 6 for c in style["colours"]))
+        self.assertGreaterEqual(len(catalogue["lights"]), 3)
+        self.assertTrue(catalogue["poses"] and catalogue["skinTones"])
+        self.assertIn("stature", catalogue["measurements"])
+
+    def test_page(self):
+        status, headers, body = self.server.request("/")
+        self.assertEqual(status, 200)
+        self.assertTrue(headers["content-type"].startswith("text/html"))
+        self.assertIn(b"/app.js", body)
+
+    def test_render_shows_the_garment_in_its_colour(self):
+        red = self.server.request(render_path(outfit="dress:M:ff0000"))
+        green = self.server.request(render_path(outfit="dress:M:00ff00"))
+        for status, headers, _ in (red, green):
+            self.assertEqual(status, 200)
+            self.assertEqual(headers["content-type"], "image/png")
+            self.assertIn(headers["x-figment-cache"], ("hit", "miss"))
+            self.assertTrue(headers["etag"].startswith('"') and not headers["etag"].startswith("W/"))
+            self.assertIn("max-age", headers["cache-control"])
+        width, height, red_rows = png_pixels(red[2])
+        self.assertEqual((width, height), (160, 200))
+        _, _, green_rows = png_pixels(green[2])
+        # Lit red cloth keeps red's hue; none of it in the green dress's picture (the control).
+        self.assertGreater(count_near(red_rows, (255, 0, 0), 0.12), 200)
+        self.assertEqual(count_near(green_rows, (255, 0, 0), 0.12), 0)
+        self.assertGreater(count_near(green_rows, (0, 255, 0), 0.12), 200)
+        # Only the colour differs: the second drape came from the first (the drape cache).
+        self.assertEqual(green[1]["x-figment-cache"], "hit")
+        self.assertNotEqual(red[1]["etag"], green[1]["etag"])
+
+    def test_another_view_is_a_drape_cache_hit_and_if_none_match_is_304(self):
+        path = render_path(outfit="tshirt:M", view="0,0")
+        status, headers, _ = self.server.request(path)
+        self.assertEqual(status, 200)
+        status, side, _ = self.server.request(render_path(outfit="tshirt:M", view="90,10"))
+        self.assertEqual(status, 200)
+        self.assertEqual(side["x-figment-cache"], "hit")
+        status, again, body = self.server.request(path, {"If-None-Match": headers["etag"]})
+        self.assertEqual(status, 304)
+        self.assertEqual(body, b"")
+        self.assertEqual(again["etag"], headers["etag"])
+        status, _, _ = self.server.request(path, {"If-None-Match": '"another"'})
+        self.assertEqual(status, 200)
+
+    def test_each_bad_parameter_is_400_naming_it(self):
+        cases = [("stature=tall", "stature"), ("stature=3", "stature"), ("bust=0.1", "bust"),
+                 ("skin=plaid", "skin"), ("pose=handstand", "pose"), ("light=laser", "light"),
+                 ("outfit=cape:M", "outfit"), ("outfit=dress:M,tshirt:M,skirt:M,dress:S", "outfit"),
+                 ("view=1,2,3", "view"), ("size=5000x5000", "size"), ("size=12", "size"),
+                 ("scene=%2Fetc%2Fpasswd", "scene"), ("pose=rest&pose=relaxed", "pose")]
+        for query, parameter in cases:
+            status, headers, body = self.server.request("/api/render?" + query)
+            self.assertEqual(status, 400, query)
+            self.assertTrue(headers["content-type"].startswith("application/json"), query)
+            answer = json.loads(body)
+            self.assertEqual(answer["parameter"], parameter, query)
+            for key in ("error", "value", "accepted"):
+                self.assertIn(key, answer, query)
+
+    def test_unknown_and_traversal_paths_are_404_json_and_read_nothing(self):
+        for path in ["/nothing", "/../../../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/..%2f..%2fetc%2fpasswd",
+                     "/api/../../etc/passwd", "/app.js/../../etc/passwd", "//etc/passwd", "/%2fetc%2fpasswd",
+                     "/style.css%00.png", "/appxjs", "/api/render/../../../etc/passwd", "/serve/web/index.html"]:
+            status, headers, body = self.server.request(path)
+            self.assertEqual(status, 404, path)
+            self.assertEqual(json.loads(body)["error"], "no such path", path)
+            self.assertNotIn(b"root:", body, path)
+
+    def test_limits_on_url_and_headers(self):
+        status, _, _ = self.server.request("/api/render?skin=" + "a" * 9000)
+        self.assertIn(status, (400, 414))
+        status, _, _ = self.server.request("/healthz", {"X-Big": "b" * 9000})
+        self.assertIn(status, (400, 431))
+        status, _ = self.server.json("/healthz")  # still serving
+        self.assertEqual(status, 200)
+
+
+def wait_until(condition):
+    """Polls `condition` until it holds (no time limit is asserted: ctest's TIMEOUT bounds it)."""
+    while not condition():
+        time.sleep(0.02)
+
+
+class Workers(unittest.TestCase):
+    def test_a_killed_worker_fails_only_its_request(self):
+        server = Server(EXECUTABLE, "--workers", "1")
+        try:
+            wait_until(lambda: len(server.worker_pids()) == 1)
+            for attempt in range(3):  # a render may finish before the kill lands: try another body
+                answer = {}
+                path = render_path(outfit="tshirt:M,skirt:M", stature="%.3f" % (1.60 + 0.01 * attempt))
+                thread = threading.Thread(target=lambda: answer.update(result=server.request(path)))
+                thread.start()
+                wait_until(lambda: server.json("/healthz")[1]["busy"] == 1)
+                victim = server.worker_pids()[0]
+                os.kill(victim, signal.SIGKILL)
+                thread.join()
+                if answer["result"][0] != 200:
+                    break
+            status, headers, body = answer["result"]
+            self.assertEqual(status, 502)
+            self.assertIn("error", json.loads(body))
+            status, _, _ = server.request(render_path(outfit="dress:M", stature="1.700"))
+            self.assertEqual(status, 200)
+            self.assertGreaterEqual(server.json("/healthz")[1]["restarts"], 1)
+            self.assertNotIn(victim, server.worker_pids())
+        finally:
+            self.assertEqual(server.stop(), 0)
+
+    def test_overload_is_503_with_retry_after_and_no_crash(self):
+        server = Server(EXECUTABLE, "--workers", "1", "--queue", "1")
+        try:
+            for round in range(3):
+                results = []
+                lock = threading.Lock()
+
+                def ask(i):
+                    result = server.request(render_path(outfit="dress:M", hips="%.3f" % (0.90 + 0.002 * i + 0.03 * round)))
+                    with lock:
+                        results.append(result)
+                threads = [threading.Thread(target=ask, args=(i,)) for i in range(8)]
+                for t in threads:
+                    t.start()
+                for t in threads:
+                    t.join()
+                statuses = [r[0] for r in results]
+                self.assertTrue(set(statuses) <= {200, 503}, statuses)
+                if 503 in statuses:
+                    break
+            self.assertIn(503, statuses)
+            self.assertIn(200, statuses)
+            for status, headers, body in results:
+                if status == 503:
+                    self.assertTrue(int(headers["retry-after"]) > 0)
+                    self.assertIn("error", json.loads(body))
+            self.assertEqual(server.json("/healthz")[0], 200)
+            self.assertIsNone(server.process.poll())
+        finally:
+            self.assertEqual(server.stop(), 0)
+
+
+if __name__ == "__main__":
+    EXECUTABLE = sys.argv.pop(1)
+    unittest.main()
