@@ -5,11 +5,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 # libpng-dev: PNG files written byte for byte (io/PngFile); python3-pivy: the guard's
-# call from a pivy program (tests/guard/test_GuardC.py).
+# call from a pivy program (tests/guard/test_GuardC.py). libcpp-httplib-dev: figment-serve's
+# HTTP; chromium, chromium-driver, python3-selenium: its page tested in a real browser
+# (tests/serve/test_page.py); wrk: bench/serve-load.sh.
 packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
-  assimp-testmodels python3-matplotlib python3-pivy)
+  assimp-testmodels python3-matplotlib python3-pivy
+  libcpp-httplib-dev chromium chromium-driver python3-selenium wrk)
 
 missing=()
 for package in "${packages[@]}"; do

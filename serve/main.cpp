@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
   app.add_option("--cache", options.cacheFolder, "drape cache folder (default: $XDG_CACHE_HOME/figment)");
   app.add_option("--queue", options.queue, "renders waiting at most before 503 (default: 4 per worker)")
       ->check(CLI::Range(1, 10000));
-  app.add_option("--time-limit", options.timeLimit, "seconds a render may take")->check(CLI::Range(1.0, 3600.0));
+  app.add_option("--time-limit", options.timeLimit, "seconds a render may take")->check(CLI::Range(0.001, 3600.0));
   app.add_option("--scenes", options.scenesFolder, "FIGMENT's scenes folder (the body and patterns)");
   app.add_flag("--worker", worker, "run as a render worker (the server starts these)")->group("");
   try {

@@ -169,6 +169,19 @@ class Workers(unittest.TestCase):
         finally:
             self.assertEqual(server.stop(), 0)
 
+    def test_a_render_past_its_time_limit_is_504_and_the_worker_replaced(self):
+        # 1 ms: no drape and no render fits (a worker only starting takes longer).
+        server = Server(EXECUTABLE, "--workers", "1", "--time-limit", "0.001")
+        try:
+            status, headers, body = server.request(render_path(outfit="dress:M"))
+            self.assertEqual(status, 504)
+            self.assertIn("time limit", json.loads(body)["error"])
+            health = server.json("/healthz")[1]
+            self.assertGreaterEqual(health["restarts"], 1)
+            self.assertEqual(health["busy"], 0)
+        finally:
+            self.assertEqual(server.stop(), 0)
+
     def test_overload_is_503_with_retry_after_and_no_crash(self):
         server = Server(EXECUTABLE, "--workers", "1", "--queue", "1")
         try:

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# figment-serve under load on loopback (docs/service.md, "Figures"): cold requests (a new
+# body each, one garment, 800x600) one after another on one worker, their median and 95th
+# percentile; another view of a draped outfit; then a cached image's requests/s and
+# latency with wrk (Debian's). Medians, not a test: the figures go into docs/service.md.
+#   bench/serve-load.sh [BUILD_DIR] [COLD_REQUESTS] [WRK_SECONDS]
+set -euo pipefail
+build=${1:-build}
+cold=${2:-10}
+seconds=${3:-10}
+work=$(mktemp -d)
+trap 'kill "$server" 2>/dev/null; wait "$server" 2>/dev/null; rm -rf "$work"' EXIT
+
+"$build/bin/figment-serve" --port 0 --workers 1 --cache "$work/cache" >"$work/out" 2>"$work/err" &
+server=$!
+until grep -q http:// "$work/out"; do sleep 0.1; done
+url=$(grep -o 'http://[^ ]*' "$work/out")
+curl -s -o /dev/null "${url}healthz"
+
+median() { sort -n | awk '{v[NR]=$1} END {p=int((NR+1)/2); q=int(NR*0.95+0.999); print "p50 " v[p] " s, p95 " v[q] " s (" NR " requests)"}'; }
+
+echo "cold (new body, dress, 800x600, one worker):"
+for i in $(seq 1 "$cold"); do
+  curl -s -o /dev/null -w '%{time_total}\n' "${url}api/render?stature=$(printf '1.%03d' $((600 + i)))&outfit=dress:M"
+done | median
+echo "another view of a draped outfit:"
+for i in $(seq 1 "$cold"); do
+  curl -s -o /dev/null -w '%{time_total}\n' "${url}api/render?stature=$(printf '1.%03d' $((600 + i)))&outfit=dress:M&view=$((10 * i)),10"
+done | median
+echo "a cached image (wrk, 2 threads, 32 connections, ${seconds} s):"
+curl -s -o /dev/null "${url}api/render?stature=1.601&outfit=dress:M"
+wrk -t2 -c32 -d"${seconds}s" --latency "${url}api/render?stature=1.601&outfit=dress:M" | grep -E 'Requests/sec|50%|99%|Non-2xx'
+echo "server resident memory: $(awk '/VmRSS/ {print $2 " kB"}' /proc/$server/status)"
+for child in $(cat /proc/$server/task/*/children); do
+  echo "worker $child resident memory: $(awk '/VmRSS/ {print $2 " kB"}' /proc/$child/status)"
+done

@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""The shopper's page in a real browser: headless Chromium (Debian's chromium and
+chromium-driver, driven by python3-selenium) loads / from a figment-serve this test
+starts, sees the picture, changes a measurement and a garment and sees the picture
+change each time, on a phone-sized window; screenshots go to SCREENSHOT-FOLDER.
+
+    test_page.py FIGMENT-SERVE SCREENSHOT-FOLDER
+"""
+import os
+import sys
+import unittest
+
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service as ChromeService
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import Select, WebDriverWait
+
+from ServeSupport import Server
+
+EXECUTABLE = None
+SCREENSHOTS = None
+WAIT = 600  # s: WebDriverWait's bound, not an assertion on speed (a cold drape takes seconds)
+
+
+class Page(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.server = Server(EXECUTABLE, "--workers", "2")
+        options = webdriver.ChromeOptions()
+        options.binary_location = "/usr/bin/chromium"
+        for argument in ("--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                         "--window-size=600,1300"):
+            options.add_argument(argument)
+        # A phone's screen: 390 CSS pixels wide, as the page is laid out there.
+        options.add_experimental_option("mobileEmulation",
+                                        {"deviceMetrics": {"width": 390, "height": 1000, "pixelRatio": 1}})
+        cls.browser = webdriver.Chrome(service=ChromeService("/usr/bin/chromedriver"), options=options)
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.browser.quit()
+        if cls.server.stop() != 0:
+            raise AssertionError("figment-serve did not stop cleanly")
+
+    def picture_query(self):
+        return self.browser.find_element(By.ID, "picture").get_attribute("data-query") or ""
+
+    def wait_for_new_picture(self, before):
+        """Waits until the page shows a picture for another request than `before`, loaded."""
+        WebDriverWait(self.browser, WAIT).until(
+            lambda b: self.picture_query() not in ("", before) and b.execute_script(
+                "const i = document.getElementById('picture'); return i.complete && i.naturalWidth > 0;"))
+        return self.picture_query()
+
+    def shot(self, name):
+        os.makedirs(SCREENSHOTS, exist_ok=True)
+        self.browser.execute_script("window.scrollTo(0, 0)")
+        self.browser.save_screenshot(os.path.join(SCREENSHOTS, name))
+
+    def test_changing_a_measurement_and_a_garment_changes_the_picture(self):
+        browser = self.browser
+        browser.get(self.server.url)
+        first = self.wait_for_new_picture("")
+        self.assertIn("outfit=dress%3AM", first)
+        self.assertEqual(browser.find_element(By.ID, "error").text, "")
+        self.shot("serve-page.png")
+        # Narrower than the viewport: usable on a phone without sideways scrolling.
+        self.assertEqual(browser.execute_script("return window.innerWidth"), 390)
+        self.assertLessEqual(browser.execute_script("return document.documentElement.scrollWidth"), 390)
+
+        hips = browser.find_element(By.ID, "hips")
+        hips.clear()
+        hips.send_keys("100")
+        browser.execute_script("arguments[0].dispatchEvent(new Event('change'))", hips)
+        second = self.wait_for_new_picture(first)
+        self.assertIn("hips=1.000", second)
+
+        Select(browser.find_element(By.ID, "style-0")).select_by_value("tshirt")
+        Select(browser.find_element(By.ID, "style-1")).select_by_value("skirt")
+        Select(browser.find_element(By.ID, "size-1")).select_by_value("L")
+        third = self.wait_for_new_picture(second)
+        self.assertIn("outfit=tshirt%3AM%3Ad9d9d1%2Cskirt%3AL%3A8c1f33", third)
+        self.shot("serve-page-outfit.png")
+
+        browser.find_element(By.ID, "turn-right").click()
+        turned = self.wait_for_new_picture(third)
+        self.assertIn("view=30%2C5", turned)
+        self.assertEqual(browser.find_element(By.ID, "error").text, "")
+        self.shot("serve-page-turned.png")
+
+
+if __name__ == "__main__":
+    EXECUTABLE = sys.argv.pop(1)
+    SCREENSHOTS = sys.argv.pop(1)
+    unittest.main()
