@@ -3,11 +3,15 @@
 # body each, one garment, 800x600) one after another on one worker, their median and 95th
 # percentile; another view of a draped outfit; then a cached image's requests/s and
 # latency with wrk (Debian's). Medians, not a test: the figures go into docs/service.md.
-#   bench/serve-load.sh [BUILD_DIR] [COLD_REQUESTS] [WRK_SECONDS]
+# Last, an overload: wrk asks for a new body on every request (bench/serve-overload.lua),
+# far past what the workers drape, for OVERLOAD_SECONDS; the answers by status, and the
+# server's and workers' resident memory before and after.
+#   bench/serve-load.sh [BUILD_DIR] [COLD_REQUESTS] [WRK_SECONDS] [OVERLOAD_SECONDS]
 set -euo pipefail
 build=${1:-build}
 cold=${2:-10}
 seconds=${3:-10}
+overload=${4:-60}
 work=$(mktemp -d)
 trap 'kill "$server" 2>/dev/null; wait "$server" 2>/dev/null; rm -rf "$work"' EXIT
 
@@ -30,7 +34,15 @@ done | median
 echo "a cached image (wrk, 2 threads, 32 connections, ${seconds} s):"
 curl -s -o /dev/null "${url}api/render?stature=1.601&outfit=dress:M"
 wrk -t2 -c32 -d"${seconds}s" --latency "${url}api/render?stature=1.601&outfit=dress:M" | grep -E 'Requests/sec|50%|99%|Non-2xx'
-echo "server resident memory: $(awk '/VmRSS/ {print $2 " kB"}' /proc/$server/status)"
-for child in $(cat /proc/$server/task/*/children); do
-  echo "worker $child resident memory: $(awk '/VmRSS/ {print $2 " kB"}' /proc/$child/status)"
-done
+memory() {
+  echo "server resident memory: $(awk '/VmRSS/ {print $2 " kB"}' /proc/$server/status)"
+  for child in $(cat /proc/$server/task/*/children); do
+    echo "worker $child resident memory: $(awk '/VmRSS/ {print $2 " kB"}' /proc/$child/status)"
+  done
+}
+memory
+echo "overload (a new body on every request, 2 threads, 64 connections, ${overload} s):"
+wrk -t2 -c64 -d"${overload}s" --timeout 120s -s "$(dirname "$0")/serve-overload.lua" "$url" |
+  grep -E 'Requests/sec|status|Socket errors'
+kill -0 "$server" && echo "the server still runs; healthz: $(curl -s "${url}healthz")"
+memory

@@ -4,6 +4,7 @@
 # ran, at what rate, and what it found.
 #   scripts/fuzz.sh fuzz_scene 10
 #   scripts/fuzz.sh fuzz_mesh 10
+#   scripts/fuzz.sh fuzz_render_request 1   (figment-serve's query parser)
 # New interesting inputs go to build-fuzz/corpus/TARGET (kept between runs); a crash, leak,
 # timeout or out-of-memory input to build-fuzz/findings/TARGET/. Rerun one input with
 #   build-fuzz/bin/TARGET FILE
@@ -11,9 +12,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
-[ $# -eq 2 ] || { echo "usage: scripts/fuzz.sh fuzz_scene|fuzz_mesh MINUTES" >&2; exit 2; }
+[ $# -eq 2 ] || { echo "usage: scripts/fuzz.sh fuzz_scene|fuzz_mesh|fuzz_render_request MINUTES" >&2; exit 2; }
 target=$1 minutes=$2
-case "$target" in fuzz_scene | fuzz_mesh) ;; *) echo "fuzz.sh: no fuzz target '$target'" >&2; exit 2 ;; esac
+case "$target" in fuzz_scene | fuzz_mesh | fuzz_render_request) ;; *) echo "fuzz.sh: no fuzz target '$target'" >&2; exit 2 ;; esac
 [[ "$minutes" =~ ^[0-9]+$ ]] && ((minutes > 0)) || { echo "fuzz.sh: MINUTES must be a whole number > 0" >&2; exit 2; }
 
 source scripts/need-packages.sh
@@ -38,6 +39,7 @@ log=$root/$build/$target.log
 # lines and sanitizer reports still reach the log.
 max_len=16384
 [ "$target" = fuzz_mesh ] && max_len=4096
+[ "$target" = fuzz_render_request ] && max_len=1024
 echo "fuzz.sh: running $target for $minutes min (log: $build/$target.log)" >&2
 set +e
 start=$SECONDS
