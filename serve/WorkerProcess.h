@@ -32,7 +32,11 @@ class WorkerProcess {
   static constexpr int kWorkerFd = 3;
 
  private:
+  // The worker's environment: the server's, with OMP_NUM_THREADS=1 unless it is set.
+  std::vector<char*> environment();
+
   std::string program_;
+  std::string oneThread_ = "OMP_NUM_THREADS=1";
   std::vector<std::string> arguments_;
   pid_t pid_ = -1;
   FrameChannel channel_;

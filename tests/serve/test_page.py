@@ -52,6 +52,21 @@ class Page(unittest.TestCase):
                 "const i = document.getElementById('picture'); return i.complete && i.naturalWidth > 0;"))
         return self.picture_query()
 
+    def picture_pixels(self):
+        """The shown picture's decoded pixels, summed per channel over a 48x64 sample (the
+        page's own image, drawn into a canvas): what the shopper sees, not the URL."""
+        return self.browser.execute_script(
+            "const i = document.getElementById('picture'); const c = document.createElement('canvas');"
+            "c.width = 48; c.height = 64; const g = c.getContext('2d'); g.drawImage(i, 0, 0, 48, 64);"
+            "const d = g.getImageData(0, 0, 48, 64).data; const s = [0, 0, 0];"
+            "for (let k = 0; k < d.length; k += 4) { s[0] += d[k]; s[1] += d[k + 1]; s[2] += d[k + 2]; }"
+            "return s;")
+
+    def assertPictureChanged(self, before):
+        after = self.picture_pixels()
+        self.assertNotEqual(after, before)
+        return after
+
     def shot(self, name):
         os.makedirs(SCREENSHOTS, exist_ok=True)
         self.browser.execute_script("window.scrollTo(0, 0)")
@@ -63,6 +78,8 @@ class Page(unittest.TestCase):
         first = self.wait_for_new_picture("")
         self.assertIn("outfit=dress%3AM", first)
         self.assertEqual(browser.find_element(By.ID, "error").text, "")
+        pixels = self.picture_pixels()
+        self.assertGreater(sum(pixels), 0)
         self.shot("serve-page.png")
         # Narrower than the viewport: usable on a phone without sideways scrolling.
         self.assertEqual(browser.execute_script("return window.innerWidth"), 390)
@@ -74,17 +91,20 @@ class Page(unittest.TestCase):
         browser.execute_script("arguments[0].dispatchEvent(new Event('change'))", hips)
         second = self.wait_for_new_picture(first)
         self.assertIn("hips=1.000", second)
+        pixels = self.assertPictureChanged(pixels)
 
         Select(browser.find_element(By.ID, "style-0")).select_by_value("tshirt")
         Select(browser.find_element(By.ID, "style-1")).select_by_value("skirt")
         Select(browser.find_element(By.ID, "size-1")).select_by_value("L")
         third = self.wait_for_new_picture(second)
         self.assertIn("outfit=tshirt%3AM%3Ad9d9d1%2Cskirt%3AL%3A8c1f33", third)
+        pixels = self.assertPictureChanged(pixels)
         self.shot("serve-page-outfit.png")
 
         browser.find_element(By.ID, "turn-right").click()
         turned = self.wait_for_new_picture(third)
         self.assertIn("view=30%2C5", turned)
+        self.assertPictureChanged(pixels)
         self.assertEqual(browser.find_element(By.ID, "error").text, "")
         self.shot("serve-page-turned.png")
 
