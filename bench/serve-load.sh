@@ -27,7 +27,11 @@ echo "cold (new body, dress, 800x600, one worker):"
 for i in $(seq 1 "$cold"); do
   curl -s -o /dev/null -w '%{time_total}\n' "${url}api/render?stature=$(printf '1.%03d' $((600 + i)))&outfit=dress:M"
 done | median
-echo "another view of a draped outfit:"
+echo "another view of the outfit just draped (the worker keeps its scene):"
+for i in $(seq 1 "$cold"); do
+  curl -s -o /dev/null -w '%{time_total}\n' "${url}api/render?stature=$(printf '1.%03d' $((600 + cold)))&outfit=dress:M&view=$((10 * i)),10"
+done | median
+echo "another view of an outfit draped before (its drape from the drape cache):"
 for i in $(seq 1 "$cold"); do
   curl -s -o /dev/null -w '%{time_total}\n' "${url}api/render?stature=$(printf '1.%03d' $((600 + i)))&outfit=dress:M&view=$((10 * i)),10"
 done | median

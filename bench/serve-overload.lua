@@ -1,7 +1,7 @@
 -- wrk script for bench/serve-load.sh's overload: every request a new body (a cold drape),
 -- so the service is far past its capacity; counts the answers by status.
 local counter = 0
-local statuses = {}
+statuses = {}  -- global: done() reads each thread's through thread:get
 
 function init(args)
   counter = math.random(0, 1000000)

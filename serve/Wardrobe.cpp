@@ -3,11 +3,15 @@
 #include "serve/Catalogue.h"
 
 #include "nodes/body/MeshFile.h"
+#include "nodes/body/SkeletonJoints.h"
+
+#include <Inventor/misc/SoChildList.h>
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace figment::serve {
@@ -23,6 +27,16 @@ std::string wardrobeText() {
   for (const GarmentStyle& style : Catalogue::styles())
     text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
   return text + "}\n";
+}
+
+// The SkeletonJoints at any depth below `node`, a File's children included (which a
+// search action does not enter).
+const SkeletonJoints* findJoints(SoNode* node) {
+  if (node->isOfType(SkeletonJoints::getClassTypeId())) return static_cast<const SkeletonJoints*>(node);
+  SoChildList* children = node->getChildren();
+  for (int i = 0; children && i < children->getLength(); ++i)
+    if (const SkeletonJoints* joints = findJoints((*children)[i])) return joints;
+  return nullptr;
 }
 
 }  // namespace
@@ -56,7 +70,17 @@ std::string Wardrobe::read(const std::string& scenesFolder) {
   if (!body_ || body_->point.getNum() == 0) return "the body did not read from " + scenesFolder;
   for (const auto& [style, pattern] : patterns_)
     if (!pattern || pattern->point.getNum() == 0) return "the " + style + "'s pattern did not read";
-  return "";
+  return findHeightOrigin() ? "" : "the body's skeleton did not read from " + scenesFolder;
+}
+
+bool Wardrobe::findHeightOrigin() {
+  const SkeletonJoints* joints = findJoints(volumes_);
+  if (!joints || joints->positions.getNum() == 0) return false;
+  const SbVec3f root = joints->positions[0];
+  float floor = root[1];
+  for (int i = 0; i < joints->positions.getNum(); ++i) floor = std::min(floor, joints->positions[i][1]);
+  heightOrigin_ = SbVec3f(root[0], floor, root[2]);
+  return true;
 }
 
 MeshFile* Wardrobe::pattern(const std::string& style) const {

@@ -4,6 +4,7 @@
 // are the catalogue's (Catalogue.h), found in the scenes folder; nothing here is named
 // by a request.
 
+#include <Inventor/SbVec3f.h>
 #include <Inventor/nodes/SoNode.h>
 
 #include <map>
@@ -29,12 +30,18 @@ class Wardrobe {
   SoNode* volumes() const { return volumes_; }
   // A style's pattern (its rest shape), null when the catalogue has no such style.
   MeshFile* pattern(const std::string& style) const;
+  // The point the Mannequin's `height` scales the body about (sim/body/Posing.h): below
+  // the root joint, at the lowest joint's height. m.
+  const SbVec3f& heightOrigin() const { return heightOrigin_; }
 
  private:
+  bool findHeightOrigin();
+
   SoNode* root_ = nullptr;  // referenced: holds everything below
   MeshFile* body_ = nullptr;
   SoNode* volumes_ = nullptr;
   std::map<std::string, MeshFile*> patterns_;
+  SbVec3f heightOrigin_{0, 0, 0};
 };
 
 }  // namespace figment::serve
