@@ -90,6 +90,13 @@ class Endpoints(unittest.TestCase):
         self.assertEqual(green[1]["x-figment-cache"], "hit")
         self.assertNotEqual(red[1]["etag"], green[1]["etag"])
 
+    def test_bodies_at_the_ends_of_the_ranges_drape(self):
+        # The tallest body once tangled the dress made for the default one (its shoulders
+        # rose through the straps): the patterns now follow the stature.
+        for body in (dict(stature="1.90", bust="1.10", hips="1.15"), dict(stature="1.45", waist="0.60", hips="0.82")):
+            status, _, body_bytes = self.server.request(render_path(outfit="tshirt:S,dress:XL", **body))
+            self.assertEqual(status, 200, (body, body_bytes[:200]))
+
     def test_another_view_is_a_drape_cache_hit_and_if_none_match_is_304(self):
         path = render_path(outfit="tshirt:M", view="0,0")
         status, headers, _ = self.server.request(path)
