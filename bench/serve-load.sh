@@ -15,7 +15,7 @@ overload=${4:-60}
 work=$(mktemp -d)
 trap 'kill "$server" 2>/dev/null; wait "$server" 2>/dev/null; rm -rf "$work"' EXIT
 
-"$build/bin/figment-serve" --port 0 --workers 1 --cache "$work/cache" >"$work/out" 2>"$work/err" &
+"$build/bin/figment-serve" --port 0 --workers 1 --rate 0 --cache "$work/cache" >"$work/out" 2>"$work/err" &
 server=$!
 until grep -q http:// "$work/out"; do sleep 0.1; done
 url=$(grep -o 'http://[^ ]*' "$work/out")

@@ -72,7 +72,8 @@ std::string encodePng(const RgbImageView& image, std::string& bytes) {
   std::FILE* stream = open_memstream(&buffer, &length);
   if (!stream) return std::string("cannot encode the image: ") + std::strerror(errno);
   std::string error = writeRows(stream, image);
-  if (std::fclose(stream) != 0 && error.empty()) error = std::string("cannot encode the image: ") + std::strerror(errno);
+  if (std::fclose(stream) != 0 && error.empty())
+    error = std::string("cannot encode the image: ") + std::strerror(errno);
   if (error.empty()) bytes.assign(buffer, length);
   std::free(buffer);
   return error;

@@ -1,7 +1,6 @@
 #include "serve/Catalogue.h"
 
 #include <nlohmann/json.hpp>
-
 #include <stdexcept>
 
 namespace figment::serve {
@@ -65,18 +64,40 @@ const T* byName(const std::vector<T>& list, const std::string& name) {
 
 }  // namespace
 
-const std::vector<MeasureRange>& Catalogue::measures() { return kMeasures; }
-const std::vector<GarmentStyle>& Catalogue::styles() { return kStyles; }
-const std::vector<GarmentSize>& Catalogue::sizes() { return kSizes; }
-const std::vector<std::string>& Catalogue::colours() { return kColours; }
-const std::vector<NamedColour>& Catalogue::skinTones() { return kSkinTones; }
-const std::vector<Pose>& Catalogue::poses() { return kPoses; }
-const std::vector<LightPreset>& Catalogue::lights() { return kLights; }
+const std::vector<MeasureRange>& Catalogue::measures() {
+  return kMeasures;
+}
+const std::vector<GarmentStyle>& Catalogue::styles() {
+  return kStyles;
+}
+const std::vector<GarmentSize>& Catalogue::sizes() {
+  return kSizes;
+}
+const std::vector<std::string>& Catalogue::colours() {
+  return kColours;
+}
+const std::vector<NamedColour>& Catalogue::skinTones() {
+  return kSkinTones;
+}
+const std::vector<Pose>& Catalogue::poses() {
+  return kPoses;
+}
+const std::vector<LightPreset>& Catalogue::lights() {
+  return kLights;
+}
 
-const GarmentStyle* Catalogue::style(const std::string& name) { return byName(kStyles, name); }
-const GarmentSize* Catalogue::size(const std::string& name) { return byName(kSizes, name); }
-const Pose* Catalogue::pose(const std::string& name) { return byName(kPoses, name); }
-const LightPreset* Catalogue::light(const std::string& name) { return byName(kLights, name); }
+const GarmentStyle* Catalogue::style(const std::string& name) {
+  return byName(kStyles, name);
+}
+const GarmentSize* Catalogue::size(const std::string& name) {
+  return byName(kSizes, name);
+}
+const Pose* Catalogue::pose(const std::string& name) {
+  return byName(kPoses, name);
+}
+const LightPreset* Catalogue::light(const std::string& name) {
+  return byName(kLights, name);
+}
 
 const MeasureRange& Catalogue::measure(const std::string& name) {
   if (const MeasureRange* range = byName(kMeasures, name)) return *range;
@@ -92,18 +113,17 @@ nlohmann::json Catalogue::toJson() {
   nlohmann::json sizes = nlohmann::json::array(), styles = nlohmann::json::array();
   for (const GarmentSize& size : kSizes) sizes.push_back(size.name);
   for (const GarmentStyle& style : kStyles)
-    styles.push_back({{"name", style.name}, {"sizes", sizes}, {"colours", kColours},
-                      {"defaultColour", style.defaultColour}});
+    styles.push_back(
+        {{"name", style.name}, {"sizes", sizes}, {"colours", kColours}, {"defaultColour", style.defaultColour}});
   nlohmann::json skin = nlohmann::json::array(), measures = nlohmann::json::object();
   for (const NamedColour& tone : kSkinTones) skin.push_back({{"name", tone.name}, {"hex", tone.hex}});
   for (const MeasureRange& range : kMeasures)
-    measures[range.name] = {{"unit", "m"}, {"min", range.minimum}, {"max", range.maximum},
-                            {"default", range.reference}};
+    measures[range.name] = {
+        {"unit", "m"}, {"min", range.minimum}, {"max", range.maximum}, {"default", range.reference}};
   nlohmann::json poses = nlohmann::json::array(), lights = nlohmann::json::array();
   for (const Pose& pose : kPoses) poses.push_back(pose.name);
   for (const LightPreset& light : kLights) lights.push_back(light.name);
-  return {{"styles", styles}, {"poses", poses}, {"lights", lights}, {"skinTones", skin},
-          {"measurements", measures}};
+  return {{"styles", styles}, {"poses", poses}, {"lights", lights}, {"skinTones", skin}, {"measurements", measures}};
 }
 
 }  // namespace figment::serve

@@ -10,9 +10,8 @@
 // a pattern file and a girth factor by GarmentSize. A parametric body or a graded pattern
 // per size replaces those two functions' answers, not the request.
 
-#include <nlohmann/json_fwd.hpp>
-
 #include <array>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -20,10 +19,10 @@ namespace figment::serve {
 
 // A measurement's accepted range, metres.
 struct MeasureRange {
-  std::string name;     // the request parameter: stature, bust, waist, hips
-  double minimum = 0;   // m
-  double maximum = 0;   // m
-  double reference = 0; // m, the default body's own measurement (factor 1)
+  std::string name;      // the request parameter: stature, bust, waist, hips
+  double minimum = 0;    // m
+  double maximum = 0;    // m
+  double reference = 0;  // m, the default body's own measurement (factor 1)
 };
 
 struct BodyMeasures {
@@ -37,16 +36,16 @@ struct BodyFactors {
 
 // How a style drapes: its pattern (a file beside the scenes), its solver settings.
 struct GarmentStyle {
-  std::string name;         // dress, skirt, tshirt
-  std::string pattern;      // the pattern's file name, looked up in the scenes folder
+  std::string name;              // dress, skirt, tshirt
+  std::string pattern;           // the pattern's file name, looked up in the scenes folder
   bool penaltyContacts = false;  // PENALTY contacts even as the innermost layer
-  double maxTime = 5;       // s simulated at most
-  std::string defaultColour;  // hex rrggbb
+  double maxTime = 5;            // s simulated at most
+  std::string defaultColour;     // hex rrggbb
 };
 
 struct GarmentSize {
-  std::string name;     // S, M, L, XL
-  double girth = 1;     // the pattern's girth about the body's axis, 1 = as made
+  std::string name;  // S, M, L, XL
+  double girth = 1;  // the pattern's girth about the body's axis, 1 = as made
 };
 
 struct NamedColour {

@@ -1,12 +1,12 @@
 #include "serve/Digest.h"
 
-#include "nodes/Init.h"
-
 #include <dlfcn.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+
+#include "nodes/Init.h"
 
 namespace figment::serve {
 

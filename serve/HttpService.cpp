@@ -1,14 +1,15 @@
 #include "serve/HttpService.h"
 
+#include <httplib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
 #include "serve/Catalogue.h"
 #include "serve/Digest.h"
 #include "serve/RenderRequest.h"
 #include "serve/WebAssets.h"
-
-#include <httplib.h>
-#include <nlohmann/json.hpp>
-
-#include <algorithm>
 
 namespace figment::serve {
 
@@ -55,19 +56,30 @@ nlohmann::json limitsJson() {
 
 const char* errorText(int status) {
   switch (status) {
-    case 404: return "no such path";
-    case 405: return "method not allowed";
-    case 413: return "request too large";
-    case 414: return "URL too long";
-    case 431: return "headers too large";
-    default: return status >= 500 ? "server error" : "bad request";
+    case 404:
+      return "no such path";
+    case 405:
+      return "method not allowed";
+    case 413:
+      return "request too large";
+    case 414:
+      return "URL too long";
+    case 429:
+      return "too many requests";
+    case 431:
+      return "headers too large";
+    default:
+      return status >= 500 ? "server error" : "bad request";
   }
 }
 
 }  // namespace
 
 HttpService::HttpService(const ServeOptions& options, const std::string& program)
-    : options_(options), build_(Digest::buildDigest()), images_(options.imageCacheBytes),
+    : options_(options),
+      build_(Digest::buildDigest()),
+      images_(options.imageCacheBytes),
+      rateLimit_(options.renderRate, options.renderBurst),
       server_(std::make_unique<httplib::Server>()) {
   PoolOptions pool;
   pool.program = program;
@@ -85,8 +97,8 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
 HttpService::~HttpService() = default;
 
 const std::vector<std::string>& HttpService::routes() {
-  static const std::vector<std::string> paths = {"/",        "/app.js",        "/style.css",    "/healthz",
-                                                 "/openapi.json", "/api/catalogue", "/api/render"};
+  static const std::vector<std::string> paths = {
+      "/", "/app.js", "/style.css", "/healthz", "/openapi.json", "/api/catalogue", "/api/render"};
   return paths;
 }
 
@@ -104,9 +116,8 @@ void HttpService::addRoutes() {
     response.set_header("Cache-Control", "public, max-age=300");
     response.set_content(catalogue.dump(), kJson);
   });
-  server_->Get("/api/render", [this](const httplib::Request& request, httplib::Response& response) {
-    render(request, response);
-  });
+  server_->Get("/api/render",
+               [this](const httplib::Request& request, httplib::Response& response) { render(request, response); });
   // Every refusal as JSON, httplib's own (404, 414, ...) included; a handler's JSON stays.
   server_->set_error_handler([](const httplib::Request&, httplib::Response& response) {
     if (response.body.empty()) sendJson(response, response.status, {{"error", errorText(response.status)}});
@@ -119,18 +130,26 @@ void HttpService::addRoutes() {
 void HttpService::health(httplib::Response& response) const {
   const WorkerPool::Load load = pool_->load();
   sendJson(response, 200,
-           {{"status", "ok"}, {"workers", load.workers}, {"busy", load.busy}, {"queued", load.queued},
-            {"restarts", load.restarts}, {"imageCacheBytes", images_.bytes()}});
+           {{"status", "ok"},
+            {"workers", load.workers},
+            {"busy", load.busy},
+            {"queued", load.queued},
+            {"restarts", load.restarts},
+            {"imageCacheBytes", images_.bytes()}});
 }
 
 void HttpService::render(const httplib::Request& request, httplib::Response& response) {
   const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
   auto parsed = RenderRequest::parse(parameters);
   if (auto* error = std::get_if<ParameterError>(&parsed))
-    return sendJson(response, 400, {{"error", error->error}, {"parameter", error->parameter},
-                                    {"value", error->value}, {"accepted", error->accepted}});
+    return sendJson(response, 400,
+                    {{"error", error->error},
+                     {"parameter", error->parameter},
+                     {"value", error->value},
+                     {"accepted", error->accepted}});
   const std::string canonical = std::get<RenderRequest>(parsed).canonical();
-  const std::string tag = "\"" + Digest().add(canonical).add(build_).hex() + "\"";
+  std::string tag = Digest().add(canonical).add(build_).hex();
+  tag = '"' + tag + '"';  // a strong ETag: quoted, no W/
   const auto answer = [&](const std::string& png, bool hit) {
     response.set_header("ETag", tag);
     response.set_header("Cache-Control", "public, max-age=86400");
@@ -144,6 +163,10 @@ void HttpService::render(const httplib::Request& request, httplib::Response& res
     return;
   }
   if (std::shared_ptr<const std::string> png = images_.find(tag)) return answer(*png, true);
+  if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
+    response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
+    return sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
+  }
   std::shared_ptr<const RenderResult> result = pool_->render(canonical);
   if (!result) {
     response.set_header("Retry-After", "2");
@@ -162,8 +185,12 @@ int HttpService::bind(std::string& error) {
   return port;
 }
 
-void HttpService::run() { server_->listen_after_bind(); }
+void HttpService::run() {
+  server_->listen_after_bind();
+}
 
-void HttpService::stop() { server_->stop(); }
+void HttpService::stop() {
+  server_->stop();
+}
 
 }  // namespace figment::serve

@@ -3,13 +3,14 @@
 // in-memory image cache in front of the worker pool. Every answer but a PNG, the page and
 // a 304 is JSON; an unknown path is 404 JSON and reads no file.
 
-#include "serve/ImageCache.h"
-#include "serve/ServeOptions.h"
-#include "serve/WorkerPool.h"
-
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "serve/ClientRateLimit.h"
+#include "serve/ImageCache.h"
+#include "serve/ServeOptions.h"
+#include "serve/WorkerPool.h"
 
 namespace httplib {
 class Server;
@@ -43,6 +44,7 @@ class HttpService {
   std::string build_;  // Digest::buildDigest()
   std::unique_ptr<WorkerPool> pool_;
   ImageCache images_;
+  ClientRateLimit rateLimit_;
   std::unique_ptr<httplib::Server> server_;
 };
 

@@ -1,15 +1,5 @@
 #include "serve/OutfitScene.h"
 
-#include "serve/Wardrobe.h"
-
-#include "nodes/body/CollisionGroup.h"
-#include "nodes/body/Mannequin.h"
-#include "nodes/body/MannequinSkin.h"
-#include "nodes/body/MeshFile.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/GarmentSurface.h"
-#include "nodes/render/ClothingLayer.h"
-
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoMaterial.h>
@@ -19,6 +9,15 @@
 #include <algorithm>
 #include <cstdlib>
 #include <vector>
+
+#include "nodes/body/CollisionGroup.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MannequinSkin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/GarmentSurface.h"
+#include "nodes/render/ClothingLayer.h"
+#include "serve/Wardrobe.h"
 
 namespace figment::serve {
 

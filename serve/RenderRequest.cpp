@@ -11,8 +11,8 @@ namespace figment::serve {
 
 namespace {
 
-const char* const kNames[] = {"stature", "bust", "chest", "waist", "hips", "skin",
-                              "pose",    "outfit", "light", "view", "size"};
+const char* const kNames[] = {"stature", "bust",   "chest", "waist", "hips", "skin",
+                              "pose",    "outfit", "light", "view",  "size"};
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
@@ -34,7 +34,8 @@ bool number(const std::string& text, double& value) {
 }
 
 bool isHex6(const std::string& text) {
-  return text.size() == 6 && std::all_of(text.begin(), text.end(), [](char c) { return std::isxdigit((unsigned char)c); });
+  return text.size() == 6 &&
+         std::all_of(text.begin(), text.end(), [](char c) { return std::isxdigit((unsigned char)c); });
 }
 
 std::string lower(std::string text) {
@@ -74,8 +75,8 @@ std::optional<ParameterError> skinTone(const std::string& value, std::string& ou
 }
 
 std::optional<ParameterError> outfitItem(const std::string& value, const std::string& item, OutfitItem& out) {
-  const std::string accepted = "style:size[:rrggbb], styles " + namesOf(Catalogue::styles()) + "; sizes " +
-                               namesOf(Catalogue::sizes());
+  const std::string accepted =
+      "style:size[:rrggbb], styles " + namesOf(Catalogue::styles()) + "; sizes " + namesOf(Catalogue::sizes());
   const size_t a = item.find(':'), b = a == std::string::npos ? a : item.find(':', a + 1);
   if (a == std::string::npos) return bad("outfit", value, "a garment without a size: " + item.substr(0, 32), accepted);
   out.style = item.substr(0, a);
@@ -145,8 +146,7 @@ std::optional<ParameterError> imageSize(const std::string& value, int& width, in
 std::variant<std::map<std::string, std::string>, ParameterError> byName(const RenderRequest::Parameters& parameters) {
   std::map<std::string, std::string> values;
   const std::vector<std::string> known(std::begin(kNames), std::end(kNames));
-  if (int(parameters.size()) > RequestLimits::kMaxParameters)
-    return bad("", "", "too many parameters", "at most 16");
+  if (int(parameters.size()) > RequestLimits::kMaxParameters) return bad("", "", "too many parameters", "at most 16");
   for (const auto& [name, value] : parameters) {
     if (std::find(known.begin(), known.end(), name) == known.end())
       return bad(name.substr(0, 64), value, "unknown parameter", namesOf(known));
@@ -161,20 +161,28 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Re
 std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::string, std::string>& values) {
   std::optional<ParameterError> error;
   for (const auto& [name, value] : values) {
-    if (name == "stature") error = measurement(name, value, request.body.stature);
-    else if (name == "bust" || name == "chest") error = measurement(name, value, request.body.bust);
-    else if (name == "waist") error = measurement(name, value, request.body.waist);
-    else if (name == "hips") error = measurement(name, value, request.body.hips);
-    else if (name == "skin") error = skinTone(value, request.skin);
+    if (name == "stature")
+      error = measurement(name, value, request.body.stature);
+    else if (name == "bust" || name == "chest")
+      error = measurement(name, value, request.body.bust);
+    else if (name == "waist")
+      error = measurement(name, value, request.body.waist);
+    else if (name == "hips")
+      error = measurement(name, value, request.body.hips);
+    else if (name == "skin")
+      error = skinTone(value, request.skin);
     else if (name == "pose")
       error = Catalogue::pose(value) ? (request.pose = value, std::nullopt)
                                      : std::optional(bad(name, value, "no such pose", namesOf(Catalogue::poses())));
     else if (name == "light")
       error = Catalogue::light(value) ? (request.light = value, std::nullopt)
                                       : std::optional(bad(name, value, "no such light", namesOf(Catalogue::lights())));
-    else if (name == "outfit") error = outfit(value, request.outfit);
-    else if (name == "view") error = view(value, request.azimuth, request.elevation);
-    else if (name == "size") error = imageSize(value, request.width, request.height);
+    else if (name == "outfit")
+      error = outfit(value, request.outfit);
+    else if (name == "view")
+      error = view(value, request.azimuth, request.elevation);
+    else if (name == "size")
+      error = imageSize(value, request.width, request.height);
     if (error) return error;
   }
   return std::nullopt;
@@ -182,7 +190,9 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
 
 RenderRequest defaults() {
   RenderRequest request;
-  const auto rounded = [](const char* name) { return std::round(Catalogue::measure(name).reference * 1000.0) / 1000.0; };
+  const auto rounded = [](const char* name) {
+    return std::round(Catalogue::measure(name).reference * 1000.0) / 1000.0;
+  };
   request.body = {rounded("stature"), rounded("bust"), rounded("waist"), rounded("hips")};
   request.skin = "cc9473";
   request.pose = "rest";

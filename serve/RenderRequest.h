@@ -5,13 +5,13 @@
 // text, so its digest names the image (the ETag) and identical requests in flight drape
 // once.
 
-#include "serve/Catalogue.h"
-
 #include <optional>
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
+
+#include "serve/Catalogue.h"
 
 namespace figment::serve {
 
@@ -58,11 +58,11 @@ class RenderRequest {
   // Parses canonical text back (the worker's side of the pipe).
   static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text);
 
-  BodyMeasures body;           // m
-  std::string skin;            // rrggbb
-  std::string pose;            // a Catalogue pose
+  BodyMeasures body;  // m
+  std::string skin;   // rrggbb
+  std::string pose;   // a Catalogue pose
   std::vector<OutfitItem> outfit;
-  std::string light;           // a Catalogue light
+  std::string light;                  // a Catalogue light
   double azimuth = 0, elevation = 0;  // degrees
   int width = 800, height = 600;      // pixels
 };

@@ -1,15 +1,14 @@
 #include "serve/RenderWorker.h"
 
-#include "serve/FrameChannel.h"
-#include "serve/OutfitScene.h"
-#include "serve/RenderRequest.h"
-
-#include "io/DrapeCache.h"
-#include "io/PngFile.h"
-
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <nlohmann/json.hpp>
+
+#include "io/DrapeCache.h"
+#include "io/PngFile.h"
+#include "serve/FrameChannel.h"
+#include "serve/OutfitScene.h"
+#include "serve/RenderRequest.h"
 
 namespace figment::serve {
 

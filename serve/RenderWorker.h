@@ -5,13 +5,12 @@
 // back a JSON header and the PNG. The scene of the last request is kept: another view
 // or size of it renders without building or draping again.
 
-#include "serve/Wardrobe.h"
-
-#include "session/SceneRenderer.h"
-#include "session/SceneSession.h"
-
 #include <memory>
 #include <string>
+
+#include "serve/Wardrobe.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
 
 namespace figment::serve {
 
@@ -42,7 +41,7 @@ class RenderWorker {
   Wardrobe wardrobe_;
   std::string startError_;
   session::SceneSession session_;
-  std::string sceneKey_;        // the request whose scene the session holds; "" for none
+  std::string sceneKey_;  // the request whose scene the session holds; "" for none
   bool sceneFromCache_ = false;
   std::unique_ptr<session::SceneRenderer> renderer_;
 };

@@ -7,13 +7,15 @@ namespace figment::serve {
 
 struct ServeOptions {
   std::string host = "127.0.0.1";
-  int port = 8080;              // 0: any free port (the one taken is printed)
-  int workers = 1;              // worker processes
-  int queue = 0;                // requests waiting at most; 0: four per worker
-  double timeLimit = 60;        // s per render
-  std::string cacheFolder;      // drapes kept on disk; "" for none
-  std::string scenesFolder;     // the body and patterns
+  int port = 8080;                     // 0: any free port (the one taken is printed)
+  int workers = 1;                     // worker processes
+  int queue = 0;                       // requests waiting at most; 0: four per worker
+  double timeLimit = 60;               // s per render
+  std::string cacheFolder;             // drapes kept on disk; "" for none
+  std::string scenesFolder;            // the body and patterns
   size_t imageCacheBytes = 64u << 20;  // rendered images kept in memory
+  double renderRate = 10;              // renders a second per client (its address); 0: no limit
+  double renderBurst = 60;             // renders a client may ask at once
 };
 
 }  // namespace figment::serve

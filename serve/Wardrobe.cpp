@@ -1,18 +1,16 @@
 #include "serve/Wardrobe.h"
 
-#include "serve/Catalogue.h"
-
-#include "nodes/body/MeshFile.h"
-#include "nodes/body/SkeletonJoints.h"
-
-#include <Inventor/misc/SoChildList.h>
-
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
+#include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
 #include <filesystem>
+
+#include "nodes/body/MeshFile.h"
+#include "nodes/body/SkeletonJoints.h"
+#include "serve/Catalogue.h"
 
 namespace figment::serve {
 
@@ -24,8 +22,7 @@ std::string wardrobeText() {
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  MeshFile { fileName \"human.zae\" collisionExclude \"human-highpolyeyesMesh\" }\n"
       "  File { name \"human-volumes.iv\" }\n";
-  for (const GarmentStyle& style : Catalogue::styles())
-    text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
+  for (const GarmentStyle& style : Catalogue::styles()) text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
   return text + "}\n";
 }
 

@@ -9,8 +9,8 @@
 namespace figment::serve {
 
 struct WebAsset {
-  std::string_view path;     // "/", "/app.js", ...
-  std::string_view type;     // its Content-Type
+  std::string_view path;  // "/", "/app.js", ...
+  std::string_view type;  // its Content-Type
   std::string_view content;
 };
 

@@ -89,8 +89,8 @@ void WorkerPool::run(int) {
 }
 
 RenderResult WorkerPool::renderOn(WorkerProcess& worker, const std::string& canonical) {
-  const auto deadline = FrameChannel::Clock::now() +
-                        std::chrono::milliseconds(static_cast<long long>(options_.timeLimit * 1000.0));
+  const auto deadline =
+      FrameChannel::Clock::now() + std::chrono::milliseconds(static_cast<long long>(options_.timeLimit * 1000.0));
   std::string header, body;
   FrameChannel::Result r = worker.channel().send(canonical) ? FrameChannel::Result::kOk : FrameChannel::Result::kClosed;
   if (r == FrameChannel::Result::kOk) r = worker.channel().receive(header, deadline);

@@ -5,8 +5,6 @@
 // 503); each render has a time limit, past which its worker is killed; a worker that
 // dies or is killed fails only the request it had, and is started again.
 
-#include "serve/WorkerProcess.h"
-
 #include <condition_variable>
 #include <deque>
 #include <map>
@@ -16,12 +14,14 @@
 #include <thread>
 #include <vector>
 
+#include "serve/WorkerProcess.h"
+
 namespace figment::serve {
 
 // What a worker answered (or what became of its request).
 struct RenderResult {
-  int status = 500;          // HTTP status: 200, 400 (a request the worker refused), 500, 502, 504
-  std::string body;          // the PNG, or a JSON error
+  int status = 500;             // HTTP status: 200, 400 (a request the worker refused), 500, 502, 504
+  std::string body;             // the PNG, or a JSON error
   bool drapeFromCache = false;  // every drape of the scene came from the drape cache (or was kept)
 };
 
@@ -29,8 +29,8 @@ struct PoolOptions {
   std::string program;                 // this program, for the workers
   std::vector<std::string> arguments;  // its worker-mode arguments
   int workers = 1;
-  int queue = 8;                       // requests waiting at most (beside those rendering)
-  double timeLimit = 60;               // s per render
+  int queue = 8;          // requests waiting at most (beside those rendering)
+  double timeLimit = 60;  // s per render
 };
 
 class WorkerPool {

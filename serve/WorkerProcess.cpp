@@ -16,7 +16,9 @@ namespace figment::serve {
 WorkerProcess::WorkerProcess(std::string program, std::vector<std::string> arguments)
     : program_(std::move(program)), arguments_(std::move(arguments)) {}
 
-WorkerProcess::~WorkerProcess() { stop(); }
+WorkerProcess::~WorkerProcess() {
+  stop();
+}
 
 std::vector<char*> WorkerProcess::environment() {
   // One OpenMP thread per worker unless told otherwise: the service runs a worker per

@@ -4,12 +4,12 @@
 // socket pair. The server side holds it; a worker that dies or hangs is killed and
 // started again by its owner.
 
-#include "serve/FrameChannel.h"
-
 #include <sys/types.h>
 
 #include <string>
 #include <vector>
+
+#include "serve/FrameChannel.h"
 
 namespace figment::serve {
 

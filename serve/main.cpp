@@ -3,9 +3,21 @@
 // outfit of catalogue garments, as a PNG (docs/service.md).
 //
 //   figment-serve [--port P] [--workers N] [--cache DIR] [--queue Q] [--time-limit S] [--host H]
+//                 [--rate R] [--burst B]
 //
 // Renders run in worker processes: this program again, in its worker mode (--worker,
 // given by the server only), each with Coin, OSMesa and a drape context to itself.
+
+#include <Inventor/SoDB.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/errors/SoReadError.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
 
 #include "headless/OsmesaForCoin.h"
 #include "io/DrapeCache.h"
@@ -14,17 +26,6 @@
 #include "serve/HttpService.h"
 #include "serve/RenderWorker.h"
 #include "serve/WorkerProcess.h"
-
-#include <CLI/CLI.hpp>
-#include <Inventor/SoDB.h>
-#include <Inventor/errors/SoDebugError.h>
-#include <Inventor/errors/SoReadError.h>
-
-#include <csignal>
-#include <cstdio>
-#include <filesystem>
-#include <thread>
-#include <unistd.h>
 
 namespace {
 
@@ -102,6 +103,9 @@ int main(int argc, char** argv) {
   app.add_option("--queue", options.queue, "renders waiting at most before 503 (default: 4 per worker)")
       ->check(CLI::Range(1, 10000));
   app.add_option("--time-limit", options.timeLimit, "seconds a render may take")->check(CLI::Range(0.001, 3600.0));
+  app.add_option("--rate", options.renderRate, "renders a second per client address (0: no limit)")
+      ->check(CLI::Range(0.0, 1e6));
+  app.add_option("--burst", options.renderBurst, "renders a client may ask for at once")->check(CLI::Range(1.0, 1e6));
   app.add_option("--scenes", options.scenesFolder, "FIGMENT's scenes folder (the body and patterns)");
   app.add_flag("--worker", worker, "run as a render worker (the server starts these)")->group("");
   try {

@@ -3,12 +3,12 @@
 // must read back from its canonical text to the same text (the ETag and the worker rely
 // on that); a refusal must name what it refused within the bounds the 400 answer has.
 
-#include "serve/RenderRequest.h"
-
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
+
+#include "serve/RenderRequest.h"
 
 namespace {
 

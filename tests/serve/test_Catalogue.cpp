@@ -1,11 +1,11 @@
 // The catalogue: the JSON GET /api/catalogue sends lists every style with its sizes and
 // colours; measurements at the default body's own give factors of 1.
 
-#include "serve/Catalogue.h"
+#include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include <gtest/gtest.h>
+#include "serve/Catalogue.h"
 
 using namespace figment::serve;
 
@@ -24,7 +24,8 @@ TEST(Catalogue, ListsEveryStyleWithSizesAndColours) {
 
 TEST(Catalogue, TheDefaultBodysMeasurementsAreFactorsOfOne) {
   const auto reference = [](const char* name) { return Catalogue::measure(name).reference; };
-  const BodyFactors same = Catalogue::bodyFactors({reference("stature"), reference("bust"), reference("waist"), reference("hips")});
+  const BodyFactors same =
+      Catalogue::bodyFactors({reference("stature"), reference("bust"), reference("waist"), reference("hips")});
   EXPECT_DOUBLE_EQ(same.height, 1.0);
   EXPECT_DOUBLE_EQ(same.chest, 1.0);
   EXPECT_DOUBLE_EQ(same.waist, 1.0);

@@ -1,14 +1,13 @@
 // The OpenAPI document kept beside the code lists every route the service answers, and
 // nothing else; every route but the API's own is an embedded file.
 
-#include "serve/HttpService.h"
-#include "serve/WebAssets.h"
-
-#include <nlohmann/json.hpp>
-
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <set>
+
+#include "serve/HttpService.h"
+#include "serve/WebAssets.h"
 
 using namespace figment::serve;
 

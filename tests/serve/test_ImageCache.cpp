@@ -1,9 +1,9 @@
 // The server's image cache keeps images by tag within its byte bound, the least recently
 // used going first.
 
-#include "serve/ImageCache.h"
-
 #include <gtest/gtest.h>
+
+#include "serve/ImageCache.h"
 
 using namespace figment::serve;
 

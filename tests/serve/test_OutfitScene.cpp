@@ -2,21 +2,19 @@
 // request's size factors and pose, one engine per garment innermost first, an outer one
 // colliding with the garments beneath; a pattern follows the stature and its size widens it.
 
-#include "serve/OutfitScene.h"
-#include "serve/Wardrobe.h"
+#include <Inventor/SbBox3f.h>
+#include <Inventor/SoDB.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <gtest/gtest.h>
 
 #include "nodes/Init.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
-
-#include <Inventor/SoDB.h>
-#include <Inventor/SbBox3f.h>
-#include <Inventor/nodes/SoDirectionalLight.h>
-#include <Inventor/nodes/SoSeparator.h>
-
-#include <gtest/gtest.h>
+#include "serve/OutfitScene.h"
+#include "serve/Wardrobe.h"
 
 using namespace figment::serve;
 
@@ -69,7 +67,8 @@ TEST_F(OutfitSceneTest, LayersDrapeInsideOutOnTheMannequinAndTheGarmentsBeneath)
     EXPECT_EQ(group->layers.getNum(), int(i)) << i;  // every garment beneath
   }
   int lights = 0;
-  for (int i = 0; i < root->getNumChildren(); ++i) lights += root->getChild(i)->isOfType(SoDirectionalLight::getClassTypeId());
+  for (int i = 0; i < root->getNumChildren(); ++i)
+    lights += root->getChild(i)->isOfType(SoDirectionalLight::getClassTypeId());
   EXPECT_EQ(lights, int(Catalogue::light("soft")->lights.size()));
   root->unref();
 }

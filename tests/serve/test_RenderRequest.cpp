@@ -1,9 +1,9 @@
 // A render request's parameters: defaults, canonical text that reads back to itself, and
 // every class of bad parameter refused with the parameter, its value and what is accepted.
 
-#include "serve/RenderRequest.h"
-
 #include <gtest/gtest.h>
+
+#include "serve/RenderRequest.h"
 
 using namespace figment::serve;
 
@@ -31,9 +31,14 @@ TEST(RenderRequest, NoParametersIsTheDefaultBodyInTheDress) {
 }
 
 TEST(RenderRequest, CanonicalTextReadsBackToItself) {
-  const RenderRequest request = ok({{"stature", "1.7204"}, {"chest", "0.95"}, {"skin", "Tan"},
-                                    {"outfit", "tshirt:L:2E7D32,skirt:S"}, {"view", "-30,10.04"},
-                                    {"size", "320x240"}, {"light", "warm"}, {"pose", "relaxed"}});
+  const RenderRequest request = ok({{"stature", "1.7204"},
+                                    {"chest", "0.95"},
+                                    {"skin", "Tan"},
+                                    {"outfit", "tshirt:L:2E7D32,skirt:S"},
+                                    {"view", "-30,10.04"},
+                                    {"size", "320x240"},
+                                    {"light", "warm"},
+                                    {"pose", "relaxed"}});
   EXPECT_EQ(request.canonical(),
             "stature=1.720&bust=0.950&waist=0.696&hips=0.939&skin=a86b45&pose=relaxed"
             "&outfit=tshirt:L:2e7d32,skirt:S:8c1f33&light=warm&view=330.0,10.0&size=320x240");

@@ -189,8 +189,21 @@ class Workers(unittest.TestCase):
         finally:
             self.assertEqual(server.stop(), 0)
 
+    def test_a_client_past_its_render_rate_gets_429_but_cached_images(self):
+        server = Server(EXECUTABLE, "--workers", "1", "--rate", "0.001", "--burst", "1")
+        try:
+            first = render_path(outfit="dress:M")
+            self.assertEqual(server.request(first)[0], 200)
+            status, headers, body = server.request(render_path(outfit="dress:L"))
+            self.assertEqual(status, 429)
+            self.assertGreater(int(headers["retry-after"]), 0)
+            self.assertIn("error", json.loads(body))
+            self.assertEqual(server.request(first)[0], 200)  # in the image cache: no render
+        finally:
+            self.assertEqual(server.stop(), 0)
+
     def test_overload_is_503_with_retry_after_and_no_crash(self):
-        server = Server(EXECUTABLE, "--workers", "1", "--queue", "1")
+        server = Server(EXECUTABLE, "--workers", "1", "--queue", "1", "--rate", "0")
         try:
             for round in range(3):
                 results = []
