@@ -148,13 +148,14 @@ void HttpService::render(const httplib::Request& request, httplib::Response& res
                      {"value", error->value},
                      {"accepted", error->accepted}});
   const std::string canonical = std::get<RenderRequest>(parsed).canonical();
+  const char* type = std::get<RenderRequest>(parsed).format == "glb" ? "model/gltf-binary" : "image/png";
   std::string tag = Digest().add(canonical).add(build_).hex();
   tag = '"' + tag + '"';  // a strong ETag: quoted, no W/
-  const auto answer = [&](const std::string& png, bool hit) {
+  const auto answer = [&](const std::string& bytes, bool hit) {
     response.set_header("ETag", tag);
     response.set_header("Cache-Control", "public, max-age=86400");
     response.set_header("X-Figment-Cache", hit ? "hit" : "miss");
-    response.set_content(png, "image/png");
+    response.set_content(bytes, type);
   };
   if (matches(request.get_header_value("If-None-Match"), tag)) {
     response.status = 304;  // the tag names the picture: the client has it

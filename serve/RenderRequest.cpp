@@ -12,14 +12,14 @@ namespace figment::serve {
 namespace {
 
 const char* const kNames[] = {"stature", "bust",   "chest", "waist", "hips", "skin",
-                              "pose",    "outfit", "light", "view",  "size"};
+                              "pose",    "outfit", "light", "view",  "size", "format"};
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
   return {error, parameter, value.substr(0, 64), accepted};
 }
 
-std::string format(const char* pattern, double a, double b = 0) {
+std::string formatted(const char* pattern, double a, double b = 0) {
   char text[64];
   std::snprintf(text, sizeof text, pattern, a, b);
   return text;
@@ -58,7 +58,7 @@ std::string namesOf(const std::vector<T>& items) {
 
 std::optional<ParameterError> measurement(const std::string& name, const std::string& value, double& out) {
   const MeasureRange& range = Catalogue::measure(name == "chest" ? "bust" : name);
-  const std::string accepted = format("%.2f to %.2f (metres)", range.minimum, range.maximum);
+  const std::string accepted = formatted("%.2f to %.2f (metres)", range.minimum, range.maximum);
   double v = 0;
   if (!number(value, v)) return bad(name, value, "not a number", accepted);
   if (v < range.minimum || v > range.maximum) return bad(name, value, "out of range", accepted);
@@ -183,6 +183,9 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
       error = view(value, request.azimuth, request.elevation);
     else if (name == "size")
       error = imageSize(value, request.width, request.height);
+    else if (name == "format")
+      error = value == "png" || value == "glb" ? (request.format = value, std::nullopt)
+                                               : std::optional(bad(name, value, "no such format", "png, glb"));
     if (error) return error;
   }
   return std::nullopt;
@@ -208,6 +211,14 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
   if (auto* error = std::get_if<ParameterError>(&values)) return *error;
   RenderRequest request = defaults();
   if (auto error = fill(request, std::get<std::map<std::string, std::string>>(values))) return *error;
+  if (request.format == "glb") {
+    // A GLB holds meshes and colours: light, view and size leave it as it is, so they are
+    // reset and every such request shares one canonical text (and ETag).
+    const RenderRequest plain = defaults();
+    request.light = plain.light;
+    request.azimuth = plain.azimuth, request.elevation = plain.elevation;
+    request.width = plain.width, request.height = plain.height;
+  }
   return request;
 }
 
@@ -225,15 +236,15 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const 
 }
 
 std::string RenderRequest::drapeKey() const {
-  std::string text = format("stature=%.3f&bust=%.3f", body.stature, body.bust) +
-                     format("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&pose=" + pose + "&outfit=";
+  std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
+                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&pose=" + pose + "&outfit=";
   for (size_t i = 0; i < outfit.size(); ++i) text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size;
   return text;
 }
 
 std::string RenderRequest::sceneKey() const {
-  std::string text = format("stature=%.3f&bust=%.3f", body.stature, body.bust) +
-                     format("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&skin=" + skin + "&pose=" + pose +
+  std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
+                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&skin=" + skin + "&pose=" + pose +
                      "&outfit=";
   for (size_t i = 0; i < outfit.size(); ++i)
     text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size + ":" + outfit[i].colour;
@@ -242,7 +253,8 @@ std::string RenderRequest::sceneKey() const {
 }
 
 std::string RenderRequest::canonical() const {
-  return sceneKey() + format("&view=%.1f,%.1f", azimuth, elevation) + "&size=" + std::to_string(width) + "x" +
+  if (format == "glb") return sceneKey() + "&format=glb";
+  return sceneKey() + formatted("&view=%.1f,%.1f", azimuth, elevation) + "&size=" + std::to_string(width) + "x" +
          std::to_string(height);
 }
 

@@ -65,6 +65,7 @@ class RenderRequest {
   std::string light;                  // a Catalogue light
   double azimuth = 0, elevation = 0;  // degrees
   int width = 800, height = 600;      // pixels
+  std::string format = "png";         // png, or glb: the dressed body as glTF binary
 };
 
 }  // namespace figment::serve

@@ -9,6 +9,7 @@
 #include "serve/FrameChannel.h"
 #include "serve/OutfitScene.h"
 #include "serve/RenderRequest.h"
+#include "session/SceneExport.h"
 
 namespace figment::serve {
 
@@ -66,6 +67,13 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
 }
 
 RenderWorker::Answer RenderWorker::drawView(const RenderRequest& request) {
+  if (request.format == "glb") {
+    // The dressed body as meshes (session/SceneExport.h), for a 3D viewer on the page.
+    std::string error;
+    const std::vector<unsigned char> glb = session::exportGlb(session_.scene(), {true}, error);
+    if (!error.empty()) return failure(500, error);
+    return {200, std::string(glb.begin(), glb.end()), sceneFromCache_};
+  }
   const session::ImageSize size{request.width, request.height};
   if (!session_.stage(size, session::ViewDirection{request.azimuth, request.elevation}))
     return failure(500, "the outfit cannot be drawn: " + session_.shapeError());

@@ -36,6 +36,7 @@ class RenderWorker {
   Answer render(const std::string& canonical);
 
  private:
+  // The request's image (or GLB) of the scene the session holds, draped.
   Answer drawView(const RenderRequest& request);
 
   Wardrobe wardrobe_;

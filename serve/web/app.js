@@ -75,6 +75,7 @@ async function show() {
   if (img.dataset.url) URL.revokeObjectURL(img.dataset.url);
   img.dataset.url = URL.createObjectURL(blob);
   img.dataset.query = url;
+  byId("glb").href = url + "&format=glb";
   img.src = img.dataset.url;
   byId("status").textContent = "Shown (" + (response.headers.get("X-Figment-Cache") || "") + ")";
 }

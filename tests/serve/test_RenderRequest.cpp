@@ -96,3 +96,11 @@ TEST(RenderRequest, TheBodyAloneIsAnEmptyOutfit) {
   EXPECT_TRUE(ok({{"outfit", "none"}}).outfit.empty());
   EXPECT_TRUE(ok({{"outfit", ""}}).outfit.empty());
 }
+
+TEST(RenderRequest, AGlbIgnoresLightViewAndSize) {
+  const RenderRequest a = ok({{"format", "glb"}, {"light", "warm"}, {"view", "back"}, {"size", "320x240"}});
+  const RenderRequest b = ok({{"format", "glb"}});
+  EXPECT_EQ(a.canonical(), b.canonical());
+  EXPECT_NE(a.canonical(), ok({}).canonical());  // the control: a PNG is another thing
+  EXPECT_EQ(refused({{"format", "obj"}}).parameter, "format");
+}

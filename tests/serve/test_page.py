@@ -98,6 +98,8 @@ class Page(unittest.TestCase):
         Select(browser.find_element(By.ID, "size-1")).select_by_value("L")
         third = self.wait_for_new_picture(second)
         self.assertIn("outfit=tshirt%3AM%3Ad9d9d1%2Cskirt%3AL%3A8c1f33", third)
+        # The 3D download is the same outfit as glTF binary.
+        self.assertTrue(browser.find_element(By.ID, "glb").get_attribute("href").endswith(third + "&format=glb"))
         pixels = self.assertPictureChanged(pixels)
         self.shot("serve-page-outfit.png")
 

@@ -97,6 +97,16 @@ class Endpoints(unittest.TestCase):
             status, _, body_bytes = self.server.request(render_path(outfit="tshirt:S,dress:XL", **body))
             self.assertEqual(status, 200, (body, body_bytes[:200]))
 
+    def test_format_glb_is_the_dressed_body_as_gltf_binary(self):
+        status, headers, body = self.server.request("/api/render?outfit=tshirt:M,skirt:L&format=glb")
+        self.assertEqual(status, 200)
+        self.assertEqual(headers["content-type"], "model/gltf-binary")
+        self.assertEqual(body[:4], b"glTF")  # the GLB header's magic
+        self.assertEqual(int.from_bytes(body[8:12], "little"), len(body))  # its stated length
+        chunk = int.from_bytes(body[12:16], "little")
+        document = json.loads(body[20:20 + chunk])
+        self.assertGreaterEqual(len(document["meshes"]), 3)  # two garments and the skin
+
     def test_another_view_is_a_drape_cache_hit_and_if_none_match_is_304(self):
         path = render_path(outfit="tshirt:M", view="0,0")
         status, headers, _ = self.server.request(path)
@@ -115,7 +125,7 @@ class Endpoints(unittest.TestCase):
         cases = [("stature=tall", "stature"), ("stature=3", "stature"), ("bust=0.1", "bust"),
                  ("skin=plaid", "skin"), ("pose=handstand", "pose"), ("light=laser", "light"),
                  ("outfit=cape:M", "outfit"), ("outfit=dress:M,tshirt:M,skirt:M,dress:S", "outfit"),
-                 ("view=1,2,3", "view"), ("size=5000x5000", "size"), ("size=12", "size"),
+                 ("view=1,2,3", "view"), ("size=5000x5000", "size"), ("size=12", "size"), ("format=obj", "format"),
                  ("scene=%2Fetc%2Fpasswd", "scene"), ("pose=rest&pose=relaxed", "pose")]
         for query, parameter in cases:
             status, headers, body = self.server.request("/api/render?" + query)
