@@ -206,4 +206,4 @@ TEST_P(OutfitPixels, TheControlAnOuterGarmentDrawnIntoTheShirtStillCoversIt) {
 INSTANTIATE_TEST_SUITE_P(Outfits, OutfitPixels,
                          ::testing::Values(OutfitCase{"outfit-layers.iv", "Dress", true},
                                            OutfitCase{"outfit-skirt.iv", "Skirt", false}),
-                         [](const auto& info) { return std::string(info.param.outer); });
+                         [](const auto& outfit) { return std::string(outfit.param.outer); });
