@@ -118,14 +118,13 @@ bool stepAlong(const HumanModel& model, const std::vector<Unknown>& unknowns, co
   return false;
 }
 
-[[noreturn]] void refuse(const std::vector<MeasurementGoal>& goals, const Evaluation& e, double tolerance) {
+[[noreturn]] void refuse(const std::vector<MeasurementGoal>& goals, const Evaluation& e) {
   Eigen::Index worst = 0;
   e.residual.cwiseAbs().maxCoeff(&worst);
   const MeasurementGoal& goal = goals[size_t(worst)];
   char line[200];
   std::snprintf(line, sizeof line, "%s %.3f m is out of reach with the other measurements: the nearest is %.3f m",
                 goal.key.c_str(), goal.value, goal.value + e.residual[worst]);
-  (void)tolerance;
   throw UnreachableMeasurement(line);
 }
 
@@ -161,7 +160,7 @@ BodyFitResult fitBody(const HumanModel& model, const HumanParameters& start, con
     const Eigen::VectorXd delta = J.colPivHouseholderQr().solve(-e.residual);
     if (!stepAlong(model, unknowns, goals, delta, result.parameters, e)) break;  // as near as it gets
   }
-  if (worst(e) > options.tolerance) refuse(goals, e, options.tolerance);
+  if (worst(e) > options.tolerance) refuse(goals, e);
   result.body = std::move(e.body);
   result.achieved = e.measured;
   return result;
