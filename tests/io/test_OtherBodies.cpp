@@ -277,16 +277,22 @@ TEST(BodyTools, MeasureTheDefaultBodyAsATapeWould) {
   EXPECT_LT(m.waistGirth, m.hipGirth);
   EXPECT_LT(m.neckGirth, m.upperArmGirth * 2);
   EXPECT_GT(m.armLength, 0.4);
-  // figment-measure prints the same, as JSON with --json
+  // figment-measure prints the same as JSON with --json, for the body in centimetres, z up,
+  // read with the tools' --metres-per-unit and --up-axis (exported to 9 digits: 1 mm)
   const test::TempDir dir;
-  const std::string out = (dir.path() / "m.json").string();
-  ASSERT_EQ(std::system((quote(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-measure") + " human.zae --json > " +
-                         quote(out)).c_str()), 0);
+  const std::string turned = (dir.path() / "human-cm-zup.obj").string(), out = (dir.path() / "m.json").string();
+  exportObj(inCentimetresZUp(*body), turned);
+  ASSERT_EQ(std::system((quote(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-measure") + " " + quote(turned) +
+                         " --metres-per-unit 0.01 --up-axis Z --json > " + quote(out))
+                            .c_str()),
+            0);
   std::stringstream json;
   json << std::ifstream(out).rdbuf();
-  char waist[40];
-  std::snprintf(waist, sizeof waist, "\"waist_girth\": %.5f", m.waistGirth);
-  EXPECT_NE(json.str().find(waist), std::string::npos) << json.str();
+  for (const auto& [key, value] : m.named()) {
+    const size_t at = json.str().find("\"" + key + "\": ");
+    ASSERT_NE(at, std::string::npos) << key << " in " << json.str();
+    EXPECT_NEAR(std::strtod(json.str().c_str() + at + key.size() + 4, nullptr), value, 0.001) << key;
+  }
 }
 
 TEST(BodyTools, FigmentBodyRefusesAnUnreachableSetInOneLine) {
