@@ -1,4 +1,5 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
+#include "BodyStudy.h"
 #include "CollisionStudy.h"
 #include "DrapeStudy.h"
 #include "MethodStudy.h"
@@ -177,6 +178,13 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
   return command;
 }
 
+CLI::App* addBodyCommand(CLI::App& app, BodyStudyOptions& bodies) {
+  CLI::App* command = app.add_subcommand("bodies", "make and measure MakeHuman bodies across the macro range: medians");
+  command->add_option("--repeat", bodies.repeat, "timings per body (median)")->capture_default_str()->check(CLI::PositiveNumber);
+  command->add_option("--out", bodies.outDir, "folder for bodies.csv")->capture_default_str();
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -203,6 +211,8 @@ int main(int argc, char** argv) {
   TradeoffStudyOptions tradeoff;
   tradeoff.plotScript = FIGMENT_PLOT_TRADEOFF;
   CLI::App* tradeoffCommand = addTradeoffCommand(app, tradeoff);
+  BodyStudyOptions bodies;
+  CLI::App* bodyCommand = addBodyCommand(app, bodies);
 
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return runDrapeStudy(drape);
@@ -212,6 +222,7 @@ int main(int argc, char** argv) {
   if (methodCommand->parsed()) return runMethodStudy(methods);
   if (progressiveCommand->parsed()) return runProgressiveStudy(progressive);
   if (sizeCommand->parsed()) return runSizeStudy(sizes);
+  if (bodyCommand->parsed()) return runBodyStudy(bodies);
   if (tradeoffCommand->parsed()) return runTradeoffStudy(tradeoff.quick ? quickTradeoff(tradeoff) : tradeoff);
   return 1;
 }

@@ -9,6 +9,7 @@
 #include "nodes/body/ExactVolume.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MannequinSkin.h"
+#include "nodes/body/HumanBody.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
@@ -23,6 +24,7 @@ void init() {
   // Each initClass() returns at once when its class is already registered, so a
   // second init(), or a class Coin loaded on its own through libX.so, is harmless.
   MeshFile::initClass();
+  HumanBody::initClass();
   ClothingLayer::initClass();
   ClothEngine::initClass();
   DepthSortedGroup::initClass();

@@ -24,6 +24,8 @@ if [ ! -f "$build/CMakeCache.txt" ]; then
     -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
     -DFIGMENT_SANITIZE=ON -DFIGMENT_BUILD_BENCH=OFF >/dev/null
 fi
+# MakeHuman's body model where this build looks for it (the scenes with a HumanBody need it).
+python3 scripts/fetch-makehuman.py "$build/data/makehuman"
 targets=()
 [[ "sim" =~ $labels ]] && targets+=(test_sim)
 [[ "nodes" =~ $labels ]] && targets+=(test_nodes)

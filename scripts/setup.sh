@@ -38,4 +38,6 @@ fi
 
 build=${FIGMENT_BUILD_DIR:-build}
 [ -f "$build/CMakeCache.txt" ] || cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+# MakeHuman's CC0 body model (docs/bodies.md), where the build looks for it by default.
+python3 scripts/fetch-makehuman.py "$build/data/makehuman"
 cmake --build "$build" -j "$(nproc)" | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }

@@ -142,14 +142,17 @@ class MeshFile : public SoNode, public figment::CollisionBody {
   ~MeshFile() override;
   SbBool readInstance(SoInput* in, unsigned short flags) override;
 
+  // Reads the file named by the fields; `in` is the SoInput being read, or null.
+  // Returns false (after reporting) on error; the node is then empty. A subclass that
+  // makes its mesh instead (HumanBody) loads its own way.
+  virtual bool load(SoInput* in);
+  // Whether a change of `field` loads the mesh again.
+  virtual bool isLoadOption(const SoField* field) const;
+  // Sets the drawn mesh (and the outputs) and the collision surface.
+  void setMesh(const figment::TriangleMesh& drawn, const figment::TriangleMesh& collision);
+  void clearMesh();
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
-
-  // Reads the file named by the fields; `in` is the SoInput being read, or null.
-  // Returns false (after reporting) on error; the node is then empty.
-  bool load(SoInput* in);
-  void setMesh(const figment::TriangleMesh& drawn, const figment::TriangleMesh& collision);
-  void clearMesh();
-  bool isLoadOption(const SoField* field) const;
 };

@@ -18,6 +18,10 @@ struct Segment2 {
 
 enum class SectionAxis { X, Y, Z };
 
+// The convex hull of `points` (Andrew's monotone chain), counter-clockwise, without
+// repeated or collinear points; fewer than 3 points come back as given (deduplicated).
+std::vector<Vec2> convexHull(std::vector<Vec2> points);
+
 // Cuts `mesh` with the plane {p[axis] = value}: one segment per triangle that crosses it
 // (edge crossings, so a section is as fine as the mesh's edges, not only its vertices).
 // Coordinates in the plane: (x, z) for Y, (z, y) for X, (x, y) for Z.

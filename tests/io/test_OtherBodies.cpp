@@ -8,7 +8,9 @@
 //  - the tools refuse a body in the wrong unit or frame at once, in one line naming the
 //    options that fix it, and a body that is no standing human, without writing anything.
 #include "io/MeshExport.h"
+#include "io/MakeHumanFiles.h"
 #include "io/MeshImport.h"
+#include "sim/body/BodyMeasurements.h"
 #include "sim/body/BodyParts.h"
 #include "sim/body/SkeletonEstimate.h"
 #include "sim/fitting/CollisionVolumeFitting.h"
@@ -259,4 +261,47 @@ TEST(BodyTools, RejectABadUnitOrUpAxis) {
               std::string::npos)
         << run.stderrText;
   }
+}
+
+TEST(BodyTools, MeasureTheDefaultBodyAsATapeWould) {
+  const TriangleMesh* body = test::defaultBodyWithoutEyes();
+  if (!body) GTEST_SKIP() << "assimp-testmodels is not installed";
+  const BodyMeasurements m = measureBody(*body);
+  EXPECT_NEAR(m.stature, boundsOf(body->vertices).size().y(), 1e-12);
+  const BodyLandmarks& l = m.landmarks;
+  for (const auto& [lower, upper] : {std::pair{l.crotch, l.hip}, {l.hip, l.waist}, {l.waist, l.underbust},
+                                     {l.underbust, l.bust}, {l.bust, l.armpit}, {l.armpit, l.neck}})
+    EXPECT_LT(lower, upper);
+  // a woman's proportions: the waist narrower than bust and hips, the neck narrowest
+  EXPECT_LT(m.waistGirth, m.bustGirth);
+  EXPECT_LT(m.waistGirth, m.hipGirth);
+  EXPECT_LT(m.neckGirth, m.upperArmGirth * 2);
+  EXPECT_GT(m.armLength, 0.4);
+  // figment-measure prints the same as JSON with --json, for the body in centimetres, z up,
+  // read with the tools' --metres-per-unit and --up-axis (exported to 9 digits: 1 mm)
+  const test::TempDir dir;
+  const std::string turned = (dir.path() / "human-cm-zup.obj").string(), out = (dir.path() / "m.json").string();
+  exportObj(inCentimetresZUp(*body), turned);
+  ASSERT_EQ(std::system((quote(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-measure") + " " + quote(turned) +
+                         " --metres-per-unit 0.01 --up-axis Z --json > " + quote(out))
+                            .c_str()),
+            0);
+  std::stringstream json;
+  json << std::ifstream(out).rdbuf();
+  for (const auto& [key, value] : m.named()) {
+    const size_t at = json.str().find("\"" + key + "\": ");
+    ASSERT_NE(at, std::string::npos) << key << " in " << json.str();
+    EXPECT_NEAR(std::strtod(json.str().c_str() + at + key.size() + 4, nullptr), value, 0.001) << key;
+  }
+}
+
+TEST(BodyTools, FigmentBodyRefusesAnUnreachableSetInOneLine) {
+  if (findMakeHumanData().empty()) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
+  const test::TempDir dir;
+  const std::string output = (dir.path() / "body.obj").string();
+  const ToolRun run = runTool("figment-body", "--sex female --waist-girth 0.9 --hip-girth 0.5 -o " + quote(output), dir);
+  EXPECT_EQ(run.status, 1);
+  EXPECT_EQ(lineCount(run.stderrText), 1) << run.stderrText;
+  EXPECT_NE(run.stderrText.find("figment-body: hip_girth 0.500 m is out of reach"), std::string::npos) << run.stderrText;
+  EXPECT_FALSE(std::filesystem::exists(output));
 }

@@ -1,6 +1,7 @@
 // Every scene in scenes/examples/ (the examples of docs/authoring.md, one per node) is
 // read and rendered by figment-view, and draws something: one test per file, found by
 // listing the folder, so a new example is covered without touching this file.
+#include "io/MakeHumanFiles.h"
 #include "support/TempDir.h"
 
 #include <Inventor/SbImage.h>
@@ -58,6 +59,8 @@ class ExampleScene : public ::testing::TestWithParam<std::string> {};
 // Drapes for real (--no-cache): each example drapes in about 1 s or less on one core
 // (speed is figment-bench's to measure, not a test's).
 TEST_P(ExampleScene, RendersNonEmptyPixels) {
+  if (GetParam() == "HumanBody" && figment::findMakeHumanData().empty())
+    GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
   const figment::test::TempDir dir;
   const std::string scene = (kExamples / (GetParam() + ".iv")).string();
   const std::string png = (dir.path() / "example.png").string();

@@ -1,0 +1,50 @@
+#pragma once
+// A MakeHuman body made to typed measurements: each typed measurement moves one parameter
+// (stature the macro height; a girth or length its measure target), solved together by
+// Gauss-Newton on those parameters with a finite-difference Jacobian (the measurements are
+// near linear in them), within their ranges; the untyped measurements follow the macro
+// model. A set no parameters in range reach is refused, never met by a distorted body.
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/body/BodyMeasurements.h"
+#include "sim/body/HumanModel.h"
+
+namespace figment {
+
+struct MeasurementGoal {
+  std::string key;  // a BodyMeasurements::named() key with a parameter (fittedKeys())
+  double value;     // m
+};
+
+// The keys a goal may name, each with the parameter it moves.
+const std::vector<std::pair<std::string, std::string>>& fittedKeys();
+
+struct BodyFitOptions {
+  double tolerance = 0.005;  // m: each goal met within this
+  int maxIterations = 12;
+};
+
+struct BodyFitResult {
+  HumanParameters parameters;
+  TriangleMesh body;
+  BodyMeasurements achieved;
+  int iterations = 0;
+};
+
+// Thrown for a set of goals no parameters in range meet: "hip_girth 0.700 m is out of
+// reach: the nearest is 0.861 m".
+class UnreachableMeasurement : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+// Starts from `start` (its macro parameters are kept but for height when stature is a goal).
+// Throws std::invalid_argument for an unknown or repeated key or a value <= 0, and
+// UnreachableMeasurement as above.
+BodyFitResult fitBody(const HumanModel& model, const HumanParameters& start, const std::vector<MeasurementGoal>& goals,
+                      const BodyFitOptions& options = {});
+
+}  // namespace figment

@@ -1,0 +1,304 @@
+// Body measurements from landmarks on the mesh. Based on:
+// - ISO 8559-1:2017 (body dimensions for clothing: the names and what each measures);
+// - girths as convex perimeters: a taut tape is the convex hull of the section it encloses
+//   (the hull by Andrew's monotone chain, sim/body/BodySlices.h);
+// - landmarks from horizontal sections (sim/body/SectionLoops.h), in windows scaled by
+//   stature / 1.7 m: the crotch is the lowest level where one piece of the section spans the
+//   body's middle; the armpits the lowest level, above where the arms hang apart, where they
+//   have joined the torso; the bust and the hips the fullest torso sections below the armpits
+//   and above the crotch (EN 13402-1's "maximum horizontal girth"), the waist and the neck
+//   the narrowest; the underbust the level below the bust where the chest's front recedes
+//   most; the arm followed by sections perpendicular to its own axis,
+//   the wrist its narrowest section before the hand widens.
+
+#include "sim/body/BodyMeasurements.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+
+#include "sim/body/BodySlices.h"
+#include "sim/body/SectionLoops.h"
+
+namespace figment {
+
+namespace {
+
+constexpr double kReferenceStature = 1.7;  // m: the windows below are for this stature, scaled
+constexpr double kScanStep = 0.005;        // m between levels scanned
+constexpr double kRefineStep = 0.001;      // m: levels found to this
+constexpr double kTorsoBand = 0.1;         // m either side of the middle: torso and legs, never arms
+constexpr double kArmStep = 0.01;          // m between sections along the arm
+constexpr double kHandWidening = 4.0 / 3;  // the hand: sections this much wider than the wrist
+
+struct Level {
+  double height = 0;
+  double value = 0;
+};
+
+class Tape {
+ public:
+  explicit Tape(const TriangleMesh& body) : body_(body), sections_(body) {
+    const Bounds b = boundsOf(body.vertices);
+    floor_ = b.min.y();
+    stature_ = b.size().y();
+    scale_ = stature_ / kReferenceStature;
+    middle_ = 0.5 * (b.min.x() + b.max.x());
+  }
+
+  double floor() const { return floor_; }
+  double stature() const { return stature_; }
+  double scaled(double metres) const { return metres * scale_; }  // a length at 1.7 m, at this stature
+  double middle() const { return middle_; }
+  const TriangleMesh& body() const { return body_; }
+  std::vector<SectionLoop> loops(double height) const { return sections_.at(height); }
+
+  bool inTorsoBand(const SectionLoop& loop) const {
+    const double band = scaled(kTorsoBand);
+    return loop.bounds.max.x() >= middle_ - band && loop.bounds.min.x() <= middle_ + band;
+  }
+  std::vector<Vec3> torsoPoints(double height) const {
+    std::vector<Vec3> points;
+    for (const SectionLoop& loop : loops(height))
+      if (inTorsoBand(loop)) points.insert(points.end(), loop.points.begin(), loop.points.end());
+    return points;
+  }
+  double girth(double height) const { return convexPerimeter(torsoPoints(height), Vec3::UnitY()); }
+  double front(double height) const {  // m: the torso's most forward z
+    double z = -std::numeric_limits<double>::infinity();
+    for (const Vec3& p : torsoPoints(height)) z = std::max(z, p.z());
+    return z;
+  }
+
+  // The level in [low, high] where f is largest (sign +1) or smallest (-1): scanned, then refined.
+  Level best(double low, double high, double sign, const std::function<double(double)>& f) const {
+    Level found{low, sign * f(low)};
+    for (double y = low + kScanStep; y <= high; y += kScanStep)
+      if (const double v = sign * f(y); v > found.value) found = {y, v};
+    const double centre = found.height;
+    for (double y = std::max(low, centre - kScanStep); y <= std::min(high, centre + kScanStep); y += kRefineStep)
+      if (const double v = sign * f(y); v > found.value) found = {y, v};
+    found.value *= sign;
+    return found;
+  }
+
+ private:
+  const TriangleMesh& body_;
+  HorizontalSections sections_;
+  double floor_ = 0, stature_ = 0, scale_ = 1, middle_ = 0;
+};
+
+bool spansMiddle(const SectionLoop& loop, double middle) {
+  return loop.bounds.min.x() < middle && loop.bounds.max.x() > middle;
+}
+
+// The crotch: the lowest level between 30 % and 65 % of the stature where one piece of the
+// section spans the middle (below it, the legs are apart), found to 0.1 mm by bisection.
+double crotchHeight(const Tape& tape) {
+  const auto joined = [&](double y) {
+    for (const SectionLoop& loop : tape.loops(y))
+      if (spansMiddle(loop, tape.middle())) return true;
+    return false;
+  };
+  const double low = tape.floor() + 0.3 * tape.stature(), high = tape.floor() + 0.65 * tape.stature();
+  for (double y = low; y <= high; y += kScanStep) {
+    if (!joined(y)) continue;
+    double apart = y - kScanStep, together = y;
+    while (together - apart > 1e-4) {
+      const double mid = 0.5 * (apart + together);
+      (joined(mid) ? together : apart) = mid;
+    }
+    return together;
+  }
+  throw std::invalid_argument("body: no crotch found (the legs never join between 30% and 65% of the stature)");
+}
+
+// The armpits: scanning up from the crotch, past the first level where a piece lies apart on
+// each side of the torso band (the arms), the lowest level where none does any more (the arms
+// have joined the torso); found to 1 mm.
+double armpitHeight(const Tape& tape, double crotch) {
+  const auto armsApart = [&](double y) {
+    bool left = false, right = false;
+    for (const SectionLoop& loop : tape.loops(y)) {
+      if (tape.inTorsoBand(loop)) continue;
+      left = left || loop.bounds.max.x() < tape.middle();
+      right = right || loop.bounds.min.x() > tape.middle();
+    }
+    return left && right;
+  };
+  const double top = tape.floor() + 0.9 * tape.stature();
+  double y = crotch + tape.scaled(0.1);
+  while (y < top && !armsApart(y)) y += kScanStep;
+  while (y < top && armsApart(y)) y += kScanStep;
+  if (y >= top)
+    throw std::invalid_argument("body: no armpits found (the arms never part from the torso and join it again)");
+  double apart = y - kScanStep, joined = y;
+  while (joined - apart > kRefineStep) {
+    const double mid = 0.5 * (apart + joined);
+    (armsApart(mid) ? apart : joined) = mid;
+  }
+  return apart;
+}
+
+// The arm's centre in the horizontal section at `height`: the piece on the +x side farthest
+// from the middle outside the torso band.
+Vec3 armCentre(const Tape& tape, double height) {
+  const std::vector<SectionLoop> loops = tape.loops(height);
+  const SectionLoop* arm = nullptr;
+  for (const SectionLoop& loop : loops)
+    if (!tape.inTorsoBand(loop) && loop.bounds.min.x() > tape.middle() &&
+        (!arm || loop.points.size() > arm->points.size()))
+      arm = &loop;
+  if (!arm) throw std::invalid_argument("body: no arm found below the armpit");
+  return arm->centroid();
+}
+
+// The piece of the section through `at` (normal `axis`) nearest `at`, within `reach` of it.
+const SectionLoop* nearestLoop(const std::vector<SectionLoop>& loops, const Vec3& at, double reach) {
+  const SectionLoop* nearest = nullptr;
+  double distance = reach;
+  for (const SectionLoop& loop : loops)
+    if (const double d = (loop.centroid() - at).norm(); d < distance) distance = d, nearest = &loop;
+  return nearest;
+}
+
+struct ArmTrack {
+  std::vector<double> arc;    // m from the first section's centre
+  std::vector<double> girth;  // m, perpendicular to the arm
+};
+
+// Follows the arm from `start` along `direction` (unit, towards the hand) in sections
+// perpendicular to it, the direction turning with the sections' centres, to the fingertip.
+ArmTrack followArm(const Tape& tape, Vec3 at, Vec3 direction) {
+  ArmTrack track;
+  std::vector<Vec3> centres;
+  double arc = 0;
+  for (int k = 0; k < 400; ++k) {
+    const std::vector<SectionLoop> loops = sectionLoops(tape.body(), at, direction);
+    const SectionLoop* loop = nearestLoop(loops, at, tape.scaled(0.05));
+    if (!loop) break;
+    const Vec3 centre = loop->centroid();
+    if (!centres.empty()) arc += (centre - centres.back()).norm();
+    centres.push_back(centre);
+    track.arc.push_back(arc);
+    track.girth.push_back(convexPerimeter(loop->points, direction));
+    if (centres.size() > 3) direction = (centre - centres[centres.size() - 4]).normalized();
+    at = centre + tape.scaled(kArmStep) * direction;
+  }
+  return track;
+}
+
+void measureArm(const Tape& tape, BodyMeasurements& m) {
+  const Vec3 upper = armCentre(tape, tape.floor() + m.landmarks.armpit - tape.scaled(0.03));
+  const Vec3 lower = armCentre(tape, tape.floor() + m.landmarks.armpit - tape.scaled(0.10));
+  const Vec3 up = (upper - lower).normalized();  // along the upper arm, towards the shoulder
+  const ArmTrack track = followArm(tape, upper, -up);
+  if (track.girth.size() < 10) throw std::invalid_argument("body: the arm could not be followed to the hand");
+  m.upperArmGirth = track.girth.front();
+  // the wrist: the narrowest section past a quarter of the way to the fingertip, before the
+  // hand widens the sections by a third (beyond, the sections are the fingers')
+  const size_t n = track.girth.size();
+  size_t wrist = n / 4;
+  for (size_t k = n / 4; k < n && track.girth[k] < kHandWidening * track.girth[wrist]; ++k)
+    if (track.girth[k] < track.girth[wrist]) wrist = k;
+  // the shoulder point: the upper arm's axis continued up to the shoulder level
+  const double rise = tape.floor() + m.landmarks.shoulder - upper.y();
+  const double toShoulder = up.y() > 0.1 ? rise / up.y() : 0.0;
+  m.armLength = toShoulder + track.arc[wrist];
+}
+
+void findLandmarks(const Tape& tape, BodyLandmarks& l) {
+  const double floor = tape.floor();
+  l.crotch = crotchHeight(tape) - floor;
+  l.armpit = armpitHeight(tape, floor + l.crotch) - floor;
+  const auto girth = [&](double y) { return tape.girth(y); };
+  l.neck =
+      tape.best(floor + l.armpit + tape.scaled(0.08), floor + tape.stature() - tape.scaled(0.12), -1, girth).height -
+      floor;
+  l.shoulder = 0.5 * (l.armpit + l.neck);
+  const auto front = [&](double y) { return tape.front(y); };
+  // fullest and narrowest levels in windows anchored on the crotch and the armpits, which move
+  // continuously with the body: the girths then do too, and a fit can meet them
+  l.bust =
+      tape.best(floor + l.armpit - tape.scaled(0.25), floor + l.armpit - tape.scaled(0.02), +1, girth).height - floor;
+  l.waist =
+      tape.best(floor + l.crotch + tape.scaled(0.1), floor + l.armpit - tape.scaled(0.15), -1, girth).height - floor;
+  l.underbust =
+      tape.best(floor + l.bust - 0.6 * (l.bust - l.waist), floor + l.bust - tape.scaled(0.02), -1, front).height -
+      floor;
+  l.hip = tape.best(floor + l.crotch + tape.scaled(0.01), floor + l.waist, +1, girth).height - floor;
+}
+
+double thighGirth(const Tape& tape, double crotch) {
+  double fullest = 0;
+  for (const SectionLoop& loop : tape.loops(tape.floor() + crotch - tape.scaled(0.02)))
+    if (tape.inTorsoBand(loop)) fullest = std::max(fullest, convexPerimeter(loop.points, Vec3::UnitY()));
+  return fullest;
+}
+
+double shoulderWidth(const Tape& tape, double shoulder) {
+  Bounds across;
+  for (const SectionLoop& loop : tape.loops(tape.floor() + shoulder)) {
+    across.extend(loop.bounds.min);
+    across.extend(loop.bounds.max);
+  }
+  return across.empty() ? 0.0 : across.size().x();
+}
+
+}  // namespace
+
+double convexPerimeter(const std::vector<Vec3>& points, const Vec3& normal) {
+  const Vec3 u = normal.unitOrthogonal(), v = normal.normalized().cross(u);
+  std::vector<Vec2> flat;
+  flat.reserve(points.size());
+  for (const Vec3& p : points) flat.emplace_back(p.dot(u), p.dot(v));
+  const std::vector<Vec2> hull = convexHull(std::move(flat));
+  if (hull.size() < 2) return 0.0;
+  double perimeter = 0;
+  for (size_t i = 0; i < hull.size(); ++i) perimeter += (hull[(i + 1) % hull.size()] - hull[i]).norm();
+  return perimeter;
+}
+
+BodyMeasurements measureBody(const TriangleMesh& body) {
+  if (body.vertices.empty() || body.triangles.empty()) throw std::invalid_argument("body: no triangles");
+  const Tape tape(body);
+  BodyMeasurements m;
+  m.stature = tape.stature();
+  BodyLandmarks& l = m.landmarks;
+  findLandmarks(tape, l);
+  const double floor = tape.floor();
+  m.bustGirth = tape.girth(floor + l.bust);
+  m.underbustGirth = tape.girth(floor + l.underbust);
+  m.waistGirth = tape.girth(floor + l.waist);
+  m.hipGirth = tape.girth(floor + l.hip);
+  m.neckGirth = tape.girth(floor + l.neck);
+  m.shoulderWidth = shoulderWidth(tape, l.shoulder);
+  m.thighGirth = thighGirth(tape, l.crotch);
+  m.insideLeg = l.crotch;
+  measureArm(tape, m);
+  return m;
+}
+
+std::vector<std::pair<std::string, double>> BodyMeasurements::named() const {
+  return {{"stature", stature},
+          {"bust_girth", bustGirth},
+          {"underbust_girth", underbustGirth},
+          {"waist_girth", waistGirth},
+          {"hip_girth", hipGirth},
+          {"neck_girth", neckGirth},
+          {"shoulder_width", shoulderWidth},
+          {"upper_arm_girth", upperArmGirth},
+          {"thigh_girth", thighGirth},
+          {"inside_leg", insideLeg},
+          {"arm_length", armLength}};
+}
+
+double BodyMeasurements::byName(const std::string& key) const {
+  for (const auto& [name, value] : named())
+    if (name == key) return value;
+  throw std::invalid_argument("no measurement named '" + key + "'");
+}
+
+}  // namespace figment
