@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # Installs what is missing (Debian packages), configures once and builds incrementally.
 # Shared by the README's two commands and by CI; fast and quiet on a second run.
+#   scripts/setup.sh                 everything: every program, the tests and their tools
+#   scripts/setup.sh TARGET...       only those build targets (the README's first command:
+#                                    figment-view), without the tests' own tools
 set -euo pipefail
 cd "$(dirname "$0")/.."
+targets=("$@")
 
 # libpng-dev: PNG files written byte for byte (io/PngFile); python3-pivy: the guard's
 # call from a pivy program (tests/guard/test_GuardC.py). libcpp-httplib-dev: figment-serve's
@@ -30,9 +34,9 @@ if ((${#missing[@]})); then
 fi
 
 # The validator at the version and integrity hash package-lock.json pins; again only when
-# the lock file changed since.
-if [ ! -f tools/gltf/node_modules/.package-lock.json ] ||
-  [ tools/gltf/package-lock.json -nt tools/gltf/node_modules/.package-lock.json ]; then
+# the lock file changed since (the tests use it: not for a build of named targets).
+if ((${#targets[@]} == 0)) && { [ ! -f tools/gltf/node_modules/.package-lock.json ] ||
+  [ tools/gltf/package-lock.json -nt tools/gltf/node_modules/.package-lock.json ]; }; then
   (cd tools/gltf && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
 fi
 
@@ -40,4 +44,4 @@ build=${FIGMENT_BUILD_DIR:-build}
 [ -f "$build/CMakeCache.txt" ] || cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 # MakeHuman's CC0 body model (docs/bodies.md), where the build looks for it by default.
 python3 scripts/fetch-makehuman.py "$build/data/makehuman"
-cmake --build "$build" -j "$(nproc)" | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
+cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
