@@ -12,7 +12,7 @@ namespace figment {
 
 ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
                          std::shared_ptr<const Collider> body)
-    : parameters_(parameters), body_(std::move(body)) {
+    : parameters_(parameters), body_(std::move(body)), edges_(garment) {
   parameters_.validate();
   model_ = std::make_unique<ClothModel>(garment, parameters_);
   x_ = garment.vertices;
@@ -25,7 +25,7 @@ ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& par
     body_ = broadPhase_;
   }
   if (parameters_.integrator == Integrator::Implicit)
-    implicit_ = std::make_unique<ImplicitEuler>(*model_, parameters_, body_);
+    implicit_ = std::make_unique<ImplicitEuler>(*model_, parameters_, body_, edges_);
 }
 
 ClothSolver::~ClothSolver() = default;
@@ -118,7 +118,14 @@ void ClothSolver::step() {
   if (implicit_) return stepImplicit();
   const double dt = parameters_.timeStep;
   const size_t n = x_.size();
+  const ClothModel::LimiterCounts before = model_->limiterCounts();
   integrate(dt);
+  const ClothModel::LimiterCounts& after = model_->limiterCounts();
+  const double evaluations = static_cast<double>(after.evaluations - before.evaluations);
+  if (evaluations > 0.0) {
+    lastStepClampedShare_ = (after.clampedSections - before.clampedSections) / (evaluations * model_->sections().size());
+    lastStepLimitedShare_ = (after.limitedNodes - before.limitedNodes) / (evaluations * model_->nodeCount());
+  }
   double fastest = 0.0;
   for (size_t i = 0; i < n; ++i) {
     if (pinned_[i]) continue;  // held: no acceleration, no velocity
@@ -210,6 +217,10 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   result.simulatedTime = time_;
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   result.atRest = atRest();
+  result.maxSpeed = maxSpeed();
+  result.maxStretch = maxStretch();
+  result.clampedSectionShareAtEnd = lastStepClampedShare_;
+  result.limitedNodeShareAtEnd = lastStepLimitedShare_;
   if (implicit_) result.implicitCosts = implicit_->costs().since(costsBefore);
   const ClothModel::LimiterCounts& after = model_->limiterCounts();
   const double evaluations = static_cast<double>(after.evaluations - before.evaluations);

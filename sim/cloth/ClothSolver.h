@@ -15,10 +15,17 @@
 //     into the body is removed and friction acts on the tangential velocity;
 //  4. blow-up check (non-finite values, speed > kBlowUpSpeed), then the at-rest rule.
 // Integrator::Implicit replaces steps 1-3 with one backward Euler step whose solve holds
-// the contacts (sim/cloth/implicit/ImplicitEuler.h); its at-rest speed is |x' - x| / dt.
+// the contacts (sim/cloth/implicit/ImplicitEuler.h), under its step control (a step
+// that stretched an edge to breaking is taken again as halves); its at-rest speed is
+// |x' - x| / dt.
+//
+// A run ends with what its verdict needs (sim/cloth/DrapeVerdict.h): at rest or not,
+// the fastest node, the most stretched edge, whether a stability measure still acted
+// in the last step, what the step control did.
 
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/EdgeStretch.h"
 #include "sim/cloth/implicit/ImplicitStepCosts.h"
 #include "sim/collision/BroadPhaseCollider.h"
 #include "sim/collision/Collider.h"
@@ -50,6 +57,15 @@ struct DrapeResult {
   double clampedSectionShare = 0.0;
   double limitedNodeShare = 0.0;
   ImplicitStepCosts implicitCosts;  // Integrator::Implicit's steps; zeros for the others
+  // At the run's end: the fastest node (m/s), the largest edge stretch (length over rest
+  // length, EdgeStretch.h), and the shares of the sections whose strain was clamped and
+  // of the nodes whose acceleration the limiter cut in the last step (the explicit
+  // integrators'; the shape it ended in is then held by a stability measure, not by the
+  // model's forces alone).
+  double maxSpeed = 0.0;
+  double maxStretch = 1.0;
+  double clampedSectionShareAtEnd = 0.0;
+  double limitedNodeShareAtEnd = 0.0;
 };
 
 // Thrown when the simulation blows up (non-finite values): names step, dt and method.
@@ -95,6 +111,12 @@ class ClothSolver {
   double time() const;
   int iterations() const;
   double maxSpeed() const;
+  // The largest edge stretch now (EdgeStretch::largest).
+  double maxStretch() const { return edges_.largest(x_); }
+  // The shares of the sections clamped and of the nodes limited in the last step (per
+  // force evaluation; zeros for the implicit integrator).
+  double lastStepClampedShare() const { return lastStepClampedShare_; }
+  double lastStepLimitedShare() const { return lastStepLimitedShare_; }
   // Integrator::Implicit's costs since construction (zeros for the others).
   ImplicitStepCosts implicitCosts() const;
   // The broad phase in front of the body (null without a body or with it off).
@@ -105,7 +127,9 @@ class ClothSolver {
   ClothParameters parameters_;
   std::shared_ptr<const Collider> body_;
   std::shared_ptr<BroadPhaseCollider> broadPhase_;  // body_ itself, when parameters_.broadPhase
+  EdgeStretch edges_;  // the garment's, at rest
   std::vector<Vec3> x_, v_;
+  double lastStepClampedShare_ = 0.0, lastStepLimitedShare_ = 0.0;
   double time_ = 0.0;
   int iterations_ = 0;
   double restSince_ = -1.0;  // time the cloth became slower than the threshold; -1: moving

@@ -196,6 +196,10 @@ DrapeResult ProgressiveDrape::run(const std::function<void(const DrapeProgress&)
   result.simulatedTime = solver_->time();
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   result.atRest = atRest();
+  result.maxSpeed = solver_->maxSpeed();
+  result.maxStretch = solver_->maxStretch();  // the level's sections
+  result.clampedSectionShareAtEnd = solver_->lastStepClampedShare();
+  result.limitedNodeShareAtEnd = solver_->lastStepLimitedShare();
   result.implicitCosts = retiredCosts_;
   result.implicitCosts += solver_->implicitCosts();
   return result;

@@ -5,7 +5,7 @@
 namespace figment {
 
 ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& parameters,
-                             std::shared_ptr<const Collider> body)
+                             std::shared_ptr<const Collider> body, EdgeStretch edges)
     : parameters_(parameters),
       model_(model),
       contacts_(parameters.implicitSolver.contacts == ContactModel::Constraints ? body : nullptr, parameters,
@@ -15,6 +15,7 @@ ImplicitEuler::ImplicitEuler(const ClothModel& model, const ClothParameters& par
   if (parameters.implicitSolver.preconditioner == Preconditioner::TwoLevel) pcg_ = FilteredPcg(system_.matrix);
   if (parameters.implicitSolver.contacts == ContactModel::Penalty)
     penalties_ = std::make_unique<ContactPenalty>(std::move(body), parameters, model.nodeCount());
+  edges_ = std::move(edges);
 }
 
 void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
@@ -70,9 +71,9 @@ double lap(Clock::time_point& since) {
 }
 }  // namespace
 
-void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned) {
+void ImplicitEuler::advance(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, double dt,
+                            const std::vector<char>& pinned) {
   Clock::time_point clock = Clock::now();
-  const double dt = parameters_.timeStep;
   const size_t n = x.size();
   const bool firstStep = steps_++ == 0;
   xStart_ = x;
@@ -104,6 +105,36 @@ void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, c
   if (penalties_) penalties_->finish(xStart_, dt, firstStep, x, v);
   else contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
   costs_.contactSeconds += lap(clock);
+}
+
+void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned) {
+  controlledStep(x, v, t, parameters_.timeStep, 0, pinned);
+}
+
+void ImplicitEuler::controlledStep(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, double dt, int halvings,
+                                   const std::vector<char>& pinned) {
+  if (edges_.edgeCount() == 0) return advance(x, v, t, dt, pinned);
+  // What a failed step goes back to: one slot is enough, since nothing else is kept
+  // between a step's start and the test of its end.
+  xTried_ = x;
+  vTried_ = v;
+  contactsTried_ = contacts_;
+  if (penalties_) penaltiesTried_ = *penalties_;
+  stepsTried_ = steps_;
+  advance(x, v, t, dt, pinned);
+  if (!edges_.jumped(xTried_, x, kFailStretch, kFailGrowth)) return;
+  if (halvings == kMaxHalvings) {
+    ++costs_.failedSteps;  // kept: a smaller step is not tried
+    return;
+  }
+  if (halvings == 0) ++costs_.halvedSteps;
+  x = xTried_;
+  v = vTried_;
+  contacts_ = *contactsTried_;
+  if (penalties_) *penalties_ = *penaltiesTried_;
+  steps_ = stepsTried_;
+  controlledStep(x, v, t, 0.5 * dt, halvings + 1, pinned);
+  controlledStep(x, v, t + 0.5 * dt, 0.5 * dt, halvings + 1, pinned);
 }
 
 }  // namespace figment

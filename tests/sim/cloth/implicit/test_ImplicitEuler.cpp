@@ -1,7 +1,10 @@
 // The implicit integrator as a drape: large steps onto a body end outside it and at
-// rest, pins hold, and the thread count does not change the result.
+// rest, pins hold, the thread count does not change the result, and the step control
+// takes a step that would tear the cloth again as halves.
 #include "support/TestMeshes.h"
 #include "sim/cloth/ClothSolver.h"
+#include "sim/cloth/EdgeStretch.h"
+#include "sim/cloth/implicit/ImplicitEuler.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/PlaneCollider.h"
 
@@ -172,4 +175,65 @@ TEST(ImplicitEuler, RejectsABadSolverToleranceNamingTheField) {
   p.implicitSolver.tolerance = 1e-3;
   p.implicitSolver.maxIterations = 0;
   EXPECT_THROW(ClothSolver(meshes::grid(2, 2, 0.1, 0.1), p, nullptr), std::invalid_argument);
+}
+
+// The step control (ImplicitEuler.h). At 0.2 s a sheet dropped on the ball overshoots
+// in one linearised step, stretching edges to several times their length; the
+// controlled step takes such a step again as halves, so no step it keeps jumps (an
+// edge past 1.5 of its rest length, grown by more than 1 of it within the step).
+TEST(ImplicitEuler, AStepThatWouldTearTheSheetIsTakenAgainAsHalves) {
+  const ClothParameters p = implicitDrape(0.2);
+  const TriangleMesh sheet = sheetAboveBall();
+  const EdgeStretch edges(sheet);
+  const ClothModel model(sheet, p);
+  const std::vector<char> pinned(sheet.vertices.size(), 0);
+  ImplicitEuler uncontrolled(model, p, ball()), controlled(model, p, ball(), edges);
+  std::vector<Vec3> x = sheet.vertices, v(x.size(), Vec3::Zero()), y = x, w = v;
+  double worstUncontrolled = 1.0;
+  for (int step = 0; step < 5; ++step) {
+    uncontrolled.step(x, v, step * p.timeStep, pinned);
+    worstUncontrolled = std::max(worstUncontrolled, edges.largest(x));
+    const std::vector<Vec3> before = y;
+    controlled.step(y, w, step * p.timeStep, pinned);
+    EXPECT_FALSE(edges.jumped(before, y, ImplicitEuler::kFailStretch, ImplicitEuler::kFailGrowth)) << "step " << step;
+  }
+  EXPECT_GT(worstUncontrolled, 3.0);  // the control's control: without it the sheet shreds
+  EXPECT_GT(controlled.costs().halvedSteps, 0);
+  EXPECT_EQ(controlled.costs().failedSteps, 0);
+  EXPECT_GT(controlled.costs().steps, 5);  // halves and the failed tries count as steps
+  EXPECT_LT(edges.largest(y), 1.5);
+}
+
+// A step the control does not reject is the uncontrolled step, bit for bit (at 1/20 s
+// the sheet's edges stay under 1.3 times their length).
+TEST(ImplicitEuler, StepsThatDoNotJumpAreTheUncontrolledStepsExactly) {
+  const ClothParameters p = implicitDrape(0.05);
+  const TriangleMesh sheet = sheetAboveBall();
+  const ClothModel model(sheet, p);
+  const std::vector<char> pinned(sheet.vertices.size(), 0);
+  ImplicitEuler uncontrolled(model, p, ball()), controlled(model, p, ball(), EdgeStretch(sheet));
+  std::vector<Vec3> x = sheet.vertices, v(x.size(), Vec3::Zero()), y = x, w = v;
+  for (int step = 0; step < 40; ++step) {
+    uncontrolled.step(x, v, step * p.timeStep, pinned);
+    controlled.step(y, w, step * p.timeStep, pinned);
+  }
+  EXPECT_EQ(controlled.costs().halvedSteps, 0);
+  EXPECT_EQ(x, y);
+  EXPECT_EQ(v, w);
+}
+
+// A step that jumps however small it is taken (here the drape's first step pulls a node
+// placed 1 m from its neighbours back: a jump at any step) is kept at the smallest
+// step and counted, never halved without end.
+TEST(ImplicitEuler, AStepThatFailsAtTheSmallestStepIsKeptAndCounted) {
+  const ClothParameters p = implicitDrape(0.05);
+  TriangleMesh strip = meshes::grid(2, 4, 0.1, 0.3);
+  const ClothModel model(strip, p);
+  ImplicitEuler controlled(model, p, nullptr, EdgeStretch(strip));
+  std::vector<Vec3> x = strip.vertices, v(x.size(), Vec3::Zero());
+  v.back() = Vec3(0, 0, 1e3);  // m/s: far past any edge in any step of 0.05 / 16 s
+  controlled.step(x, v, 0.0, std::vector<char>(x.size(), 0));
+  EXPECT_EQ(controlled.costs().halvedSteps, 1);
+  EXPECT_GE(controlled.costs().failedSteps, 1);
+  EXPECT_LE(controlled.costs().steps, (2 << ImplicitEuler::kMaxHalvings) - 1);  // every try of the halving tree
 }

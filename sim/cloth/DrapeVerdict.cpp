@@ -1,0 +1,42 @@
+#include "sim/cloth/DrapeVerdict.h"
+
+#include "sim/core/ParameterChecks.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace figment {
+
+namespace {
+// `value` with three significant digits: figures to read, not to reproduce.
+std::string figure(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
+}  // namespace
+
+std::string DrapeVerdict::describe() const {
+  std::vector<std::string> parts;
+  if (!atRest)
+    parts.push_back("not at rest after maxTime " + formatNumber(maxTime) + " s (max speed " + figure(maxSpeed) +
+                    " m/s)");
+  if (tore())
+    parts.push_back("torn: an edge at " + figure(maxStretch) + " times its rest length (bound " +
+                    formatNumber(kTearStretch) + ")");
+  if (limitedNodeShareAtEnd > 0.0)
+    parts.push_back("limited: the acceleration limiter cut " + figure(100.0 * limitedNodeShareAtEnd) +
+                    " % of the nodes in the last step");
+  if (clampedSectionShareAtEnd > 0.0)
+    parts.push_back("limited: the strain clamping held " + figure(100.0 * clampedSectionShareAtEnd) +
+                    " % of the sections in the last step");
+  if (failedSteps > 0)
+    parts.push_back(std::to_string(failedSteps) + " implicit step" + (failedSteps == 1 ? "" : "s") +
+                    " still stretched an edge past " + formatNumber(kTearStretch) +
+                    " at the step control's smallest step (" + std::to_string(halvedSteps) + " halved)");
+  std::string line;
+  for (const std::string& part : parts) line += (line.empty() ? "" : "; ") + part;
+  return line;
+}
+
+}  // namespace figment
