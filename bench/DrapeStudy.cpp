@@ -26,10 +26,13 @@ void report(const std::string& method, bool broadPhase, int run, const session::
   const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
   csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
       << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0) << ',' << perSecond
-      << '\n';
+      << ',' << (stats.verdict.empty() ? 1 : 0) << ',' << stats.maxStretch << ',' << stats.halvedSteps << ','
+      << stats.failedSteps << '\n';
   std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " " << stats.triangles << " triangles, "
             << stats.iterations << " iterations, " << stats.simulatedSeconds << " s simulated in "
-            << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest") << "\n";
+            << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest")
+            << (stats.halvedSteps > 0 ? ", " + std::to_string(stats.halvedSteps) + " steps halved" : "")
+            << (stats.verdict.empty() ? ", clean" : "; not clean: " + stats.verdict) << "\n";
 }
 
 // Runs every engine options.repeat times against the body they have now; one CSV row
@@ -56,7 +59,8 @@ void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOpti
 
 // Times the engines against each body of options.bodies in turn; "" or the error.
 std::string timeEveryBody(const DrapeStudyOptions& options, session::SceneSession& session, std::ostream& csv) {
-  csv << "body,broad_phase,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s\n";
+  csv << "body,broad_phase,run,garment,triangles,iterations,simulated_s,wall_s,at_rest,iterations_per_s,clean,"
+         "max_edge_stretch,halved_steps,failed_steps\n";
   const std::vector<ClothEngine*>& engines = session.engines();
   std::vector<SoNode*> sceneBodies;
   for (ClothEngine* engine : engines) sceneBodies.push_back(engine->body.getValue());

@@ -1,6 +1,7 @@
 #include "session/SceneSession.h"
 
 #include "nodes/SceneSearch.h"
+#include "nodes/body/Mannequin.h"
 #include "session/SceneStaging.h"
 
 #include "guard/Guard.h"
@@ -23,6 +24,26 @@ CollisionBody::Description describe(SoNode* body) {
   return collisionBody ? collisionBody->describeBody() : CollisionBody::Description{"none", {}};
 }
 
+// The method that ran (with a tolerance, the picked one's), else (nothing ran) the fields'.
+DrapeMethod methodOf(ClothEngine& engine, const ClothEngine::RunStats& run) {
+  if (!run.integrator.empty())
+    return {run.integrator, run.timeStep, run.strainLimit, run.accelerationLimiter, run.accelerationLimit,
+            run.contactModel, run.maxTime};
+  return {fieldText(engine.integrator),          engine.timeStep.getValue(),
+          engine.strainLimit.getValue(),         fieldText(engine.accelerationLimiter),
+          engine.accelerationLimit.getValue(),   fieldText(engine.contactModel),
+          engine.maxTime.getValue()};
+}
+
+// What the garment collided with: with a tolerance that picked the body's triangles,
+// those (the Mannequin's body mesh); else the engine's body.
+CollisionBody::Description bodyOf(ClothEngine& engine, const ClothEngine::RunStats& run) {
+  SoNode* body = engine.body.getValue();
+  const auto* mannequin = body && body->isOfType(Mannequin::getClassTypeId()) ? static_cast<Mannequin*>(body) : nullptr;
+  if (run.pickedBody == "triangles" && mannequin) return describe(mannequin->body.getValue());
+  return describe(body);
+}
+
 EngineDrape resultOf(ClothEngine& engine) {
   EngineDrape drape;
   drape.engine = &engine;
@@ -30,9 +51,8 @@ EngineDrape resultOf(ClothEngine& engine) {
   drape.label = engine.label();
   drape.run = engine.lastRun();
   drape.error = engine.lastError();
-  drape.method = {fieldText(engine.integrator), engine.timeStep.getValue(), engine.strainLimit.getValue(),
-                  fieldText(engine.accelerationLimiter), engine.accelerationLimit.getValue()};
-  drape.body = describe(engine.body.getValue());
+  drape.method = methodOf(engine, drape.run);
+  drape.body = bodyOf(engine, drape.run);
   return drape;
 }
 
@@ -98,6 +118,13 @@ void SceneSession::checkShapes() {
   // data before anything is drawn or bounded (Coin allocates by the largest index).
   shapeError_ = guard::checkShapes(scene_);
   shapesChecked_ = true;
+}
+
+std::vector<std::string> SceneSession::verdicts() const {
+  std::vector<std::string> lines;
+  for (const EngineDrape& drape : drapes_)
+    if (drape.error.empty() && !drape.run.verdict.empty()) lines.push_back(drape.label + ": " + drape.run.verdict);
+  return lines;
 }
 
 std::string SceneSession::firstError() const {

@@ -11,17 +11,32 @@
 namespace figment::viewer {
 
 namespace {
-// How the drape was integrated and how often the paper's stability measures engaged.
+// How the drape was integrated (the method that ran: with a tolerance, the picked one)
+// and how often the paper's stability measures engaged.
 nlohmann::json method(const session::EngineDrape& drape) {
   const session::DrapeMethod& m = drape.method;
   const bool limited = m.accelerationLimiter != "NONE";
   return {{"integrator", m.integrator},
           {"time_step_s", m.timeStep},
+          {"max_time_s", m.maxTime},
+          {"contact_model", m.contactModel},
           {"strain_limit", m.strainLimit},
           {"clamped_section_share", drape.run.clampedSectionShare},
           {"acceleration_limiter", m.accelerationLimiter},
           {"acceleration_limit_g", limited ? m.accelerationLimit : 0.0},
           {"limited_node_share", drape.run.limitedNodeShare}};
+}
+// How the drape ended (ClothEngine::RunStats): its verdict ("" when clean) and the
+// figures it is made of.
+nlohmann::json verdict(const ClothEngine::RunStats& run) {
+  return {{"clean", run.verdict.empty()},
+          {"text", run.verdict},
+          {"max_speed_m_s", run.maxSpeed},
+          {"max_edge_stretch", run.maxStretch},
+          {"clamped_section_share_at_end", run.clampedSectionShareAtEnd},
+          {"limited_node_share_at_end", run.limitedNodeShareAtEnd},
+          {"halved_steps", run.halvedSteps},
+          {"failed_steps", run.failedSteps}};
 }
 // What the garment collided with: its kind (mesh, mannequin or none) and its parts.
 nlohmann::json body(const CollisionBody::Description& description) {
@@ -42,13 +57,15 @@ std::string writeStatsJson(const std::string& path, const std::string& scene, co
                               {"simulated_s", run.simulatedSeconds},
                               {"wall_s", run.wallSeconds},
                               {"at_rest", run.atRest},
+                              {"verdict", verdict(run)},
                               {"cached", run.fromCache},
                               {"method", method(drape)},
                               {"body", body(drape.body)}};
     // With a tolerance: what the engine picked and the deviation measured for it.
     if (!run.picked.empty())
       garment["picked"] = {{"configuration", run.picked},
-                           {"measured_worst_mean_dev_pct_height", run.pickedDeviation}};
+                           {"measured_worst_mean_dev_pct_height", run.pickedDeviation},
+                           {"passed_over", run.passedOver}};
     // A progressive drape (paper §4): the level it reached, of how many, and its sections.
     // When the end level arrived and how far the garment moved after it (m).
     if (run.levels > 0)

@@ -3,13 +3,16 @@
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]...
 //                [--turntable N] [--frames T0:T1:N] [--wind-force OUT.csv]
 //                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
-//                [--show-volumes] [--stop-at N] [--no-cache] [--export OUT.glb|.gltf|.obj [--export-body]]
+//                [--show-volumes] [--stop-at N] [--no-cache] [--strict]
+//                [--export OUT.glb|.gltf|.obj [--export-body]]
 //   figment-view --list-nodes
 //
 // The scene drapes once, however many images it gives (views, a turntable, or the
 // frames of a time span); every image is written atomically. Every error is one line on
 // stderr, "figment-view: <file or option>: <what>", and a non-zero exit status (2: bad
 // command line, 1: anything else, an exception included); no image or export is left then.
+// A drape that is not clean (its verdict: not at rest, torn, limited, failed steps) is one
+// line too, and with --strict an error.
 
 #include "io/DrapeCache.h"
 #include "nodes/Init.h"
@@ -73,6 +76,7 @@ struct Options {
   bool showVolumes = false;
   bool noCache = false;
   bool listNodes = false;
+  bool strict = false;
   int stopAt = 0;  // steps; 0: no bound
 };
 
@@ -118,12 +122,18 @@ void reportProgress(figment::viewer::ProgressBar& bar, const ClothEngine& engine
                engine.label().c_str(), p.simulatedSeconds, p.maxTime, p.iterations, p.wallSeconds, p.maxSpeed);
 }
 
-void reportFinished(const EngineDrape& drape) {
+// A drape that is not clean says so in one line, however long it took (its verdict,
+// ClothEngine::RunStats::verdict); a clean one only when it took a second or more.
+void reportFinished(const std::string& scene, const EngineDrape& drape) {
   const ClothEngine::RunStats& run = drape.run;
-  if (run.wallSeconds < 1.0) return;  // short runs stay quiet
-  std::fprintf(stderr, "figment-view: %s: %s after %.3g s simulated (%d steps, %.1f s)\n", drape.label.c_str(),
-               run.atRest ? "at rest" : "stopped at maxTime", run.simulatedSeconds, run.iterations,
-               run.wallSeconds);
+  if (!run.verdict.empty()) {
+    std::cerr << "figment-view: " << figment::viewer::printableLine(scene + ": " + drape.label + ": " + run.verdict)
+              << "\n";
+    return;
+  }
+  if (run.wallSeconds < 1.0) return;  // short clean runs stay quiet
+  std::fprintf(stderr, "figment-view: %s: at rest after %.3g s simulated (%d steps, %.1f s)\n", drape.label.c_str(),
+               run.simulatedSeconds, run.iterations, run.wallSeconds);
 }
 
 // Before anything simulates: a Mannequin's fields feed the engines that use it.
@@ -154,7 +164,7 @@ void useDrapeCache(SceneSession& session, bool use) {
 }
 
 // Drapes every engine; its errors come before any image. "" or the first error.
-std::string drapeAll(SceneSession& session) {
+std::string drapeAll(SceneSession& session, const std::string& scene) {
   figment::viewer::ProgressBar bar(stderr);
   // A bar moves a few times a second; the lines of a log once a second.
   figment::DrapeContext& context = session.context();
@@ -167,7 +177,7 @@ std::string drapeAll(SceneSession& session) {
   bar.clear();
   for (const EngineDrape& drape : drapes) {
     if (!drape.error.empty()) return drape.error;
-    reportFinished(drape);
+    reportFinished(scene, drape);
   }
   for (ClothEngine* engine : session.engines())  // the cache's trouble is said, not fatal
     if (!engine->lastCacheMessage().empty())
@@ -260,8 +270,10 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
   if (!plan.frameTimes.empty() || !options.windForce.empty())
     recorder = std::make_unique<DrapeRecorder>(session.sharedContext(), plan.frameTimes,
                                                options.windForce.empty() ? 0.0 : kWindSampleSpacing);
-  std::string error = drapeAll(session);
+  std::string error = drapeAll(session, options.scene);
   if (!error.empty()) return fail(options.scene, error);
+  // --strict: a drape that is not clean (its line said above) is an error; nothing is written.
+  if (options.strict && !session.verdicts().empty()) return 1;
   // The session's guard checked the draped shapes against their data: nothing is staged past it.
   if (!session.shapeError().empty()) return fail(options.scene, session.shapeError());
 
@@ -337,6 +349,10 @@ void describeOptions(CLI::App& app, Options& options) {
                "not those the stencil rule sets for the camera");
   app.add_option("--stop-at", options.stopAt, "Stop every drape after this many steps (if not at rest before)")
       ->check(CLI::PositiveNumber);
+  app.add_flag("--strict", options.strict,
+               "A drape that is not clean (not at rest at maxTime, an edge torn past 1.5 times its rest length, a "
+               "limiter acting at the end, a failed implicit step: each said in one line) is an error: exit 1, "
+               "no image or export");
   app.add_flag("--show-volumes", options.showVolumes,
                "Draw every Mannequin's collision volumes as wireframes over the body");
   app.add_flag("--no-cache", options.noCache,

@@ -12,6 +12,7 @@
 #include "sim/progressive/Decimation.h"
 #include "nodes/SceneFiles.h"
 #include "sim/cloth/ClothSolver.h"
+#include "sim/cloth/DrapeVerdict.h"
 #include "sim/drape/GarmentDrape.h"
 
 #include <Inventor/errors/SoDebugError.h>
@@ -40,6 +41,7 @@ struct ClothEngine::Impl {
   // simulated last. Throws naming the field and value, or the file, that cannot be used.
   std::vector<figment::Vec3> simulate(const ClothEngine& engine, std::vector<figment::Triangle>& sections);
   void recordRun(const figment::DrapeResult& run, int triangles);
+  void recordMethod(const figment::ClothParameters& parameters);
   // The context's drape cache: read an entry into the output, keep a new one.
   bool readCached(const std::string& key, int numRest, std::vector<SbVec3f>& result, std::vector<int32_t>& indices);
   void keep(const std::string& key, const std::vector<SbVec3f>& result, const std::vector<int32_t>& indices);
@@ -152,6 +154,20 @@ std::string ClothEngine::label() const {
 
 namespace {
 
+// What the run's ending says (sim/cloth/DrapeVerdict.h): "" when clean.
+std::string verdictOf(const ClothEngine::RunStats& run) {
+  figment::DrapeVerdict verdict;
+  verdict.atRest = run.atRest;
+  verdict.maxTime = run.maxTime;
+  verdict.maxSpeed = run.maxSpeed;
+  verdict.maxStretch = run.maxStretch;
+  verdict.clampedSectionShareAtEnd = run.clampedSectionShareAtEnd;
+  verdict.limitedNodeShareAtEnd = run.limitedNodeShareAtEnd;
+  verdict.halvedSteps = run.halvedSteps;
+  verdict.failedSteps = run.failedSteps;
+  return verdict.describe();
+}
+
 // coordIndex for triangles, each ended by -1.
 std::vector<int32_t> faceIndices(const std::vector<figment::Triangle>& triangles) {
   std::vector<int32_t> indices;
@@ -173,6 +189,34 @@ void ClothEngine::Impl::recordRun(const figment::DrapeResult& run, int triangles
   stats.assemblySeconds = run.implicitCosts.assemblySeconds;
   stats.solveSeconds = run.implicitCosts.solveSeconds;
   stats.contactSeconds = run.implicitCosts.contactSeconds;
+  stats.halvedSteps = run.implicitCosts.halvedSteps;
+  stats.failedSteps = run.implicitCosts.failedSteps;
+  stats.maxSpeed = run.maxSpeed;
+  stats.maxStretch = run.maxStretch;
+  stats.clampedSectionShareAtEnd = run.clampedSectionShareAtEnd;
+  stats.limitedNodeShareAtEnd = run.limitedNodeShareAtEnd;
+}
+
+void ClothEngine::Impl::recordMethod(const figment::ClothParameters& parameters) {
+  using figment::AccelerationLimiter;
+  using figment::Integrator;
+  switch (parameters.integrator) {
+    case Integrator::ExplicitEuler: stats.integrator = "EULER"; break;
+    case Integrator::SymplecticEuler: stats.integrator = "SYMPLECTIC"; break;
+    case Integrator::Heun: stats.integrator = "HEUN"; break;
+    case Integrator::Implicit: stats.integrator = "IMPLICIT"; break;
+  }
+  stats.contactModel =
+      parameters.implicitSolver.contacts == figment::ContactModel::Penalty ? "PENALTY" : "CONSTRAINTS";
+  switch (parameters.accelerationLimiter) {
+    case AccelerationLimiter::None: stats.accelerationLimiter = "NONE"; break;
+    case AccelerationLimiter::Clamp: stats.accelerationLimiter = "CLAMP"; break;
+    case AccelerationLimiter::Tanh: stats.accelerationLimiter = "TANH"; break;
+  }
+  stats.timeStep = parameters.timeStep;
+  stats.strainLimit = parameters.strainLimit;
+  stats.accelerationLimit = parameters.accelerationLimit;
+  stats.maxTime = parameters.maxTime;
 }
 
 std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine,
@@ -193,6 +237,8 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     collider = choice.body;
     stats.picked = choice.picked.label();
     stats.pickedDeviation = choice.picked.worstMeanDeviation;
+    stats.pickedBody = choice.picked.body;
+    stats.passedOver = choice.passedOver;
     script.clear();
     if (choice.picked.progressive != "off") {
       mesh = figment::decimate(garment, figment::DecimationOptions{
@@ -203,6 +249,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   } else {
     collider = figment::colliderFromBody(engine.body);
   }
+  recordMethod(parameters);
   if (!script.empty()) {
     const std::string path = figment::resolveSceneFile(script, sceneDirectories);
     if (path.empty()) throw std::runtime_error("progressiveScript \"" + script + "\" not found");
@@ -308,6 +355,7 @@ void ClothEngine::evaluate() {
       if (!key.empty()) impl_->keep(key, result, indices);
     }
   }
+  if (impl_->error.empty()) impl_->stats.verdict = verdictOf(impl_->stats);
   const int n = static_cast<int>(result.size());
   SO_ENGINE_OUTPUT(positions, SoMFVec3f, setNum(n));
   SO_ENGINE_OUTPUT(positions, SoMFVec3f, setValues(0, n, result.data()));

@@ -234,9 +234,32 @@ class ClothEngine : public SoEngine {
     // run that made it, but wallSeconds, which is the time to find and read it.
     bool fromCache = false;
     // With a tolerance: the configuration picked ("" without) and its measured worst
-    // deviation, % of the garment's height.
+    // deviation, % of the garment's height; the body it collided with, as the study names
+    // it (triangles, volumes, capsules or mix); the faster configurations within the
+    // tolerance that this engine could not use, and why ("" when none).
     std::string picked;
     double pickedDeviation = 0.0;
+    std::string pickedBody;
+    std::string passedOver;
+    // The method that ran: the fields' or, with a tolerance, the picked configuration's,
+    // spelt as the fields are (integrator, contactModel, accelerationLimiter; timeStep s,
+    // strainLimit, accelerationLimit multiples of |g|, maxTime s).
+    std::string integrator, contactModel, accelerationLimiter;
+    double timeStep = 0.0, strainLimit = 0.0, accelerationLimit = 0.0, maxTime = 0.0;
+    // How it ended, for its verdict (sim/cloth/DrapeVerdict.h; the session's
+    // EngineDrape::verdict): the fastest node (m/s), the most stretched edge (length over
+    // rest length), the shares of the sections clamped and of the nodes limited in the
+    // last step, and the implicit step control's steps taken again as halves and steps
+    // that failed at its smallest step.
+    double maxSpeed = 0.0, maxStretch = 1.0;
+    double clampedSectionShareAtEnd = 0.0, limitedNodeShareAtEnd = 0.0;
+    long halvedSteps = 0, failedSteps = 0;
+    // The verdict on those: "" when the drape is clean (at rest, no edge past 1.5 times
+    // its rest length, no limiter acting in the last step, no failed implicit step), else what
+    // happened with its figures, one line without the engine's label ("not at rest after
+    // maxTime 5 s (max speed 0.31 m/s); torn: an edge at 2.02 times its rest length
+    // (bound 1.5)"). Set by every drape, a cached one too; "" when none was made.
+    std::string verdict;
   };
   // Reported about once per second of wall time while a simulation runs
   // (DrapeContext::progress).

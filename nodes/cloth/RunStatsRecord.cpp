@@ -21,7 +21,14 @@ bool eachField(Io& io, Stats& s) {
          io.template number<std::int32_t>(s.level) && io.template number<std::int32_t>(s.levels) &&
          io.template number<std::int32_t>(s.sections) && io.template number<double>(s.endLevelSeconds) &&
          io.template number<double>(s.meanMoveAfterEndLevel) && io.template number<double>(s.maxMoveAfterEndLevel) &&
-         io.flag(s.fromCache) && io.text(s.picked) && io.template number<double>(s.pickedDeviation);
+         io.flag(s.fromCache) && io.text(s.picked) && io.template number<double>(s.pickedDeviation) &&
+         io.text(s.pickedBody) && io.text(s.passedOver) && io.text(s.integrator) && io.text(s.contactModel) &&
+         io.text(s.accelerationLimiter) && io.template number<double>(s.timeStep) &&
+         io.template number<double>(s.strainLimit) && io.template number<double>(s.accelerationLimit) &&
+         io.template number<double>(s.maxTime) && io.template number<double>(s.maxSpeed) &&
+         io.template number<double>(s.maxStretch) && io.template number<double>(s.clampedSectionShareAtEnd) &&
+         io.template number<double>(s.limitedNodeShareAtEnd) &&
+         io.template number<std::int64_t>(s.halvedSteps) && io.template number<std::int64_t>(s.failedSteps);
 }
 
 struct FieldWriter {

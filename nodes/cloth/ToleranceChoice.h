@@ -36,10 +36,15 @@ std::vector<int> partsWhereGarmentMeets(const Mannequin& mannequin, const std::v
 struct ToleranceChoice {
   MeasuredConfiguration picked;
   std::shared_ptr<const Collider> body;
+  // The faster configurations within the tolerance this engine cannot use, fastest
+  // first, each with why ("implicit:0.02, triangles, progressive off (the Mannequin's
+  // triangles are its rest pose and size, and it is posed (rotatedJoints))"), "; "
+  // between; "" when none.
+  std::string passedOver;
 };
 
-// Throws std::runtime_error naming the field and value (no configuration within it),
-// or the table file, when there is none to use.
+// Throws std::runtime_error naming the field and value (no configuration within it,
+// and why each within it cannot be used), or the table file, when there is none to use.
 // `garment` is the engine's garment, where it starts.
 ToleranceChoice chooseForTolerance(const ClothEngine& engine, const TriangleMesh& garment, ClothParameters& parameters);
 

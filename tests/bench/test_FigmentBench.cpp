@@ -1,6 +1,7 @@
 // figment-bench reads its scenes through the same session, so the same guard, as figment-view:
 // the bad input of issue 28 is one line and a non-zero exit, and the render study, which
-// rendered without the draw-side check before, refuses a shape indexing past its data.
+// rendered without the draw-side check before, refuses a shape indexing past its data. The
+// drape study says whether each drape is clean.
 
 #include "support/TempDir.h"
 
@@ -78,4 +79,30 @@ TEST_F(FigmentBench, TheRenderStudyRefusesAShapeIndexingPastItsData) {
                                   "  IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n");
   expectOneLine(run("render --scene " + quote(scene) + " --repeat 1 --out " + out()),
                 "faces.iv: IndexedFaceSet: coordIndex[2] = 2147483647 is not a vertex: the coordinates have 3 points");
+}
+
+// The drape study says each drape's verdict: in its CSV (clean, the most stretched edge,
+// the step control's halved and failed steps) and on its line.
+TEST_F(FigmentBench, TheDrapeStudySaysWhetherEachDrapeIsClean) {
+  const std::string scene = write(
+      "cloth.iv",
+      "#Inventor V2.1 ascii\nSeparator {\n"
+      "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+      "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+      "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime 0.01\n"
+      "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n");
+  const std::string stdoutFile = (dir_.path() / "stdout.txt").string();
+  const int raw = std::system((quote(FIGMENT_BENCH_EXECUTABLE) + " drape --scene " + quote(scene) +
+                               " --repeat 1 --out " + out() + " > " + quote(stdoutFile) + " 2> /dev/null")
+                                  .c_str());
+  ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0);
+  std::stringstream said;
+  said << std::ifstream(stdoutFile).rdbuf();
+  EXPECT_NE(said.str().find("; not clean: not at rest after maxTime 0.01 s"), std::string::npos) << said.str();
+  std::ifstream csv(dir_.path() / "out" / "drape.csv");
+  std::string header, row;
+  std::getline(csv, header);
+  std::getline(csv, row);
+  EXPECT_NE(header.find(",clean,max_edge_stretch,halved_steps,failed_steps"), std::string::npos) << header;
+  EXPECT_NE(row.find(",0,1,0,0"), std::string::npos) << row;  // not clean, unstretched, no step control
 }

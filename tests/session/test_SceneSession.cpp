@@ -1,6 +1,7 @@
 // One scene session: a load error is one line; every engine drapes once, in scene order,
 // with its own result and error; staging after the drape simulates nothing again; the
-// guard's shape check runs after the drape and before staging. Two
+// guard's shape check runs after the drape and before staging; a drape that is not clean
+// is one line of verdicts(). Two
 // sessions in one process share nothing: each drapes with its own cache and observers.
 
 #include "io/DrapeCache.h"
@@ -84,6 +85,28 @@ TEST_F(SceneSessionTest, DrapesEveryEngineOnceInSceneOrderWithItsOwnResult) {
   EXPECT_FALSE(session.stagedBox().isEmpty());
   for (const ClothEngine* engine : session.engines())
     EXPECT_EQ(engine->evaluationCount(), 1) << "staging after the drape simulates nothing again";
+}
+
+// The verdicts any front end reads: one line for each drape that is not clean (here two
+// squares stopped mid-fall by maxTime), none for a clean one (weightless, at rest once
+// its window passed) nor for one that failed (its error says what happened).
+TEST_F(SceneSessionTest, SaysWhichDrapesAreNotCleanInOneLineEach) {
+  const std::string scene = dir_.file(
+      "four.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("Falling", "timeStep 0.001") +
+                     cloth("Resting", "timeStep 0.001 maxTime 1 gravity 0 0 0 restWindow 0.005") +
+                     cloth("Broken", "thickness -0.001") + cloth("AlsoFalling", "timeStep 0.002") + "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(scene)) << session.loadError();
+  const std::vector<EngineDrape>& drapes = session.drape();
+  ASSERT_EQ(drapes.size(), 4u);
+  EXPECT_EQ(drapes[1].run.verdict, "");
+  EXPECT_TRUE(drapes[1].run.atRest);
+  EXPECT_EQ(drapes[1].method.maxTime, 1.0);  // the method that ran, its bound included
+  const std::vector<std::string> lines = session.verdicts();
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[0].rfind("ClothEngine 'Falling': not at rest after maxTime 0.01 s (max speed 0.09", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[1].rfind("ClothEngine 'AlsoFalling': not at rest after maxTime 0.01 s", 0), 0u) << lines[1];
+  EXPECT_NEAR(drapes[0].run.maxStretch, 1.0, 1e-6);  // a falling square keeps its shape
 }
 
 TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) {

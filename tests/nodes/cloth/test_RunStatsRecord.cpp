@@ -37,6 +37,21 @@ ClothEngine::RunStats everyFieldSet() {
   s.fromCache = false;
   s.picked = "implicit:0.05, volumes, progressive 0:3000 \xc2\xb5";
   s.pickedDeviation = 0.7;
+  s.pickedBody = "triangles";
+  s.passedOver = "capsules: no capsule volumes";
+  s.integrator = "IMPLICIT";
+  s.contactModel = "PENALTY";
+  s.accelerationLimiter = "TANH";
+  s.timeStep = 0.02;
+  s.strainLimit = 0.1;
+  s.accelerationLimit = 30.0;
+  s.maxTime = 5.0;
+  s.maxSpeed = 0.31;
+  s.maxStretch = 2.02;
+  s.clampedSectionShareAtEnd = 0.25;
+  s.limitedNodeShareAtEnd = 0.035;
+  s.halvedSteps = 6000000000L;  // past 32 bits
+  s.failedSteps = 2;
   return s;
 }
 
@@ -62,6 +77,21 @@ void expectSame(const ClothEngine::RunStats& a, const ClothEngine::RunStats& b) 
   EXPECT_EQ(a.fromCache, b.fromCache);
   EXPECT_EQ(a.picked, b.picked);
   EXPECT_EQ(a.pickedDeviation, b.pickedDeviation);
+  EXPECT_EQ(a.pickedBody, b.pickedBody);
+  EXPECT_EQ(a.passedOver, b.passedOver);
+  EXPECT_EQ(a.integrator, b.integrator);
+  EXPECT_EQ(a.contactModel, b.contactModel);
+  EXPECT_EQ(a.accelerationLimiter, b.accelerationLimiter);
+  EXPECT_EQ(a.timeStep, b.timeStep);
+  EXPECT_EQ(a.strainLimit, b.strainLimit);
+  EXPECT_EQ(a.accelerationLimit, b.accelerationLimit);
+  EXPECT_EQ(a.maxTime, b.maxTime);
+  EXPECT_EQ(a.maxSpeed, b.maxSpeed);
+  EXPECT_EQ(a.maxStretch, b.maxStretch);
+  EXPECT_EQ(a.clampedSectionShareAtEnd, b.clampedSectionShareAtEnd);
+  EXPECT_EQ(a.limitedNodeShareAtEnd, b.limitedNodeShareAtEnd);
+  EXPECT_EQ(a.halvedSteps, b.halvedSteps);
+  EXPECT_EQ(a.failedSteps, b.failedSteps);
 }
 
 }  // namespace

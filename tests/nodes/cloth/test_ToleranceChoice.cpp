@@ -57,10 +57,18 @@ TEST_F(ToleranceChoice, DrapesByTheFastestMeasuredWithinItAndSaysWhich) {
   EXPECT_TRUE(engine.lastRun().atRest);
 
   engine.tolerance = 0.65;
+  engine.timeStep = 0.1;  // the pick's step replaces the field's
   drape(engine);
   ASSERT_EQ(engine.lastError(), "");
-  EXPECT_EQ(engine.lastRun().picked, "implicit:0.05, triangles, progressive off");
-  EXPECT_EQ(engine.lastRun().levels, 0);
+  const ClothEngine::RunStats& run = engine.lastRun();
+  EXPECT_EQ(run.picked, "implicit:0.05, triangles, progressive off");
+  EXPECT_EQ(run.levels, 0);
+  // The method that ran is the pick's, not the fields' (what --stats reports).
+  EXPECT_EQ(run.pickedBody, "triangles");
+  EXPECT_EQ(run.integrator, "IMPLICIT");
+  EXPECT_DOUBLE_EQ(run.timeStep, 0.05);
+  EXPECT_NEAR(run.simulatedSeconds, run.iterations * 0.05, 1e-9);
+  EXPECT_EQ(run.passedOver, "");  // nothing faster within 0.65 % was refused
 }
 
 TEST_F(ToleranceChoice, AToleranceNothingMeetsOrANegativeOneIsOneLineNamingIt) {
@@ -68,7 +76,7 @@ TEST_F(ToleranceChoice, AToleranceNothingMeetsOrANegativeOneIsOneLineNamingIt) {
   ClothEngine& engine = *scene.engine();
   engine.tolerance = 0.01;
   drape(engine);
-  EXPECT_NE(engine.lastError().find("tolerance = 0.010000: no configuration"), std::string::npos) << engine.lastError();
+  EXPECT_NE(engine.lastError().find("tolerance = 0.01: no configuration"), std::string::npos) << engine.lastError();
   EXPECT_EQ(std::count(engine.lastError().begin(), engine.lastError().end(), '\n'), 0);
   engine.tolerance = -1.0;
   drape(engine);
@@ -117,6 +125,10 @@ TEST(ToleranceChoiceMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles
   ASSERT_EQ(engine.lastError(), "");
   EXPECT_EQ(engine.lastRun().picked, "implicit:0.05, mix, progressive off");
   EXPECT_TRUE(engine.lastRun().atRest);
+  // The faster triangles were passed over, and the run says why.
+  EXPECT_EQ(engine.lastRun().passedOver,
+            "implicit:0.05, triangles, progressive off (the Mannequin's triangles are its rest pose and size, and it is "
+            "posed (rotatedJoints))");
   // At rest outside the posed body's volumes (the mix's volume parts and more).
   int inside = 0;
   figment::Contact contact;
