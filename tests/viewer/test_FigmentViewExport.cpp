@@ -27,13 +27,14 @@ struct ProcessResult {
   std::string err;
 };
 
-// A square of cloth falling for a hundredth of a second, drawn by a ClothingLayer.
+// A square of cloth, weightless and so at rest once its rest window has passed (a clean
+// drape: an error's line is the only one), drawn by a ClothingLayer.
 constexpr const char* kCloth =
     "#Inventor V2.1 ascii\nSeparator {\n"
     "  Material { diffuseColor 0.1 0.3 0.8 }\n"
     "  Coordinate3 { point = DEF Drape ClothEngine {\n"
     "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-    "    coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 } . positions }\n"
+    "    coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01  gravity 0 0 0  restWindow 0.005 } . positions }\n"
     "  DEF Layer ClothingLayer { coordIndex [ 0 3 2 1 -1 ] }\n"
     "}\n";
 
