@@ -175,10 +175,11 @@ std::string drapeAll(SceneSession& session, const std::string& scene) {
   const std::vector<EngineDrape>& drapes = session.drape();
   context.progress = {};
   bar.clear();
-  for (const EngineDrape& drape : drapes) {
+  for (const EngineDrape& drape : drapes)
     if (!drape.error.empty()) return drape.error;
-    reportFinished(scene, drape);
-  }
+  // The guard's check of the draped shapes: its error is the one line, before any verdict.
+  if (!session.shapeError().empty()) return session.shapeError();
+  for (const EngineDrape& drape : drapes) reportFinished(scene, drape);
   for (ClothEngine* engine : session.engines())  // the cache's trouble is said, not fatal
     if (!engine->lastCacheMessage().empty())
       std::fprintf(stderr, "figment-view: %s: %s\n", engine->label().c_str(), engine->lastCacheMessage().c_str());
@@ -270,12 +271,12 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
   if (!plan.frameTimes.empty() || !options.windForce.empty())
     recorder = std::make_unique<DrapeRecorder>(session.sharedContext(), plan.frameTimes,
                                                options.windForce.empty() ? 0.0 : kWindSampleSpacing);
+  // The engines' errors and the guard's check of the draped shapes (nothing is staged
+  // past it) come before any verdict line.
   std::string error = drapeAll(session, options.scene);
   if (!error.empty()) return fail(options.scene, error);
   // --strict: a drape that is not clean (its line said above) is an error; nothing is written.
   if (options.strict && !session.verdicts().empty()) return 1;
-  // The session's guard checked the draped shapes against their data: nothing is staged past it.
-  if (!session.shapeError().empty()) return fail(options.scene, session.shapeError());
 
   WrittenImages outputs;
   if (!options.exportPath.empty()) {

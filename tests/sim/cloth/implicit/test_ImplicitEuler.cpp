@@ -180,7 +180,7 @@ TEST(ImplicitEuler, RejectsABadSolverToleranceNamingTheField) {
 // The step control (ImplicitEuler.h). At 0.2 s a sheet dropped on the ball overshoots
 // in one linearised step, stretching edges to several times their length; the
 // controlled step takes such a step again as halves, so no step it keeps jumps (an
-// edge past 1.5 of its rest length, grown by more than 1 of it within the step).
+// edge past 1.5 of its rest length, grown by more than 3 of it within the step).
 TEST(ImplicitEuler, AStepThatWouldTearTheSheetIsTakenAgainAsHalves) {
   const ClothParameters p = implicitDrape(0.2);
   const TriangleMesh sheet = sheetAboveBall();
