@@ -8,7 +8,7 @@
 //    and knitted cloth breaks or lets go of its seams long before; the shipped drapes end
 //    with their most stretched edge at 1.03 to 1.14 times its rest length, and every
 //    drape seen torn or shredded (a sleeve pulled off a raised arm: 2.0; the default
-//    dress at a 0.2 s implicit step: 2.7) past 1.5;
+//    dress at a 0.2 s implicit step before the step control: 2.7) past 1.5;
 //  - limited: the strain clamping or the acceleration limiter (the explicit
 //    integrators' stability measures) still acted in the last step, so the shape it
 //    ended in is held by a limiter, not by the model's forces; one that only acted on
