@@ -11,7 +11,7 @@ targets=("$@")
 # libpng-dev: PNG files written byte for byte (io/PngFile); python3-pivy: the guard's
 # call from a pivy program (tests/guard/test_GuardC.py). libcpp-httplib-dev: figment-serve's
 # HTTP; chromium, chromium-driver, python3-selenium: its page tested in a real browser
-# (tests/serve/test_page.py); wrk: bench/serve-load.sh.
+# (tests/serve/scenarios/test_page.py); wrk: bench/serve-load.sh.
 packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev

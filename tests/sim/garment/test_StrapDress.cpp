@@ -1,7 +1,7 @@
 // The strap dress on a figure built from boxes (Mannequin.h), where distances to the body are
 // exact: a connected, consistently wound mesh with a boundary, outside the body everywhere by
 // the clearance, its straps over the shoulders. The same dress on the default body is tested
-// in tests/io/test_DressOnBody.cpp.
+// in tests/io/scenarios/test_DressOnBody.cpp.
 #include "support/BoxFigure.h"
 #include "support/DressChecks.h"
 #include "support/MeshChecks.h"

@@ -99,7 +99,7 @@ TEST(AccelerationLimiter, GravityAndDampingPassIt) {
   // The limiter cuts the elastic pull only. A sheet in free fall under a 0.1 g cap falls
   // at g; an unstrained sheet whose nodes move apart (a strain rate, no strain) feels its
   // strain-rate damping in full. (Cutting the damping let Heun amplify the fast membrane
-  // modes: the flared skirt shredded, tests/nodes/cloth/test_SkirtUnderLimiters.cpp.)
+  // modes: the flared skirt shredded, tests/nodes/scenarios/test_SkirtUnderLimiters.cpp.)
   const TriangleMesh sheet = meshes::grid(2, 2, 0.1, 0.1);
   ClothParameters p;
   p.accelerationLimiter = AccelerationLimiter::Clamp;

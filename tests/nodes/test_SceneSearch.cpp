@@ -1,12 +1,23 @@
+// nodes/SceneSearch: the scene search in one place.
+//
 // figment::findClothEngines: every engine of a scene once, in scene order, wherever it lies
 // (under a Switch that is off, or reached only through a field connection). It walks each node
 // once: a search action made a path for every way to reach a node, and 65,520 paths through
 // shared groups took 4.9 s (found by tests/fuzz/fuzz_scene).
+//
+// figment::fullTail (nodes/SceneSearch.h): the last nodes of a search's path, hidden children
+// included, without Coin's static_cast<SoFullPath*> idiom. That cast was undefined behaviour
+// (a search's paths are SoPaths), and the sanitizer build stopped on it in findClothEngines,
+// the stencil rule and the viewer's staging.
 #include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "support/SceneTestSupport.h"
 
+#include <Inventor/SoPath.h>
+#include <Inventor/nodes/SoCube.h>
+#include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoSwitch.h>
 
 #include <gtest/gtest.h>
 
@@ -31,6 +42,31 @@ TEST(FindClothEngines, FindsEachEngineOnceInSceneOrder) {
   EXPECT_STREQ(engines[0]->getName().getString(), "A");
   EXPECT_STREQ(engines[1]->getName().getString(), "B");
   EXPECT_STREQ(engines[2]->getName().getString(), "C");
+}
+
+}  // namespace
+
+
+namespace {
+
+TEST(FullTail, GivesTheLastNodesOfASearchPathAndNullPastItsStart) {
+  figment::test::initCoin();
+  figment::test::SceneRoot root(new SoSeparator);
+  root->ref();
+  auto* off = new SoSwitch;  // whichChild -1: found only by searching everything
+  auto* group = new SoGroup;
+  auto* cube = new SoCube;
+  root->addChild(off);
+  off->addChild(group);
+  group->addChild(cube);
+
+  const SoPathList paths = figment::findAll(root.get(), SoCube::getClassTypeId());
+  ASSERT_EQ(paths.getLength(), 1);
+  EXPECT_EQ(figment::fullTail(paths[0]), cube);
+  EXPECT_EQ(figment::fullTail(paths[0], 1), group);
+  EXPECT_EQ(figment::fullTail(paths[0], 3), root.get());
+  EXPECT_EQ(figment::fullTail(paths[0], 4), nullptr);
+  EXPECT_EQ(figment::fullTail(paths[0], -1), nullptr);
 }
 
 }  // namespace
