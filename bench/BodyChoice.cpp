@@ -1,13 +1,13 @@
 #include "BodyChoice.h"
 
-#include "nodes/SceneSearch.h"
-#include "nodes/body/Mannequin.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoFile.h>
 
 #include <filesystem>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/body/Mannequin.h"
 
 namespace figment::bench {
 

@@ -1,14 +1,5 @@
 #include "CollisionStudy.h"
 
-#include "CsvFile.h"
-#include "Statistics.h"
-#include "io/AtomicFile.h"
-#include "io/MeshImport.h"
-#include "sim/body/BodyParts.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/body/SkeletonEstimate.h"
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,13 +10,24 @@
 #include <random>
 #include <variant>
 
+#include "CsvFile.h"
+#include "Statistics.h"
+#include "io/AtomicFile.h"
+#include "io/MeshImport.h"
+#include "sim/body/BodyParts.h"
+#include "sim/body/SkeletonEstimate.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
+
 namespace figment::bench {
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
 
 struct Row {
   double meanGap = 0.0, maxGap = 0.0, enclosed = 0.0, queryNs = 0.0, fitSeconds = 0.0;
@@ -82,8 +84,10 @@ void measureGaps(const std::vector<Volume>& volumes, const std::vector<Vec3>& ve
     double deepest = -1.0, nearestOutside = std::numeric_limits<double>::infinity();
     for (const Volume& volume : volumes) {
       const double d = volume.nearest(v).distance;  // signed by the inside test
-      if (d <= 1e-9) deepest = std::max(deepest, -d);
-      else nearestOutside = std::min(nearestOutside, d);
+      if (d <= 1e-9)
+        deepest = std::max(deepest, -d);
+      else
+        nearestOutside = std::min(nearestOutside, d);
     }
     const double gap = deepest >= 0.0 ? deepest : nearestOutside;
     inside += deepest >= 0.0;
@@ -191,8 +195,8 @@ PartRows studyPart(const PartMesh& part, const CollisionStudyOptions& options) {
 // The part's three CSV lines.
 std::string csvLines(const PartMesh& part, const PartRows& rows) {
   std::string lines;
-  for (const auto& [method, row] : {std::pair<const char*, const Row&>{"capsule", rows.capsule},
-                                    {"radial", rows.radial}, {"exact", rows.exact}}) {
+  for (const auto& [method, row] :
+       {std::pair<const char*, const Row&>{"capsule", rows.capsule}, {"radial", rows.radial}, {"exact", rows.exact}}) {
     char line[256];
     const char* kind = method == std::string("radial") && rows.fellBack ? "capsule" : method;
     std::snprintf(line, sizeof line, "%s,%s,%.3f,%.3f,%.2f,%.0f,%.3f,%zu,%d,%s\n", part.name.c_str(), method,
@@ -205,11 +209,12 @@ std::string csvLines(const PartMesh& part, const PartRows& rows) {
 
 void printPart(const PartMesh& part, const PartRows& rows) {
   const Row &capsule = rows.capsule, &radial = rows.radial;
-  std::printf("%-11s %5zu vertices  capsule x%d gap %5.1f mm (max %5.1f) %4.0f ns  radial%s gap %5.1f mm (max "
-              "%5.1f) %5.0f ns  exact %6.0f ns  enclosed %.0f %% %.0f %%\n",
-              part.name.c_str(), part.mesh.vertices.size(), capsule.volumes, 1000 * capsule.meanGap,
-              1000 * capsule.maxGap, capsule.queryNs, rows.fellBack ? "(capsules)" : "", 1000 * radial.meanGap,
-              1000 * radial.maxGap, radial.queryNs, rows.exact.queryNs, capsule.enclosed, radial.enclosed);
+  std::printf(
+      "%-11s %5zu vertices  capsule x%d gap %5.1f mm (max %5.1f) %4.0f ns  radial%s gap %5.1f mm (max "
+      "%5.1f) %5.0f ns  exact %6.0f ns  enclosed %.0f %% %.0f %%\n",
+      part.name.c_str(), part.mesh.vertices.size(), capsule.volumes, 1000 * capsule.meanGap, 1000 * capsule.maxGap,
+      capsule.queryNs, rows.fellBack ? "(capsules)" : "", 1000 * radial.meanGap, 1000 * radial.maxGap, radial.queryNs,
+      rows.exact.queryNs, capsule.enclosed, radial.enclosed);
 }
 
 std::string writeText(const std::string& path, const std::string& text) {
@@ -263,10 +268,11 @@ int collisionStudy(const CollisionStudyOptions& options) {
     std::cerr << "figment-bench: " << csvPath << ": " << error << "\n";
     return 1;
   }
-  std::printf("medians over parts: mean gap capsule %.1f mm, radial %.1f mm (K = %d); query capsule %.0f ns, "
-              "radial %.0f ns, exact %.0f ns; exact/capsule %.1fx, radial/capsule %.2fx\n",
-              median(capsuleGap), median(radialGap), options.harmonics, median(capsuleNs), median(radialNs),
-              median(exactNs), median(exactNs) / median(capsuleNs), median(radialNs) / median(capsuleNs));
+  std::printf(
+      "medians over parts: mean gap capsule %.1f mm, radial %.1f mm (K = %d); query capsule %.0f ns, "
+      "radial %.0f ns, exact %.0f ns; exact/capsule %.1fx, radial/capsule %.2fx\n",
+      median(capsuleGap), median(radialGap), options.harmonics, median(capsuleNs), median(radialNs), median(exactNs),
+      median(exactNs) / median(capsuleNs), median(radialNs) / median(capsuleNs));
   std::cout << csvPath << "\n";
   std::cout.flush();
   chartCsv(options.plotScript, csvPath, options.outDir + "/collision.png");

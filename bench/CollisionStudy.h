@@ -31,7 +31,7 @@ struct CollisionStudyOptions {
   int harmonics = 8;               // K of the radial depth volumes
   double sectionSpacing = 0.02;    // m between their sections
   std::string outDir = "bench-out";
-  std::string plotScript;          // python script that charts the CSV; "" = no chart
+  std::string plotScript;  // python script that charts the CSV; "" = no chart
 };
 
 // Writes DIR/collision.csv (part,method,mean_gap_mm,max_gap_mm,enclosed_pct,query_ns,

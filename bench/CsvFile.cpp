@@ -1,12 +1,12 @@
 #include "CsvFile.h"
 
-#include "io/AtomicFile.h"
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+
+#include "io/AtomicFile.h"
 
 namespace figment::bench {
 
@@ -29,8 +29,10 @@ bool writeCsv(const std::string& path, const std::function<std::string(std::ostr
 void chartCsv(const std::string& plotScript, const std::string& csvPath, const std::string& pngPath) {
   if (plotScript.empty() || !std::filesystem::exists(plotScript)) return;
   const std::string command = "/usr/bin/python3 '" + plotScript + "' '" + csvPath + "' '" + pngPath + "'";
-  if (std::system(command.c_str()) == 0) std::printf("%s\n", pngPath.c_str());
-  else std::fprintf(stderr, "figment-bench: no chart of %s (needs /usr/bin/python3 with matplotlib)\n", csvPath.c_str());
+  if (std::system(command.c_str()) == 0)
+    std::printf("%s\n", pngPath.c_str());
+  else
+    std::fprintf(stderr, "figment-bench: no chart of %s (needs /usr/bin/python3 with matplotlib)\n", csvPath.c_str());
 }
 
 }  // namespace figment::bench

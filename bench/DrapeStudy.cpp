@@ -1,12 +1,5 @@
 #include "DrapeStudy.h"
 
-#include "BodyChoice.h"
-#include "CsvFile.h"
-#include "Statistics.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/Init.h"
-#include "session/SceneSession.h"
-
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -14,6 +7,13 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+
+#include "BodyChoice.h"
+#include "CsvFile.h"
+#include "Statistics.h"
+#include "nodes/Init.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "session/SceneSession.h"
 
 namespace figment::bench {
 
@@ -24,21 +24,21 @@ void report(const std::string& method, bool broadPhase, int run, const session::
   const ClothEngine::RunStats& stats = drape.run;
   const double perSecond = stats.iterations / stats.wallSeconds;
   const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
-  csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ',' << stats.iterations << ','
-      << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0) << ',' << perSecond
-      << ',' << (stats.verdict.empty() ? 1 : 0) << ',' << stats.maxStretch << ',' << stats.halvedSteps << ','
-      << stats.failedSteps << '\n';
-  std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " " << stats.triangles << " triangles, "
-            << stats.iterations << " iterations, " << stats.simulatedSeconds << " s simulated in "
-            << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest")
+  csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ','
+      << stats.iterations << ',' << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0)
+      << ',' << perSecond << ',' << (stats.verdict.empty() ? 1 : 0) << ',' << stats.maxStretch << ','
+      << stats.halvedSteps << ',' << stats.failedSteps << '\n';
+  std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " "
+            << stats.triangles << " triangles, " << stats.iterations << " iterations, " << stats.simulatedSeconds
+            << " s simulated in " << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest")
             << (stats.halvedSteps > 0 ? ", " + std::to_string(stats.halvedSteps) + " steps halved" : "")
             << (stats.verdict.empty() ? ", clean" : "; not clean: " + stats.verdict) << "\n";
 }
 
 // Runs every engine options.repeat times against the body they have now; one CSV row
 // per run and engine. On an engine's error sets `error`.
-void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOptions& options, session::SceneSession& session,
-                std::ostream& csv, std::string& error) {
+void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOptions& options,
+                session::SceneSession& session, std::ostream& csv, std::string& error) {
   std::vector<double> wall, rate;
   session.context().broadPhase = broadPhase;
   for (int run = 0; run < options.repeat; ++run) {
@@ -54,7 +54,8 @@ void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOpti
     }
   }
   session.context().broadPhase = true;
-  std::cout << method << (broadPhase ? "" : " (no broad phase)") << ": median wall " << median(wall) << " s, median " << median(rate) << " iterations/s\n";
+  std::cout << method << (broadPhase ? "" : " (no broad phase)") << ": median wall " << median(wall) << " s, median "
+            << median(rate) << " iterations/s\n";
 }
 
 // Times the engines against each body of options.bodies in turn; "" or the error.

@@ -1,13 +1,13 @@
 #include "MethodSpec.h"
 
-#include "io/TradeoffTable.h"
-
 #include <Inventor/SbName.h>
 
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
 #include <vector>
+
+#include "io/TradeoffTable.h"
 
 namespace figment::bench {
 

@@ -3,9 +3,9 @@
 // ClothEngine fields' spelling (case free): "heun:1.5e-4", "heun:1.5e-4:clamp:30",
 // "implicit:0.05", "implicit+penalty:0.05" (contactModel PENALTY).
 
-#include "nodes/cloth/ClothEngine.h"
-
 #include <string>
+
+#include "nodes/cloth/ClothEngine.h"
 
 namespace figment::bench {
 

@@ -1,12 +1,5 @@
 #include "MethodStudy.h"
 
-#include "CsvFile.h"
-#include "MethodSpec.h"
-#include "SceneGarment.h"
-#include "Statistics.h"
-#include "nodes/body/CollisionBody.h"
-#include "sim/collision/Collider.h"
-
 #include <Inventor/SbName.h>
 
 #include <algorithm>
@@ -16,6 +9,13 @@
 #include <filesystem>
 #include <limits>
 #include <sstream>
+
+#include "CsvFile.h"
+#include "MethodSpec.h"
+#include "SceneGarment.h"
+#include "Statistics.h"
+#include "nodes/body/CollisionBody.h"
+#include "sim/collision/Collider.h"
 
 namespace figment::bench {
 
@@ -31,8 +31,8 @@ RepeatedDrape drape(SceneGarment& garment, const Method& m, int repeat) {
 struct Measures {
   double meanDeviation = NAN;  // m, against the reference
   double maxStrain = NAN;
-  int inside = 0;              // nodes inside the body
-  double topHeight = NAN;      // m, mean height of the rest shape's top ring
+  int inside = 0;          // nodes inside the body
+  double topHeight = NAN;  // m, mean height of the rest shape's top ring
 };
 
 // The nodes of the rest shape's top centimetre: a skirt's waistband, a dress's top.
@@ -79,9 +79,8 @@ void report(const std::string& scene, const Method& m, const RepeatedDrape& o, c
   csv << line;
   csv.flush();
   std::printf("%-24s %6d steps %6.3f s sim %7.3f s wall %-6s dev %6.3f %% strain %5.3f inside %3d top %.3f m",
-              m.text.c_str(), o.run.iterations, o.run.simulatedSeconds, o.medianWall,
-              o.run.atRest ? "rest" : "moving", 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
-              s.topHeight);
+              m.text.c_str(), o.run.iterations, o.run.simulatedSeconds, o.medianWall, o.run.atRest ? "rest" : "moving",
+              100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside, s.topHeight);
   if (c.implicitSteps > 0)
     std::printf("  | step: %.0f PCG its, %.2f ms forces+matrix, %.2f ms solve, %.2f ms contacts",
                 c.solverIterations / steps, 1000 * c.assemblySeconds / steps, 1000 * c.solveSeconds / steps,

@@ -1,18 +1,18 @@
 #include "ProgressiveStudy.h"
 
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+
 #include "CsvFile.h"
 #include "MethodSpec.h"
 #include "SceneGarment.h"
 #include "Statistics.h"
 #include "TemporaryScript.h"
 #include "nodes/cloth/ClothEngineInputs.h"
-
-#include <cmath>
-#include <cstdlib>
-#include <cstdio>
-#include <filesystem>
-#include <optional>
-#include <stdexcept>
 
 namespace figment::bench {
 
@@ -96,26 +96,27 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
     garment.engine->endLevel = -1;
     garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * levels));
     const Drapes run = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
-    csv << options.scene << ',' << method.text << ',' << runs << ',' << garment.engine->beginLevel.getValue() << ',' << levels << ','
-        << s.rate << ',';
+    csv << options.scene << ',' << method.text << ',' << runs << ',' << garment.engine->beginLevel.getValue() << ','
+        << levels << ',' << s.rate << ',';
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)
       std::printf("%-22s %-10s failed: %s\n", method.text.c_str(), text.c_str(), run.error.c_str());
-      csv << ",,," << median(full.steps) << ',' << fullWall << ',' << full.rested << ",,,," << floor << ",,,,,,\"failed: "
-          << run.error << "\"\n";
+      csv << ",,," << median(full.steps) << ',' << fullWall << ',' << full.rested << ",,,," << floor
+          << ",,,,,,\"failed: " << run.error << "\"\n";
       continue;
     }
     const auto [mean, largest] = medianDeviation(garment, run, full);
     const double wall = median(run.wall);
     const double arrival = median(run.endLevelAt);
-    std::printf("%-22s %-10s begin %4d of %4d: %6.0f steps %7.3f s wall, %d/%zu rested %5.2fx  dev mean %6.3f %% "
-                "max %6.3f %%; full detail at %.2f s, moved %.1f mm mean %.1f mm max after it\n",
-                method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), levels, median(run.steps),
-                wall, run.rested, runs, fullWall / wall, mean, largest, arrival, 1e3 * median(run.meanMoveAfter),
-                1e3 * median(run.maxMoveAfter));
+    std::printf(
+        "%-22s %-10s begin %4d of %4d: %6.0f steps %7.3f s wall, %d/%zu rested %5.2fx  dev mean %6.3f %% "
+        "max %6.3f %%; full detail at %.2f s, moved %.1f mm mean %.1f mm max after it\n",
+        method.text.c_str(), text.c_str(), garment.engine->beginLevel.getValue(), levels, median(run.steps), wall,
+        run.rested, runs, fullWall / wall, mean, largest, arrival, 1e3 * median(run.meanMoveAfter),
+        1e3 * median(run.maxMoveAfter));
     std::fflush(stdout);
     csv << median(run.steps) << ',' << wall << ',' << run.rested << ',' << median(full.steps) << ',' << fullWall << ','
-        << full.rested << ',' << fullWall / wall << ',' << mean << ',' << largest << ',' << floor << ','
-        << arrival << ',' << median(full.simulated) << ',' << median(run.simulated) << ',' << 1e3 * median(run.meanMoveAfter)
+        << full.rested << ',' << fullWall / wall << ',' << mean << ',' << largest << ',' << floor << ',' << arrival
+        << ',' << median(full.simulated) << ',' << median(run.simulated) << ',' << 1e3 * median(run.meanMoveAfter)
         << ',' << 1e3 * median(run.maxMoveAfter) << ",\n";
   }
   return "";
@@ -159,7 +160,8 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
     // drapes' median deviation from each other.
     csv << "scene,method,time_steps,begin_level,levels,split_rate_per_s,steps,median_wall_s,rested,full_steps,"
            "full_median_wall_s,full_rested,speed_up,mean_dev_pct_height,max_dev_pct_height,floor_mean_dev_pct_height,"
-           "full_detail_at_s,full_rest_s,rest_s,moved_after_full_detail_mean_mm,moved_after_full_detail_max_mm,failure\n";
+           "full_detail_at_s,full_rest_s,rest_s,moved_after_full_detail_mean_mm,moved_after_full_detail_max_mm,"
+           "failure\n";
     for (const Method& method : methods)
       if (std::string e = studyMethod(garment, script, levels, method, options, csv); !e.empty()) return e;
     return "";

@@ -20,7 +20,7 @@ struct ProgressiveStudyOptions {
   // and splits per second of simulated time (0: all once the begin level rests).
   std::vector<std::string> schedules = {"0:300", "0:1200", "0:3000", "0.5:1200"};
   std::vector<double> stepFactors = {0.99, 1.0, 1.01};  // the method's time step times each
-  double coarseShare = 0.25;  // for a script made on the fly
+  double coarseShare = 0.25;                            // for a script made on the fly
   std::string outDir = "bench-out";
   std::string plotScript;  // python script that charts the CSV; "" = no chart
 };

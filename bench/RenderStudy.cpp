@@ -1,15 +1,5 @@
 #include "RenderStudy.h"
 
-#include "CsvFile.h"
-#include "Statistics.h"
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/SceneSearch.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneSession.h"
-#include "session/SceneStaging.h"
-#include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/lists/SoPathList.h>
@@ -21,6 +11,16 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+
+#include "CsvFile.h"
+#include "Statistics.h"
+#include "nodes/SceneSearch.h"
+#include "nodes/render/ClothingLayer.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "session/SceneStaging.h"
+#include "viewer/DepthBufferOnly.h"
+#include "viewer/OffscreenContext.h"
 
 namespace figment::bench {
 
@@ -83,7 +83,8 @@ bool timeRenders(const session::SceneSession& session, const RenderStudyOptions&
       for (const char* view : {"still", "orbit"})
         for (int i = 0; i < perRound; ++i) {
           // still: the same camera every frame; orbit: a new azimuth every frame.
-          orbit.look(std::string(view) == "still" ? 30.0 : 30.0 + 360.0 * (round * perRound + i) / (kRounds * perRound));
+          orbit.look(std::string(view) == "still" ? 30.0
+                                                  : 30.0 + 360.0 * (round * perRound + i) / (kRounds * perRound));
           const auto start = Clock::now();
           renderer.render(root);
           ms[{mode, view}].push_back(std::chrono::duration<double, std::milli>(Clock::now() - start).count());
@@ -99,9 +100,8 @@ void report(const std::string& scenePath, const session::ImageSize& size, int cl
     const double hybrid = median(ms[{"hybrid", view}]), plain = median(ms[{"plain", view}]);
     const double overhead = 100.0 * (hybrid / plain - 1.0);
     for (const auto& [mode, m] : {std::pair<const char*, double>{"hybrid", hybrid}, {"plain", plain}})
-      csv << scenePath << ',' << mode << ',' << view << ',' << size.width << ',' << size.height << ',' << cloth
-          << ',' << ms[{mode, view}].size() << ',' << m << ',' << (std::string(mode) == "hybrid" ? overhead : 0.0)
-          << '\n';
+      csv << scenePath << ',' << mode << ',' << view << ',' << size.width << ',' << size.height << ',' << cloth << ','
+          << ms[{mode, view}].size() << ',' << m << ',' << (std::string(mode) == "hybrid" ? overhead : 0.0) << '\n';
     std::printf("%-30s %6d cloth triangles  %-5s  hybrid %6.2f ms  plain %6.2f ms  overhead %+5.1f %%\n",
                 scenePath.c_str(), cloth, view, hybrid, plain, overhead);
   }

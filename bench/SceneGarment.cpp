@@ -1,11 +1,5 @@
 #include "SceneGarment.h"
 
-#include "Statistics.h"
-#include "nodes/Init.h"
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngineInputs.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/engines/SoEngineOutput.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -16,6 +10,12 @@
 #include <limits>
 #include <set>
 #include <stdexcept>
+
+#include "Statistics.h"
+#include "nodes/Init.h"
+#include "nodes/SceneSearch.h"
+#include "nodes/cloth/ClothEngineInputs.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::bench {
 
@@ -126,7 +126,7 @@ double SceneGarment::height() const {
 }
 
 std::pair<double, double> SceneGarment::deviationPercent(const std::vector<SbVec3f>& a,
-                                                        const std::vector<SbVec3f>& b) const {
+                                                         const std::vector<SbVec3f>& b) const {
   double mean = 0.0, largest = 0.0;
   for (size_t i = 0; i < a.size(); ++i) {
     const double d = (a[i] - b[i]).length();

@@ -2,16 +2,16 @@
 // The last garment of a scene (an outfit's outer layer), for studies that re-run its
 // ClothEngine with other settings: the engine, the Coordinate3 it feeds, and its rest shape.
 
-#include "nodes/cloth/ClothEngine.h"
-#include "sim/core/TriangleMesh.h"
-#include "session/SceneSession.h"
-
 #include <Inventor/nodes/SoCoordinate3.h>
 
 #include <array>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "nodes/cloth/ClothEngine.h"
+#include "session/SceneSession.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::bench {
 

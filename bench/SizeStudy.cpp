@@ -1,20 +1,19 @@
 #include "SizeStudy.h"
 
-#include "CsvFile.h"
-#include "MethodSpec.h"
-#include "SceneGarment.h"
-#include "Statistics.h"
-#include "TemporaryScript.h"
-
-#include "nodes/cloth/ClothEngineInputs.h"
-#include "sim/progressive/Resampling.h"
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
+
+#include "CsvFile.h"
+#include "MethodSpec.h"
+#include "SceneGarment.h"
+#include "Statistics.h"
+#include "TemporaryScript.h"
+#include "nodes/cloth/ClothEngineInputs.h"
+#include "sim/progressive/Resampling.h"
 
 namespace figment::bench {
 
@@ -49,8 +48,9 @@ Drapes drapeAtEachStep(SceneGarment& garment, const SizedGarment& sized, double 
     engine.endLevel = -1;
     engine.splitRate = sized.script.levels() / options.splitTime;
     const RepeatedDrape progressive = garment.drapeRepeatedly(1);
-    out.failure = !full.error.empty() ? "whole: " + full.error
-                  : !progressive.error.empty() ? "progressive: " + progressive.error : "";
+    out.failure = !full.error.empty()          ? "whole: " + full.error
+                  : !progressive.error.empty() ? "progressive: " + progressive.error
+                                               : "";
     if (!out.failure.empty()) break;
     out.fullWall.push_back(full.medianWall), out.wall.push_back(progressive.medianWall);
     out.fullSteps.push_back(full.run.iterations), out.steps.push_back(progressive.run.iterations);
@@ -62,7 +62,8 @@ Drapes drapeAtEachStep(SceneGarment& garment, const SizedGarment& sized, double 
   engine.timeStep = timeStep;
   engine.progressiveScript = "";  // the script goes with `sized`
   for (size_t i = 0; out.failure.empty() && i < whole.size(); ++i)
-    for (size_t j = i + 1; j < whole.size(); ++j) out.floorDev.push_back(garment.deviationPercent(whole[i], whole[j]).first);
+    for (size_t j = i + 1; j < whole.size(); ++j)
+      out.floorDev.push_back(garment.deviationPercent(whole[i], whole[j]).first);
   return out;
 }
 
@@ -86,11 +87,12 @@ std::string studySize(SceneGarment& garment, const TriangleMesh& base, int secti
   }
   const double fullWall = median(d.fullWall), wall = median(d.wall);
   const double floorDev = d.floorDev.empty() ? 0.0 : median(d.floorDev);
-  std::printf("%6d sections (%5d nodes): whole %5.0f steps %8.3f s, %zu/%zu rested | from %5d: %5.0f steps %8.3f s, "
-              "%d/%zu rested %5.2fx dev mean %6.3f %% max %6.3f %%, floor %6.3f %% (prepared in %.2f s)\n",
-              triangles, static_cast<int>(sized.mesh.vertices.size()), median(d.fullSteps), fullWall,
-              static_cast<size_t>(d.fullRested), runs, sized.script.coarseSections(), median(d.steps), wall, d.rested,
-              runs, fullWall / wall, median(d.meanDev), median(d.maxDev), floorDev, preparation);
+  std::printf(
+      "%6d sections (%5d nodes): whole %5.0f steps %8.3f s, %zu/%zu rested | from %5d: %5.0f steps %8.3f s, "
+      "%d/%zu rested %5.2fx dev mean %6.3f %% max %6.3f %%, floor %6.3f %% (prepared in %.2f s)\n",
+      triangles, static_cast<int>(sized.mesh.vertices.size()), median(d.fullSteps), fullWall,
+      static_cast<size_t>(d.fullRested), runs, sized.script.coarseSections(), median(d.steps), wall, d.rested, runs,
+      fullWall / wall, median(d.meanDev), median(d.maxDev), floorDev, preparation);
   std::fflush(stdout);
   csv << median(d.fullSteps) << ',' << fullWall << ',' << d.fullRested << ',' << median(d.steps) << ',' << wall << ','
       << d.rested << ',' << fullWall / wall << ',' << median(d.meanDev) << ',' << median(d.maxDev) << ',' << floorDev

@@ -17,7 +17,7 @@
 namespace figment::bench {
 
 struct SizeStudyOptions {
-  std::string scene = "scenes/dress.iv";  // its first ClothEngine's garment is resampled
+  std::string scene = "scenes/dress.iv";                             // its first ClothEngine's garment is resampled
   std::vector<int> sizes = {1000, 3000, 6000, 12000, 25000, 50000};  // sections
   std::string method = "implicit:0.05";
   double coarseShare = 0.25;  // the progressive drape begins at this share of the sections

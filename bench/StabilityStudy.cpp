@@ -1,8 +1,5 @@
 #include "StabilityStudy.h"
 
-#include "CsvFile.h"
-#include "SceneGarment.h"
-
 #include <Inventor/errors/SoDebugError.h>
 
 #include <algorithm>
@@ -14,6 +11,9 @@
 #include <limits>
 #include <map>
 
+#include "CsvFile.h"
+#include "SceneGarment.h"
+
 namespace figment::bench {
 
 namespace {
@@ -21,7 +21,7 @@ namespace {
 struct Configuration {
   int integrator;  // ClothEngine::Integrator
   bool strainClamp;
-  int limiter;     // ClothEngine::AccelerationLimiter
+  int limiter;  // ClothEngine::AccelerationLimiter
 };
 
 const char* integratorKey(int integrator) {

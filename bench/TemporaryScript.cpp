@@ -1,14 +1,14 @@
 #include "TemporaryScript.h"
 
-#include "io/ProgressiveScript.h"
-#include "sim/progressive/Decimation.h"
+#include <unistd.h>  // getpid: temporary names of their own per process
 
 #include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <system_error>
 
-#include <unistd.h>  // getpid: temporary names of their own per process
+#include "io/ProgressiveScript.h"
+#include "sim/progressive/Decimation.h"
 
 namespace figment::bench {
 

@@ -3,9 +3,9 @@
 // in a temporary file that goes when the object does: for garments with no committed
 // script (the T-shirt) and for the garment-size study's resampled garments.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <string>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::bench {
 

@@ -1,21 +1,5 @@
 #include "TradeoffStudy.h"
 
-#include "BodyChoice.h"
-#include "CsvFile.h"
-#include "MethodSpec.h"
-#include "sim/progressive/RestCorrespondence.h"
-#include "SceneGarment.h"
-#include "TemporaryScript.h"
-
-#include "nodes/body/CollisionBody.h"
-#include "nodes/body/CollisionGroup.h"
-#include "nodes/body/Mannequin.h"
-#include "nodes/cloth/ClothEngineInputs.h"
-#include "nodes/cloth/ToleranceChoice.h"
-#include "sim/body/Skeleton.h"
-#include "sim/collision/Collider.h"
-#include "sim/progressive/Resampling.h"
-
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
@@ -27,6 +11,21 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "BodyChoice.h"
+#include "CsvFile.h"
+#include "MethodSpec.h"
+#include "SceneGarment.h"
+#include "TemporaryScript.h"
+#include "nodes/body/CollisionBody.h"
+#include "nodes/body/CollisionGroup.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/cloth/ClothEngineInputs.h"
+#include "nodes/cloth/ToleranceChoice.h"
+#include "sim/body/Skeleton.h"
+#include "sim/collision/Collider.h"
+#include "sim/progressive/Resampling.h"
+#include "sim/progressive/RestCorrespondence.h"
 
 namespace figment::bench {
 
@@ -71,8 +70,8 @@ class Bodies {
  public:
   // `garmentStart`: where the garment starts (the per-part mix's exact parts are those it
   // starts near); `sceneBody`: the garment's body as the scene has it.
-  Bodies(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart,
-         SoNode* sceneBody, std::string& error)
+  Bodies(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart, SoNode* sceneBody,
+         std::string& error)
       : layers_(sceneBody && sceneBody->isOfType(CollisionGroup::getClassTypeId())
                     ? static_cast<CollisionGroup*>(sceneBody)
                     : nullptr) {
@@ -82,10 +81,14 @@ class Bodies {
     add("triangles", triangles);
     for (const std::string& name : options.bodies) {
       if (!error.empty() || nodes_.count(name)) continue;
-      if (name == "volumes") add(name, bodyFor(options.volumesFile, root, error));
-      else if (name == "capsules") add(name, bodyFor(options.capsulesFile, root, error));
-      else if (name == "mix") add(name, mixFor(root, options, garmentStart, error));
-      else error = "--body " + name + ": expected volumes, capsules, triangles or mix";
+      if (name == "volumes")
+        add(name, bodyFor(options.volumesFile, root, error));
+      else if (name == "capsules")
+        add(name, bodyFor(options.capsulesFile, root, error));
+      else if (name == "mix")
+        add(name, mixFor(root, options, garmentStart, error));
+      else
+        error = "--body " + name + ": expected volumes, capsules, triangles or mix";
     }
   }
   ~Bodies() {
@@ -165,9 +168,8 @@ std::optional<Reference> drapeReference(SceneGarment& garment, const Bodies& bod
     std::tie(halfMean, halfMax) = deviation(toVec3(half.positions), reference.positions, reference.height);
     std::printf("  at half its step it moves %.3f %% mean, %.3f %% max of the garment's height\n", halfMean, halfMax);
   }
-  csv << options.reference << ',' << run.run.iterations << ','
-      << run.run.simulatedSeconds << ',' << run.run.atRest << ',' << reference.height << ',' << halfMean << ','
-      << halfMax << '\n';
+  csv << options.reference << ',' << run.run.iterations << ',' << run.run.simulatedSeconds << ',' << run.run.atRest
+      << ',' << reference.height << ',' << halfMean << ',' << halfMax << '\n';
   return reference;
 }
 
@@ -378,9 +380,9 @@ int runTradeoffStudy(const TradeoffStudyOptions& options) {
         return "";
       });
   const bool front = written && writeCsv(options.outDir + "/tradeoff-table.csv", [&](std::ostream& csv) -> std::string {
-    writeFront(rows, options.scenes.size(), csv);
-    return "";
-  });
+                       writeFront(rows, options.scenes.size(), csv);
+                       return "";
+                     });
   if (!front) return 1;
   chartCsv(options.plotScript, csvPath, options.outDir + "/tradeoff.png");
   return 0;

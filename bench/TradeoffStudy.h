@@ -18,9 +18,8 @@ namespace figment::bench {
 struct TradeoffStudyOptions {
   std::vector<std::string> scenes = {"scenes/dress.iv", "scenes/tshirt.iv", "scenes/skirt.iv"};
   // "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G]" (MethodSpec.h).
-  std::vector<std::string> methods = {"heun:1.5e-4",   "heun:1.5e-4:clamp:30",  "implicit:0.01",
-                                      "implicit:0.02", "implicit:0.05",         "implicit+penalty:0.02",
-                                      "implicit+penalty:0.05"};
+  std::vector<std::string> methods = {"heun:1.5e-4",   "heun:1.5e-4:clamp:30",  "implicit:0.01",        "implicit:0.02",
+                                      "implicit:0.05", "implicit+penalty:0.02", "implicit+penalty:0.05"};
   std::vector<std::string> bodies = {"volumes", "capsules", "triangles", "mix"};
   // "off", or BEGIN_SHARE:RATE as figment-bench progressive takes them; the script is
   // made for each resolution, to `coarseShare` of its sections.

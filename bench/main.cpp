@@ -1,4 +1,6 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
+#include <CLI/CLI.hpp>
+
 #include "BodyStudy.h"
 #include "CollisionStudy.h"
 #include "DrapeStudy.h"
@@ -9,8 +11,6 @@
 #include "StabilityStudy.h"
 #include "TradeoffStudy.h"
 
-#include <CLI/CLI.hpp>
-
 namespace {
 
 using namespace figment::bench;
@@ -18,15 +18,19 @@ using namespace figment::bench;
 CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
   CLI::App* drapeCommand = app.add_subcommand("drape", "time the drape of every garment in a scene");
   drapeCommand->add_option("--scene", drape.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
-  drapeCommand->add_option("--repeat", drape.repeat, "runs per garment")->capture_default_str()->check(CLI::PositiveNumber);
+  drapeCommand->add_option("--repeat", drape.repeat, "runs per garment")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   drapeCommand->add_option("--out", drape.outDir, "folder for drape.csv")->capture_default_str();
-  drapeCommand->add_option("--body", drape.bodies,
-                           "what the garments collide with, each timed: scene, exact (the Mannequin's body "
-                           "triangles) or a volumes .iv file")
+  drapeCommand
+      ->add_option("--body", drape.bodies,
+                   "what the garments collide with, each timed: scene, exact (the Mannequin's body "
+                   "triangles) or a volumes .iv file")
       ->capture_default_str();
-  drapeCommand->add_option("--broad-phase", drape.broadPhase,
-                           "on, off, or both in turn (repeat the option): body parts far from the garment "
-                           "tested or not (the drape is the same)")
+  drapeCommand
+      ->add_option("--broad-phase", drape.broadPhase,
+                   "on, off, or both in turn (repeat the option): body parts far from the garment "
+                   "tested or not (the drape is the same)")
       ->capture_default_str()
       ->check(CLI::IsMember({"on", "off"}));
   drapeCommand->add_option("--integrator", drape.integrator, "every engine's integrator instead of the scene's")
@@ -38,10 +42,13 @@ CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
 }
 
 CLI::App* addStabilityCommand(CLI::App& app, StabilityStudyOptions& stability) {
-  CLI::App* stabilityCommand =
-      app.add_subcommand("stability", "integrators x strain clamping x limiters over time steps: stability and accuracy");
-  stabilityCommand->add_option("--scene", stability.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
-  stabilityCommand->add_option("--out", stability.outDir, "folder for stability.csv and stability.png")->capture_default_str();
+  CLI::App* stabilityCommand = app.add_subcommand(
+      "stability", "integrators x strain clamping x limiters over time steps: stability and accuracy");
+  stabilityCommand->add_option("--scene", stability.scene, "scene to drape")
+      ->capture_default_str()
+      ->check(CLI::ExistingFile);
+  stabilityCommand->add_option("--out", stability.outDir, "folder for stability.csv and stability.png")
+      ->capture_default_str();
   stabilityCommand->add_flag("--quick", stability.quick, "a few configurations and steps, 0.3 s runs (under a minute)");
   stabilityCommand->add_option("--dt", stability.timeSteps, "time steps to sweep, s (the smallest is the reference)")
       ->check(CLI::PositiveNumber);
@@ -60,7 +67,9 @@ CLI::App* addRenderCommand(CLI::App& app, RenderStudyOptions& render) {
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   renderCommand->add_option("--width", render.width, "image width")->capture_default_str()->check(CLI::Range(1, 8192));
-  renderCommand->add_option("--height", render.height, "image height")->capture_default_str()->check(CLI::Range(1, 8192));
+  renderCommand->add_option("--height", render.height, "image height")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 8192));
   renderCommand->add_option("--repeat", render.repeat, "renders per scene and mode")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
@@ -78,17 +87,23 @@ CLI::App* addCollisionCommand(CLI::App& app, CollisionStudyOptions& collision) {
   collisionCommand->add_option("--section-spacing", collision.sectionSpacing, "m between radial depth sections")
       ->capture_default_str()
       ->check(CLI::Range(0.002, 0.2));
-  collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")->capture_default_str();
+  collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")
+      ->capture_default_str();
   return collisionCommand;
 }
 
 CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
   CLI::App* command = app.add_subcommand(
       "methods", "a garment by each method and time step: steps, wall to rest, deviation, strain, nodes inside");
-  command->add_option("--scene", methods.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat the option)")
+  command
+      ->add_option("--scene", methods.scenes,
+                   "scenes whose last garment (an outfit's outer layer) is draped (repeat the option)")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
-  command->add_option("--method", methods.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G], e.g. heun:1.5e-4:clamp:30, implicit+penalty:0.05 (repeat)")
+  command
+      ->add_option(
+          "--method", methods.methods,
+          "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G], e.g. heun:1.5e-4:clamp:30, implicit+penalty:0.05 (repeat)")
       ->capture_default_str();
   command->add_option("--reference", methods.reference, "the converged run deviations are measured against")
       ->capture_default_str();
@@ -107,16 +122,19 @@ CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progress
       ->check(CLI::ExistingFile);
   command->add_option("--method", progressive.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
       ->capture_default_str();
-  command->add_option("--schedule", progressive.schedules,
-                      "BEGIN_SHARE:RATE: begin level as a share of the levels, splits per simulated second "
-                      "(0: all once the begin level rests) (repeat)")
+  command
+      ->add_option("--schedule", progressive.schedules,
+                   "BEGIN_SHARE:RATE: begin level as a share of the levels, splits per simulated second "
+                   "(0: all once the begin level rests) (repeat)")
       ->capture_default_str();
-  command->add_option("--step-factor", progressive.stepFactors,
-                      "drape at the method's time step times each (repeat; medians over them)")
+  command
+      ->add_option("--step-factor", progressive.stepFactors,
+                   "drape at the method's time step times each (repeat; medians over them)")
       ->capture_default_str()
       ->check(CLI::Range(0.5, 2.0));
-  command->add_option("--coarse-share", progressive.coarseShare,
-                      "a scene with no progressiveScript: its garment decimated to this share of its sections")
+  command
+      ->add_option("--coarse-share", progressive.coarseShare,
+                   "a scene with no progressiveScript: its garment decimated to this share of its sections")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1.0));
   command->add_option("--out", progressive.outDir, "folder for progressive.csv")->capture_default_str();
@@ -142,8 +160,9 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   command->add_option("--max-time", sizes.maxTime, "simulated s a drape may take before it counts as never resting")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  command->add_option("--step-factor", sizes.stepFactors,
-                      "drape at the method's time step times each (repeat; medians over them)")
+  command
+      ->add_option("--step-factor", sizes.stepFactors,
+                   "drape at the method's time step times each (repeat; medians over them)")
       ->capture_default_str()
       ->check(CLI::Range(0.5, 2.0));
   command->add_option("--out", sizes.outDir, "folder for sizes.csv")->capture_default_str();
@@ -153,12 +172,15 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
 CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
   CLI::App* command = app.add_subcommand(
       "tradeoff", "every method choice against a converged reference: wall to rest against deviation, Pareto front");
-  command->add_option("--scene", tradeoff.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat)")
+  command
+      ->add_option("--scene", tradeoff.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat)")
       ->capture_default_str()
       ->check(CLI::ExistingFile);
   command->add_option("--method", tradeoff.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
       ->capture_default_str();
-  command->add_option("--body", tradeoff.bodies, "volumes, capsules, triangles or mix (the volumes, triangles where the garment starts) (repeat)")
+  command
+      ->add_option("--body", tradeoff.bodies,
+                   "volumes, capsules, triangles or mix (the volumes, triangles where the garment starts) (repeat)")
       ->capture_default_str()
       ->check(CLI::IsMember({"volumes", "capsules", "triangles", "mix"}));
   command->add_option("--schedule", tradeoff.schedules, "off or BEGIN_SHARE:RATE, progressive (repeat)")
@@ -172,7 +194,8 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
   command->add_option("--repeat", tradeoff.repeat, "drapes per configuration (median wall)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  command->add_flag("--quick", tradeoff.quick, "the dress, 4 methods x 3 bodies x 2 schedules x 2 resolutions, once (under 5 minutes)");
+  command->add_flag("--quick", tradeoff.quick,
+                    "the dress, 4 methods x 3 bodies x 2 schedules x 2 resolutions, once (under 5 minutes)");
   command->add_option("--out", tradeoff.outDir, "folder for tradeoff.csv, tradeoff-reference.csv, tradeoff.png")
       ->capture_default_str();
   return command;
@@ -180,7 +203,9 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
 
 CLI::App* addBodyCommand(CLI::App& app, BodyStudyOptions& bodies) {
   CLI::App* command = app.add_subcommand("bodies", "make and measure MakeHuman bodies across the macro range: medians");
-  command->add_option("--repeat", bodies.repeat, "timings per body (median)")->capture_default_str()->check(CLI::PositiveNumber);
+  command->add_option("--repeat", bodies.repeat, "timings per body (median)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
   command->add_option("--out", bodies.outDir, "folder for bodies.csv")->capture_default_str();
   return command;
 }

@@ -1,7 +1,5 @@
 #include "SphereVolume.h"
 
-#include "SphereCollider.h"
-
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
@@ -11,6 +9,8 @@
 
 #include <stdexcept>
 #include <string>
+
+#include "SphereCollider.h"
 
 SO_NODE_SOURCE(SphereVolume);
 
@@ -32,14 +32,17 @@ std::shared_ptr<const figment::Collider> SphereVolume::bodyCollider() const {
   const float r = radius.getValue();
   if (!(r > 0.0f)) {
     const SbName name = getName();
-    throw std::invalid_argument(std::string("SphereVolume") + (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") +
+    throw std::invalid_argument(std::string("SphereVolume") +
+                                (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") +
                                 ": radius = " + std::to_string(r) + " must be > 0");
   }
   const SbVec3f& c = center.getValue();
   return std::make_shared<SphereCollider>(figment::Vec3(c[0], c[1], c[2]), r);
 }
 
-figment::CollisionBody::Description SphereVolume::describeBody() const { return {"sphere", {}}; }
+figment::CollisionBody::Description SphereVolume::describeBody() const {
+  return {"sphere", {}};
+}
 
 namespace {
 

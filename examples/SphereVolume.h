@@ -2,10 +2,9 @@
 // SphereVolume: a collision volume of this project's own, a sphere the cloth collides
 // with, added to FIGMENT's node kit from outside it.
 
-#include <nodes/body/CollisionBody.h>
-
 #include <Inventor/fields/SoSFVec3f.h>
 #include <Inventor/nodes/SoSphere.h>
+#include <nodes/body/CollisionBody.h>
 
 /*!
   A sphere at `center` (m, the node's own coordinates) of the inherited `radius` (m):

@@ -5,22 +5,21 @@
 // hanging below its centre.
 //   drape_over_sphere sphere-drape.iv
 
-#include "SphereVolume.h"
-
-#include <nodes/Init.h>
-#include <nodes/SceneSearch.h>
-#include <nodes/cloth/ClothEngine.h>
-
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <nodes/Init.h>
+#include <nodes/SceneSearch.h>
+#include <nodes/cloth/ClothEngine.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
+
+#include "SphereVolume.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -55,8 +54,8 @@ int main(int argc, char** argv) {
     lowest = std::min(lowest, points[i][1]);
   }
   const std::string& error = engines.front()->lastError();
-  std::printf("%d cloth nodes; nearest %.4f m from the ball's surface; lowest %.3f m (ball centre %.3f m)%s%s\n",
-              count, nearest, lowest, centre[1], error.empty() ? "" : "; ", error.c_str());
+  std::printf("%d cloth nodes; nearest %.4f m from the ball's surface; lowest %.3f m (ball centre %.3f m)%s%s\n", count,
+              nearest, lowest, centre[1], error.empty() ? "" : "; ", error.c_str());
   const bool drapedOver = error.empty() && count > 0 && nearest > -0.001f && nearest < 0.01f && lowest < centre[1];
   root->unref();
   return drapedOver ? 0 : 1;

@@ -5,11 +5,10 @@
 // one line and exit status 1.
 //   guarded_read SCENE.iv
 
-#include <guard/Guard.h>
-
 #include <Inventor/SoDB.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <guard/Guard.h>
 
 #include <cstdio>
 #include <string>

@@ -6,20 +6,19 @@
 // reported progress, and the second came from the cache with the same positions.
 //   session_drape SCENE.iv CACHE_FOLDER
 
-#include "SphereVolume.h"
-
+#include <Inventor/SoDB.h>
+#include <Inventor/fields/SoMFVec3f.h>
 #include <io/DrapeCache.h>
 #include <nodes/Init.h>
 #include <session/SceneSession.h>
-
-#include <Inventor/SoDB.h>
-#include <Inventor/fields/SoMFVec3f.h>
 
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "SphereVolume.h"
 
 namespace {
 

@@ -1,17 +1,17 @@
 #include "guard/FaceIndexCheck.h"
 
-#include "guard/shapes/InventorShapeData.h"
-#include "guard/shapes/NurbsShapeData.h"
-#include "guard/shapes/VrmlShapeData.h"
-
 #include <Inventor/VRMLnodes/SoVRMLGeometry.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/nodes/SoIndexedNurbsCurve.h>
 #include <Inventor/nodes/SoIndexedNurbsSurface.h>
 #include <Inventor/nodes/SoIndexedShape.h>
+#include <Inventor/nodes/SoNonIndexedShape.h>
 #include <Inventor/nodes/SoNurbsCurve.h>
 #include <Inventor/nodes/SoNurbsSurface.h>
-#include <Inventor/nodes/SoNonIndexedShape.h>
+
+#include "guard/shapes/InventorShapeData.h"
+#include "guard/shapes/NurbsShapeData.h"
+#include "guard/shapes/VrmlShapeData.h"
 
 namespace figment::guard {
 
@@ -25,7 +25,9 @@ SoCallbackAction::Response check(void* data, SoCallbackAction* action, const SoN
   return SoCallbackAction::ABORT;
 }
 
-std::string vrmlProblem(const SoVRMLGeometry& shape, SoState*) { return shapes::vrmlShapeProblem(shape); }
+std::string vrmlProblem(const SoVRMLGeometry& shape, SoState*) {
+  return shapes::vrmlShapeProblem(shape);
+}
 
 }  // namespace
 

@@ -1,7 +1,5 @@
 #include "guard/GuardC.h"
 
-#include "guard/Guard.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -10,6 +8,8 @@
 #include <cstring>
 #include <exception>
 #include <string>
+
+#include "guard/Guard.h"
 
 namespace {
 

@@ -1,8 +1,8 @@
 #include "guard/NodeFieldRanges.h"
 
-#include "guard/NodeLinks.h"
-
 #include <Inventor/nodes/SoTextureUnit.h>
+
+#include "guard/NodeLinks.h"
 
 namespace figment::guard {
 
@@ -20,6 +20,8 @@ std::string outOfRange(const SoNode& node) {
 
 }  // namespace
 
-std::string firstFieldOutOfRange(const SoNode* root) { return firstProblemAmongLinkedNodes(root, outOfRange); }
+std::string firstFieldOutOfRange(const SoNode* root) {
+  return firstProblemAmongLinkedNodes(root, outOfRange);
+}
 
 }  // namespace figment::guard

@@ -1,7 +1,5 @@
 #include "guard/NodeFieldTypes.h"
 
-#include "guard/NodeLinks.h"
-
 #include <Inventor/VRMLnodes/SoVRMLAppearance.h>
 #include <Inventor/VRMLnodes/SoVRMLAudioClip.h>
 #include <Inventor/VRMLnodes/SoVRMLColor.h>
@@ -30,6 +28,8 @@
 
 #include <vector>
 
+#include "guard/NodeLinks.h"
+
 namespace figment::guard {
 
 namespace {
@@ -56,7 +56,8 @@ const std::vector<FieldRule>& fieldRules() {
       {SoVRMLGeometry::getClassTypeId(), "color", {SoVRMLColor::getClassTypeId()}},
       {SoVRMLGeometry::getClassTypeId(), "texCoord", {SoVRMLTextureCoordinate::getClassTypeId()}},
       {SoVRMLText::getClassTypeId(), "fontStyle", {SoVRMLFontStyle::getClassTypeId()}},
-      {SoVRMLSound::getClassTypeId(), "source",
+      {SoVRMLSound::getClassTypeId(),
+       "source",
        {SoVRMLAudioClip::getClassTypeId(), SoVRMLMovieTexture::getClassTypeId()}},
       {SoShaderProgram::getClassTypeId(), "shaderObject", {SoShaderObject::getClassTypeId()}},
       {SoShaderObject::getClassTypeId(), "parameter", {SoShaderParameter::getClassTypeId()}},
@@ -65,7 +66,9 @@ const std::vector<FieldRule>& fieldRules() {
   return rules;
 }
 
-std::string typeName(SoType type) { return type.getName().getString(); }
+std::string typeName(SoType type) {
+  return type.getName().getString();
+}
 
 std::string article(const std::string& word) {
   return std::string("AEIOU").find(word.front()) == std::string::npos ? "a " + word : "an " + word;
@@ -73,8 +76,7 @@ std::string article(const std::string& word) {
 
 std::string belongs(const std::vector<SoType>& takes) {
   std::string text;
-  for (std::size_t i = 0; i < takes.size(); ++i)
-    text += (i == 0 ? "" : " or ") + article(typeName(takes[i]));
+  for (std::size_t i = 0; i < takes.size(); ++i) text += (i == 0 ? "" : " or ") + article(typeName(takes[i]));
   return text;
 }
 

@@ -46,8 +46,7 @@ std::vector<SoNode*> linkedNodes(const SoNode& node) {
   return links;
 }
 
-std::string firstProblemAmongLinkedNodes(const SoNode* root,
-                                         const std::function<std::string(const SoNode&)>& visit) {
+std::string firstProblemAmongLinkedNodes(const SoNode* root, const std::function<std::string(const SoNode&)>& visit) {
   std::unordered_set<const SoNode*> seen;
   for (std::vector<const SoNode*> next{root}; !next.empty();) {
     const SoNode* node = next.back();

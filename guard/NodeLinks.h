@@ -20,8 +20,7 @@ std::vector<SoNode*> linkedNodes(const SoNode& node);
 // Calls `visit` on each node linked from `root`, `root` first, each once, in scene order (a
 // node before what it links to), without recursion; stops at the first non-empty result
 // and returns it.
-std::string firstProblemAmongLinkedNodes(const SoNode* root,
-                                         const std::function<std::string(const SoNode&)>& visit);
+std::string firstProblemAmongLinkedNodes(const SoNode* root, const std::function<std::string(const SoNode&)>& visit);
 
 // "VRMLText 'Label'": the node's type, and its name when it has one.
 std::string describeNode(const SoNode& node);

@@ -4,7 +4,9 @@
 
 namespace figment::guard {
 
-ReferenceHoldingInput::~ReferenceHoldingInput() { release(); }
+ReferenceHoldingInput::~ReferenceHoldingInput() {
+  release();
+}
 
 void ReferenceHoldingInput::addReference(const SbName& name, SoBase* base, SbBool addToGlobalDict) {
   SoInput::addReference(name, base, addToGlobalDict);

@@ -1,7 +1,5 @@
 #include "guard/SceneExpansion.h"
 
-#include "guard/NodeLinks.h"
-
 #include <Inventor/fields/SoMFNode.h>
 #include <Inventor/fields/SoSFNode.h>
 #include <Inventor/nodes/SoArray.h>
@@ -14,6 +12,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "guard/NodeLinks.h"
+
 namespace figment::guard {
 
 namespace {
@@ -21,7 +21,9 @@ namespace {
 constexpr std::uint64_t kPastVisits = kMaxNodeVisits + 1;
 constexpr int kPastDepth = kMaxGraphDepth + 1;
 
-std::uint64_t cappedSum(std::uint64_t a, std::uint64_t b) { return std::min(a + b, kPastVisits); }
+std::uint64_t cappedSum(std::uint64_t a, std::uint64_t b) {
+  return std::min(a + b, kPastVisits);
+}
 std::uint64_t cappedProduct(std::uint64_t a, std::uint64_t b) {
   return a != 0 && b > kPastVisits / a ? kPastVisits : std::min(a * b, kPastVisits);
 }
@@ -31,8 +33,8 @@ std::uint64_t copies(const SoNode& node) {
   if (node.isOfType(SoArray::getClassTypeId())) {
     const auto& array = static_cast<const SoArray&>(node);
     std::uint64_t n = 1;  // a count below 1 draws nothing
-    for (const short count : {array.numElements1.getValue(), array.numElements2.getValue(),
-                              array.numElements3.getValue()})
+    for (const short count :
+         {array.numElements1.getValue(), array.numElements2.getValue(), array.numElements3.getValue()})
       n = cappedProduct(n, static_cast<std::uint64_t>(std::max<short>(count, 0)));
     return n;
   }
@@ -95,7 +97,9 @@ class Expander {
 
 }  // namespace
 
-SceneExpansion expandScene(const SoNode* root) { return Expander().run(root); }
+SceneExpansion expandScene(const SoNode* root) {
+  return Expander().run(root);
+}
 
 void unrefWithoutRecursion(SoNode* root) {
   std::vector<SoNode*> nodes;  // each referenced here, so none goes while the links are cut
@@ -126,12 +130,13 @@ std::string sceneExpansionProblem(const SoNode* root) {
   const SceneExpansion expansion = expandScene(root);
   const std::string where = expansion.culprit ? " (passed at " + describeNode(*expansion.culprit) + ")" : "";
   if (expansion.depth > kMaxGraphDepth)
-    return "the scene graph is more than " + std::to_string(kMaxGraphDepth) +
-           " nodes deep, counting through each USE" + where;
+    return "the scene graph is more than " + std::to_string(kMaxGraphDepth) + " nodes deep, counting through each USE" +
+           where;
   if (expansion.visits > kMaxNodeVisits)
     return "the scene would draw more than " + std::to_string(kMaxNodeVisits) +
            " nodes, counting a USEd node once for each use and an Array's or MultipleCopy's children once "
-           "for each copy" + where;
+           "for each copy" +
+           where;
   return "";
 }
 

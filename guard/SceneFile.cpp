@@ -1,16 +1,16 @@
 #include "guard/SceneFile.h"
 
+#include <Inventor/SoDB.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <filesystem>
+
 #include "guard/GuardedInput.h"
 #include "guard/NodeFieldRanges.h"
 #include "guard/NodeFieldTypes.h"
 #include "guard/ReadMessages.h"
 #include "guard/SceneExpansion.h"
 #include "guard/SceneTextCheck.h"
-
-#include <Inventor/SoDB.h>
-#include <Inventor/nodes/SoSeparator.h>
-
-#include <filesystem>
 
 namespace figment::guard {
 

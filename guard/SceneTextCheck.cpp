@@ -1,8 +1,5 @@
 #include "guard/SceneTextCheck.h"
 
-#include "guard/SceneTextWatchers.h"
-#include "guard/SceneTokens.h"
-
 #include <Inventor/SoInput.h>
 #include <Inventor/lists/SbStringList.h>
 
@@ -16,6 +13,9 @@
 #include <map>
 #include <string_view>
 #include <vector>
+
+#include "guard/SceneTextWatchers.h"
+#include "guard/SceneTokens.h"
 
 namespace figment::guard {
 
@@ -107,9 +107,9 @@ class Checker {
         if (!include(what, name, t.line, file, base + depth)) return false;
       } else if (t.kind == Token::kOpen) {
         if (base + ++depth > kMaxNestingDepth)
-          return fail(file, t.line,
-                      "nesting depth " + std::to_string(base + depth) + " is more than " +
-                          std::to_string(kMaxNestingDepth));
+          return fail(
+              file, t.line,
+              "nesting depth " + std::to_string(base + depth) + " is more than " + std::to_string(kMaxNestingDepth));
         if (!pendingType.empty()) includers.push_back({pendingType, includeField(pendingType), depth});
       } else if (t.kind == Token::kClose) {
         if (!includers.empty() && includers.back().depth == depth) includers.pop_back();
@@ -144,8 +144,9 @@ class Checker {
                   file + " would be " + std::to_string(includeDepth) + " includes deep, more than " +
                       std::to_string(kMaxIncludeDepth));
     if (++includes_ > kMaxIncludes)
-      return fail(from, line, file + " is include " + std::to_string(includes_) + ", more than " +
-                                  std::to_string(kMaxIncludes) + " in all");
+      return fail(from, line,
+                  file + " is include " + std::to_string(includes_) + ", more than " + std::to_string(kMaxIncludes) +
+                      " in all");
     const fs::path found = resolve(name);
     if (found.empty()) return fail(from, line, file + " not found");
     std::error_code ec;
@@ -202,6 +203,8 @@ class Checker {
 
 }  // namespace
 
-std::string checkSceneText(const std::string& path) { return Checker(path).run(); }
+std::string checkSceneText(const std::string& path) {
+  return Checker(path).run();
+}
 
 }  // namespace figment::guard

@@ -9,62 +9,62 @@
 namespace figment::guard {
 
 const OpenDefinitions::Definition* OpenDefinitions::see(const Token& t, int depth) {
-    if (t.kind == Token::kClose)
-      while (!open_.empty() && open_.back().depth > depth) open_.pop_back();
-    const Expect expected = expect_;
-    expect_ = Expect::kNothing;
-    if (t.kind == Token::kOpen) {
-      if (expected == Expect::kBody) open_.push_back({pending_, pendingLine_, depth});
-      return nullptr;
-    }
-    if (t.kind != Token::kWord) return nullptr;
-    switch (expected) {
-      case Expect::kDefName:
-        pending_ = std::string(t.word), pendingLine_ = t.line, latest_[pending_] = t.line;
-        expect_ = Expect::kType;
-        return nullptr;
-      case Expect::kType:
-        expect_ = Expect::kBody;
-        return nullptr;
-      case Expect::kUseName: {
-        const auto latest = latest_.find(std::string(t.word));
-        if (latest == latest_.end()) return nullptr;
-        for (const Definition& d : open_)
-          if (d.name == t.word && d.line == latest->second) return &d;
-        return nullptr;
-      }
-      default:
-        if (t.word == "DEF") expect_ = Expect::kDefName;
-        if (t.word == "USE") expect_ = Expect::kUseName;
-        return nullptr;
-    }
-  }
-
-const std::string* ExternProtoUrls::see(const Token& t, int depth) {
-    const Stage stage = stage_;
-    stage_ = Stage::kNone;
-    const bool url = t.kind == Token::kString || t.kind == Token::kWord;
-    switch (stage) {
-      case Stage::kNone:
-        if (t.kind == Token::kWord && t.word == "EXTERNPROTO") stage_ = Stage::kName;
-        return nullptr;
-      case Stage::kName:
-        if (t.kind == Token::kWord) name_ = std::string(t.word), stage_ = Stage::kInterface;
-        return nullptr;
-      case Stage::kInterface:
-        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kInInterface, interfaceDepth_ = depth;
-        return nullptr;
-      case Stage::kInInterface:
-        stage_ = t.kind == Token::kClose && depth < interfaceDepth_ ? Stage::kUrl : Stage::kInInterface;
-        return nullptr;
-      case Stage::kUrl:
-        if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kFirstOfList;
-        return url ? &name_ : nullptr;
-      case Stage::kFirstOfList:
-        return url ? &name_ : nullptr;
-    }
+  if (t.kind == Token::kClose)
+    while (!open_.empty() && open_.back().depth > depth) open_.pop_back();
+  const Expect expected = expect_;
+  expect_ = Expect::kNothing;
+  if (t.kind == Token::kOpen) {
+    if (expected == Expect::kBody) open_.push_back({pending_, pendingLine_, depth});
     return nullptr;
   }
+  if (t.kind != Token::kWord) return nullptr;
+  switch (expected) {
+    case Expect::kDefName:
+      pending_ = std::string(t.word), pendingLine_ = t.line, latest_[pending_] = t.line;
+      expect_ = Expect::kType;
+      return nullptr;
+    case Expect::kType:
+      expect_ = Expect::kBody;
+      return nullptr;
+    case Expect::kUseName: {
+      const auto latest = latest_.find(std::string(t.word));
+      if (latest == latest_.end()) return nullptr;
+      for (const Definition& d : open_)
+        if (d.name == t.word && d.line == latest->second) return &d;
+      return nullptr;
+    }
+    default:
+      if (t.word == "DEF") expect_ = Expect::kDefName;
+      if (t.word == "USE") expect_ = Expect::kUseName;
+      return nullptr;
+  }
+}
+
+const std::string* ExternProtoUrls::see(const Token& t, int depth) {
+  const Stage stage = stage_;
+  stage_ = Stage::kNone;
+  const bool url = t.kind == Token::kString || t.kind == Token::kWord;
+  switch (stage) {
+    case Stage::kNone:
+      if (t.kind == Token::kWord && t.word == "EXTERNPROTO") stage_ = Stage::kName;
+      return nullptr;
+    case Stage::kName:
+      if (t.kind == Token::kWord) name_ = std::string(t.word), stage_ = Stage::kInterface;
+      return nullptr;
+    case Stage::kInterface:
+      if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kInInterface, interfaceDepth_ = depth;
+      return nullptr;
+    case Stage::kInInterface:
+      stage_ = t.kind == Token::kClose && depth < interfaceDepth_ ? Stage::kUrl : Stage::kInInterface;
+      return nullptr;
+    case Stage::kUrl:
+      if (t.kind == Token::kOpen && t.word == "[") stage_ = Stage::kFirstOfList;
+      return url ? &name_ : nullptr;
+    case Stage::kFirstOfList:
+      return url ? &name_ : nullptr;
+  }
+  return nullptr;
+}
 
 const OpenPrototypes::Prototype* OpenPrototypes::see(const Token& t, int depth) {
   const std::string_view before = lastWord_;
@@ -82,8 +82,7 @@ const OpenPrototypes::Prototype* OpenPrototypes::see(const Token& t, int depth) 
   if (t.kind == Token::kWord && t.word == "PROTO") expect_ = Expect::kName;
   if (t.kind != Token::kOpen) return nullptr;
   // A body opens with the first '{' one level below a PROTO whose interface has closed.
-  if (t.word == "{" && !open_.empty() && !open_.back().body && depth == open_.back().depth + 1 &&
-      before.empty()) {
+  if (t.word == "{" && !open_.empty() && !open_.back().body && depth == open_.back().depth + 1 && before.empty()) {
     open_.back().body = true;
     return nullptr;
   }
@@ -152,7 +151,7 @@ std::string CounterSteps::see(const Token& t, int depth) {
 std::string CounterSteps::stepValue(std::string_view word) {
   if (word.starts_with('=')) return connectedStep();
   const auto number = leadingWholeNumber(word);
-  if (!number) return "";  // Coin's read error
+  if (!number) return "";          // Coin's read error
   if (number->value % 65536 == 0)  // a short holds 65536 as 0
     return std::string(type_) + " { step " + std::string(word) + " } divides by zero: " +
            (number->rest.empty() ? "" : "Coin reads it as " + std::to_string(number->value) + "; ") +
@@ -163,7 +162,8 @@ std::string CounterSteps::stepValue(std::string_view word) {
 }
 
 std::string CounterSteps::connectedStep() const {
-  return std::string(type_) + " { step = ... } takes its step from a connection: Coin divides by the step, and a "
+  return std::string(type_) +
+         " { step = ... } takes its step from a connection: Coin divides by the step, and a "
          "step of 0 crashes it; give the step as a number";
 }
 
@@ -191,7 +191,7 @@ std::string ImageSizes::see(const Token& t) {
   std::string size;
   for (size_t i = 0; i + 1 < dimensions_.size(); ++i) {
     const auto read = static_cast<short>(dimensions_[i]);  // as Coin reads it, into a short
-    if (read <= 0) return "";  // Coin refuses or reads an empty image
+    if (read <= 0) return "";                              // Coin refuses or reads an empty image
     pixels *= read;
     size += (i ? " x " : "") + std::to_string(read);
   }

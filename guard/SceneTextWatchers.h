@@ -3,12 +3,12 @@
 // includes: each watcher takes every token in turn, with the nesting depth after it, and
 // says when it sees what Coin's reader would crash or hang on.
 
-#include "guard/SceneTokens.h"
-
 #include <functional>
 #include <map>
 #include <string>
 #include <vector>
+
+#include "guard/SceneTokens.h"
 
 namespace figment::guard {
 
@@ -35,7 +35,7 @@ class OpenDefinitions {
   Expect expect_ = Expect::kNothing;
   std::string pending_;
   int pendingLine_ = 0;
-  std::vector<Definition> open_;               // outermost first
+  std::vector<Definition> open_;                    // outermost first
   std::map<std::string, int, std::less<>> latest_;  // each name's last DEF line: a USE means that one
 };
 
@@ -114,9 +114,9 @@ class ImageSizes {
 
  private:
   size_t textSize_;
-  std::string_view field_;    // the image field whose size is being read
+  std::string_view field_;  // the image field whose size is being read
   std::vector<long long> dimensions_;
-  size_t wanted_ = 0;         // numbers in its size: 3, or 4 for SFImage3
+  size_t wanted_ = 0;  // numbers in its size: 3, or 4 for SFImage3
 };
 
 // The watchers whose finds are refusals in themselves (an EXTERNPROTO's URL is an include

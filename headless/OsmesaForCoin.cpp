@@ -42,9 +42,8 @@ cc_glglue_offscreen_data create(unsigned int width, unsigned int height) {
 SbBool makeCurrent(cc_glglue_offscreen_data handle) {
   auto* data = static_cast<OsmesaContext*>(handle);
   data->previous = OSMesaGetCurrentContext();
-  return OSMesaMakeCurrent(data->context, data->buffer.data(), GL_UNSIGNED_BYTE, data->width, data->height)
-             ? TRUE
-             : FALSE;
+  return OSMesaMakeCurrent(data->context, data->buffer.data(), GL_UNSIGNED_BYTE, data->width, data->height) ? TRUE
+                                                                                                            : FALSE;
 }
 
 void reinstatePrevious(cc_glglue_offscreen_data handle) {
@@ -69,6 +68,8 @@ cc_glglue_offscreen_cb_functions callbacks = {create, makeCurrent, reinstatePrev
 
 }  // namespace
 
-void useOsmesaForCoin() { cc_glglue_context_set_offscreen_cb_functions(&callbacks); }
+void useOsmesaForCoin() {
+  cc_glglue_context_set_offscreen_cb_functions(&callbacks);
+}
 
 }  // namespace figment

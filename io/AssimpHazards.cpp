@@ -21,7 +21,8 @@ namespace {
 constexpr std::streamsize kPlyHeaderBytes = 64 * 1024;
 
 std::string lowered(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
 }
 
@@ -36,7 +37,9 @@ bool looksLikePly(const std::string& path, const std::string& head) {
 
 // An element count as a PLY header gives it: decimal digits (assimp 5.2 reads the digits a word
 // begins with and wraps past 2^32). Shown cut short in an error line.
-std::string shownCount(const std::string& word) { return word.size() <= 20 ? word : word.substr(0, 20) + "..."; }
+std::string shownCount(const std::string& word) {
+  return word.size() <= 20 ? word : word.substr(0, 20) + "...";
+}
 
 // The header's lines, "ply" to "end_header", as assimp 5.2 reads them without looping: printable
 // text, each line a keyword of the format, and element counts the file's `bytes` can hold. Each
@@ -45,7 +48,7 @@ std::string shownCount(const std::string& word) { return word.size() <= 20 ? wor
 // the file hung it (fuzz_mesh: "element face 6666...60" in a 332-byte file; a million took 4 s).
 // "" when they are, else what is wrong.
 std::string plyHeaderProblem(const std::string& head, std::uintmax_t bytes) {
-  static constexpr std::array<std::string_view, 6> kKeywords = {"format", "comment", "obj_info",
+  static constexpr std::array<std::string_view, 6> kKeywords = {"format",  "comment",  "obj_info",
                                                                 "element", "property", "end_header"};
   std::istringstream lines(head);
   std::string line;
@@ -115,8 +118,8 @@ std::string offProblem(const std::string& text) {
   if (words.size() == 1 && !nextLine()) return bad("no vertex and face counts");
   const size_t first = words.size() >= 3 && lowered(words[0]) == "off" ? 1 : 0;
   long long vertices = 0, faces = 0;
-  if (words.size() < first + 2 || !count(words[first], vertices) || !count(words[first + 1], faces) ||
-      vertices < 1 || faces < 1)
+  if (words.size() < first + 2 || !count(words[first], vertices) || !count(words[first + 1], faces) || vertices < 1 ||
+      faces < 1)
     return bad("not the vertex and face counts");
   for (long long v = 0; v < vertices; ++v) {
     if (!nextLine()) return bad("fewer vertices than the " + std::to_string(vertices) + " counted");
@@ -162,8 +165,10 @@ void correctPrimitiveTypes(aiScene& scene) {
     unsigned types = 0;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const unsigned n = mesh.mFaces[f].mNumIndices;
-      types |= n == 1 ? aiPrimitiveType_POINT : n == 2 ? aiPrimitiveType_LINE : n == 3 ? aiPrimitiveType_TRIANGLE
-                                                                                      : aiPrimitiveType_POLYGON;
+      types |= n == 1   ? aiPrimitiveType_POINT
+               : n == 2 ? aiPrimitiveType_LINE
+               : n == 3 ? aiPrimitiveType_TRIANGLE
+                        : aiPrimitiveType_POLYGON;
     }
     mesh.mPrimitiveTypes = types;
   }

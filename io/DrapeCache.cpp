@@ -1,10 +1,5 @@
 #include "io/DrapeCache.h"
 
-#include "io/AtomicFile.h"
-#include "io/ByteReader.h"
-#include "io/ByteWriter.h"
-#include "io/Fnv1a.h"
-
 #include <algorithm>
 #include <cinttypes>
 #include <cstdio>
@@ -13,10 +8,16 @@
 #include <iterator>
 #include <system_error>
 
+#include "io/AtomicFile.h"
+#include "io/ByteReader.h"
+#include "io/ByteWriter.h"
+#include "io/Fnv1a.h"
+
 namespace figment {
 
 namespace {
-constexpr std::array<char, 16> kMagic = {'f', 'i', 'g', 'm', 'e', 'n', 't', '-', 'd', 'r', 'a', 'p', 'e', ' ', '1', '\n'};
+constexpr std::array<char, 16> kMagic = {'f', 'i', 'g', 'm', 'e', 'n', 't', '-',
+                                         'd', 'r', 'a', 'p', 'e', ' ', '1', '\n'};
 // Three digests of a key, each FNV-1a from its own basis.
 constexpr std::uint64_t kBases[3] = {14695981039346656037ull, 0x84222325cbf29ce4ull, 0x9e3779b97f4a7c15ull};
 
@@ -46,8 +47,7 @@ DrapeCache::DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes)
 
 std::filesystem::path DrapeCache::userFolder() {
   if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "figment";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return std::filesystem::path(home) / ".cache" / "figment";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "figment";
   return {};
 }
 
@@ -67,8 +67,8 @@ std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string&
   std::array<char, 16> magic{};
   std::uint64_t keyDigest = 0, size = 0, sum = 0;
   CachedDrape drape;
-  bool sound = header.get(magic) && magic == kMagic && header.get(keyDigest) &&
-               keyDigest == digest(key, 2) && header.get(size) && header.get(sum);
+  bool sound = header.get(magic) && magic == kMagic && header.get(keyDigest) && keyDigest == digest(key, 2) &&
+               header.get(size) && header.get(sum);
   const std::size_t headerSize = kMagic.size() + 3 * sizeof(std::uint64_t);
   sound = sound && bytes.size() == headerSize + size;
   if (sound) {

@@ -4,17 +4,16 @@
 
 #include "io/MeshExport.h"
 
-#include "io/AtomicFile.h"
-
-#include <assimp/Exporter.hpp>
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
+#include <assimp/Exporter.hpp>
 #include <memory>
 #include <stdexcept>
 
-namespace figment {
+#include "io/AtomicFile.h"
 
+namespace figment {
 
 namespace {
 
@@ -26,7 +25,7 @@ std::unique_ptr<aiScene> sceneOf(const TriangleMesh& mesh) {
   scene->mRootNode->mMeshes = new unsigned[1]{0};
 
   scene->mNumMaterials = 1;
-  scene->mMaterials = new aiMaterial*[1]{new aiMaterial()};
+  scene->mMaterials = new aiMaterial* [1] { new aiMaterial() };
 
   auto* part = new aiMesh();
   part->mName = "garment";
@@ -48,7 +47,7 @@ std::unique_ptr<aiScene> sceneOf(const TriangleMesh& mesh) {
     for (int k = 0; k < 3; ++k) face.mIndices[k] = static_cast<unsigned>(mesh.triangles[f][k]);
   }
   scene->mNumMeshes = 1;
-  scene->mMeshes = new aiMesh*[1]{part};
+  scene->mMeshes = new aiMesh* [1] { part };
   return scene;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Writes a mesh (metres, y up) to a file others can read: the garments our tools make.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <string>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

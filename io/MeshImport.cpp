@@ -15,17 +15,17 @@
 
 #include "MeshImport.h"
 
-#include "io/AssimpHazards.h"
-
-#include <assimp/Importer.hpp>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <assimp/Importer.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
+
+#include "io/AssimpHazards.h"
 
 namespace figment {
 

@@ -2,19 +2,19 @@
 // Reads a mesh file (Collada, .zae, OBJ, PLY, ... anything assimp reads) into the
 // scene frame: metres, y up. Bodies and garments both come in through here.
 
-#include "io/UpAxis.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <string>
 #include <vector>
+
+#include "io/UpAxis.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
 struct ImportOptions {
-  double metresPerUnit = 1.0;       // scale applied to the file's coordinates
-  UpAxis upAxis = UpAxis::Y;        // the file's up axis; rotated onto +y
-  std::vector<std::string> exclude; // names of meshes in the file to leave out
-  bool mergeByPosition = true;      // weld vertices split along texture seams
+  double metresPerUnit = 1.0;        // scale applied to the file's coordinates
+  UpAxis upAxis = UpAxis::Y;         // the file's up axis; rotated onto +y
+  std::vector<std::string> exclude;  // names of meshes in the file to leave out
+  bool mergeByPosition = true;       // weld vertices split along texture seams
 };
 
 struct ImportedMesh {

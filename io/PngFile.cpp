@@ -1,7 +1,5 @@
 #include "io/PngFile.h"
 
-#include "io/AtomicFile.h"
-
 #include <png.h>
 
 #include <cerrno>
@@ -10,6 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <vector>
+
+#include "io/AtomicFile.h"
 
 namespace figment {
 

@@ -1,14 +1,14 @@
 #include "io/ProgressiveScript.h"
 
-#include "io/AtomicFile.h"
-#include "io/Fnv1a.h"
-
 #include <cinttypes>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/AtomicFile.h"
+#include "io/Fnv1a.h"
 
 namespace figment {
 
@@ -34,7 +34,8 @@ void writeSplit(std::ostream& out, const VertexSplit& s) {
   writeVec(out, s.addedRest);
   writeVec(out, s.collapsedRest);
   out << ' ' << s.restored.size();
-  for (const RestoredFace& f : s.restored) out << ' ' << f.face << ' ' << f.corners[0] << ' ' << f.corners[1] << ' ' << f.corners[2];
+  for (const RestoredFace& f : s.restored)
+    out << ' ' << f.face << ' ' << f.corners[0] << ' ' << f.corners[1] << ' ' << f.corners[2];
   out << ' ' << s.repointed.size();
   for (int f : s.repointed) out << ' ' << f;
   out << '\n';
@@ -106,7 +107,8 @@ ProgressiveMesh readProgressiveScript(const std::string& path, const TriangleMes
   size_t vertices = 0, faces = 0, splits = 0;
   if (!(in >> magic >> version) || magic != kMagic || version != kVersion)
     throw fail(1, std::string("not a ") + kMagic + " " + std::to_string(kVersion) + " file");
-  if (!(in >> word >> vertices >> faces >> hash) || word != "garment") throw fail(2, "expected garment VERTICES FACES HASH");
+  if (!(in >> word >> vertices >> faces >> hash) || word != "garment")
+    throw fail(2, "expected garment VERTICES FACES HASH");
   if (vertices != garment.vertices.size() || faces != garment.triangles.size())
     throw fail(2, "for a garment of " + std::to_string(vertices) + " vertices and " + std::to_string(faces) +
                       " faces, not this one's " + std::to_string(garment.vertices.size()) + " and " +
@@ -119,8 +121,8 @@ ProgressiveMesh readProgressiveScript(const std::string& path, const TriangleMes
   std::getline(in, line);
   for (size_t k = 0; k < splits; ++k) {
     const int number = static_cast<int>(k) + 4;
-    if (!std::getline(in, line)) throw fail(number, "the file ends after " + std::to_string(k) + " of " +
-                                                        std::to_string(splits) + " splits");
+    if (!std::getline(in, line))
+      throw fail(number, "the file ends after " + std::to_string(k) + " of " + std::to_string(splits) + " splits");
     try {
       mesh.splits.push_back(parseSplit(line, static_cast<int>(vertices), static_cast<int>(faces)));
     } catch (const std::runtime_error& error) {

@@ -4,10 +4,10 @@
 // itself is not in it: a script belongs to one garment, checked by its vertex and face
 // counts and a hash of its rest coordinates (as floats, as a scene holds them) and faces.
 
-#include "sim/progressive/ProgressiveMesh.h"
-
 #include <cstdint>
 #include <string>
+
+#include "sim/progressive/ProgressiveMesh.h"
 
 namespace figment {
 

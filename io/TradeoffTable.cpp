@@ -58,7 +58,8 @@ std::vector<MeasuredConfiguration> readTradeoffTable(const std::string& path) {
     if (line.empty()) continue;
     const std::string where = path + ":" + std::to_string(number_);
     const std::vector<std::string> cells = splitCsv(line);
-    if (cells.size() != 7) throw std::runtime_error(where + ": expected 7 columns, found " + std::to_string(cells.size()));
+    if (cells.size() != 7)
+      throw std::runtime_error(where + ": expected 7 columns, found " + std::to_string(cells.size()));
     MeasuredConfiguration c{cells[0], cells[1], cells[2]};
     c.resolution = number(cells[3], where);
     c.garments = static_cast<int>(number(cells[4], where));
@@ -106,15 +107,24 @@ void applyMethod(const std::string& method, ClothParameters& p) {
   };
   if (parts.size() != 2 && parts.size() != 4) throw bad("wrong number of parts");
   const std::string integrator = parts[0].substr(0, parts[0].find('+'));
-  const std::string contacts = parts[0].find('+') == std::string::npos ? "constraints" : parts[0].substr(parts[0].find('+') + 1);
-  if (integrator == "heun") p.integrator = Integrator::Heun;
-  else if (integrator == "euler") p.integrator = Integrator::ExplicitEuler;
-  else if (integrator == "symplectic") p.integrator = Integrator::SymplecticEuler;
-  else if (integrator == "implicit") p.integrator = Integrator::Implicit;
-  else throw bad("no integrator " + integrator);
-  if (contacts == "constraints") p.implicitSolver.contacts = ContactModel::Constraints;
-  else if (contacts == "penalty") p.implicitSolver.contacts = ContactModel::Penalty;
-  else throw bad("no contact model " + contacts);
+  const std::string contacts =
+      parts[0].find('+') == std::string::npos ? "constraints" : parts[0].substr(parts[0].find('+') + 1);
+  if (integrator == "heun")
+    p.integrator = Integrator::Heun;
+  else if (integrator == "euler")
+    p.integrator = Integrator::ExplicitEuler;
+  else if (integrator == "symplectic")
+    p.integrator = Integrator::SymplecticEuler;
+  else if (integrator == "implicit")
+    p.integrator = Integrator::Implicit;
+  else
+    throw bad("no integrator " + integrator);
+  if (contacts == "constraints")
+    p.implicitSolver.contacts = ContactModel::Constraints;
+  else if (contacts == "penalty")
+    p.implicitSolver.contacts = ContactModel::Penalty;
+  else
+    throw bad("no contact model " + contacts);
   const auto parse = [&](const std::string& text) {
     const std::optional<double> value = readNumber(text);
     if (!value) throw bad("\"" + text + "\" is not a number");
@@ -123,9 +133,12 @@ void applyMethod(const std::string& method, ClothParameters& p) {
   p.timeStep = parse(parts[1]);
   p.accelerationLimiter = AccelerationLimiter::None;
   if (parts.size() == 4) {
-    if (parts[2] == "clamp") p.accelerationLimiter = AccelerationLimiter::Clamp;
-    else if (parts[2] == "tanh") p.accelerationLimiter = AccelerationLimiter::Tanh;
-    else if (parts[2] != "none") throw bad("no limiter " + parts[2]);
+    if (parts[2] == "clamp")
+      p.accelerationLimiter = AccelerationLimiter::Clamp;
+    else if (parts[2] == "tanh")
+      p.accelerationLimiter = AccelerationLimiter::Tanh;
+    else if (parts[2] != "none")
+      throw bad("no limiter " + parts[2]);
     p.accelerationLimit = parse(parts[3]);
   }
   if (!(p.timeStep > 0.0)) throw bad("the time step must be > 0");

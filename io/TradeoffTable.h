@@ -12,12 +12,12 @@
 // heun:1.5e-4:clamp:30), body volumes/capsules/triangles, progressive off or
 // BEGIN_SHARE:RATE.
 
-#include "sim/cloth/ClothParameters.h"
-
 #include <functional>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "sim/cloth/ClothParameters.h"
 
 namespace figment {
 

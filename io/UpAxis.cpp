@@ -11,20 +11,26 @@ namespace {
 
 // Each axis with its name and its direction in the file's coordinates.
 const std::array<std::pair<UpAxis, const char*>, 6> kNames = {{{UpAxis::X, "X"},
-                                                              {UpAxis::Y, "Y"},
-                                                              {UpAxis::Z, "Z"},
-                                                              {UpAxis::NegX, "NEG_X"},
-                                                              {UpAxis::NegY, "NEG_Y"},
-                                                              {UpAxis::NegZ, "NEG_Z"}}};
+                                                               {UpAxis::Y, "Y"},
+                                                               {UpAxis::Z, "Z"},
+                                                               {UpAxis::NegX, "NEG_X"},
+                                                               {UpAxis::NegY, "NEG_Y"},
+                                                               {UpAxis::NegZ, "NEG_Z"}}};
 
 Vec3 direction(UpAxis up) {
   switch (up) {
-    case UpAxis::X: return Vec3::UnitX();
-    case UpAxis::Y: return Vec3::UnitY();
-    case UpAxis::Z: return Vec3::UnitZ();
-    case UpAxis::NegX: return -Vec3::UnitX();
-    case UpAxis::NegY: return -Vec3::UnitY();
-    case UpAxis::NegZ: return -Vec3::UnitZ();
+    case UpAxis::X:
+      return Vec3::UnitX();
+    case UpAxis::Y:
+      return Vec3::UnitY();
+    case UpAxis::Z:
+      return Vec3::UnitZ();
+    case UpAxis::NegX:
+      return -Vec3::UnitX();
+    case UpAxis::NegY:
+      return -Vec3::UnitY();
+    case UpAxis::NegZ:
+      return -Vec3::UnitZ();
   }
   return Vec3::UnitY();
 }
@@ -33,12 +39,18 @@ Vec3 direction(UpAxis up) {
 
 Vec3 toYUp(const Vec3& p, UpAxis up) {
   switch (up) {
-    case UpAxis::Y: return p;
-    case UpAxis::Z: return {p.x(), p.z(), -p.y()};      // -90 degrees about x
-    case UpAxis::X: return {-p.y(), p.x(), p.z()};      // +90 degrees about z
-    case UpAxis::NegY: return {p.x(), -p.y(), -p.z()};  // 180 degrees about x
-    case UpAxis::NegZ: return {p.x(), -p.z(), p.y()};   // +90 degrees about x
-    case UpAxis::NegX: return {p.y(), -p.x(), p.z()};   // -90 degrees about z
+    case UpAxis::Y:
+      return p;
+    case UpAxis::Z:
+      return {p.x(), p.z(), -p.y()};  // -90 degrees about x
+    case UpAxis::X:
+      return {-p.y(), p.x(), p.z()};  // +90 degrees about z
+    case UpAxis::NegY:
+      return {p.x(), -p.y(), -p.z()};  // 180 degrees about x
+    case UpAxis::NegZ:
+      return {p.x(), -p.z(), p.y()};  // +90 degrees about x
+    case UpAxis::NegX:
+      return {p.y(), -p.x(), p.z()};  // -90 degrees about z
   }
   return p;
 }

@@ -3,10 +3,10 @@
 // by MeshFile's `upAxis` field, importMesh and the tools' --up-axis option, so that all
 // three bring a file into the same frame.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <optional>
 #include <string>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -1,21 +1,21 @@
 #include "nodes/Init.h"
 
+#include <Inventor/SoDB.h>
+
 #include "nodes/body/CapsuleVolume.h"
 #include "nodes/body/CollisionGroup.h"
-#include "nodes/cloth/GarmentSurface.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/render/DepthSortedGroup.h"
 #include "nodes/body/ExactVolume.h"
+#include "nodes/body/HumanBody.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MannequinSkin.h"
-#include "nodes/body/HumanBody.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/GarmentSurface.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/DepthSortedGroup.h"
 #include "nodes/render/StencilSeparator.h"
-
-#include <Inventor/SoDB.h>
 
 namespace figment {
 

@@ -1,12 +1,12 @@
 #include "nodes/SceneFiles.h"
 
-#include "io/MeshImport.h"
-
 #include <Inventor/SoInput.h>
 #include <Inventor/lists/SbStringList.h>
 
 #include <algorithm>
 #include <filesystem>
+
+#include "io/MeshImport.h"
 
 namespace figment {
 

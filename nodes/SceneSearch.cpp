@@ -1,7 +1,5 @@
 #include "nodes/SceneSearch.h"
 
-#include "nodes/cloth/ClothEngine.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoNodeEngine.h>
@@ -13,6 +11,8 @@
 
 #include <set>
 #include <unordered_set>
+
+#include "nodes/cloth/ClothEngine.h"
 
 namespace figment {
 

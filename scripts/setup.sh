@@ -11,12 +11,14 @@ targets=("$@")
 # libpng-dev: PNG files written byte for byte (io/PngFile); python3-pivy: the guard's
 # call from a pivy program (tests/guard/test_GuardC.py). libcpp-httplib-dev: figment-serve's
 # HTTP; chromium, chromium-driver, python3-selenium: its page tested in a real browser
-# (tests/serve/scenarios/test_page.py); wrk: bench/serve-load.sh.
+# (tests/serve/scenarios/test_page.py); wrk: bench/serve-load.sh; clang-format: ctest's
+# lint.Formatting (scripts/check-format.sh).
 packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   assimp-testmodels python3-matplotlib python3-pivy
-  libcpp-httplib-dev chromium chromium-driver python3-selenium wrk)
+  libcpp-httplib-dev chromium chromium-driver python3-selenium wrk
+  clang-format)
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,8 +1,8 @@
 #include "session/DrapeRecorder.h"
 
-#include "sim/cloth/ClothSolver.h"
-
 #include <cmath>
+
+#include "sim/cloth/ClothSolver.h"
 
 namespace figment::session {
 
@@ -21,13 +21,14 @@ std::vector<SbVec3f> toFloats(const std::vector<Vec3>& x) {
 
 }  // namespace
 
-DrapeRecorder::DrapeRecorder(std::shared_ptr<DrapeContext> context, std::vector<double> frameTimes,
-                             double windSpacing)
+DrapeRecorder::DrapeRecorder(std::shared_ptr<DrapeContext> context, std::vector<double> frameTimes, double windSpacing)
     : context_(std::move(context)), frameTimes_(std::move(frameTimes)), windSpacing_(windSpacing) {
   context_->stepObserver = [this](const ClothEngine& engine, const ClothSolver& solver) { observe(engine, solver); };
 }
 
-DrapeRecorder::~DrapeRecorder() { context_->stepObserver = {}; }
+DrapeRecorder::~DrapeRecorder() {
+  context_->stepObserver = {};
+}
 
 void DrapeRecorder::observe(const ClothEngine& engine, const ClothSolver& solver) {
   // A run's first call comes before its first step: an engine simulating again starts over.
@@ -48,7 +49,9 @@ void DrapeRecorder::observe(const ClothEngine& engine, const ClothSolver& solver
   }
 }
 
-bool DrapeRecorder::observed(const ClothEngine& engine) const { return records_.count(&engine) > 0; }
+bool DrapeRecorder::observed(const ClothEngine& engine) const {
+  return records_.count(&engine) > 0;
+}
 
 std::vector<SbVec3f> DrapeRecorder::frame(const ClothEngine& engine, size_t k) const {
   const auto found = records_.find(&engine);

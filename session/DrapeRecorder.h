@@ -3,23 +3,23 @@
 // --wind-force), recorded by the step observer of a drape context while the session
 // drapes: the garment's positions at chosen simulated times, and the wind's total force.
 
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/DrapeContext.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <Inventor/SbVec3f.h>
 
 #include <map>
 #include <memory>
 #include <vector>
 
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/DrapeContext.h"
+#include "sim/core/TriangleMesh.h"
+
 namespace figment::session {
 
 // The wind on a whole garment at one moment (paper §2, Fig. 2.2; sim/cloth/Wind.h).
 struct WindSample {
-  double time = 0.0;      // s simulated
-  double pressure = 0.0;  // Pa, p(t)
-  double phase = 0.0;     // rad, phi(t): the phase after the last random change
+  double time = 0.0;          // s simulated
+  double pressure = 0.0;      // Pa, p(t)
+  double phase = 0.0;         // rad, phi(t): the phase after the last random change
   Vec3 force = Vec3::Zero();  // N, the sum over the sections of p(t) A |n . w| w
 };
 

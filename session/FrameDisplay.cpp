@@ -1,10 +1,10 @@
 #include "session/FrameDisplay.h"
 
-#include "nodes/body/CollisionBody.h"
-
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/nodes/SoNode.h>
+
+#include "nodes/body/CollisionBody.h"
 
 namespace figment::session {
 
@@ -15,8 +15,7 @@ void showPositions(ClothEngine& engine, const std::vector<SbVec3f>& positions) {
     SoField* field = fed[i];
     if (!field->isOfType(SoMFVec3f::getClassTypeId())) continue;
     SoFieldContainer* container = field->getContainer();
-    if (container && container->isOfType(SoNode::getClassTypeId()) &&
-        asCollisionBody(static_cast<SoNode*>(container)))
+    if (container && container->isOfType(SoNode::getClassTypeId()) && asCollisionBody(static_cast<SoNode*>(container)))
       continue;
     field->enableConnection(FALSE);
     auto* points = static_cast<SoMFVec3f*>(field);

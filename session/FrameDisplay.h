@@ -1,11 +1,11 @@
 #pragma once
 // figment-view --frames: shows a recorded state of a garment in place of its drape.
 
-#include "nodes/cloth/ClothEngine.h"
-
 #include <Inventor/SbVec3f.h>
 
 #include <vector>
+
+#include "nodes/cloth/ClothEngine.h"
 
 namespace figment::session {
 

@@ -1,11 +1,11 @@
 #include "session/SceneRenderer.h"
 
-#include "nodes/render/StencilRuleElement.h"
-#include "io/PngFile.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoOffscreenRenderer.h>
 #include <Inventor/actions/SoGLRenderAction.h>
+
+#include "io/PngFile.h"
+#include "nodes/render/StencilRuleElement.h"
 
 namespace figment::session {
 
@@ -18,7 +18,9 @@ SceneRenderer::SceneRenderer(const ImageSize& size)
 
 SceneRenderer::~SceneRenderer() = default;
 
-SbColor SceneRenderer::background() { return SbColor(0.8f, 0.8f, 0.8f); }
+SbColor SceneRenderer::background() {
+  return SbColor(0.8f, 0.8f, 0.8f);
+}
 
 std::string SceneRenderer::render(SoNode* root, bool keepStencilFields) {
   // The stencil rule runs inside the render (StencilSeparator, ClothingLayer); it is
@@ -30,7 +32,9 @@ std::string SceneRenderer::render(SoNode* root, bool keepStencilFields) {
   return rendered_ ? "" : "could not render: no off-screen OpenGL context";
 }
 
-const unsigned char* SceneRenderer::pixels() const { return rendered_ ? renderer_->getBuffer() : nullptr; }
+const unsigned char* SceneRenderer::pixels() const {
+  return rendered_ ? renderer_->getBuffer() : nullptr;
+}
 
 std::string SceneRenderer::writePng(const std::string& path) const {
   if (!rendered_) return "nothing rendered";

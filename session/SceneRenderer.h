@@ -1,12 +1,12 @@
 #pragma once
 // Renders a staged scene off-screen and writes it as a PNG image.
 
-#include "session/SessionOptions.h"
-
 #include <Inventor/SbColor.h>
 
 #include <memory>
 #include <string>
+
+#include "session/SessionOptions.h"
 
 class SoNode;
 class SoOffscreenRenderer;

@@ -1,12 +1,11 @@
 #include "session/SceneSession.h"
 
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "guard/Guard.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "session/SceneStaging.h"
-
-#include "guard/Guard.h"
-
-#include <Inventor/nodes/SoSeparator.h>
 
 namespace figment::session {
 
@@ -27,11 +26,14 @@ CollisionBody::Description describe(SoNode* body) {
 // The method that ran (with a tolerance, the picked one's), else (nothing ran) the fields'.
 DrapeMethod methodOf(ClothEngine& engine, const ClothEngine::RunStats& run) {
   if (!run.integrator.empty())
-    return {run.integrator, run.timeStep, run.strainLimit, run.accelerationLimiter, run.accelerationLimit,
-            run.contactModel, run.maxTime};
-  return {fieldText(engine.integrator),          engine.timeStep.getValue(),
-          engine.strainLimit.getValue(),         fieldText(engine.accelerationLimiter),
-          engine.accelerationLimit.getValue(),   fieldText(engine.contactModel),
+    return {run.integrator,        run.timeStep,     run.strainLimit, run.accelerationLimiter,
+            run.accelerationLimit, run.contactModel, run.maxTime};
+  return {fieldText(engine.integrator),
+          engine.timeStep.getValue(),
+          engine.strainLimit.getValue(),
+          fieldText(engine.accelerationLimiter),
+          engine.accelerationLimit.getValue(),
+          fieldText(engine.contactModel),
           engine.maxTime.getValue()};
 }
 
@@ -63,7 +65,9 @@ SceneSession::SceneSession() : SceneSession(std::make_shared<DrapeContext>()) {}
 SceneSession::SceneSession(std::shared_ptr<DrapeContext> context)
     : context_(context ? std::move(context) : std::make_shared<DrapeContext>()) {}
 
-SceneSession::~SceneSession() { clear(); }
+SceneSession::~SceneSession() {
+  clear();
+}
 
 void SceneSession::clear() {
   for (ClothEngine* engine : engines_) engine->setDrapeContext(nullptr);  // one held elsewhere drapes alone

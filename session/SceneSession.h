@@ -3,17 +3,17 @@
 // for every front end (figment-view, figment-bench, a service). Rendering the staged root
 // is SceneRenderer's.
 
-#include "nodes/body/CollisionBody.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/DrapeContext.h"
-#include "session/SessionOptions.h"
-
 #include <Inventor/SbBox3f.h>
 
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "nodes/body/CollisionBody.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/DrapeContext.h"
+#include "session/SessionOptions.h"
 
 class SoSeparator;
 
@@ -122,7 +122,7 @@ class SceneSession {
   SbBox3f stagedBox_;
   std::string loadError_;
   std::string shapeError_;
-  bool shapesChecked_ = false;  // since the scene was loaded or last draped
+  bool shapesChecked_ = false;             // since the scene was loaded or last draped
   std::shared_ptr<DrapeContext> context_;  // never null
   std::vector<ClothEngine*> engines_;
   std::vector<EngineDrape> drapes_;

@@ -1,7 +1,5 @@
 #include "session/SceneStaging.h"
 
-#include "nodes/SceneSearch.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -17,13 +15,17 @@
 #include <cmath>
 #include <numbers>
 
+#include "nodes/SceneSearch.h"
+
 namespace figment::session {
 
 namespace {
 
 constexpr float kFieldOfView = 45.0f * std::numbers::pi_v<float> / 180.0f;  // vertical, radians
 
-float radians(double degrees) { return float(degrees * std::numbers::pi / 180.0); }
+float radians(double degrees) {
+  return float(degrees * std::numbers::pi / 180.0);
+}
 
 // Paths to the nodes of `type` under `root` (which the caller holds a reference to);
 // `all` includes inactive Switch children.
@@ -75,8 +77,8 @@ SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view
   for (int corner = 0; corner < 8; ++corner) {
     const SbVec3f p((corner & 1) ? high[0] : low[0], (corner & 2) ? high[1] : low[1], (corner & 4) ? high[2] : low[2]);
     const SbVec3f v = p - centre;
-    const float needed = v.dot(toCamera) + std::max(std::abs(v.dot(right)) / tanHorizontal,
-                                                    std::abs(v.dot(up)) / tanVertical);
+    const float needed =
+        v.dot(toCamera) + std::max(std::abs(v.dot(right)) / tanHorizontal, std::abs(v.dot(up)) / tanVertical);
     distance = std::max(distance, needed);
   }
 

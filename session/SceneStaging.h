@@ -1,12 +1,12 @@
 #pragma once
 // What figment-view adds around a scene so it can be seen: a camera and a light.
 
-#include "session/SessionOptions.h"
-
 #include <Inventor/SbBox3f.h>
 #include <Inventor/SbVec3f.h>
 
 #include <optional>
+
+#include "session/SessionOptions.h"
 
 class SoNode;
 class SoPerspectiveCamera;

@@ -1,14 +1,14 @@
 #include "ToolMain.h"
 
-#include "io/MeshImport.h"
-#include "sim/body/BodyStance.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
+
+#include "io/MeshImport.h"
+#include "sim/body/BodyStance.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment::tools {
 
@@ -72,8 +72,8 @@ std::string bodyFrameProblem(const TriangleMesh& body, const BodyInput& input) {
     fix += "--up-axis " + upAxisName(fileAxis.value_or(UpAxis::Y));
   }
   if (!humanSize) {
-    problem += std::string(upright ? "" : ", and ") + "is " + tall + ", not " + formatNumber(kMinStature) +
-               " to " + formatNumber(kMaxStature) + " m";
+    problem += std::string(upright ? "" : ", and ") + "is " + tall + ", not " + formatNumber(kMinStature) + " to " +
+               formatNumber(kMaxStature) + " m";
     fix += std::string(fix.empty() ? "" : " ") + "--metres-per-unit " +
            suggestion(input.metresPerUnit * kTypicalStature / stance.stature) + " (for " +
            formatNumber(kTypicalStature) + " m)";

@@ -5,13 +5,12 @@
 // any error into one line "<program>: <file>: <reason>" on stderr with exit status 1.
 
 #include <CLI/CLI.hpp>
-
-#include "io/UpAxis.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "io/UpAxis.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::tools {
 

@@ -5,15 +5,15 @@
 // success one summary line goes to stdout; any error is one line on stderr, exit 1, and
 // no output file.
 
-#include "io/MeshImport.h"
-#include "io/ProgressiveScript.h"
-#include "sim/progressive/Decimation.h"
-#include "ToolMain.h"
-
 #include <chrono>
 #include <cstdio>
 #include <exception>
 #include <string>
+
+#include "ToolMain.h"
+#include "io/MeshImport.h"
+#include "io/ProgressiveScript.h"
+#include "sim/progressive/Decimation.h"
 
 namespace {
 
@@ -35,8 +35,7 @@ int decimateAndWrite(const std::string& input, const figment::DecimationOptions&
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Decimates a garment by edge collapses and writes the vertex splits that rebuild it.",
-               kTool.program()};
+  CLI::App app{"Decimates a garment by edge collapses and writes the vertex splits that rebuild it.", kTool.program()};
   std::string input, output;
   figment::DecimationOptions options;
   options.targetFaces = 200;

@@ -16,22 +16,11 @@
 // SkeletonJoints and the volume nodes. One summary line on stdout; any error is one
 // line, "figment-fit: <file>: <reason>", exit status 1, and no file.
 
-#include "io/AtomicFile.h"
-#include "io/MeshImport.h"
-#include "nodes/body/CapsuleVolume.h"
-#include "nodes/body/ExactVolume.h"
-#include "nodes/Init.h"
-#include "nodes/body/RadialDepthVolume.h"
-#include "nodes/body/SkeletonJoints.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
-#include "sim/body/SkeletonEstimate.h"
-#include "ToolMain.h"
-
-#include <CLI/CLI.hpp>
 #include <Inventor/SoOutput.h>
 #include <Inventor/actions/SoWriteAction.h>
 #include <Inventor/nodes/SoGroup.h>
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -39,6 +28,17 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include "ToolMain.h"
+#include "io/AtomicFile.h"
+#include "io/MeshImport.h"
+#include "nodes/Init.h"
+#include "nodes/body/CapsuleVolume.h"
+#include "nodes/body/ExactVolume.h"
+#include "nodes/body/RadialDepthVolume.h"
+#include "nodes/body/SkeletonJoints.h"
+#include "sim/body/SkeletonEstimate.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
 
 namespace {
 
@@ -184,7 +184,6 @@ int main(int argc, char** argv) {
   Options options;
   if (const int status = parseCommandLine(argc, argv, options); status >= 0) return status;
   figment::init();
-  return kTool.withBody(options.body, [&](const figment::TriangleMesh& body, const std::string&) {
-    return fitAndWrite(options, body);
-  });
+  return kTool.withBody(
+      options.body, [&](const figment::TriangleMesh& body, const std::string&) { return fitAndWrite(options, body); });
 }

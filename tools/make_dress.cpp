@@ -6,28 +6,29 @@
 // that would fix it. On success one summary line goes to stdout. Any error is one line,
 // "figment-make-dress: <file>: <reason>", on stderr and exit status 1, with no output file.
 
-#include "io/MeshExport.h"
-#include "sim/garment/StrapDress.h"
-#include "ToolMain.h"
-
 #include <CLI/CLI.hpp>
-
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "ToolMain.h"
+#include "io/MeshExport.h"
+#include "sim/garment/StrapDress.h"
 
 namespace {
 
 const figment::tools::ToolMain kTool{"figment-make-dress"};
 
 // Makes the dress around `body` and writes it: the exit status.
-int makeAndWrite(const figment::TriangleMesh& body, const figment::StrapDressOptions& options, const std::string& output) {
+int makeAndWrite(const figment::TriangleMesh& body, const figment::StrapDressOptions& options,
+                 const std::string& output) {
   const figment::StrapDress dress = figment::makeStrapDress(body, options);
   figment::exportObj(dress.mesh, output);
-  std::printf("%s: %s: %zu vertices, %zu triangles, top %.3f m (%.3f m between the straps), hem %.3f m, "
-              "straps at x = %.3f, %.3f m\n",
-              kTool.program().c_str(), output.c_str(), dress.mesh.vertices.size(), dress.mesh.triangles.size(),
-              dress.topHeight, dress.necklineHeight, dress.hemHeight, dress.strapX[0], dress.strapX[1]);
+  std::printf(
+      "%s: %s: %zu vertices, %zu triangles, top %.3f m (%.3f m between the straps), hem %.3f m, "
+      "straps at x = %.3f, %.3f m\n",
+      kTool.program().c_str(), output.c_str(), dress.mesh.vertices.size(), dress.mesh.triangles.size(), dress.topHeight,
+      dress.necklineHeight, dress.hemHeight, dress.strapX[0], dress.strapX[1]);
   return 0;
 }
 
@@ -40,8 +41,7 @@ int main(int argc, char** argv) {
   figment::StrapDressOptions options;
   figment::tools::addBodyOptions(app, body);
   app.add_option("-o,--output", output, "OBJ file to write")->required();
-  app.add_option("--clearance", options.clearance, "gap between body and dress at the start, m")
-      ->capture_default_str();
+  app.add_option("--clearance", options.clearance, "gap between body and dress at the start, m")->capture_default_str();
   app.add_option("--neckline-rise", options.necklineRise, "rise of the top edge between the straps, m")
       ->capture_default_str();
   app.add_option("--strap-offset", options.strapOffset,

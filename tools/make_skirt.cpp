@@ -6,26 +6,28 @@
 // to stdout. Any error is one line,
 // "figment-make-skirt: <file>: <reason>", on stderr and exit status 1, with no output file.
 
-#include "io/MeshExport.h"
-#include "sim/garment/FlaredSkirt.h"
-#include "ToolMain.h"
-
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "ToolMain.h"
+#include "io/MeshExport.h"
+#include "sim/garment/FlaredSkirt.h"
 
 namespace {
 
 const figment::tools::ToolMain kTool{"figment-make-skirt"};
 
 // Makes the skirt around `body` and writes it: the exit status.
-int makeAndWrite(const figment::TriangleMesh& body, const figment::FlaredSkirtOptions& options, const std::string& output) {
+int makeAndWrite(const figment::TriangleMesh& body, const figment::FlaredSkirtOptions& options,
+                 const std::string& output) {
   const figment::FlaredSkirt skirt = figment::makeFlaredSkirt(body, options);
   figment::exportObj(skirt.mesh, output);
-  std::printf("%s: %s: %zu vertices, %zu triangles, %.3f m^2; waist at %.3f m (%.3f m round, waistband %.3f m), "
-              "hem at %.3f m\n",
-              kTool.program().c_str(), output.c_str(), skirt.mesh.vertices.size(), skirt.mesh.triangles.size(),
-              skirt.area, skirt.waistHeight, skirt.waistPerimeter, skirt.waistbandPerimeter, skirt.hemHeight);
+  std::printf(
+      "%s: %s: %zu vertices, %zu triangles, %.3f m^2; waist at %.3f m (%.3f m round, waistband %.3f m), "
+      "hem at %.3f m\n",
+      kTool.program().c_str(), output.c_str(), skirt.mesh.vertices.size(), skirt.mesh.triangles.size(), skirt.area,
+      skirt.waistHeight, skirt.waistPerimeter, skirt.waistbandPerimeter, skirt.hemHeight);
   return 0;
 }
 

@@ -8,13 +8,13 @@
 // to stdout. Any error is one line,
 // "figment-make-tshirt: <file>: <reason>", on stderr and exit status 1, with no output file.
 
-#include "io/MeshExport.h"
-#include "sim/garment/TShirt.h"
-#include "ToolMain.h"
-
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include "ToolMain.h"
+#include "io/MeshExport.h"
+#include "sim/garment/TShirt.h"
 
 namespace {
 

@@ -1,11 +1,11 @@
 #include "viewer/CoinMessages.h"
 
-#include "guard/ReadMessages.h"
-
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/errors/SoReadError.h>
 
 #include <iostream>
+
+#include "guard/ReadMessages.h"
 
 namespace figment::viewer {
 

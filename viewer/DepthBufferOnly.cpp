@@ -1,14 +1,14 @@
 #include "viewer/DepthBufferOnly.h"
 
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/render/DepthSortedGroup.h"
-#include "nodes/SceneSearch.h"
-#include "nodes/render/StencilSeparator.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoSeparator.h>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/DepthSortedGroup.h"
+#include "nodes/render/StencilSeparator.h"
 
 namespace figment::viewer {
 
@@ -45,7 +45,8 @@ DepthBufferOnly::DepthBufferOnly(SoNode* root) {
   const SoPathList groups = findAll(root, DepthSortedGroup::getClassTypeId());
   for (int i = 0; i < groups.getLength(); ++i) add(groups[i], regroup(groups[i]->getTail(), new SoGroup));
   const SoPathList separators = findAll(root, StencilSeparator::getClassTypeId());
-  for (int i = 0; i < separators.getLength(); ++i) add(separators[i], regroup(separators[i]->getTail(), new SoSeparator));
+  for (int i = 0; i < separators.getLength(); ++i)
+    add(separators[i], regroup(separators[i]->getTail(), new SoSeparator));
 }
 
 DepthBufferOnly::~DepthBufferOnly() {

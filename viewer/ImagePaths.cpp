@@ -21,8 +21,8 @@ std::optional<std::vector<std::string>> imagePaths(const std::string& output, in
   // written literally.
   static const std::regex anyNumber(R"(%[0-9]*d)");
   static const std::regex documented(R"(%(?:0([1-9]))?d)");
-  const auto numbers = std::distance(std::sregex_iterator(output.begin(), output.end(), anyNumber),
-                                     std::sregex_iterator());
+  const auto numbers =
+      std::distance(std::sregex_iterator(output.begin(), output.end(), anyNumber), std::sregex_iterator());
   std::vector<std::string> paths;
   if (numbers > 1) return std::nullopt;
   if (numbers == 1) {

@@ -25,8 +25,8 @@ std::optional<ImagePlan> planImages(const ImageOptions& options, ImageOptionErro
       return refuse("--turntable", "'" + options.turntable + "' is not a whole number of views from 1 to " +
                                        std::to_string(kMaxTurntableViews));
     if (plan.views.size() > 1)
-      return refuse("--turntable", "takes at most one --view (where it starts), not " +
-                                       std::to_string(plan.views.size()));
+      return refuse("--turntable",
+                    "takes at most one --view (where it starts), not " + std::to_string(plan.views.size()));
     const std::vector<ViewDirection> around =
         turntableViews(*count, plan.views.empty() ? std::nullopt : plan.views.front());
     plan.views.assign(around.begin(), around.end());

@@ -3,11 +3,11 @@
 // --frames), checked before anything is read: the views or frame times and a path for
 // each image.
 
-#include "viewer/ViewOptions.h"
-
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "viewer/ViewOptions.h"
 
 namespace figment::viewer {
 

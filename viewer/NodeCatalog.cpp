@@ -3,8 +3,8 @@
 #include <Inventor/engines/SoEngine.h>
 #include <Inventor/engines/SoOutputData.h>
 #include <Inventor/fields/SoFieldData.h>
-#include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoMFEnum.h>
+#include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/lists/SoTypeList.h>
 #include <Inventor/nodes/SoNode.h>
 
@@ -59,16 +59,16 @@ std::string column(const std::string& text, size_t width) {
 
 std::string describe(SoType type) {
   const bool engine = type.isDerivedFrom(SoEngine::getClassTypeId());
-  std::string text = std::string(type.getName().getString()) + " (" + (engine ? "engine" : "node") +
-                     ", derived from " + type.getParent().getName().getString() + ")\n";
+  std::string text = std::string(type.getName().getString()) + " (" + (engine ? "engine" : "node") + ", derived from " +
+                     type.getParent().getName().getString() + ")\n";
   if (!type.canCreateInstance()) return text + "  abstract: not written in a scene itself\n";
   auto* container = static_cast<SoFieldContainer*>(type.createInstance());
   container->ref();
   const SoFieldData* fields = container->getFieldData();
   for (int i = 0; fields && i < fields->getNumFields(); ++i) {
     SoField* field = fields->getField(container, i);
-    text += "  " + column(fields->getFieldName(i).getString(), 21) + column(field->getTypeId().getName().getString(), 13) +
-            valueText(*field) + enumChoices(*field) + "\n";
+    text += "  " + column(fields->getFieldName(i).getString(), 21) +
+            column(field->getTypeId().getName().getString(), 13) + valueText(*field) + enumChoices(*field) + "\n";
   }
   if (engine) {
     const SoEngineOutputData* outputs = static_cast<SoEngine*>(container)->getOutputData();

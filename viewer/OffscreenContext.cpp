@@ -1,10 +1,10 @@
 #include "viewer/OffscreenContext.h"
 
+#include <Inventor/SoDB.h>
+
 #include "headless/OsmesaForCoin.h"
 #include "nodes/Init.h"
 #include "viewer/CoinMessages.h"
-
-#include <Inventor/SoDB.h>
 
 namespace figment::viewer {
 

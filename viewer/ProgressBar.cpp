@@ -7,8 +7,8 @@
 
 namespace figment::viewer {
 
-std::string progressBarLine(const std::string& label, double simulatedSeconds, double maxSeconds,
-                            double wallSeconds, int width) {
+std::string progressBarLine(const std::string& label, double simulatedSeconds, double maxSeconds, double wallSeconds,
+                            int width) {
   const double fraction =
       maxSeconds > 0.0 && std::isfinite(simulatedSeconds) ? std::clamp(simulatedSeconds / maxSeconds, 0.0, 1.0) : 0.0;
   const int filled = static_cast<int>(std::floor(fraction * width));

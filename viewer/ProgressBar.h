@@ -11,8 +11,8 @@ namespace figment::viewer {
 // "ClothEngine 'Drape' [###############...............]    2.5 / 5 s simulated, 1.2 s":
 // the bar, `width` characters, filled by the share of maxSeconds simulated (held within
 // [0, 1]; nothing when maxSeconds is not positive), then the times.
-std::string progressBarLine(const std::string& label, double simulatedSeconds, double maxSeconds,
-                            double wallSeconds, int width = 30);
+std::string progressBarLine(const std::string& label, double simulatedSeconds, double maxSeconds, double wallSeconds,
+                            int width = 30);
 
 class ProgressBar {
  public:

@@ -1,12 +1,11 @@
 #include "viewer/StatsJson.h"
 
-#include "io/AtomicFile.h"
-
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
-#include <fstream>
+#include "io/AtomicFile.h"
 
 namespace figment::viewer {
 
@@ -46,21 +45,17 @@ nlohmann::json body(const CollisionBody::Description& description) {
 }
 }  // namespace
 
-std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<session::EngineDrape>& drapes,
-                           double renderWallSeconds, const ImageSize& size) {
+std::string writeStatsJson(const std::string& path, const std::string& scene,
+                           const std::vector<session::EngineDrape>& drapes, double renderWallSeconds,
+                           const ImageSize& size) {
   nlohmann::json garments = nlohmann::json::array();
   for (const session::EngineDrape& drape : drapes) {
     const ClothEngine::RunStats& run = drape.run;
-    nlohmann::json garment = {{"name", drape.name},
-                              {"triangles", run.triangles},
-                              {"iterations", run.iterations},
-                              {"simulated_s", run.simulatedSeconds},
-                              {"wall_s", run.wallSeconds},
-                              {"at_rest", run.atRest},
-                              {"verdict", verdict(run)},
-                              {"cached", run.fromCache},
-                              {"method", method(drape)},
-                              {"body", body(drape.body)}};
+    nlohmann::json garment = {{"name", drape.name},           {"triangles", run.triangles},
+                              {"iterations", run.iterations}, {"simulated_s", run.simulatedSeconds},
+                              {"wall_s", run.wallSeconds},    {"at_rest", run.atRest},
+                              {"verdict", verdict(run)},      {"cached", run.fromCache},
+                              {"method", method(drape)},      {"body", body(drape.body)}};
     // With a tolerance: what the engine picked and the deviation measured for it.
     if (!run.picked.empty())
       garment["picked"] = {{"configuration", run.picked},

@@ -15,8 +15,7 @@ std::optional<ImageSize> parseImageSize(const std::string& text) {
   if (!std::regex_match(text, m, pattern)) return std::nullopt;
   const ImageSize size{std::stoi(m[1]), std::stoi(m[2])};
   constexpr int kMaxPixels = 16384;  // Coin renders larger images in tiles; keep it sane
-  if (size.width < 1 || size.height < 1 || size.width > kMaxPixels || size.height > kMaxPixels)
-    return std::nullopt;
+  if (size.width < 1 || size.height < 1 || size.width > kMaxPixels || size.height > kMaxPixels) return std::nullopt;
   return size;
 }
 

@@ -2,11 +2,11 @@
 // figment-view's --size, --view, --turntable and --frames values, read into the scene
 // session's own types (session/SessionOptions.h).
 
-#include "session/SessionOptions.h"
-
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "session/SessionOptions.h"
 
 namespace figment::viewer {
 

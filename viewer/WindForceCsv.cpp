@@ -1,10 +1,10 @@
 #include "viewer/WindForceCsv.h"
 
-#include "io/AtomicFile.h"
-
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+
+#include "io/AtomicFile.h"
 
 namespace figment::viewer {
 

@@ -2,11 +2,11 @@
 // figment-view --wind-force: the wind's total force on each garment over simulated time,
 // as CSV, for charts of the paper's Figure 2.2.
 
-#include "session/DrapeRecorder.h"
-#include "session/SceneSession.h"
-
 #include <string>
 #include <vector>
+
+#include "session/DrapeRecorder.h"
+#include "session/SceneSession.h"
 
 namespace figment::viewer {
 

@@ -14,11 +14,28 @@
 // A drape that is not clean (its verdict: not at rest, torn, limited, failed steps) is one
 // line too, and with --strict an error.
 
+#include <Inventor/SoDB.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "io/DrapeCache.h"
 #include "nodes/Init.h"
+#include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
-#include "nodes/SceneSearch.h"
 #include "session/DrapeRecorder.h"
 #include "session/FrameDisplay.h"
 #include "session/SceneExport.h"
@@ -34,23 +51,6 @@
 #include "viewer/StatsJson.h"
 #include "viewer/ViewOptions.h"
 #include "viewer/WindForceCsv.h"
-
-#include <CLI/CLI.hpp>
-#include <Inventor/SoDB.h>
-#include <Inventor/SoPath.h>
-#include <Inventor/nodes/SoSeparator.h>
-
-#include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <exception>
-#include <filesystem>
-#include <iostream>
-#include <memory>
-#include <optional>
-#include <string>
-#include <utility>
-#include <vector>
 
 namespace {
 
@@ -188,8 +188,8 @@ std::string drapeAll(SceneSession& session, const std::string& scene) {
 
 // Renders the staged root and writes it to `path`; "" or the error, with where it
 // happened in `where`.
-std::string renderImage(SoSeparator* root, const Options& options, SceneRenderer& renderer,
-                        const std::string& path, double& renderWall, std::string& where) {
+std::string renderImage(SoSeparator* root, const Options& options, SceneRenderer& renderer, const std::string& path,
+                        double& renderWall, std::string& where) {
   figment::viewer::DepthBufferOnly plain(root);
   plain.use(options.depthBufferOnly);
   const auto start = std::chrono::steady_clock::now();
@@ -208,13 +208,14 @@ void showFrame(const SceneSession& session, const DrapeRecorder& recorder, size_
 }
 
 // Frames of a time span, one camera for all: it frames the box that holds every frame.
-std::string renderFrames(SceneSession& session, const DrapeRecorder& recorder,
-                         const ImagePlan& plan, const Options& options, WrittenImages& images, double& renderWall,
-                         std::string& where) {
+std::string renderFrames(SceneSession& session, const DrapeRecorder& recorder, const ImagePlan& plan,
+                         const Options& options, WrittenImages& images, double& renderWall, std::string& where) {
   for (ClothEngine* engine : session.engines())  // simulated, but not step by step
     if (!recorder.observed(*engine) && engine->evaluationCount() > 0)
-      std::fprintf(stderr, "figment-view: %s: a progressive drape is not recorded step by step; every frame shows "
-                           "its end\n", engine->label().c_str());
+      std::fprintf(stderr,
+                   "figment-view: %s: a progressive drape is not recorded step by step; every frame shows "
+                   "its end\n",
+                   engine->label().c_str());
   SbBox3f box;
   for (size_t k = 0; k < plan.frameTimes.size(); ++k) {
     showFrame(session, recorder, k);
@@ -232,8 +233,8 @@ std::string renderFrames(SceneSession& session, const DrapeRecorder& recorder,
 }
 
 // One image per view of the drape.
-std::string renderViews(SceneSession& session, const ImagePlan& plan, const Options& options,
-                        WrittenImages& images, double& renderWall, std::string& where) {
+std::string renderViews(SceneSession& session, const ImagePlan& plan, const Options& options, WrittenImages& images,
+                        double& renderWall, std::string& where) {
   SceneRenderer renderer(plan.size);
   for (size_t i = 0; i < plan.views.size(); ++i) {
     SoSeparator* root = session.stage(plan.size, plan.views[i]);
@@ -319,11 +320,12 @@ std::string oneLine(std::string text) {
 void describeOptions(CLI::App& app, Options& options) {
   // Not required by CLI11: --list-nodes needs neither (checked below).
   app.add_option("scene", options.scene, "Scene file (.iv)");
-  app.add_option("-o,--output", options.output,
-                 "PNG image to write. Several images (--view repeated, --turntable, --frames) are numbered "
-                 "from 0 before the extension, zero-padded to the largest number's width so they sort: -o out.png gives "
-                 "out-0.png ... out-7.png for 8 images, out-00.png ... out-39.png for 40; a %d or %0Nd in the name (N 1 to 9) "
-                 "takes the number instead: -o frame-%03d.png gives frame-000.png, ...");
+  app.add_option(
+      "-o,--output", options.output,
+      "PNG image to write. Several images (--view repeated, --turntable, --frames) are numbered "
+      "from 0 before the extension, zero-padded to the largest number's width so they sort: -o out.png gives "
+      "out-0.png ... out-7.png for 8 images, out-00.png ... out-39.png for 40; a %d or %0Nd in the name (N 1 to 9) "
+      "takes the number instead: -o frame-%03d.png gives frame-000.png, ...");
   app.add_option("--size", options.size, "Image size in pixels, WxH")->capture_default_str();
   app.add_option("--view", options.views,
                  "Camera direction: front, back, left, right or AZ,EL in degrees (default: the scene's camera, "
@@ -378,9 +380,10 @@ void describeOptions(CLI::App& app, Options& options) {
 }
 
 int run(int argc, char** argv, Options& options) {
-  CLI::App app{"figment-view: renders a FIGMENT scene (.iv) to PNG images, headless. The scene drapes once, "
-               "however many images it gives; each image is written whole or not at all, and on an error none "
-               "is left."};
+  CLI::App app{
+      "figment-view: renders a FIGMENT scene (.iv) to PNG images, headless. The scene drapes once, "
+      "however many images it gives; each image is written whole or not at all, and on an error none "
+      "is left."};
   describeOptions(app, options);
   try {
     app.parse(argc, argv);

@@ -1,9 +1,9 @@
 #include "guard/shapes/IndexProblem.h"
 
-#include "guard/CoordIndexFaces.h"
-
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/nodes/SoNode.h>
+
+#include "guard/CoordIndexFaces.h"
 
 namespace figment::guard::shapes {
 
@@ -17,10 +17,11 @@ std::string counted(std::int64_t count, const std::string& noun, const std::stri
   return std::to_string(count) + " " + (count == 1 ? noun : plural.empty() ? noun + "s" : plural);
 }
 
-bool given(const SoMFInt32& index) { return index.getNum() > 0 && index[0] >= 0; }
+bool given(const SoMFInt32& index) {
+  return index.getNum() > 0 && index[0] >= 0;
+}
 
-std::string indexProblem(const SoNode& node, const std::string& field, const SoMFInt32& index,
-                         const Indexed& indexed) {
+std::string indexProblem(const SoNode& node, const std::string& field, const SoMFInt32& index, const Indexed& indexed) {
   for (int i = 0; i < index.getNum(); ++i) {
     const int32_t value = index[i];
     if (value >= -1 && value < indexed.size) continue;

@@ -31,8 +31,7 @@ struct Indexed {
 // "" when every entry of `index` is an entry of `indexed` or the -1 that ends a face, else
 // "<node>: <field>[i] = v is not a <noun>: <has>", or "... is neither a <noun> nor the -1 that
 // ends a face" for an entry below -1.
-std::string indexProblem(const SoNode& node, const std::string& field, const SoMFInt32& index,
-                         const Indexed& indexed);
+std::string indexProblem(const SoNode& node, const std::string& field, const SoMFInt32& index, const Indexed& indexed);
 
 // "" when `index` has at least `needed` entries, one for each of what it runs along, else
 // "<node>: <field> has 2 entries for <along>" (along: "the 8 entries of coordIndex",

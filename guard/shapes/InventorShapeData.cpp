@@ -1,8 +1,5 @@
 #include "guard/shapes/InventorShapeData.h"
 
-#include "guard/shapes/IndexProblem.h"
-#include "guard/shapes/ShapeParts.h"
-
 #include <Inventor/elements/SoCoordinateElement.h>
 #include <Inventor/elements/SoLazyElement.h>
 #include <Inventor/elements/SoMaterialBindingElement.h>
@@ -14,8 +11,8 @@
 #include <Inventor/misc/SoState.h>
 #include <Inventor/nodes/SoFaceSet.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
-#include <Inventor/nodes/SoIndexedShape.h>
 #include <Inventor/nodes/SoIndexedMarkerSet.h>
+#include <Inventor/nodes/SoIndexedShape.h>
 #include <Inventor/nodes/SoLineSet.h>
 #include <Inventor/nodes/SoMarkerSet.h>
 #include <Inventor/nodes/SoNonIndexedShape.h>
@@ -25,6 +22,9 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include <cstdint>
+
+#include "guard/shapes/IndexProblem.h"
+#include "guard/shapes/ShapeParts.h"
 
 namespace figment::guard::shapes {
 
@@ -45,10 +45,14 @@ int coordinateCount(const SoVertexShape& shape, SoState* state) {
 // PER_VERTEX for PER_VERTEX_INDEXED, and so on; OVERALL stays.
 int plainBinding(int binding) {
   switch (binding) {
-    case SoMaterialBindingElement::PER_PART_INDEXED: return SoMaterialBindingElement::PER_PART;
-    case SoMaterialBindingElement::PER_FACE_INDEXED: return SoMaterialBindingElement::PER_FACE;
-    case SoMaterialBindingElement::PER_VERTEX_INDEXED: return SoMaterialBindingElement::PER_VERTEX;
-    default: return binding;
+    case SoMaterialBindingElement::PER_PART_INDEXED:
+      return SoMaterialBindingElement::PER_PART;
+    case SoMaterialBindingElement::PER_FACE_INDEXED:
+      return SoMaterialBindingElement::PER_FACE;
+    case SoMaterialBindingElement::PER_VERTEX_INDEXED:
+      return SoMaterialBindingElement::PER_VERTEX;
+    default:
+      return binding;
   }
 }
 
@@ -62,9 +66,9 @@ bool indexedBinding(int binding) {
 // Data of one kind a shape indexes, and how.
 struct BoundData {
   Indexed indexed;
-  int binding;          // a SoMaterialBindingElement::Binding (normal bindings share the values)
-  bool byIndex;         // the binding reads the shape's index field
-  bool byCoordIndexToo; // a per-vertex indexed binding with no index field of its own reads coordIndex
+  int binding;           // a SoMaterialBindingElement::Binding (normal bindings share the values)
+  bool byIndex;          // the binding reads the shape's index field
+  bool byCoordIndexToo;  // a per-vertex indexed binding with no index field of its own reads coordIndex
 };
 
 std::string boundDataProblem(const SoIndexedShape& shape, const char* field, const SoMFInt32& index,
@@ -91,8 +95,8 @@ std::string boundDataProblem(const SoIndexedShape& shape, const char* field, con
   }
   if (!data.byCoordIndexToo) return "";
   Indexed viaCoordIndex = data.indexed;
-  viaCoordIndex.has += ", and coordIndex indexes them as the binding is PER_VERTEX_INDEXED and " +
-                       std::string(field) + " is empty";
+  viaCoordIndex.has +=
+      ", and coordIndex indexes them as the binding is PER_VERTEX_INDEXED and " + std::string(field) + " is empty";
   return indexProblem(shape, "coordIndex", shape.coordIndex, viaCoordIndex);
 }
 
@@ -102,7 +106,9 @@ BoundData materials(const SoVertexShape& shape, SoState* state) {
   const int size = owned ? own->orderedRGBA.getNum() : SoLazyElement::getInstance(state)->getNumDiffuse();
   const int binding = owned ? own->materialBinding.getValue() : SoMaterialBindingElement::get(state);
   return {{size, "material", (owned ? "the VertexProperty has " : "the shape has ") + counted(size, "material")},
-          binding, indexedBinding(binding), binding == SoMaterialBindingElement::PER_VERTEX_INDEXED};
+          binding,
+          indexedBinding(binding),
+          binding == SoMaterialBindingElement::PER_VERTEX_INDEXED};
 }
 
 BoundData normals(const SoVertexShape& shape, SoState* state) {
@@ -111,7 +117,9 @@ BoundData normals(const SoVertexShape& shape, SoState* state) {
   const int size = owned ? own->normal.getNum() : SoNormalElement::getInstance(state)->getNum();
   const int binding = owned ? own->normalBinding.getValue() : SoNormalBindingElement::get(state);
   return {{size, "normal", (owned ? "the VertexProperty has " : "the shape has ") + counted(size, "normal")},
-          binding, indexedBinding(binding), binding == SoNormalBindingElement::PER_VERTEX_INDEXED};
+          binding,
+          indexedBinding(binding),
+          binding == SoNormalBindingElement::PER_VERTEX_INDEXED};
 }
 
 // Texture coordinates are read only where a texture is on, and only explicit ones are
@@ -126,15 +134,17 @@ BoundData textureCoordinates(const SoVertexShape& shape, SoState* state) {
     size = own->texCoord.getNum();
   else if (SoTextureCoordinateElement::getType(state) == SoTextureCoordinateElement::EXPLICIT)
     size = SoTextureCoordinateElement::getInstance(state)->getNum();
-  const bool indexed = SoTextureCoordinateBindingElement::get(state) ==
-                       SoTextureCoordinateBindingElement::PER_VERTEX_INDEXED;
+  const bool indexed =
+      SoTextureCoordinateBindingElement::get(state) == SoTextureCoordinateBindingElement::PER_VERTEX_INDEXED;
   // In material-binding terms; without a texture, none are read.
   const int binding = !textured ? int(SoMaterialBindingElement::OVERALL)
                       : indexed ? int(SoMaterialBindingElement::PER_VERTEX_INDEXED)
                                 : int(SoMaterialBindingElement::PER_VERTEX);
   return {{size, "texture coordinate",
            (owned ? "the VertexProperty has " : "the shape has ") + counted(size, "texture coordinate")},
-          binding, textured && indexed, textured && indexed};
+          binding,
+          textured && indexed,
+          textured && indexed};
 }
 
 // Data bound PER_VERTEX, PER_PART or PER_FACE, taken one after another (as are PER_PART_INDEXED
@@ -233,8 +243,8 @@ std::string countedShapeProblem(const SoNonIndexedShape& shape, SoState* state) 
     const std::int64_t rows = mesh.verticesPerColumn.getValue(), columns = mesh.verticesPerRow.getValue();
     counts = "verticesPerRow x verticesPerColumn";
     if (rows < 0 || columns < 0)
-      return label + ": verticesPerRow " + std::to_string(columns) + " and verticesPerColumn " +
-             std::to_string(rows) + " must not be negative";
+      return label + ": verticesPerRow " + std::to_string(columns) + " and verticesPerColumn " + std::to_string(rows) +
+             " must not be negative";
     drawn = rows * columns;
   } else if (shape.isOfType(SoPointSet::getClassTypeId())) {
     const std::int64_t count = static_cast<const SoPointSet&>(shape).numPoints.getValue();
@@ -247,8 +257,8 @@ std::string countedShapeProblem(const SoNonIndexedShape& shape, SoState* state) 
     problem = markerProblem(shape, static_cast<const SoMarkerSet&>(shape).markerIndex);
   if (!problem.empty()) return problem;
   if (start + drawn > points)
-    return label + ": " + counts + " draw " + counted(drawn, "vertex", "vertices") + " from startIndex " + std::to_string(start) +
-           ": the coordinates have " + counted(points, "point");
+    return label + ": " + counts + " draw " + counted(drawn, "vertex", "vertices") + " from startIndex " +
+           std::to_string(start) + ": the coordinates have " + counted(points, "point");
   // A shape without indices takes an indexed binding as the plain one (Coin's nonIndexed()).
   const ShapeParts parts = countedShapeParts(shape, points);
   for (BoundData data : {materials(shape, state), normals(shape, state), textureCoordinates(shape, state)}) {

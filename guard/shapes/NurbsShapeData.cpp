@@ -1,7 +1,5 @@
 #include "guard/shapes/NurbsShapeData.h"
 
-#include "guard/shapes/IndexProblem.h"
-
 #include <Inventor/elements/SoCoordinateElement.h>
 #include <Inventor/nodes/SoIndexedNurbsCurve.h>
 #include <Inventor/nodes/SoIndexedNurbsSurface.h>
@@ -10,6 +8,8 @@
 
 #include <algorithm>
 #include <cstdint>
+
+#include "guard/shapes/IndexProblem.h"
 
 namespace figment::guard::shapes {
 
@@ -44,7 +44,8 @@ std::string controlPointProblem(const SoShape& shape, std::int64_t controlPoints
     if ((*coordIndex)[i] < 0 || (*coordIndex)[i] >= coordinates)
       return nodeLabel(shape) + ": coordIndex[" + std::to_string(i) + "] = " + std::to_string((*coordIndex)[i]) +
              " is not a vertex: " + has;
-  return shortIndexProblem(shape, "coordIndex", *coordIndex, static_cast<int>(std::min<std::int64_t>(controlPoints, INT32_MAX)),
+  return shortIndexProblem(shape, "coordIndex", *coordIndex,
+                           static_cast<int>(std::min<std::int64_t>(controlPoints, INT32_MAX)),
                            counts + std::string(" = ") + counted(controlPoints, "control point"));
 }
 

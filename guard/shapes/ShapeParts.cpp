@@ -1,7 +1,5 @@
 #include "guard/shapes/ShapeParts.h"
 
-#include "guard/CoordIndexFaces.h"
-
 #include <Inventor/nodes/SoFaceSet.h>
 #include <Inventor/nodes/SoIndexedLineSet.h>
 #include <Inventor/nodes/SoIndexedPointSet.h>
@@ -16,6 +14,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "guard/CoordIndexFaces.h"
+
 namespace figment::guard::shapes {
 
 namespace {
@@ -28,10 +28,18 @@ ShapeParts fromRuns(const std::vector<std::int64_t>& lengths, Runs runs) {
   for (const std::int64_t n : lengths) {
     out.vertices += n;
     switch (runs) {
-      case Runs::kFaces: out.parts += 1, out.faces += 1; break;
-      case Runs::kLines: out.parts += std::max<std::int64_t>(n - 1, 0), out.faces += 1; break;
-      case Runs::kStrips: out.parts += 1, out.faces += std::max<std::int64_t>(n - 2, 0); break;
-      case Runs::kPoints: out.parts += n, out.faces += n; break;
+      case Runs::kFaces:
+        out.parts += 1, out.faces += 1;
+        break;
+      case Runs::kLines:
+        out.parts += std::max<std::int64_t>(n - 1, 0), out.faces += 1;
+        break;
+      case Runs::kStrips:
+        out.parts += 1, out.faces += std::max<std::int64_t>(n - 2, 0);
+        break;
+      case Runs::kPoints:
+        out.parts += n, out.faces += n;
+        break;
     }
   }
   return out;

@@ -1,7 +1,5 @@
 #include "guard/shapes/VrmlShapeData.h"
 
-#include "guard/shapes/IndexProblem.h"
-
 #include <Inventor/VRMLnodes/SoVRMLColor.h>
 #include <Inventor/VRMLnodes/SoVRMLCoordinate.h>
 #include <Inventor/VRMLnodes/SoVRMLElevationGrid.h>
@@ -13,6 +11,8 @@
 
 #include <cstdint>
 
+#include "guard/shapes/IndexProblem.h"
+
 namespace figment::guard::shapes {
 
 namespace {
@@ -22,14 +22,21 @@ namespace {
 template <class Data, class Entries>
 Indexed dataIn(const SoSFNode& field, Entries Data::*entries, const std::string& noun, const std::string& plural = "") {
   const SoNode* node = field.getValue();
-  const int size = node && node->isOfType(Data::getClassTypeId()) ? (static_cast<const Data*>(node)->*entries).getNum() : 0;
+  const int size =
+      node && node->isOfType(Data::getClassTypeId()) ? (static_cast<const Data*>(node)->*entries).getNum() : 0;
   const std::string type = node ? node->getTypeId().getName().getString() : "";
   return {size, noun, "the " + type + " has " + counted(size, noun, plural)};
 }
 
-Indexed coordinates(const SoSFNode& coord) { return dataIn(coord, &SoVRMLCoordinate::point, "point"); }
-Indexed colors(const SoSFNode& color) { return dataIn(color, &SoVRMLColor::color, "color"); }
-Indexed normals(const SoSFNode& normal) { return dataIn(normal, &SoVRMLNormal::vector, "normal"); }
+Indexed coordinates(const SoSFNode& coord) {
+  return dataIn(coord, &SoVRMLCoordinate::point, "point");
+}
+Indexed colors(const SoSFNode& color) {
+  return dataIn(color, &SoVRMLColor::color, "color");
+}
+Indexed normals(const SoSFNode& normal) {
+  return dataIn(normal, &SoVRMLNormal::vector, "normal");
+}
 Indexed textureCoordinates(const SoSFNode& texCoord) {
   return dataIn(texCoord, &SoVRMLTextureCoordinate::point, "texture coordinate");
 }
@@ -43,20 +50,22 @@ std::string why(const char* perVertexField, bool perVertex) {
 
 // Data the faces or lines of `shape` index, per vertex or per face (per polyline).
 std::string perVertexOrFaceProblem(const SoNode& shape, const SoMFInt32& coordIndex, const char* field,
-                                   const SoMFInt32& index, const Indexed& data, bool perVertex, const char* perVertexField,
-                                   const std::string& faceNoun) {
+                                   const SoMFInt32& index, const Indexed& data, bool perVertex,
+                                   const char* perVertexField, const std::string& faceNoun) {
   if (data.size == 0) return "";  // none: Coin draws without
   const int faces = faceCount(coordIndex);
   const std::string along = perVertex ? "the " + counted(coordIndex.getNum(), "entry", "entries") + " of coordIndex"
                                       : counted(faces, faceNoun);
   if (given(index)) {
     std::string problem = indexProblem(shape, field, index, data);
-    if (problem.empty()) problem = shortIndexProblem(shape, field, index, perVertex ? coordIndex.getNum() : faces, along);
+    if (problem.empty())
+      problem = shortIndexProblem(shape, field, index, perVertex ? coordIndex.getNum() : faces, along);
     return problem;
   }
   if (perVertex) {
     Indexed viaCoordIndex = data;
-    viaCoordIndex.has += ", and coordIndex indexes them as " + why(perVertexField, true) + " and " + field + " is empty";
+    viaCoordIndex.has +=
+        ", and coordIndex indexes them as " + why(perVertexField, true) + " and " + field + " is empty";
     return indexProblem(shape, "coordIndex", coordIndex, viaCoordIndex);
   }
   if (faces > data.size)
@@ -126,7 +135,8 @@ std::string vrmlShapeProblem(const SoVRMLGeometry& shape) {
     return faceSetProblem(static_cast<const SoVRMLIndexedFaceSet&>(shape));
   if (shape.isOfType(SoVRMLIndexedLineSet::getClassTypeId()))
     return lineSetProblem(static_cast<const SoVRMLIndexedLineSet&>(shape));
-  if (shape.isOfType(SoVRMLPointSet::getClassTypeId())) return pointSetProblem(static_cast<const SoVRMLPointSet&>(shape));
+  if (shape.isOfType(SoVRMLPointSet::getClassTypeId()))
+    return pointSetProblem(static_cast<const SoVRMLPointSet&>(shape));
   if (shape.isOfType(SoVRMLElevationGrid::getClassTypeId()))
     return elevationGridProblem(static_cast<const SoVRMLElevationGrid&>(shape));
   return "";

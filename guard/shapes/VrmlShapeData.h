@@ -14,8 +14,9 @@ namespace figment::guard::shapes {
 // VRMLElevationGrid; others have nothing to check) indexes and counts only the data its own
 // fields hold, as the VRML97 specification (ISO/IEC 14772-1) requires: coordIndex the
 // coord's points; colorIndex, normalIndex and texCoordIndex their nodes' entries, or
-// coordIndex those too where they are empty and the data go per vertex; an index as long as what it runs along (coordIndex, or the faces); per face without an
-// index, a color or normal for each face. Else one line naming node, field, entry and value.
+// coordIndex those too where they are empty and the data go per vertex; an index as long as what it runs along
+// (coordIndex, or the faces); per face without an index, a color or normal for each face. Else one line naming node,
+// field, entry and value.
 std::string vrmlShapeProblem(const SoVRMLGeometry& shape);
 
 }  // namespace figment::guard::shapes

@@ -1,11 +1,11 @@
 #include "nodes/body/CapsuleVolume.h"
 
-#include "sim/collision/Capsule.h"
-#include "sim/collision/CollisionVolume.h"
-
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+
+#include "sim/collision/Capsule.h"
+#include "sim/collision/CollisionVolume.h"
 
 SO_NODE_SOURCE(CapsuleVolume);
 

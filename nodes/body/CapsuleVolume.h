@@ -1,9 +1,9 @@
 #pragma once
 // CapsuleVolume: the paper's 12-parameter capsule as a scene node (§3.1).
 
-#include "nodes/body/CollisionVolumeNode.h"
-
 #include <Inventor/fields/SoSFFloat.h>
+
+#include "nodes/body/CollisionVolumeNode.h"
 
 namespace figment {
 struct CapsuleParameters;

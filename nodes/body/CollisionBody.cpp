@@ -7,6 +7,8 @@ namespace figment {
 // Defined here, so the interface's type information lives once, in figment_nodes.
 CollisionBody::~CollisionBody() = default;
 
-const CollisionBody* asCollisionBody(const SoNode* node) { return dynamic_cast<const CollisionBody*>(node); }
+const CollisionBody* asCollisionBody(const SoNode* node) {
+  return dynamic_cast<const CollisionBody*>(node);
+}
 
 }  // namespace figment

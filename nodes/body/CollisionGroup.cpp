@@ -1,9 +1,9 @@
 #include "nodes/body/CollisionGroup.h"
 
-#include "sim/collision/CompositeCollider.h"
-
 #include <stdexcept>
 #include <string>
+
+#include "sim/collision/CompositeCollider.h"
 
 SO_NODE_SOURCE(CollisionGroup);
 
@@ -23,8 +23,7 @@ CollisionGroup::CollisionGroup() {
 CollisionGroup::~CollisionGroup() = default;
 
 std::string CollisionGroup::label() const {
-  return getName().getLength() > 0 ? "CollisionGroup '" + std::string(getName().getString()) + "'"
-                                   : "CollisionGroup";
+  return getName().getLength() > 0 ? "CollisionGroup '" + std::string(getName().getString()) + "'" : "CollisionGroup";
 }
 
 std::shared_ptr<const figment::Collider> CollisionGroup::bodyCollider() const {

@@ -1,11 +1,11 @@
 #pragma once
 // CollisionGroup: several collision bodies as one ClothEngine body.
 
-#include "nodes/body/CollisionBody.h"
-
 #include <Inventor/fields/SoMFNode.h>
 #include <Inventor/fields/SoSFNode.h>
 #include <Inventor/nodes/SoSubNode.h>
+
+#include "nodes/body/CollisionBody.h"
 
 /*!
   \class CollisionGroup nodes/body/CollisionGroup.h

@@ -1,6 +1,8 @@
 #include "nodes/body/CollisionVolumeNode.h"
 
+#include <GL/gl.h>
 #include <Inventor/SbBox3f.h>
+#include <Inventor/SoPrimitiveVertex.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/bundles/SoMaterialBundle.h>
 #include <Inventor/elements/SoGLLazyElement.h>
@@ -8,9 +10,6 @@
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/misc/SoNotification.h>
 #include <Inventor/misc/SoState.h>
-#include <Inventor/SoPrimitiveVertex.h>
-
-#include <GL/gl.h>
 
 #include <stdexcept>
 

@@ -1,9 +1,9 @@
 #include "nodes/body/ExactVolume.h"
 
+#include <stdexcept>
+
 #include "sim/collision/CollisionVolume.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <stdexcept>
 
 SO_NODE_SOURCE(ExactVolume);
 
@@ -13,7 +13,9 @@ void ExactVolume::initClass() {
   SO_NODE_INIT_CLASS(ExactVolume, CollisionVolumeNode, "CollisionVolumeNode");
 }
 
-ExactVolume::ExactVolume() { SO_NODE_CONSTRUCTOR(ExactVolume); }
+ExactVolume::ExactVolume() {
+  SO_NODE_CONSTRUCTOR(ExactVolume);
+}
 
 ExactVolume::~ExactVolume() = default;
 

@@ -1,18 +1,5 @@
 #include "nodes/body/Mannequin.h"
 
-#include "nodes/body/CapsuleVolume.h"
-#include "nodes/body/CollisionVolumeNode.h"
-#include "nodes/body/ExactVolume.h"
-#include "nodes/body/MeshFile.h"
-#include "nodes/body/RadialDepthVolume.h"
-#include "nodes/body/SkeletonJoints.h"
-#include "sim/body/BodyParts.h"
-#include "sim/body/GirthBlend.h"
-#include "sim/collision/CollisionVolume.h"
-#include "sim/body/Posing.h"
-#include "sim/body/Skinning.h"
-#include "sim/collision/VolumeSetCollider.h"
-
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/actions/SoCallbackAction.h>
@@ -28,6 +15,19 @@
 
 #include <algorithm>
 #include <stdexcept>
+
+#include "nodes/body/CapsuleVolume.h"
+#include "nodes/body/CollisionVolumeNode.h"
+#include "nodes/body/ExactVolume.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/body/RadialDepthVolume.h"
+#include "nodes/body/SkeletonJoints.h"
+#include "sim/body/BodyParts.h"
+#include "sim/body/GirthBlend.h"
+#include "sim/body/Posing.h"
+#include "sim/body/Skinning.h"
+#include "sim/collision/CollisionVolume.h"
+#include "sim/collision/VolumeSetCollider.h"
 
 SO_NODE_SOURCE(Mannequin);
 
@@ -112,7 +112,8 @@ const Mannequin::Model& Mannequin::model() const {
     if (joints.size() != 1)
       throw std::invalid_argument("has " + std::to_string(joints.size()) + " SkeletonJoints below it, not 1");
     model->skeleton = joints[0]->skeleton();
-    if (volumes.empty()) throw std::invalid_argument("has no volumes below it (CapsuleVolume, RadialDepthVolume, ExactVolume)");
+    if (volumes.empty())
+      throw std::invalid_argument("has no volumes below it (CapsuleVolume, RadialDepthVolume, ExactVolume)");
     for (CollisionVolumeNode* v : volumes) {
       const std::string name = v->part.getValue().getString();
       const int part = partIndex(model->skeleton, name);
@@ -129,7 +130,8 @@ const Mannequin::Model& Mannequin::model() const {
     for (int i = 0; i < rotatedJoints.getNum(); ++i) {
       const std::string name = rotatedJoints[i].getString();
       const int j = model->skeleton.joint(name);
-      if (j < 0) throw std::invalid_argument("rotatedJoints[" + std::to_string(i) + "] = \"" + name + "\" is not a joint");
+      if (j < 0)
+        throw std::invalid_argument("rotatedJoints[" + std::to_string(i) + "] = \"" + name + "\" is not a joint");
       SbVec3f axis;
       float angle = 0.0f;
       rotations[i].getValue(axis, angle);
@@ -157,9 +159,15 @@ const Mannequin::Model& Mannequin::model() const {
   return *model_;
 }
 
-const figment::Skeleton& Mannequin::skeleton() const { return model().skeleton; }
-const std::vector<Eigen::Affine3d>& Mannequin::partTransforms() const { return model().transforms; }
-const std::vector<Mannequin::VolumeEntry>& Mannequin::volumes() const { return model().volumes; }
+const figment::Skeleton& Mannequin::skeleton() const {
+  return model().skeleton;
+}
+const std::vector<Eigen::Affine3d>& Mannequin::partTransforms() const {
+  return model().transforms;
+}
+const std::vector<Mannequin::VolumeEntry>& Mannequin::volumes() const {
+  return model().volumes;
+}
 
 namespace {
 
@@ -357,10 +365,20 @@ void Mannequin::traverseVolumes(SoAction* action) {
   state->pop();
 }
 
-void Mannequin::GLRender(SoGLRenderAction* action) { traverseVolumes(action); }
-void Mannequin::getBoundingBox(SoGetBoundingBoxAction* action) { traverseVolumes(action); }
-void Mannequin::callback(SoCallbackAction* action) { traverseVolumes(action); }
-void Mannequin::pick(SoPickAction* action) { traverseVolumes(action); }
-void Mannequin::getPrimitiveCount(SoGetPrimitiveCountAction* action) { traverseVolumes(action); }
+void Mannequin::GLRender(SoGLRenderAction* action) {
+  traverseVolumes(action);
+}
+void Mannequin::getBoundingBox(SoGetBoundingBoxAction* action) {
+  traverseVolumes(action);
+}
+void Mannequin::callback(SoCallbackAction* action) {
+  traverseVolumes(action);
+}
+void Mannequin::pick(SoPickAction* action) {
+  traverseVolumes(action);
+}
+void Mannequin::getPrimitiveCount(SoGetPrimitiveCountAction* action) {
+  traverseVolumes(action);
+}
 void Mannequin::handleEvent(SoHandleEventAction*) {}
 void Mannequin::getMatrix(SoGetMatrixAction*) {}

@@ -10,13 +10,12 @@
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSubNode.h>
 
-#include "nodes/body/CollisionBody.h"
-
+#include <Eigen/Geometry>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
+#include "nodes/body/CollisionBody.h"
 
 namespace figment {
 class Collider;
@@ -105,8 +104,8 @@ class Mannequin : public SoGroup, public figment::CollisionBody {
   // Parts (by name) that collide with their own triangles of `body` instead of their
   // volumes. Default [ ]. Needs `body`.
   SoMFString exactParts;
-  SoSFBool showVolumes;    // Default FALSE.
-  SoSFColor volumeColor;   // Default 0.1 0.85 0.25.
+  SoSFBool showVolumes;   // Default FALSE.
+  SoSFColor volumeColor;  // Default 0.1 0.85 0.25.
 
   // The posed volumes as one collider (built on first use, kept until a field or child
   // changes). Throws std::invalid_argument with one line naming this node, the field

@@ -1,10 +1,5 @@
 #include "nodes/body/MannequinSkin.h"
 
-#include "nodes/body/HiddenChildren.h"
-#include "nodes/body/Mannequin.h"
-#include "sim/body/Skeleton.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <Inventor/actions/SoAction.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -22,6 +17,11 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "nodes/body/HiddenChildren.h"
+#include "nodes/body/Mannequin.h"
+#include "sim/body/Skeleton.h"
+#include "sim/core/TriangleMesh.h"
 
 SO_NODE_SOURCE(MannequinSkin);
 
@@ -49,9 +49,13 @@ MannequinSkin::MannequinSkin() : impl_(std::make_unique<Impl>(this)) {
   impl_->faces = mesh.faces;
 }
 
-MannequinSkin::~MannequinSkin() { impl_->children.truncate(0); }
+MannequinSkin::~MannequinSkin() {
+  impl_->children.truncate(0);
+}
 
-const std::string& MannequinSkin::lastError() const { return impl_->error; }
+const std::string& MannequinSkin::lastError() const {
+  return impl_->error;
+}
 
 std::string MannequinSkin::label() const {
   const SbName name = getName();
@@ -88,8 +92,7 @@ void MannequinSkin::update() {
   std::vector<int32_t> indices;
   try {
     SoNode* node = mannequin.getValue();
-    if (const std::string wrongType = mannequinTypeError(); !wrongType.empty())
-      throw std::invalid_argument(wrongType);
+    if (const std::string wrongType = mannequinTypeError(); !wrongType.empty()) throw std::invalid_argument(wrongType);
     if (node) {
       const auto* m = static_cast<const Mannequin*>(node);
       const figment::TriangleMesh& body = m->posedBody();
@@ -120,16 +123,30 @@ void MannequinSkin::update() {
   impl_->updating = false;
 }
 
-SoChildList* MannequinSkin::getChildren() const { return &impl_->children; }
+SoChildList* MannequinSkin::getChildren() const {
+  return &impl_->children;
+}
 
 void MannequinSkin::doAction(SoAction* action) {
   update();
   figment::traverseHidden(impl_->children, action);
 }
 
-void MannequinSkin::callback(SoCallbackAction* action) { MannequinSkin::doAction(action); }
-void MannequinSkin::GLRender(SoGLRenderAction* action) { MannequinSkin::doAction(action); }
-void MannequinSkin::getBoundingBox(SoGetBoundingBoxAction* action) { MannequinSkin::doAction(action); }
-void MannequinSkin::pick(SoPickAction* action) { MannequinSkin::doAction(action); }
-void MannequinSkin::getPrimitiveCount(SoGetPrimitiveCountAction* action) { MannequinSkin::doAction(action); }
-void MannequinSkin::search(SoSearchAction* action) { SoNode::search(action); }
+void MannequinSkin::callback(SoCallbackAction* action) {
+  MannequinSkin::doAction(action);
+}
+void MannequinSkin::GLRender(SoGLRenderAction* action) {
+  MannequinSkin::doAction(action);
+}
+void MannequinSkin::getBoundingBox(SoGetBoundingBoxAction* action) {
+  MannequinSkin::doAction(action);
+}
+void MannequinSkin::pick(SoPickAction* action) {
+  MannequinSkin::doAction(action);
+}
+void MannequinSkin::getPrimitiveCount(SoGetPrimitiveCountAction* action) {
+  MannequinSkin::doAction(action);
+}
+void MannequinSkin::search(SoSearchAction* action) {
+  SoNode::search(action);
+}

@@ -1,12 +1,5 @@
 #include "nodes/body/MeshFile.h"
 
-#include "io/MeshImport.h"
-#include "nodes/cloth/FieldValues.h"
-#include "nodes/body/HiddenChildren.h"
-#include "nodes/SceneFiles.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <Inventor/SoInput.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -32,6 +25,13 @@
 #include <utility>
 #include <vector>
 
+#include "io/MeshImport.h"
+#include "nodes/SceneFiles.h"
+#include "nodes/body/HiddenChildren.h"
+#include "nodes/cloth/FieldValues.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/core/ParameterChecks.h"
+
 SO_NODE_SOURCE(MeshFile);
 
 struct MeshFile::Impl {
@@ -53,12 +53,18 @@ namespace {
 
 figment::UpAxis toUpAxis(int value) {
   switch (value) {
-    case MeshFile::X: return figment::UpAxis::X;
-    case MeshFile::Z: return figment::UpAxis::Z;
-    case MeshFile::NEG_X: return figment::UpAxis::NegX;
-    case MeshFile::NEG_Y: return figment::UpAxis::NegY;
-    case MeshFile::NEG_Z: return figment::UpAxis::NegZ;
-    default: return figment::UpAxis::Y;
+    case MeshFile::X:
+      return figment::UpAxis::X;
+    case MeshFile::Z:
+      return figment::UpAxis::Z;
+    case MeshFile::NEG_X:
+      return figment::UpAxis::NegX;
+    case MeshFile::NEG_Y:
+      return figment::UpAxis::NegY;
+    case MeshFile::NEG_Z:
+      return figment::UpAxis::NegZ;
+    default:
+      return figment::UpAxis::Y;
   }
 }
 
@@ -68,7 +74,9 @@ std::vector<std::string> toStrings(const SoMFString& field) {
   return out;
 }
 
-std::string quoted(const std::string& s) { return "\"" + s + "\""; }
+std::string quoted(const std::string& s) {
+  return "\"" + s + "\"";
+}
 
 std::string joined(const std::vector<std::string>& names) {
   std::string out;
@@ -105,8 +113,8 @@ std::optional<figment::Bounds> cropBox(const MeshFile& node) {
   if (low == SbVec3f(0, 0, 0) && high == SbVec3f(0, 0, 0)) return std::nullopt;
   for (int axis = 0; axis < 3; ++axis)
     if (!(low[axis] < high[axis]))
-      throw std::invalid_argument("cropMin = " + text(node.cropMin) + " must be below cropMax = " +
-                                  text(node.cropMax) + " on every axis");
+      throw std::invalid_argument("cropMin = " + text(node.cropMin) + " must be below cropMax = " + text(node.cropMax) +
+                                  " on every axis");
   figment::Bounds box;
   box.min = figment::Vec3(low[0], low[1], low[2]);
   box.max = figment::Vec3(high[0], high[1], high[2]);
@@ -116,7 +124,7 @@ std::optional<figment::Bounds> cropBox(const MeshFile& node) {
 // The meshes `node`'s fields ask for, as drawn and for collisions, looking in `dirs`;
 // throws naming the field and value that cannot be used.
 std::pair<figment::TriangleMesh, figment::TriangleMesh> importMeshes(const MeshFile& node,
-                                                                    const std::vector<std::string>& dirs) {
+                                                                     const std::vector<std::string>& dirs) {
   const std::string name = node.fileName.getValue().getString();
   const double scale = figment::writtenValue(node.metresPerUnit.getValue());
   if (!(scale > 0.0) || !std::isfinite(scale))
@@ -189,7 +197,9 @@ MeshFile::~MeshFile() {
   impl_->children.truncate(0);
 }
 
-const figment::TriangleMesh& MeshFile::collisionSurface() const { return impl_->collisionSurface; }
+const figment::TriangleMesh& MeshFile::collisionSurface() const {
+  return impl_->collisionSurface;
+}
 
 std::shared_ptr<const figment::MeshCollider> MeshFile::collider() const {
   if (!impl_->collider && !impl_->collisionSurface.triangles.empty())
@@ -206,13 +216,15 @@ std::shared_ptr<const figment::Collider> MeshFile::bodyCollider() const {
   return exact;
 }
 
-figment::CollisionBody::Description MeshFile::describeBody() const { return {"mesh", {}}; }
+figment::CollisionBody::Description MeshFile::describeBody() const {
+  return {"mesh", {}};
+}
 
 // --- reading the mesh -------------------------------------------------------------
 
 bool MeshFile::isLoadOption(const SoField* field) const {
-  return field == &fileName || field == &metresPerUnit || field == &upAxis ||
-         field == &exclude || field == &collisionExclude || field == &cropMin || field == &cropMax;
+  return field == &fileName || field == &metresPerUnit || field == &upAxis || field == &exclude ||
+         field == &collisionExclude || field == &cropMin || field == &cropMax;
 }
 
 SbBool MeshFile::readInstance(SoInput* in, unsigned short flags) {
@@ -247,9 +259,8 @@ bool MeshFile::load(SoInput* in) {
   }
   clearMesh();
   const SbName defName = getName();
-  const std::string message =
-      std::string("MeshFile") + (defName.getLength() ? " '" + std::string(defName.getString()) + "'" : "") +
-      ": " + error;
+  const std::string message = std::string("MeshFile") +
+                              (defName.getLength() ? " '" + std::string(defName.getString()) + "'" : "") + ": " + error;
   if (in)
     SoReadError::post(in, "%s", message.c_str());  // fails the read; Coin adds file and line
   else
@@ -268,7 +279,9 @@ void MeshFile::setMesh(const figment::TriangleMesh& drawn, const figment::Triang
   impl_->collider.reset();
 }
 
-void MeshFile::clearMesh() { setMesh({}, {}); }
+void MeshFile::clearMesh() {
+  setMesh({}, {});
+}
 
 void MeshFile::copyContents(const SoFieldContainer* from, SbBool copyConnections) {
   impl_->loadSuppressed = true;  // take the source's mesh instead of reading the file again
@@ -290,22 +303,34 @@ void MeshFile::copyContents(const SoFieldContainer* from, SbBool copyConnections
 
 // --- actions: forwarded to the hidden mesh, as SoFile forwards to its children -----
 
-SoChildList* MeshFile::getChildren() const { return &impl_->children; }
+SoChildList* MeshFile::getChildren() const {
+  return &impl_->children;
+}
 
-void MeshFile::doAction(SoAction* action) { figment::traverseHidden(impl_->children, action); }
+void MeshFile::doAction(SoAction* action) {
+  figment::traverseHidden(impl_->children, action);
+}
 
-void MeshFile::callback(SoCallbackAction* action) { MeshFile::doAction(action); }
+void MeshFile::callback(SoCallbackAction* action) {
+  MeshFile::doAction(action);
+}
 
-void MeshFile::GLRender(SoGLRenderAction* action) { MeshFile::doAction(action); }
+void MeshFile::GLRender(SoGLRenderAction* action) {
+  MeshFile::doAction(action);
+}
 
 void MeshFile::getBoundingBox(SoGetBoundingBoxAction* action) {
   MeshFile::doAction(action);
 }
 
-void MeshFile::pick(SoPickAction* action) { MeshFile::doAction(action); }
+void MeshFile::pick(SoPickAction* action) {
+  MeshFile::doAction(action);
+}
 
 void MeshFile::getPrimitiveCount(SoGetPrimitiveCountAction* action) {
   MeshFile::doAction(action);
 }
 
-void MeshFile::search(SoSearchAction* action) { SoNode::search(action); }
+void MeshFile::search(SoSearchAction* action) {
+  SoNode::search(action);
+}

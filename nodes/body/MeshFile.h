@@ -11,9 +11,9 @@
 #include <Inventor/fields/SoSFVec3f.h>
 #include <Inventor/nodes/SoSubNode.h>
 
-#include "nodes/body/CollisionBody.h"
-
 #include <memory>
+
+#include "nodes/body/CollisionBody.h"
 
 class SoChildList;
 

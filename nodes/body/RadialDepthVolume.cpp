@@ -1,12 +1,12 @@
 #include "nodes/body/RadialDepthVolume.h"
 
-#include "sim/collision/CollisionVolume.h"
-#include "sim/collision/RadialDepth.h"
-
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "sim/collision/CollisionVolume.h"
+#include "sim/collision/RadialDepth.h"
 
 SO_NODE_SOURCE(RadialDepthVolume);
 
@@ -30,8 +30,12 @@ RadialDepthVolume::~RadialDepthVolume() = default;
 
 namespace {
 
-figment::Vec3 toVec3(const SbVec3f& v) { return {v[0], v[1], v[2]}; }
-SbVec3f toSb(const figment::Vec3& v) { return SbVec3f(float(v.x()), float(v.y()), float(v.z())); }
+figment::Vec3 toVec3(const SbVec3f& v) {
+  return {v[0], v[1], v[2]};
+}
+SbVec3f toSb(const figment::Vec3& v) {
+  return SbVec3f(float(v.x()), float(v.y()), float(v.z()));
+}
 
 }  // namespace
 
@@ -54,9 +58,9 @@ figment::RadialDepthParameters RadialDepthVolume::parameters() const {
   const int perSection = 2 * p.harmonics + 1;
   const int values = coefficients.getNum();
   if (values % perSection != 0 || values / perSection < 2)
-    throw std::invalid_argument(label() + ": coefficients has " + std::to_string(values) +
-                                " values, not a multiple (>= 2 sections) of 2 harmonics + 1 = " +
-                                std::to_string(perSection));
+    throw std::invalid_argument(
+        label() + ": coefficients has " + std::to_string(values) +
+        " values, not a multiple (>= 2 sections) of 2 harmonics + 1 = " + std::to_string(perSection));
   for (int j = 0; j < values / perSection; ++j) {
     std::vector<double> section;
     for (int k = 0; k < perSection; ++k) section.push_back(coefficients[j * perSection + k]);

@@ -1,12 +1,12 @@
 #pragma once
 // RadialDepthVolume: the paper's radial depth volume as a scene node (§3.2).
 
-#include "nodes/body/CollisionVolumeNode.h"
-
 #include <Inventor/fields/SoMFFloat.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/fields/SoSFInt32.h>
 #include <Inventor/fields/SoSFVec3f.h>
+
+#include "nodes/body/CollisionVolumeNode.h"
 
 namespace figment {
 struct RadialDepthParameters;

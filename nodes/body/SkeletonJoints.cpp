@@ -1,10 +1,10 @@
 #include "nodes/body/SkeletonJoints.h"
 
-#include "sim/body/Skeleton.h"
-
 #include <algorithm>
 #include <stdexcept>
 #include <string>
+
+#include "sim/body/Skeleton.h"
 
 SO_NODE_SOURCE(SkeletonJoints);
 
@@ -35,7 +35,8 @@ figment::Skeleton SkeletonJoints::skeleton() const {
       throw std::invalid_argument("SkeletonJoints: names[" + std::to_string(i) + "] = \"" + name +
                                   "\" is not a joint of the humanoid skeleton");
     const size_t k = it - known.begin();
-    if (seen[k]) throw std::invalid_argument("SkeletonJoints: names[" + std::to_string(i) + "] = \"" + name + "\" repeats");
+    if (seen[k])
+      throw std::invalid_argument("SkeletonJoints: names[" + std::to_string(i) + "] = \"" + name + "\" repeats");
     seen[k] = true;
     const SbVec3f& p = positions[i];
     ordered[k] = figment::Vec3(p[0], p[1], p[2]);

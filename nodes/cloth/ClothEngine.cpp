@@ -1,20 +1,5 @@
 #include "nodes/cloth/ClothEngine.h"
 
-#include "nodes/cloth/ClothEngineInputs.h"
-#include "nodes/cloth/FieldValues.h"
-#include "io/DrapeCache.h"
-#include "io/ProgressiveScript.h"
-#include "nodes/cloth/DrapeContext.h"
-#include "nodes/cloth/DrapeKey.h"
-#include "nodes/cloth/RunStatsRecord.h"
-#include "nodes/cloth/ToleranceChoice.h"
-#include "sim/core/ParameterChecks.h"
-#include "sim/progressive/Decimation.h"
-#include "nodes/SceneFiles.h"
-#include "sim/cloth/ClothSolver.h"
-#include "sim/cloth/DrapeVerdict.h"
-#include "sim/drape/GarmentDrape.h"
-
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/lists/SoFieldList.h>
 
@@ -23,6 +8,21 @@
 #include <cstdio>
 #include <optional>
 #include <utility>
+
+#include "io/DrapeCache.h"
+#include "io/ProgressiveScript.h"
+#include "nodes/SceneFiles.h"
+#include "nodes/cloth/ClothEngineInputs.h"
+#include "nodes/cloth/DrapeContext.h"
+#include "nodes/cloth/DrapeKey.h"
+#include "nodes/cloth/FieldValues.h"
+#include "nodes/cloth/RunStatsRecord.h"
+#include "nodes/cloth/ToleranceChoice.h"
+#include "sim/cloth/ClothSolver.h"
+#include "sim/cloth/DrapeVerdict.h"
+#include "sim/core/ParameterChecks.h"
+#include "sim/drape/GarmentDrape.h"
+#include "sim/progressive/Decimation.h"
 
 SO_ENGINE_SOURCE(ClothEngine);
 
@@ -68,8 +68,7 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(maxTime, (defaults.maxTime));
   SO_ENGINE_ADD_INPUT(restSpeed, (defaults.rest.speedThreshold));
   SO_ENGINE_ADD_INPUT(restWindow, (defaults.rest.window));
-  SO_ENGINE_ADD_INPUT(gravity, (float(defaults.gravity.x()), float(defaults.gravity.y()),
-                                float(defaults.gravity.z())));
+  SO_ENGINE_ADD_INPUT(gravity, (float(defaults.gravity.x()), float(defaults.gravity.y()), float(defaults.gravity.z())));
   SO_ENGINE_ADD_INPUT(airResistance, (defaults.airResistance));
   SO_ENGINE_ADD_INPUT(friction, (defaults.friction));
   SO_ENGINE_ADD_INPUT(clearance, (defaults.clearance));
@@ -92,8 +91,7 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_SET_SF_ENUM_TYPE(accelerationLimiter, AccelerationLimiter);
   SO_ENGINE_ADD_INPUT(accelerationLimit, (defaults.accelerationLimit));
   const figment::WindParameters& wind = defaults.wind;
-  SO_ENGINE_ADD_INPUT(windDirection, (float(wind.direction.x()), float(wind.direction.y()),
-                                      float(wind.direction.z())));
+  SO_ENGINE_ADD_INPUT(windDirection, (float(wind.direction.x()), float(wind.direction.y()), float(wind.direction.z())));
   SO_ENGINE_ADD_INPUT(windAmplitude, (wind.amplitude));
   SO_ENGINE_ADD_INPUT(windFrequency, (wind.frequency));
   SO_ENGINE_ADD_INPUT(windPhaseInterval, (wind.meanPhaseInterval));
@@ -137,15 +135,25 @@ void ClothEngine::setDrapeContext(std::shared_ptr<const figment::DrapeContext> c
   impl_->givenContext = std::move(context);
 }
 
-const std::shared_ptr<const figment::DrapeContext>& ClothEngine::drapeContext() const { return impl_->givenContext; }
+const std::shared_ptr<const figment::DrapeContext>& ClothEngine::drapeContext() const {
+  return impl_->givenContext;
+}
 
-const std::string& ClothEngine::lastCacheMessage() const { return impl_->cacheMessage; }
+const std::string& ClothEngine::lastCacheMessage() const {
+  return impl_->cacheMessage;
+}
 
-const std::string& ClothEngine::lastError() const { return impl_->error; }
+const std::string& ClothEngine::lastError() const {
+  return impl_->error;
+}
 
-const ClothEngine::RunStats& ClothEngine::lastRun() const { return impl_->stats; }
+const ClothEngine::RunStats& ClothEngine::lastRun() const {
+  return impl_->stats;
+}
 
-int ClothEngine::evaluationCount() const { return impl_->evaluations; }
+int ClothEngine::evaluationCount() const {
+  return impl_->evaluations;
+}
 
 std::string ClothEngine::label() const {
   const SbName name = getName();
@@ -201,17 +209,30 @@ void ClothEngine::Impl::recordMethod(const figment::ClothParameters& parameters)
   using figment::AccelerationLimiter;
   using figment::Integrator;
   switch (parameters.integrator) {
-    case Integrator::ExplicitEuler: stats.integrator = "EULER"; break;
-    case Integrator::SymplecticEuler: stats.integrator = "SYMPLECTIC"; break;
-    case Integrator::Heun: stats.integrator = "HEUN"; break;
-    case Integrator::Implicit: stats.integrator = "IMPLICIT"; break;
+    case Integrator::ExplicitEuler:
+      stats.integrator = "EULER";
+      break;
+    case Integrator::SymplecticEuler:
+      stats.integrator = "SYMPLECTIC";
+      break;
+    case Integrator::Heun:
+      stats.integrator = "HEUN";
+      break;
+    case Integrator::Implicit:
+      stats.integrator = "IMPLICIT";
+      break;
   }
-  stats.contactModel =
-      parameters.implicitSolver.contacts == figment::ContactModel::Penalty ? "PENALTY" : "CONSTRAINTS";
+  stats.contactModel = parameters.implicitSolver.contacts == figment::ContactModel::Penalty ? "PENALTY" : "CONSTRAINTS";
   switch (parameters.accelerationLimiter) {
-    case AccelerationLimiter::None: stats.accelerationLimiter = "NONE"; break;
-    case AccelerationLimiter::Clamp: stats.accelerationLimiter = "CLAMP"; break;
-    case AccelerationLimiter::Tanh: stats.accelerationLimiter = "TANH"; break;
+    case AccelerationLimiter::None:
+      stats.accelerationLimiter = "NONE";
+      break;
+    case AccelerationLimiter::Clamp:
+      stats.accelerationLimiter = "CLAMP";
+      break;
+    case AccelerationLimiter::Tanh:
+      stats.accelerationLimiter = "TANH";
+      break;
   }
   stats.timeStep = parameters.timeStep;
   stats.strainLimit = parameters.strainLimit;
@@ -230,7 +251,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   std::shared_ptr<const figment::Collider> collider;
   std::string script = engine.progressiveScript.getValue().getString();
   figment::ProgressiveSchedule schedule{engine.beginLevel.getValue(), engine.endLevel.getValue(),
-                                       engine.splitRate.getValue()};
+                                        engine.splitRate.getValue()};
   std::optional<figment::ProgressiveMesh> mesh;  // the garment's progressive mesh, when draped so
   if (engine.tolerance.getValue() > 0.0) {
     const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, garment, parameters);
@@ -241,8 +262,9 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
     stats.passedOver = choice.passedOver;
     script.clear();
     if (choice.picked.progressive != "off") {
-      mesh = figment::decimate(garment, figment::DecimationOptions{
-          .targetFaces = static_cast<int>(std::lround(figment::kStudyCoarseShare * garment.triangles.size()))});
+      mesh = figment::decimate(
+          garment, figment::DecimationOptions{.targetFaces = static_cast<int>(
+                                                  std::lround(figment::kStudyCoarseShare * garment.triangles.size()))});
       const figment::ScheduleText s = figment::parseScheduleText(choice.picked.progressive);
       schedule = {static_cast<int>(std::lround(s.beginShare * mesh->levels())), -1, s.rate};
     }

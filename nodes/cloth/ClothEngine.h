@@ -18,7 +18,7 @@
 namespace figment {
 class ClothSolver;
 struct DrapeContext;
-}
+}  // namespace figment
 
 /*!
   \class ClothEngine nodes/cloth/ClothEngine.h
@@ -266,9 +266,9 @@ class ClothEngine : public SoEngine {
   struct Progress {
     int iterations = 0;
     double simulatedSeconds = 0.0;
-    double maxTime = 0.0;     // s, the run's upper bound
-    double maxSpeed = 0.0;    // m/s, fastest cloth node now
-    double wallSeconds = 0.0; // since the run began
+    double maxTime = 0.0;      // s, the run's upper bound
+    double maxSpeed = 0.0;     // m/s, fastest cloth node now
+    double wallSeconds = 0.0;  // since the run began
   };
   using ProgressCallback = std::function<void(const ClothEngine&, const Progress&)>;
 

@@ -1,18 +1,18 @@
 #include "nodes/cloth/ClothEngineInputs.h"
 
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/FieldValues.h"
-#include "nodes/body/CollisionBody.h"
-#include "guard/CoordIndexFaces.h"
-#include "sim/cloth/MaterialPresets.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <Inventor/nodes/SoNode.h>
 
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+
+#include "guard/CoordIndexFaces.h"
+#include "nodes/body/CollisionBody.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/FieldValues.h"
+#include "sim/cloth/MaterialPresets.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -92,18 +92,32 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
   p.clearance = engine.clearance.getValue();
   p.strainRateDamping = engine.strainRateDamping.getValue();
   switch (engine.integrator.getValue()) {
-    case ClothEngine::EULER: p.integrator = Integrator::ExplicitEuler; break;
-    case ClothEngine::SYMPLECTIC: p.integrator = Integrator::SymplecticEuler; break;
-    case ClothEngine::IMPLICIT: p.integrator = Integrator::Implicit; break;
-    default: p.integrator = Integrator::Heun; break;
+    case ClothEngine::EULER:
+      p.integrator = Integrator::ExplicitEuler;
+      break;
+    case ClothEngine::SYMPLECTIC:
+      p.integrator = Integrator::SymplecticEuler;
+      break;
+    case ClothEngine::IMPLICIT:
+      p.integrator = Integrator::Implicit;
+      break;
+    default:
+      p.integrator = Integrator::Heun;
+      break;
   }
   p.implicitSolver.contacts =
       engine.contactModel.getValue() == ClothEngine::PENALTY ? ContactModel::Penalty : ContactModel::Constraints;
   p.strainLimit = engine.strainLimit.getValue();
   switch (engine.accelerationLimiter.getValue()) {
-    case ClothEngine::CLAMP: p.accelerationLimiter = AccelerationLimiter::Clamp; break;
-    case ClothEngine::TANH: p.accelerationLimiter = AccelerationLimiter::Tanh; break;
-    default: p.accelerationLimiter = AccelerationLimiter::None; break;
+    case ClothEngine::CLAMP:
+      p.accelerationLimiter = AccelerationLimiter::Clamp;
+      break;
+    case ClothEngine::TANH:
+      p.accelerationLimiter = AccelerationLimiter::Tanh;
+      break;
+    default:
+      p.accelerationLimiter = AccelerationLimiter::None;
+      break;
   }
   p.accelerationLimit = engine.accelerationLimit.getValue();
   const SbVec3f& w = engine.windDirection.getValue();

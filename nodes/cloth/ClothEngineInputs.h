@@ -3,11 +3,11 @@
 // simulation's types. Each function throws std::invalid_argument naming the field and
 // value when an input cannot be used.
 
+#include <memory>
+
 #include "sim/cloth/ClothParameters.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <memory>
 
 class ClothEngine;
 class SoMFInt32;

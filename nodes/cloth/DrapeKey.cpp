@@ -1,11 +1,5 @@
 #include "nodes/cloth/DrapeKey.h"
 
-#include "io/Fnv1a.h"
-#include "nodes/body/MeshFile.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/ToleranceChoice.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <Inventor/fields/SoMFFloat.h>
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFNode.h>
@@ -22,7 +16,6 @@
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/misc/SoChildList.h>
 #include <Inventor/nodes/SoNode.h>
-
 #include <dlfcn.h>
 
 #include <cinttypes>
@@ -30,6 +23,12 @@
 #include <filesystem>
 #include <set>
 #include <system_error>
+
+#include "io/Fnv1a.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/ToleranceChoice.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -99,7 +98,8 @@ void addField(KeyWriter& key, const std::string& name, const SoField& field, std
     for (int i = 0; i < f.getNum(); ++i) key.bytes(name + "[" + std::to_string(i) + "]", f[i].getValue(), 16);
     return key.line(name + ".count", std::to_string(f.getNum()));
   }
-  if (type == SoSFNode::getClassTypeId()) return addNode(key, name, static_cast<const SoSFNode&>(field).getValue(), seen);
+  if (type == SoSFNode::getClassTypeId())
+    return addNode(key, name, static_cast<const SoSFNode&>(field).getValue(), seen);
   if (type == SoMFNode::getClassTypeId()) {
     const auto& f = static_cast<const SoMFNode&>(field);
     for (int i = 0; i < f.getNum(); ++i) addNode(key, name + "[" + std::to_string(i) + "]", f[i], seen);
@@ -133,8 +133,7 @@ void addNode(KeyWriter& key, const std::string& where, SoNode* node, std::set<co
     return;  // its children are its own drawing of that surface
   }
   if (const SoChildList* children = node->getChildren())
-    for (int i = 0; i < children->getLength(); ++i)
-      addNode(key, where + "/" + std::to_string(i), (*children)[i], seen);
+    for (int i = 0; i < children->getLength(); ++i) addNode(key, where + "/" + std::to_string(i), (*children)[i], seen);
 }
 
 // The file that holds this code: the node library (libfigment_nodes.so), whatever program
@@ -152,8 +151,10 @@ std::string nodeLibrary() {
 std::string drapeKey(const ClothEngine& engine, const std::string& scriptPath) {
   KeyWriter key;
   const std::string library = nodeLibrary();
-  if (library.empty()) key.line("library", __DATE__ " " __TIME__);
-  else key.file("library", library);
+  if (library.empty())
+    key.line("library", __DATE__ " " __TIME__);
+  else
+    key.file("library", library);
   std::set<const SoNode*> seen;
   addFields(key, "engine", engine, seen);
   if (!scriptPath.empty()) key.file("script", scriptPath);

@@ -21,9 +21,13 @@ double rounded(double value, int significantDigits) {
 
 }  // namespace
 
-double writtenValue(double fieldValue) { return rounded(fieldValue, 15); }
+double writtenValue(double fieldValue) {
+  return rounded(fieldValue, 15);
+}
 
-double writtenValue(float fieldValue) { return rounded(fieldValue, 7); }
+double writtenValue(float fieldValue) {
+  return rounded(fieldValue, 7);
+}
 
 void snapReadDoubles(SoFieldContainer& container) {
   SoFieldList fields;

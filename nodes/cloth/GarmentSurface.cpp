@@ -1,11 +1,11 @@
 #include "nodes/cloth/GarmentSurface.h"
 
+#include <cmath>
+#include <stdexcept>
+
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/OffsetCollider.h"
-
-#include <cmath>
-#include <stdexcept>
 
 SO_NODE_SOURCE(GarmentSurface);
 
@@ -28,8 +28,7 @@ GarmentSurface::GarmentSurface() {
 GarmentSurface::~GarmentSurface() = default;
 
 std::string GarmentSurface::label() const {
-  return getName().getLength() > 0 ? "GarmentSurface '" + std::string(getName().getString()) + "'"
-                                   : "GarmentSurface";
+  return getName().getLength() > 0 ? "GarmentSurface '" + std::string(getName().getString()) + "'" : "GarmentSurface";
 }
 
 std::shared_ptr<const figment::Collider> GarmentSurface::bodyCollider() const {

@@ -1,12 +1,12 @@
 #pragma once
 // GarmentSurface: another garment's draped surface as something cloth collides with.
 
-#include "nodes/body/CollisionBody.h"
-
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/nodes/SoSubNode.h>
+
+#include "nodes/body/CollisionBody.h"
 
 /*!
   \class GarmentSurface nodes/cloth/GarmentSurface.h
@@ -39,9 +39,9 @@ class GarmentSurface : public SoNode, public figment::CollisionBody {
   static void initClass();
   GarmentSurface();
 
-  SoMFVec3f point;      // the draped garment's nodes, m
-  SoMFInt32 coordIndex; // its faces, -1 separated
-  SoSFFloat thickness;  // m the surface stands out by (the cloth's own thickness and some). Default 0.001; >= 0.
+  SoMFVec3f point;       // the draped garment's nodes, m
+  SoMFInt32 coordIndex;  // its faces, -1 separated
+  SoSFFloat thickness;   // m the surface stands out by (the cloth's own thickness and some). Default 0.001; >= 0.
 
   // Throws std::invalid_argument naming this node, the field and the value.
   std::shared_ptr<const figment::Collider> bodyCollider() const override;

@@ -1,17 +1,16 @@
 #include "nodes/cloth/ToleranceChoice.h"
 
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
 #include "nodes/body/CollisionBody.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/collision/VolumeSetCollider.h"
-
 #include "sim/core/ParameterChecks.h"
-
-#include <algorithm>
-#include <cstdlib>
-#include <filesystem>
-#include <stdexcept>
 
 namespace figment {
 
@@ -53,7 +52,8 @@ std::string whyUnusable(const ClothEngine& engine, const MeasuredConfiguration& 
   const int capsules = countOf(d, "capsule_volumes"), radial = countOf(d, "radial_volumes"),
             exact = countOf(d, "exact_parts");
   const bool radialOnly = radial > 0 && capsules == 0;
-  if ((c.body == "triangles" || c.body == "mix") && !mannequin->body.getValue()) return "the Mannequin has no body mesh";
+  if ((c.body == "triangles" || c.body == "mix") && !mannequin->body.getValue())
+    return "the Mannequin has no body mesh";
   if (c.body == "triangles") {
     const std::string changed = poseOrSize(*mannequin);
     return changed.empty() ? "" : "the Mannequin's triangles are its rest pose and size, and it is " + changed;
@@ -95,11 +95,12 @@ std::vector<int> partsWhereGarmentMeets(const Mannequin& mannequin, const std::v
   return volumes ? volumes->partsWithin(garmentStart, kExactPartReach) : std::vector<int>{};
 }
 
-ToleranceChoice chooseForTolerance(const ClothEngine& engine, const TriangleMesh& garment, ClothParameters& parameters) {
+ToleranceChoice chooseForTolerance(const ClothEngine& engine, const TriangleMesh& garment,
+                                   ClothParameters& parameters) {
   const double tolerance = engine.tolerance.getValue();
   const std::vector<MeasuredConfiguration> table = readTradeoffTable(tradeoffTablePath());
-  const std::optional<MeasuredConfiguration> picked = fastestWithin(
-      table, tolerance, [&](const MeasuredConfiguration& c) { return whyUnusable(engine, c).empty(); });
+  const std::optional<MeasuredConfiguration> picked =
+      fastestWithin(table, tolerance, [&](const MeasuredConfiguration& c) { return whyUnusable(engine, c).empty(); });
   const std::string refused = passedOver(engine, table, tolerance, picked);
   if (!picked)
     throw std::runtime_error("tolerance = " + formatNumber(tolerance) + ": no configuration measured within it (" +

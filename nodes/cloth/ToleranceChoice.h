@@ -4,16 +4,16 @@
 // collision body from the engine's body (the Mannequin's own triangles for
 // "triangles", in its rest pose and size only; the engine's body itself for "volumes" or
 // "capsules" when its volumes are all of that kind; for "mix", its radial volumes with
-// the parts the garment starts near colliding with their own triangles, in any pose), its progressive schedule on a progressive mesh made now, at
-// the study's share of the sections. Configurations of another garment resolution are
-// not used (the output is per rest point).
-
-#include "io/TradeoffTable.h"
-#include "sim/collision/Collider.h"
+// the parts the garment starts near colliding with their own triangles, in any pose), its progressive schedule on a
+// progressive mesh made now, at the study's share of the sections. Configurations of another garment resolution are not
+// used (the output is per rest point).
 
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "io/TradeoffTable.h"
+#include "sim/collision/Collider.h"
 
 class ClothEngine;
 class Mannequin;

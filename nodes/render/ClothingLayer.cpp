@@ -1,12 +1,6 @@
 #include "nodes/render/ClothingLayer.h"
 
-#include "guard/CoordIndexFaces.h"
-#include "nodes/render/FacetOrder.h"
-#include "nodes/render/GLStencilElement.h"
-#include "nodes/render/StencilDecisionElement.h"
-#include "nodes/render/StencilRule.h"
-#include "nodes/render/StencilRuleElement.h"
-
+#include <GL/gl.h>
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/bundles/SoMaterialBundle.h>
@@ -20,9 +14,14 @@
 #include <Inventor/misc/SoState.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
-#include <GL/gl.h>
-
 #include <vector>
+
+#include "guard/CoordIndexFaces.h"
+#include "nodes/render/FacetOrder.h"
+#include "nodes/render/GLStencilElement.h"
+#include "nodes/render/StencilDecisionElement.h"
+#include "nodes/render/StencilRule.h"
+#include "nodes/render/StencilRuleElement.h"
 
 SO_NODE_SOURCE(ClothingLayer);
 
@@ -173,8 +172,7 @@ void ClothingLayer::drawArranged(SoState* state, bool maskedByParts) {
   glEnableClientState(GL_NORMAL_ARRAY);
   glVertexPointer(3, GL_FLOAT, 0, cache_->positions.data());
   glNormalPointer(GL_FLOAT, 0, cache_->normals.data());
-  auto draw = [&](SoDepthBufferElement::DepthWriteFunction test, GLStencilElement::Mode stencil, int first,
-                  int count) {
+  auto draw = [&](SoDepthBufferElement::DepthWriteFunction test, GLStencilElement::Mode stencil, int first, int count) {
     SoDepthBufferElement::set(state, TRUE, TRUE, test, depthRange);
     GLStencilElement::set(state, stencil);
     glDrawArrays(GL_TRIANGLES, first, count);

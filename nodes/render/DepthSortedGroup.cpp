@@ -21,7 +21,9 @@ void DepthSortedGroup::initClass() {
   SO_NODE_INIT_CLASS(DepthSortedGroup, SoGroup, "Group");
 }
 
-DepthSortedGroup::DepthSortedGroup() { SO_NODE_CONSTRUCTOR(DepthSortedGroup); }
+DepthSortedGroup::DepthSortedGroup() {
+  SO_NODE_CONSTRUCTOR(DepthSortedGroup);
+}
 
 DepthSortedGroup::~DepthSortedGroup() = default;
 

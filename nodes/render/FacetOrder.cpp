@@ -1,9 +1,9 @@
 #include "nodes/render/FacetOrder.h"
 
-#include "guard/CoordIndexFaces.h"
-
 #include <algorithm>
 #include <numeric>
+
+#include "guard/CoordIndexFaces.h"
 
 namespace figment {
 
@@ -48,8 +48,8 @@ std::vector<OrderedFacet> orderFacets(const std::vector<FacetGeometry>& facets, 
   return sorted;
 }
 
-std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
-                                      int indexCount, const ViewPoint& view) {
+std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex, int indexCount,
+                                      const ViewPoint& view) {
   return orderFacets(describeFacets(points, pointCount, coordIndex, indexCount), view);
 }
 

@@ -13,9 +13,9 @@ namespace figment {
 
 struct ViewPoint {
   bool perspective = true;
-  SbVec3f eye;        // perspective: the eye, in the facets' (object) frame
-  SbVec3f direction;  // orthographic: the viewing direction, in the object frame
-  SbMatrix toCamera;  // object frame -> camera frame (camera looks down -z)
+  SbVec3f eye;             // perspective: the eye, in the facets' (object) frame
+  SbVec3f direction;       // orthographic: the viewing direction, in the object frame
+  SbMatrix toCamera;       // object frame -> camera frame (camera looks down -z)
   bool clockwise = false;  // vertex ordering: CLOCKWISE flips which side is the front
   // A facet counts as facing the viewer unless it faces away "substantially" (paper §5):
   // by more than this cosine between its normal and the line to the eye. Nearly edge-on
@@ -28,7 +28,7 @@ struct FacetGeometry {
   int32_t firstIndex;  // into coordIndex
   int32_t corners;
   SbVec3f centre;
-  SbVec3f normal;      // Newell's normal (counter-clockwise front), not normalised
+  SbVec3f normal;  // Newell's normal (counter-clockwise front), not normalised
 };
 
 // Facets of `coordIndex` (polygons ended by -1 or the end) with every index in
@@ -45,7 +45,7 @@ struct OrderedFacet {
 // The facets far to near for `view`, each marked facing the viewer or away.
 std::vector<OrderedFacet> orderFacets(const std::vector<FacetGeometry>& facets, const ViewPoint& view);
 // Both steps at once.
-std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
-                                      int indexCount, const ViewPoint& view);
+std::vector<OrderedFacet> orderFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex, int indexCount,
+                                      const ViewPoint& view);
 
 }  // namespace figment

@@ -1,9 +1,8 @@
 #include "nodes/render/GLStencilElement.h"
 
+#include <GL/gl.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/misc/SoState.h>
-
-#include <GL/gl.h>
 
 SO_ELEMENT_SOURCE(GLStencilElement);
 

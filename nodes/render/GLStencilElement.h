@@ -26,13 +26,13 @@ class GLStencilElement : public SoElement {
 
  public:
   enum Mode {
-    OFF,           // no stencil test (the default)
-    MARK_PART,     // set the body-part bit where drawn
-    MARK_LAYER,    // set the layer bit where drawn
-    OUTSIDE_LAYER, // draw only where the layer bit is clear
+    OFF,                      // no stencil test (the default)
+    MARK_PART,                // set the body-part bit where drawn
+    MARK_LAYER,               // set the layer bit where drawn
+    OUTSIDE_LAYER,            // draw only where the layer bit is clear
     OUTSIDE_LAYER_AND_PARTS,  // ... and the body-part bit too (a masked layer)
-    INSIDE_LAYER,  // draw only where the layer bit is set
-    ON_PARTS_OUTSIDE_LAYER,  // draw only where the body-part bit is set and the layer bit clear
+    INSIDE_LAYER,             // draw only where the layer bit is set
+    ON_PARTS_OUTSIDE_LAYER,   // draw only where the body-part bit is set and the layer bit clear
   };
   static constexpr unsigned kPartBit = 1, kLayerBit = 2;
 

@@ -35,7 +35,9 @@ const figment::StencilDecision& StencilDecisionElement::decisionFor(
 }
 
 // A cache never decides whether a render cache is valid: every element matches.
-SbBool StencilDecisionElement::matches(const SoElement*) const { return TRUE; }
+SbBool StencilDecisionElement::matches(const SoElement*) const {
+  return TRUE;
+}
 
 SoElement* StencilDecisionElement::copyMatchInfo() const {
   return static_cast<SoElement*>(getTypeId().createInstance());

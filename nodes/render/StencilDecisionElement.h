@@ -2,13 +2,13 @@
 // StencilDecisionElement: the stencil rule's last decision, kept in the render
 // action's state so that each action (each session, each thread) has its own.
 
-#include "nodes/render/StencilRule.h"
-
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/elements/SoSubElement.h>
 
 #include <functional>
+
+#include "nodes/render/StencilRule.h"
 
 /*!
   \class StencilDecisionElement nodes/render/StencilDecisionElement.h
@@ -37,7 +37,7 @@ class StencilDecisionElement : public SoElement {
   // The decision kept in `state` for `key`; `decide` makes it when the kept one was
   // made for another key (or none was made yet).
   static const figment::StencilDecision& decisionFor(SoState* state, const Key& key,
-                                                      const std::function<figment::StencilDecision()>& decide);
+                                                     const std::function<figment::StencilDecision()>& decide);
 
   void init(SoState* state) override;
   SbBool matches(const SoElement* element) const override;

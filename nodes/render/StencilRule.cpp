@@ -1,11 +1,5 @@
 #include "nodes/render/StencilRule.h"
 
-#include "nodes/render/StencilDecisionElement.h"
-
-#include "nodes/SceneSearch.h"
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/render/StencilSeparator.h"
-
 #include <Inventor/SbBox2f.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGLRenderAction.h>
@@ -18,6 +12,11 @@
 
 #include <algorithm>
 #include <limits>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/StencilDecisionElement.h"
+#include "nodes/render/StencilSeparator.h"
 
 namespace figment {
 
@@ -74,7 +73,9 @@ SoPathList findDrawn(SoNode* root, SoType type) {
 }
 
 // The node a path leads to, when it passes a File's (hidden) children too.
-const SoNode* tailOf(SoPath* path) { return fullTail(path); }
+const SoNode* tailOf(SoPath* path) {
+  return fullTail(path);
+}
 
 void addOnce(std::vector<const SoNode*>& nodes, const SoNode* node) {
   if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
@@ -89,7 +90,7 @@ SoNode* appliedRoot(SoAction* action) {
       return action->getPathAppliedTo()->getHead();
     case SoAction::PATH_LIST:
       return action->getPathListAppliedTo()->getLength() > 0 ? (*action->getPathListAppliedTo())[0]->getHead()
-                                                              : nullptr;
+                                                             : nullptr;
   }
   return nullptr;
 }
@@ -130,9 +131,8 @@ const StencilDecision& decideStencil(SoGLRenderAction* action) {
   key.rootId = root ? root->getNodeId() : 0;
   view.getMatrices(key.affine, key.projection);
   key.viewport = SoViewportRegionElement::get(state);
-  return StencilDecisionElement::decisionFor(state, key, [&] {
-    return root ? decideStencil(root, key.viewport, view) : StencilDecision{};
-  });
+  return StencilDecisionElement::decisionFor(
+      state, key, [&] { return root ? decideStencil(root, key.viewport, view) : StencilDecision{}; });
 }
 
 }  // namespace figment

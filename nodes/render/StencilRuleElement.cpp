@@ -29,11 +29,15 @@ bool StencilRuleElement::get(SoState* state) {
 namespace figment {
 namespace {
 // Runs once per frame, in the state the whole traversal inherits.
-void ruleOff(void*, SoGLRenderAction* action) { StencilRuleElement::set(action->getState(), false); }
+void ruleOff(void*, SoGLRenderAction* action) {
+  StencilRuleElement::set(action->getState(), false);
+}
 }  // namespace
 
 void keepStencilFields(SoGLRenderAction& action, bool keep) {
-  if (keep) action.addPreRenderCallback(ruleOff, nullptr);
-  else action.removePreRenderCallback(ruleOff, nullptr);
+  if (keep)
+    action.addPreRenderCallback(ruleOff, nullptr);
+  else
+    action.removePreRenderCallback(ruleOff, nullptr);
 }
 }  // namespace figment

@@ -1,13 +1,13 @@
 #include "nodes/render/StencilSeparator.h"
 
-#include "nodes/render/GLStencilElement.h"
-#include "nodes/render/StencilRule.h"
-#include "nodes/render/StencilDecisionElement.h"
-#include "nodes/render/StencilRuleElement.h"
-
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/misc/SoState.h>
+
+#include "nodes/render/GLStencilElement.h"
+#include "nodes/render/StencilDecisionElement.h"
+#include "nodes/render/StencilRule.h"
+#include "nodes/render/StencilRuleElement.h"
 
 SO_NODE_SOURCE(StencilSeparator);
 
@@ -43,11 +43,17 @@ void StencilSeparator::renderMarking(SoGLRenderAction* action, bool inPath) {
   const bool writes = writesStencil(action);
   state->push();
   if (writes) GLStencilElement::set(state, GLStencilElement::MARK_PART);
-  if (inPath) inherited::GLRenderInPath(action);
-  else inherited::GLRenderBelowPath(action);
+  if (inPath)
+    inherited::GLRenderInPath(action);
+  else
+    inherited::GLRenderBelowPath(action);
   state->pop();
 }
 
-void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) { renderMarking(action, false); }
+void StencilSeparator::GLRenderBelowPath(SoGLRenderAction* action) {
+  renderMarking(action, false);
+}
 
-void StencilSeparator::GLRenderInPath(SoGLRenderAction* action) { renderMarking(action, true); }
+void StencilSeparator::GLRenderInPath(SoGLRenderAction* action) {
+  renderMarking(action, true);
+}

@@ -156,7 +156,8 @@ std::vector<PartMesh> splitIntoParts(const TriangleMesh& body, const Skeleton& s
       Triangle triangle;
       for (int k = 0; k < 3; ++k) {
         const int v = body.triangles[t][k];
-        if (map[v] < 0) map[v] = static_cast<int>(part.mesh.vertices.size()), part.mesh.vertices.push_back(body.vertices[v]);
+        if (map[v] < 0)
+          map[v] = static_cast<int>(part.mesh.vertices.size()), part.mesh.vertices.push_back(body.vertices[v]);
         triangle[k] = map[v];
       }
       part.mesh.triangles.push_back(triangle);
@@ -175,7 +176,8 @@ std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& t
     }
   std::vector<int> part(body.vertices.size(), -1);
   for (size_t v = 0; v < votes.size(); ++v)
-    if (!votes[v].empty()) part[v] = static_cast<int>(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
+    if (!votes[v].empty())
+      part[v] = static_cast<int>(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
   return part;
 }
 

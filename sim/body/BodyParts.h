@@ -11,10 +11,10 @@
 //      shared vertex positions); every smaller piece joins the part that most of its
 //      neighbouring triangles belong to (repeated until nothing moves).
 
-#include "sim/body/Skeleton.h"
-
 #include <string>
 #include <vector>
+
+#include "sim/body/Skeleton.h"
 
 namespace figment {
 

@@ -19,25 +19,32 @@ namespace figment {
 
 namespace {
 
-constexpr double kScanStep = 0.005;      // m between heights when scanning the body
+constexpr double kScanStep = 0.005;        // m between heights when scanning the body
 constexpr double kArmpitTolerance = 1e-3;  // m
-constexpr double kHeadWidening = 0.015;  // m of width above the narrowest section: the head
+constexpr double kHeadWidening = 0.015;    // m of width above the narrowest section: the head
 // m^2: turns this close to straight are dropped from hulls (points on a hull's side, such as
 // where a plane crosses a flat face's diagonal, are not corners)
 constexpr double kCollinear = 1e-15;
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 
 Vec2 inPlane(const Vec3& p, SectionAxis axis) {
   switch (axis) {
-    case SectionAxis::X: return {p.z(), p.y()};
-    case SectionAxis::Y: return {p.x(), p.z()};
-    case SectionAxis::Z: return {p.x(), p.y()};
+    case SectionAxis::X:
+      return {p.z(), p.y()};
+    case SectionAxis::Y:
+      return {p.x(), p.z()};
+    case SectionAxis::Z:
+      return {p.x(), p.y()};
   }
   return {p.x(), p.z()};
 }
 
-int axisIndex(SectionAxis axis) { return axis == SectionAxis::X ? 0 : axis == SectionAxis::Y ? 1 : 2; }
+int axisIndex(SectionAxis axis) {
+  return axis == SectionAxis::X ? 0 : axis == SectionAxis::Y ? 1 : 2;
+}
 
 double distanceToSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;

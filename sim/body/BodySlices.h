@@ -3,10 +3,10 @@
 // needs from them: the torso's convex outline at a height, the armpits, the neck.
 // Formulas and sources at the top of BodySlices.cpp.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Core>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -1,7 +1,6 @@
 #include "sim/body/BodyStance.h"
 
 #include <Eigen/Eigenvalues>
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>

@@ -6,9 +6,9 @@
 // thresholds are in metres (a 2 cm section spacing, an 8 mm capsule gap, a 1 cm
 // clearance, a 4 cm gap between limbs).
 
-#include "sim/core/TriangleMesh.h"
-
 #include <optional>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

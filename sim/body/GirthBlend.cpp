@@ -25,8 +25,8 @@ GirthBlend::GirthBlend(const Skeleton& skeleton, const Sizing& sizing, double le
       const BodyPart& other = skeleton.parts[m];
       for (const int j : {part.from, part.to})
         if (j == other.from || j == other.to)
-          joints_[k].push_back({skeleton.joints[j].position, (j == part.from ? to - from : from - to).normalized(),
-                                *girth[m]});
+          joints_[k].push_back(
+              {skeleton.joints[j].position, (j == part.from ? to - from : from - to).normalized(), *girth[m]});
     }
   }
 }

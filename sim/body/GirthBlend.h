@@ -10,9 +10,9 @@
 // overlap). Only ever growing, so the body's skin (sized by its parts' own factors) stays
 // inside; the cloth stands off it by at most the factors' difference there.
 
-#include "sim/body/Posing.h"
-
 #include <vector>
+
+#include "sim/body/Posing.h"
 
 namespace figment {
 
@@ -30,7 +30,7 @@ class GirthBlend {
     Vec3 position, inward;  // rest frame; inward: unit, along the bone into the part
     double factor;          // the wider neighbour's girth factor
   };
-  std::vector<double> own_;               // per part: its girth factor (1 without)
+  std::vector<double> own_;                 // per part: its girth factor (1 without)
   std::vector<std::vector<Joint>> joints_;  // per part: its joints with a wider girth neighbour
   double length_;
 };

@@ -1,18 +1,20 @@
 #include "sim/body/Posing.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
 namespace {
 constexpr double kMinFactor = 0.5, kMaxFactor = 2.0;
 
-bool startsWith(const std::string& name, const char* prefix) { return name.rfind(prefix, 0) == 0; }
+bool startsWith(const std::string& name, const char* prefix) {
+  return name.rfind(prefix, 0) == 0;
+}
 
 int partNamed(const Skeleton& skeleton, const char* name) {
   for (size_t k = 0; k < skeleton.parts.size(); ++k)
@@ -68,9 +70,13 @@ void checkHierarchy(const Skeleton& skeleton) {
 class Sizer {
  public:
   Sizer(const Skeleton& skeleton, const Sizing& sizing)
-      : skeleton_(skeleton), sizing_(sizing), carriers_(jointCarriers(skeleton)),
-        sized_(skeleton.joints.size()), parts_(skeleton.parts.size()),
-        jointState_(skeleton.joints.size(), kTodo), partDone_(skeleton.parts.size(), false) {
+      : skeleton_(skeleton),
+        sizing_(sizing),
+        carriers_(jointCarriers(skeleton)),
+        sized_(skeleton.joints.size()),
+        parts_(skeleton.parts.size()),
+        jointState_(skeleton.joints.size(), kTodo),
+        partDone_(skeleton.parts.size(), false) {
     // Height: uniform about the floor point below the root.
     double floor = skeleton.joints.empty() ? 0.0 : skeleton.joints[0].position.y();
     Vec3 root = Vec3::Zero();
@@ -128,8 +134,8 @@ Eigen::Matrix3d rotationOf(const Skeleton& skeleton, const Pose& pose, int j) {
   const Eigen::Quaterniond& q = pose.rotations[j];
   if (!q.coeffs().allFinite() || !(q.norm() > 1e-12))
     throw std::invalid_argument("pose.rotations[" + std::to_string(j) + "] (joint " + skeleton.joints[j].name +
-                                ") = " + formatNumber(q.w()) + " " + formatNumber(q.x()) + " " +
-                                formatNumber(q.y()) + " " + formatNumber(q.z()) + " is not a rotation");
+                                ") = " + formatNumber(q.w()) + " " + formatNumber(q.x()) + " " + formatNumber(q.y()) +
+                                " " + formatNumber(q.z()) + " is not a rotation");
   return q.normalized().toRotationMatrix();
 }
 

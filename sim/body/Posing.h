@@ -23,12 +23,11 @@
 //              joint, except for the humanoid's hips part, which runs from the pelvis floor
 //              (a leaf of the pelvis) up to the waist and so turns with the pelvis.
 
-#include "sim/body/Skeleton.h"
-
 #include <Eigen/Geometry>
-
 #include <optional>
 #include <vector>
+
+#include "sim/body/Skeleton.h"
 
 namespace figment {
 

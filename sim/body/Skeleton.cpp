@@ -20,11 +20,10 @@ const Joint& Skeleton::operator[](const std::string& name) const {
 
 const std::vector<std::string>& humanoidJointNames() {
   static const std::vector<std::string> names = {
-      "pelvis",     "waist",      "chest",     "neckBase",   "neckTop",       "headTop",
-      "hipL",       "kneeL",      "ankleL",    "toeL",       "hipR",          "kneeR",
-      "ankleR",     "toeR",       "shoulderL", "elbowL",     "wristL",        "fingertipL",
-      "shoulderR",  "elbowR",     "wristR",    "fingertipR", "shoulderBaseL", "shoulderBaseR",
-      "pelvisFloor"};
+      "pelvis",     "waist",         "chest",         "neckBase",   "neckTop",   "headTop", "hipL",
+      "kneeL",      "ankleL",        "toeL",          "hipR",       "kneeR",     "ankleR",  "toeR",
+      "shoulderL",  "elbowL",        "wristL",        "fingertipL", "shoulderR", "elbowR",  "wristR",
+      "fingertipR", "shoulderBaseL", "shoulderBaseR", "pelvisFloor"};
   return names;
 }
 
@@ -34,27 +33,40 @@ Skeleton humanoidSkeleton(const std::vector<Vec3>& positions) {
     throw std::invalid_argument("a humanoid skeleton needs " + std::to_string(names.size()) + " joint positions, not " +
                                 std::to_string(positions.size()));
   // Parents: the spine from the pelvis up; legs from the pelvis; arms from the chest.
-  const std::vector<std::pair<std::string, std::string>> parent = {
-      {"waist", "pelvis"},       {"chest", "waist"},         {"neckBase", "chest"},  {"neckTop", "neckBase"},
-      {"headTop", "neckTop"},    {"hipL", "pelvis"},         {"kneeL", "hipL"},      {"ankleL", "kneeL"},
-      {"toeL", "ankleL"},        {"hipR", "pelvis"},         {"kneeR", "hipR"},      {"ankleR", "kneeR"},
-      {"toeR", "ankleR"},        {"shoulderBaseL", "chest"}, {"shoulderL", "shoulderBaseL"},
-      {"elbowL", "shoulderL"},   {"wristL", "elbowL"},       {"fingertipL", "wristL"},
-      {"shoulderBaseR", "chest"}, {"shoulderR", "shoulderBaseR"}, {"elbowR", "shoulderR"},
-      {"wristR", "elbowR"},      {"fingertipR", "wristR"},   {"pelvisFloor", "pelvis"}};
+  const std::vector<std::pair<std::string, std::string>> parent = {{"waist", "pelvis"},
+                                                                   {"chest", "waist"},
+                                                                   {"neckBase", "chest"},
+                                                                   {"neckTop", "neckBase"},
+                                                                   {"headTop", "neckTop"},
+                                                                   {"hipL", "pelvis"},
+                                                                   {"kneeL", "hipL"},
+                                                                   {"ankleL", "kneeL"},
+                                                                   {"toeL", "ankleL"},
+                                                                   {"hipR", "pelvis"},
+                                                                   {"kneeR", "hipR"},
+                                                                   {"ankleR", "kneeR"},
+                                                                   {"toeR", "ankleR"},
+                                                                   {"shoulderBaseL", "chest"},
+                                                                   {"shoulderL", "shoulderBaseL"},
+                                                                   {"elbowL", "shoulderL"},
+                                                                   {"wristL", "elbowL"},
+                                                                   {"fingertipL", "wristL"},
+                                                                   {"shoulderBaseR", "chest"},
+                                                                   {"shoulderR", "shoulderBaseR"},
+                                                                   {"elbowR", "shoulderR"},
+                                                                   {"wristR", "elbowR"},
+                                                                   {"fingertipR", "wristR"},
+                                                                   {"pelvisFloor", "pelvis"}};
   Skeleton s;
   for (size_t i = 0; i < names.size(); ++i) s.joints.push_back({names[i], -1, positions[i]});
   for (const auto& [child, p] : parent) s.joints[s.joint(child)].parent = s.joint(p);
   const std::vector<std::array<std::string, 3>> parts = {
-      {"head", "neckTop", "headTop"},         {"neck", "neckBase", "neckTop"},
-      {"upperTorso", "chest", "neckBase"},    {"lowerTorso", "waist", "chest"},
-      {"hips", "pelvisFloor", "waist"},       {"upperArmL", "shoulderL", "elbowL"},
-      {"forearmL", "elbowL", "wristL"},       {"handL", "wristL", "fingertipL"},
-      {"upperArmR", "shoulderR", "elbowR"},   {"forearmR", "elbowR", "wristR"},
-      {"handR", "wristR", "fingertipR"},      {"thighL", "hipL", "kneeL"},
-      {"shinL", "kneeL", "ankleL"},           {"footL", "ankleL", "toeL"},
-      {"thighR", "hipR", "kneeR"},            {"shinR", "kneeR", "ankleR"},
-      {"footR", "ankleR", "toeR"}};
+      {"head", "neckTop", "headTop"},   {"neck", "neckBase", "neckTop"},   {"upperTorso", "chest", "neckBase"},
+      {"lowerTorso", "waist", "chest"}, {"hips", "pelvisFloor", "waist"},  {"upperArmL", "shoulderL", "elbowL"},
+      {"forearmL", "elbowL", "wristL"}, {"handL", "wristL", "fingertipL"}, {"upperArmR", "shoulderR", "elbowR"},
+      {"forearmR", "elbowR", "wristR"}, {"handR", "wristR", "fingertipR"}, {"thighL", "hipL", "kneeL"},
+      {"shinL", "kneeL", "ankleL"},     {"footL", "ankleL", "toeL"},       {"thighR", "hipR", "kneeR"},
+      {"shinR", "kneeR", "ankleR"},     {"footR", "ankleR", "toeR"}};
   for (const auto& [name, from, to] : parts) s.parts.push_back({name, s.joint(from), s.joint(to)});
   return s;
 }

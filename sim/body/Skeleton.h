@@ -3,10 +3,10 @@
 // joints with rest positions and a hierarchy, the body parts they bound, and which part
 // each body vertex belongs to.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <string>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -26,7 +26,7 @@ struct Skeleton {
   std::vector<Joint> joints;
   std::vector<BodyPart> parts;
 
-  int joint(const std::string& name) const;  // index, or -1
+  int joint(const std::string& name) const;                // index, or -1
   const Joint& operator[](const std::string& name) const;  // throws std::out_of_range
 };
 

@@ -1,10 +1,6 @@
 #include "sim/body/SkeletonEstimate.h"
 
-#include "sim/body/BodySlices.h"
-#include "sim/body/BodyStance.h"
-
 #include <Eigen/Geometry>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -12,11 +8,14 @@
 #include <optional>
 #include <stdexcept>
 
+#include "sim/body/BodySlices.h"
+#include "sim/body/BodyStance.h"
+
 namespace figment {
 
 namespace {
 
-constexpr double kHeight = 1.66;  // m: the default body's, where BodySlices' thresholds hold
+constexpr double kHeight = 1.66;      // m: the default body's, where BodySlices' thresholds hold
 constexpr double kWaistShare = 0.66;  // the default body's waist, crotch to armpits
 
 Vec3 findUp(const std::vector<Vec3>& vertices) {

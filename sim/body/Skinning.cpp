@@ -1,12 +1,12 @@
 #include "sim/body/Skinning.h"
 
-#include "sim/body/Posing.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "sim/body/Posing.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -44,7 +44,8 @@ SkinWeights skinWeights(const Skeleton& skeleton, const std::vector<Vec3>& restV
                         double blendRadius) {
   requirePositive("blendRadius", blendRadius);
   if (skeleton.parts.empty() && !restVertices.empty())
-    throw std::invalid_argument("skeleton has no parts to skin " + std::to_string(restVertices.size()) + " vertices to");
+    throw std::invalid_argument("skeleton has no parts to skin " + std::to_string(restVertices.size()) +
+                                " vertices to");
   if (given.size() != restVertices.size())
     throw std::invalid_argument("owner: " + std::to_string(given.size()) + " parts for " +
                                 std::to_string(restVertices.size()) + " vertices");
@@ -89,8 +90,8 @@ SkinWeights skinWeights(const Skeleton& skeleton, const std::vector<Vec3>& restV
 std::vector<Vec3> skin(const SkinWeights& weights, const std::vector<Eigen::Affine3d>& partTransforms,
                        const std::vector<Vec3>& restVertices) {
   if (weights.vertices.size() != restVertices.size())
-    throw std::invalid_argument("weights: " + std::to_string(weights.vertices.size()) + " vertices, restVertices: " +
-                                std::to_string(restVertices.size()));
+    throw std::invalid_argument("weights: " + std::to_string(weights.vertices.size()) +
+                                " vertices, restVertices: " + std::to_string(restVertices.size()));
   std::vector<Vec3> posed(restVertices.size());
   for (size_t v = 0; v < restVertices.size(); ++v) {
     const Vec3& p = restVertices[v];

@@ -11,12 +11,11 @@
 //             the last: the part starting there (the nearest to the vertex of several);
 //   skin      v' = v + sum_i w_i (T_i v - v)   (identity maps give v exactly).
 
-#include "sim/body/Skeleton.h"
-
 #include <Eigen/Geometry>
-
 #include <array>
 #include <vector>
+
+#include "sim/body/Skeleton.h"
 
 namespace figment {
 

@@ -5,9 +5,9 @@
 // belong there, in one fixed order (by slot index). No two threads ever add into the
 // same place, so the result is the same, bit for bit, whatever the thread count.
 
-#include "sim/cloth/BlockSparseMatrix.h"
-
 #include <vector>
+
+#include "sim/cloth/BlockSparseMatrix.h"
 
 namespace figment {
 
@@ -29,8 +29,7 @@ class AssemblyPlan {
   // A matrix with the elements' pattern (every block zero).
   const BlockSparseMatrix& pattern() const { return pattern_; }
   // A(i, j) = the sum of its slots, plus diagonal[i] I on the diagonal.
-  void gatherBlocks(const std::vector<Block3>& slots, const std::vector<double>& diagonal,
-                    BlockSparseMatrix& A) const;
+  void gatherBlocks(const std::vector<Block3>& slots, const std::vector<double>& diagonal, BlockSparseMatrix& A) const;
   // out[i] = the sum of node i's vector slots.
   void gatherVectors(const std::vector<Vec3>& slots, std::vector<Vec3>& out) const;
 

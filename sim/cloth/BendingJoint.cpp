@@ -4,8 +4,7 @@
 
 namespace figment {
 
-BendingJoint::BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec3>& rest)
-    : corners_{e0, e1, o2, o3} {
+BendingJoint::BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec3>& rest) : corners_{e0, e1, o2, o3} {
   const Vec3 &x0 = rest[e0], &x1 = rest[e1], &x2 = rest[o2], &x3 = rest[o3];
   const double areaA = 0.5 * (x1 - x0).cross(x2 - x0).norm();
   const double areaB = 0.5 * (x1 - x0).cross(x3 - x0).norm();

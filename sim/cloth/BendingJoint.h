@@ -7,10 +7,10 @@
 // Angle gradients: Bridson, Marino & Fedkiw, "Simulation of clothing with folds and
 // wrinkles", SCA 2003.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <array>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -1,8 +1,8 @@
 #include "sim/cloth/BlockSparseMatrix.h"
 
-#include "sim/cloth/ParallelLoops.h"
-
 #include <algorithm>
+
+#include "sim/cloth/ParallelLoops.h"
 
 namespace figment {
 

@@ -4,11 +4,10 @@
 // matrix, so that a product runs row by row in parallel and each row's sum has one
 // fixed order whatever the thread count.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Core>
-
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

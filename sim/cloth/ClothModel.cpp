@@ -166,8 +166,10 @@ void ClothModel::evaluateBendingStiffness(const std::vector<Vec3>& v, const Syst
 #pragma omp for schedule(static)
   for (int j = 0; j < joints; ++j) {
     const ElementOutput out = slots(jointElements_ + j, jointBound_);
-    if (jointBound_) bending_.jointStiffness(j, angleGradients_[j], moments_, v, weights, out);
-    else std::fill_n(out.stiffnessTimesVelocity, 4, Vec3::Zero());
+    if (jointBound_)
+      bending_.jointStiffness(j, angleGradients_[j], moments_, v, weights, out);
+    else
+      std::fill_n(out.stiffnessTimesVelocity, 4, Vec3::Zero());
   }
   if (jointBound_) return;
 #pragma omp for schedule(static)
@@ -198,9 +200,12 @@ void ClothModel::addNodeTerms(const std::vector<Vec3>& v, const Request& request
   // m g - k A v, as that step has always added them: its drapes move with the forces'
   // last bits. The explicit integrators subtract the air alone and add g to f / m.
   for (size_t i = 0; i < forces.size(); ++i) {
-    if (request.weight && request.external) forces[i] += nodes_.weight(i) - nodes_.drag(i, v[i]);
-    else if (request.external) forces[i] -= nodes_.drag(i, v[i]);
-    else if (request.weight) forces[i] += nodes_.weight(i);
+    if (request.weight && request.external)
+      forces[i] += nodes_.weight(i) - nodes_.drag(i, v[i]);
+    else if (request.external)
+      forces[i] -= nodes_.drag(i, v[i]);
+    else if (request.weight)
+      forces[i] += nodes_.weight(i);
   }
 }
 

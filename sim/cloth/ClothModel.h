@@ -18,14 +18,14 @@
 // on each section (only when a wind blows); then the air's resistance and gravity. The
 // result does not depend on the thread count.
 
+#include <vector>
+
 #include "sim/cloth/AssemblyPlan.h"
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/MembraneElement.h"
 #include "sim/cloth/NodeTerms.h"
 #include "sim/cloth/PlateBending.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <vector>
 
 namespace figment {
 

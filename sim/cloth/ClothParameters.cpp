@@ -1,18 +1,22 @@
 #include "sim/cloth/ClothParameters.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <cmath>
 #include <stdexcept>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
 const char* integratorName(Integrator integrator) {
   switch (integrator) {
-    case Integrator::ExplicitEuler: return "explicit Euler";
-    case Integrator::SymplecticEuler: return "symplectic Euler";
-    case Integrator::Heun: return "improved Euler (Heun)";
-    case Integrator::Implicit: return "implicit";
+    case Integrator::ExplicitEuler:
+      return "explicit Euler";
+    case Integrator::SymplecticEuler:
+      return "symplectic Euler";
+    case Integrator::Heun:
+      return "improved Euler (Heun)";
+    case Integrator::Implicit:
+      return "implicit";
   }
   return "unknown";
 }
@@ -43,8 +47,8 @@ void ClothParameters::validate() const {
   if (implicitSolver.contacts == ContactModel::Penalty && integrator != Integrator::Implicit)
     throw std::invalid_argument("contactModel PENALTY needs integrator IMPLICIT");
   if (timeStep > maxTime)
-    throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " must not exceed maxTime = " +
-                                formatNumber(maxTime));
+    throw std::invalid_argument("timeStep = " + formatNumber(timeStep) +
+                                " must not exceed maxTime = " + formatNumber(maxTime));
   // A step too small for the run is a slip of the exponent, not a drape anyone waits for.
   if (maxTime / timeStep > kMaxSteps)
     throw std::invalid_argument("timeStep = " + formatNumber(timeStep) + " would take " +

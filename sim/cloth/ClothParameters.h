@@ -2,8 +2,8 @@
 // Everything that shapes one drape besides the garment and the body (SI units).
 
 #include "sim/cloth/Material.h"
-#include "sim/core/TriangleMesh.h"
 #include "sim/cloth/Wind.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -71,8 +71,8 @@ struct ImplicitSolverParameters {
 
 struct ClothParameters {
   Material material;
-  double timeStep = 1.5e-4;              // dt, s: stable for ~1.5 cm sections of 1 MPa cloth
-  double maxTime = 5.0;                  // s of simulated time, the run's upper bound
+  double timeStep = 1.5e-4;  // dt, s: stable for ~1.5 cm sections of 1 MPa cloth
+  double maxTime = 5.0;      // s of simulated time, the run's upper bound
   RestRule rest;
   Vec3 gravity = Vec3(0.0, -9.81, 0.0);  // m/s^2
   double airResistance = 1.0;            // N*s/m^3: force per unit area per unit speed
@@ -84,8 +84,8 @@ struct ClothParameters {
   // clamped into [-strainLimit, strainLimit] when its forces are computed; 0 = off.
   double strainLimit = 0.0;
   AccelerationLimiter accelerationLimiter = AccelerationLimiter::None;
-  double accelerationLimit = 20.0;       // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
-  WindParameters wind;                   // paper §2 wind; amplitude 0 (the default) = none
+  double accelerationLimit = 20.0;          // a_max in multiples of |g| (9.81 m/s^2 when g = 0)
+  WindParameters wind;                      // paper §2 wind; amplitude 0 (the default) = none
   ImplicitSolverParameters implicitSolver;  // used by Integrator::Implicit only
   // Test only the body parts near the garment (sim/collision/BroadPhaseCollider.h). The
   // drape is the same either way; off only to measure what it saves.

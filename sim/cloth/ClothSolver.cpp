@@ -1,12 +1,12 @@
 #include "sim/cloth/ClothSolver.h"
 
-#include "sim/cloth/ContactResponse.h"
-#include "sim/cloth/implicit/ImplicitEuler.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <chrono>
 #include <cmath>
 #include <string>
+
+#include "sim/cloth/ContactResponse.h"
+#include "sim/cloth/implicit/ImplicitEuler.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -46,12 +46,22 @@ void ClothSolver::resume(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
   restSince_ = -1.0;
 }
 
-const std::vector<Vec3>& ClothSolver::positions() const { return x_; }
-const std::vector<Vec3>& ClothSolver::velocities() const { return v_; }
-double ClothSolver::time() const { return time_; }
-int ClothSolver::iterations() const { return iterations_; }
+const std::vector<Vec3>& ClothSolver::positions() const {
+  return x_;
+}
+const std::vector<Vec3>& ClothSolver::velocities() const {
+  return v_;
+}
+double ClothSolver::time() const {
+  return time_;
+}
+int ClothSolver::iterations() const {
+  return iterations_;
+}
 
-ImplicitStepCosts ClothSolver::implicitCosts() const { return implicit_ ? implicit_->costs() : ImplicitStepCosts{}; }
+ImplicitStepCosts ClothSolver::implicitCosts() const {
+  return implicit_ ? implicit_->costs() : ImplicitStepCosts{};
+}
 
 double ClothSolver::maxSpeed() const {
   double fastest = 0.0;
@@ -123,7 +133,8 @@ void ClothSolver::step() {
   const ClothModel::LimiterCounts& after = model_->limiterCounts();
   const double evaluations = static_cast<double>(after.evaluations - before.evaluations);
   if (evaluations > 0.0) {
-    lastStepClampedShare_ = (after.clampedSections - before.clampedSections) / (evaluations * model_->sections().size());
+    lastStepClampedShare_ =
+        (after.clampedSections - before.clampedSections) / (evaluations * model_->sections().size());
     lastStepLimitedShare_ = (after.limitedNodes - before.limitedNodes) / (evaluations * model_->nodeCount());
   }
   double fastest = 0.0;
@@ -158,9 +169,9 @@ void ClothSolver::step() {
 
 void ClothSolver::checkFinite(size_t i, double speed) const {
   if (!std::isfinite(speed) || !x_[i].allFinite() || speed > kBlowUpSpeed)
-    throw SimulationError("simulation blew up at step " + std::to_string(iterations_ + 1) + " (t = " +
-                          formatNumber(time_ + parameters_.timeStep) + " s): node " + std::to_string(i) + " speed " +
-                          formatNumber(speed) + " m/s; timeStep = " + formatNumber(parameters_.timeStep) +
+    throw SimulationError("simulation blew up at step " + std::to_string(iterations_ + 1) +
+                          " (t = " + formatNumber(time_ + parameters_.timeStep) + " s): node " + std::to_string(i) +
+                          " speed " + formatNumber(speed) + " m/s; timeStep = " + formatNumber(parameters_.timeStep) +
                           " s, method " + integratorName(parameters_.integrator));
 }
 

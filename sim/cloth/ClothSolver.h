@@ -23,6 +23,12 @@
 // the fastest node, the most stretched edge, whether a stability measure still acted
 // in the last step, what the step control did.
 
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/EdgeStretch.h"
@@ -30,12 +36,6 @@
 #include "sim/collision/BroadPhaseCollider.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <functional>
-#include <memory>
-#include <stdexcept>
-#include <utility>
-#include <vector>
 
 namespace figment {
 
@@ -78,8 +78,7 @@ class ClothSolver {
  public:
   // `garment` is the rest (unstressed) shape and also the starting placement, in the
   // same frame as the collider (the scene's world frame). `body` may be null.
-  ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
-              std::shared_ptr<const Collider> body);
+  ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters, std::shared_ptr<const Collider> body);
   ~ClothSolver();
 
   // Holds a node where it is (a pin): it keeps its position and never moves.
@@ -95,8 +94,7 @@ class ClothSolver {
   static constexpr double kBlowUpSpeed = 100.0;  // m/s: far beyond any draping motion
   // Runs until at rest or maxTime; `progress` (optional) is called about every
   // `progressInterval` seconds of wall time (checked every 64 steps; 0: every 64 steps).
-  DrapeResult run(const std::function<void(const DrapeProgress&)>& progress = {},
-                  double progressInterval = 1.0);
+  DrapeResult run(const std::function<void(const DrapeProgress&)>& progress = {}, double progressInterval = 1.0);
 
   // Called by run() once before its first step and after every step, with the solver
   // (its time, positions and model): to record the cloth's state at chosen times, or
@@ -127,7 +125,7 @@ class ClothSolver {
   ClothParameters parameters_;
   std::shared_ptr<const Collider> body_;
   std::shared_ptr<BroadPhaseCollider> broadPhase_;  // body_ itself, when parameters_.broadPhase
-  EdgeStretch edges_;  // the garment's, at rest
+  EdgeStretch edges_;                               // the garment's, at rest
   std::vector<Vec3> x_, v_;
   double lastStepClampedShare_ = 0.0, lastStepLimitedShare_ = 0.0;
   double time_ = 0.0;
@@ -140,10 +138,10 @@ class ClothSolver {
   // cannot touch the body and needs no query (exact, since the body does not move).
   std::vector<double> bodyDistanceBound_;
   void integrate(double dt);
-  void stepImplicit();                             // Integrator::Implicit's step
+  void stepImplicit();                                // Integrator::Implicit's step
   void checkFinite(size_t node, double speed) const;  // throws SimulationError
-  void endStep(double fastest);                    // the clock and the at-rest rule
-  std::unique_ptr<ImplicitEuler> implicit_;        // set for Integrator::Implicit only
+  void endStep(double fastest);                       // the clock and the at-rest rule
+  std::unique_ptr<ImplicitEuler> implicit_;           // set for Integrator::Implicit only
 
   std::vector<Vec3> xStart_, a0_, a1_, xPredicted_, vPredicted_;  // a step's scratch
 };

@@ -1,9 +1,9 @@
 #include "sim/cloth/DrapeVerdict.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <cstdio>
 #include <vector>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 

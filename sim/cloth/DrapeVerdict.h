@@ -25,13 +25,13 @@ struct DrapeVerdict {
   static constexpr double kTearStretch = 1.5;  // edge length over rest length
 
   bool atRest = false;
-  double maxTime = 0.0;     // s, the run's bound
-  double maxSpeed = 0.0;    // m/s, the fastest node at the end
-  double maxStretch = 1.0;  // the most stretched edge at the end, length over rest length
+  double maxTime = 0.0;                   // s, the run's bound
+  double maxSpeed = 0.0;                  // m/s, the fastest node at the end
+  double maxStretch = 1.0;                // the most stretched edge at the end, length over rest length
   double clampedSectionShareAtEnd = 0.0;  // of the sections, in the last step
   double limitedNodeShareAtEnd = 0.0;     // of the nodes, in the last step
-  long halvedSteps = 0;  // implicit steps the control took again as halves
-  long failedSteps = 0;  // ... and steps it kept though they failed at its smallest step
+  long halvedSteps = 0;                   // implicit steps the control took again as halves
+  long failedSteps = 0;                   // ... and steps it kept though they failed at its smallest step
 
   bool tore() const { return maxStretch > kTearStretch; }
   bool limited() const { return clampedSectionShareAtEnd > 0.0 || limitedNodeShareAtEnd > 0.0; }

@@ -4,10 +4,10 @@
 // tear bound) and what the implicit step's control reads after each step (an edge whose
 // strain grew too much in one step: the linearised step failed, ClothSolver.h).
 
-#include "sim/core/TriangleMesh.h"
-
 #include <array>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

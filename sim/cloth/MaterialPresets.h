@@ -19,12 +19,12 @@
 // sections) scale to dt = 1.5e-4 s * (l / 1.5 cm) * (58 m/s / c). Every preset keeps
 // c <= kMaxPresetWaveSpeed, so no preset needs a step below ~0.55x the default one.
 
-#include "sim/cloth/Material.h"
-
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "sim/cloth/Material.h"
 
 namespace figment {
 

@@ -1,7 +1,6 @@
 #include "sim/cloth/MembraneElement.h"
 
 #include <Eigen/Dense>
-
 #include <cmath>
 
 namespace figment {

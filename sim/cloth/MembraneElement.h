@@ -37,13 +37,12 @@
 // realistic range pulls no harder than at the range's edge) clamps e before the damping
 // is added; K and D describe the unclamped force.
 
-#include "sim/cloth/PlaneStressLaw.h"
-#include "sim/cloth/ElementOutput.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Core>
-
 #include <array>
+
+#include "sim/cloth/ElementOutput.h"
+#include "sim/cloth/PlaneStressLaw.h"
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -61,7 +60,7 @@ class MembraneElement {
 
   bool valid() const { return restArea_ > 0.0; }
   const Triangle& corners() const { return corners_; }
-  double restArea() const { return restArea_; }  // m^2
+  double restArea() const { return restArea_; }                        // m^2
   const Eigen::Matrix2d& restInverse() const { return restInverse_; }  // Dm^-1, 1/m
 
   // Green strain (eps_uu, eps_vv, eps_uv) of the section at positions x.

@@ -2,8 +2,7 @@
 
 namespace figment {
 
-NodeTerms::NodeTerms(const std::vector<MembraneElement>& sections, size_t nodeCount,
-                     const ClothParameters& parameters)
+NodeTerms::NodeTerms(const std::vector<MembraneElement>& sections, size_t nodeCount, const ClothParameters& parameters)
     : masses_(nodeCount, 0.0),
       inverseMasses_(nodeCount, 0.0),
       areas_(nodeCount, 0.0),

@@ -12,11 +12,11 @@
 // A node that only degenerate (zero-area) sections touch has no mass: nothing acts on it
 // but gravity, and it floats (floats(i)); the integrators move it with g alone.
 
+#include <vector>
+
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/MembraneElement.h"
 #include "sim/cloth/Wind.h"
-
-#include <vector>
 
 namespace figment {
 
@@ -25,10 +25,10 @@ class NodeTerms {
   // `sections`: the garment's valid sections, over `nodeCount` nodes.
   NodeTerms(const std::vector<MembraneElement>& sections, size_t nodeCount, const ClothParameters& parameters);
 
-  const std::vector<double>& masses() const { return masses_; }  // kg
+  const std::vector<double>& masses() const { return masses_; }     // kg
   double inverseMass(size_t i) const { return inverseMasses_[i]; }  // 1/kg; 0 for a floating node
   bool floats(size_t i) const { return inverseMasses_[i] == 0.0; }
-  const Vec3& gravity() const { return gravity_; }  // g, m/s^2
+  const Vec3& gravity() const { return gravity_; }               // g, m/s^2
   Vec3 weight(size_t i) const { return masses_[i] * gravity_; }  // m_i g, N
 
   // The air's drag k A_i v_i on node i moving at v (N): the air resistance is its negative.

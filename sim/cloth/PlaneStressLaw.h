@@ -12,9 +12,9 @@
 // The stress is linear in the strain, so C is constant: the membrane's stiffness
 // (MembraneElement.h) is B^T C B with B = de/dx.
 
-#include "sim/cloth/Material.h"
-
 #include <Eigen/Core>
+
+#include "sim/cloth/Material.h"
 
 namespace figment {
 
@@ -27,7 +27,7 @@ class PlaneStressLaw {
   explicit PlaneStressLaw(const Material& material);
 
   PlaneStress stress(const Eigen::Vector3d& strain) const;
-  double energyDensity(const Eigen::Vector3d& strain) const;  // J/m^3
+  double energyDensity(const Eigen::Vector3d& strain) const;   // J/m^3
   const Eigen::Matrix3d& tangent() const { return tangent_; }  // C, Pa
   double thickness() const { return thickness_; }              // h, m: a section's volume is A h
 

@@ -42,7 +42,8 @@ PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double po
   std::map<std::pair<int, int>, std::vector<EdgeUse>> uses;
   for (int s = 0; s < static_cast<int>(rest.triangles.size()); ++s) {
     const Triangle& t = rest.triangles[s];
-    for (int k = 0; k < 3; ++k) uses[std::minmax(t[k], t[(k + 1) % 3])].push_back({s, t[k], t[(k + 1) % 3], t[(k + 2) % 3]});
+    for (int k = 0; k < 3; ++k)
+      uses[std::minmax(t[k], t[(k + 1) % 3])].push_back({s, t[k], t[(k + 1) % 3], t[(k + 2) % 3]});
   }
   // Per section and local edge k (corners k -> k+1): the joint there and its sign.
   std::vector<std::array<int, 3>> jointOf(rest.triangles.size(), {-1, -1, -1});
@@ -69,8 +70,8 @@ PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double po
     }
   }
   for (size_t s = 0; s < rest.triangles.size(); ++s) {
-    SectionForm section{static_cast<int>(s), jointOf[s], neighbourOf[s], signOf[s], signOf[s], false,
-                        Eigen::Matrix3d::Zero()};
+    SectionForm section{static_cast<int>(s), jointOf[s], neighbourOf[s],         signOf[s],
+                        signOf[s],           false,      Eigen::Matrix3d::Zero()};
     if (!bendingForm(rest, rest.triangles[s], stiffness, poissonRatio, section.form)) continue;
     if (section.joints == std::array<int, 3>{-1, -1, -1}) continue;
     sections_.push_back(section);
@@ -195,8 +196,7 @@ void PlateBending::sectionStiffness(int s, const std::vector<AngleGradient>& gra
   for (int r = 0; r < 3 && !section.held; ++r) {
     if (section.joints[r] < 0) continue;
     const AngleGradient& gradient = gradients[section.joints[r]];
-    for (int corner = 0; corner < 4; ++corner)
-      G[stencil.local[r][corner]].col(r) = section.scale[r] * gradient[corner];
+    for (int corner = 0; corner < 4; ++corner) G[stencil.local[r][corner]].col(r) = section.scale[r] * gradient[corner];
   }
   std::array<Eigen::Matrix3d, 6> GQ;
   Eigen::Vector3d Jv = Eigen::Vector3d::Zero();
@@ -232,8 +232,7 @@ void PlateBending::jointStiffness(int j, const AngleGradient& gradient, const st
     const double bound = kBound * jointMoment * gradient[a].squaredNorm();
     out.stiffnessTimesVelocity[a] = (joint.stiffness * rate) * gradient[a] + bound * v[corners[a]];
     for (int b = 0; b < 4; ++b)
-      out.blocks[a * 4 + b] =
-          (weights.stiffness * joint.stiffness) * (gradient[a] * gradient[b].transpose());
+      out.blocks[a * 4 + b] = (weights.stiffness * joint.stiffness) * (gradient[a] * gradient[b].transpose());
     out.blocks[a * 4 + a].diagonal().array() += weights.stiffness * bound;
   }
 }

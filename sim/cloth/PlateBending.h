@@ -44,14 +44,13 @@
 // Based on: the angle gradients of Bridson, Marino & Fedkiw, "Simulation of clothing with
 // folds and wrinkles", SCA 2003; the Gauss-Newton form as in Baraff & Witkin 1998.
 
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
 #include "sim/cloth/BendingJoint.h"
 #include "sim/cloth/ElementOutput.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <Eigen/Core>
-
-#include <array>
-#include <vector>
 
 namespace figment {
 

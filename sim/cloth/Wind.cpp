@@ -3,10 +3,10 @@
 // sampled by inverting the exponential distribution's CDF.
 #include "sim/cloth/Wind.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <cmath>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -24,7 +24,9 @@ Wind::Wind(const WindParameters& parameters) : parameters_(parameters), random_(
   blows_ = parameters_.amplitude > 0.0 && length > 0.0;
 }
 
-double Wind::uniform() const { return static_cast<double>(random_() >> 11) * 0x1.0p-53; }
+double Wind::uniform() const {
+  return static_cast<double>(random_() >> 11) * 0x1.0p-53;
+}
 
 void Wind::drawChangesUntil(double t) const {
   if (parameters_.meanPhaseInterval == 0.0) return;

@@ -18,12 +18,12 @@
 // distributions, whose outputs are implementation-defined. The phase changes depend
 // only on (seed, time), never on the times at which p is asked for.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -11,8 +11,8 @@ BroadPhaseCollider::BroadPhaseCollider(std::shared_ptr<const Collider> body, dou
     : whole_(std::move(body)), slack_(slack), reach_(reach) {
   if (!whole_) throw std::invalid_argument("broad phase: the body is null");
   if (!(slack > 0.0) || !(reach > 0.0))
-    throw std::invalid_argument("broad phase: slack = " + std::to_string(slack) + " m and reach = " +
-                                std::to_string(reach) + " m must be positive");
+    throw std::invalid_argument("broad phase: slack = " + std::to_string(slack) +
+                                " m and reach = " + std::to_string(reach) + " m must be positive");
 }
 
 void BroadPhaseCollider::follow(const std::vector<Vec3>& nodes) {

@@ -18,10 +18,10 @@
 // few times a drape. contact() is const and safe from several threads; follow() must not
 // run beside it.
 
-#include "sim/collision/Collider.h"
-
 #include <memory>
 #include <vector>
+
+#include "sim/collision/Collider.h"
 
 namespace figment {
 

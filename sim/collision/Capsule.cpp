@@ -1,14 +1,13 @@
 #include "sim/collision/Capsule.h"
 
-#include "sim/collision/SurfaceProjection.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "sim/collision/SurfaceProjection.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -116,10 +115,12 @@ Vec3 Capsule::surface(double t, double a) const {
   return fromUnit(Vec3(radius * std::cos(a), height, radius * std::sin(a)));
 }
 
-bool Capsule::contains(const Vec3& p) const { return containsUnit(toUnit(p)); }
+bool Capsule::contains(const Vec3& p) const {
+  return containsUnit(toUnit(p));
+}
 
 bool Capsule::containsUnit(const Vec3& u) const {
-  if (std::abs(u.y()) > 0.5) return false;  // beyond the ends (and where the taper flips)
+  if (std::abs(u.y()) > 0.5) return false;                       // beyond the ends (and where the taper flips)
   const double radial = (u.x() * u.x() + u.z() * u.z()) / 0.25;  // (rho / R)^2
   if (u.y() >= bottom_ && u.y() <= top_) return radial <= 1.0;
   const double capHeight = 0.5 * (u.y() < bottom_ ? parameters_.r1 : parameters_.r2);

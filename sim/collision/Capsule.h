@@ -15,19 +15,19 @@
 // unit-space projection), since scale and taper move the nearest point away from the
 // unit-space one.
 
+#include <array>
+
 #include "sim/collision/SurfaceProjection.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <array>
 
 namespace figment {
 
 struct CapsuleParameters {
-  double r1 = 1.0, r2 = 1.0;        // rounding of the bottom and top ends, [0, 1]
-  double tx = 0.0, tz = 0.0;        // taper in x and z, (-2, 2)
-  double x = 1.0, y = 1.0, z = 1.0; // dimensions, m, > 0
+  double r1 = 1.0, r2 = 1.0;            // rounding of the bottom and top ends, [0, 1]
+  double tx = 0.0, tz = 0.0;            // taper in x and z, (-2, 2)
+  double x = 1.0, y = 1.0, z = 1.0;     // dimensions, m, > 0
   double ox = 0.0, oy = 0.0, oz = 0.0;  // offset of the centre, m
-  double theta = 0.0, phi = 0.0;    // tilt and the tilt axis's rotation about y, rad
+  double theta = 0.0, phi = 0.0;        // tilt and the tilt axis's rotation about y, rad
 
   // The 12 values in the paper's order: r1 r2 tx tz x y z ox oy oz theta phi.
   std::array<double, 12> values() const;
@@ -88,7 +88,7 @@ class Capsule {
   CapsuleParameters parameters_;
   Eigen::Matrix3d rotation_;  // tilt
   Eigen::Matrix3d inverseRotation_;
-  double bottom_, top_;       // unit-space y of the cylinder's ends
+  double bottom_, top_;  // unit-space y of the cylinder's ends
 };
 
 }  // namespace figment

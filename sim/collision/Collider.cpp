@@ -2,6 +2,8 @@
 
 namespace figment {
 
-std::shared_ptr<const Collider> Collider::focusedOn(const Eigen::AlignedBox3d&, double) const { return nullptr; }
+std::shared_ptr<const Collider> Collider::focusedOn(const Eigen::AlignedBox3d&, double) const {
+  return nullptr;
+}
 
 }  // namespace figment

@@ -3,11 +3,10 @@
 // penetrated its surface (or come closer than a clearance), where the nearest surface
 // point is, and the outward normal there.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Geometry>
-
 #include <memory>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -1,16 +1,15 @@
 #include "sim/collision/CollisionVolume.h"
 
-#include "sim/collision/MeshCollider.h"
-#include "sim/collision/SurfaceProjection.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <utility>
+
+#include "sim/collision/MeshCollider.h"
+#include "sim/collision/SurfaceProjection.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -175,8 +174,8 @@ class RadialVolume final : public CollisionVolume {
     const SurfaceSample fromRest = refineMapped(side, p, 0.0, q.length, false, restS, restA);
     if ((fromRest.w - p).squaredNorm() < (sample.w - p).squaredNorm()) sample = fromRest, t = restS;
     const bool inside = volume_.contains(rest);
-    SurfacePoint out = fromSample(sample, p, inside, sample.w - map * (q.base + t * q.direction),
-                                  map.linear() * q.direction);
+    SurfacePoint out =
+        fromSample(sample, p, inside, sample.w - map * (q.base + t * q.direction), map.linear() * q.direction);
     const Eigen::Matrix3d normalMap = inverse.linear().transpose();
     for (const double capS : {0.0, q.length}) {
       const Vec3 normal = (normalMap * (capS == 0.0 ? -q.direction : q.direction)).normalized();

@@ -15,14 +15,13 @@
 //                 capsule's pole; tangents A dS/dt, A dS/da, normal their cross product);
 //                 a triangle mesh is rebuilt from its mapped triangles (exact).
 
-#include "sim/collision/Capsule.h"            // SurfacePoint
-#include "sim/collision/RadialDepth.h"  // RadialDepthParameters
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Geometry>
-
 #include <algorithm>
 #include <memory>
+
+#include "sim/collision/Capsule.h"      // SurfacePoint
+#include "sim/collision/RadialDepth.h"  // RadialDepthParameters
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -69,7 +68,7 @@ class CollisionVolume {
   virtual std::shared_ptr<const CollisionVolume> mappedCopy(const Eigen::Affine3d& map) const;
 };
 
-std::shared_ptr<const CollisionVolume> makeVolume(const CapsuleParameters& parameters);  // Capsule::nearestFast
+std::shared_ptr<const CollisionVolume> makeVolume(const CapsuleParameters& parameters);      // Capsule::nearestFast
 std::shared_ptr<const CollisionVolume> makeVolume(const RadialDepthParameters& parameters);  // ...::nearestFast
 // Exact: a bounding-volume hierarchy over a part's own triangles, closed or not; inside =
 // behind the nearest feature's angle-weighted pseudo-normal, as MeshCollider decides,

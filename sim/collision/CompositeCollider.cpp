@@ -13,13 +13,11 @@ CompositeCollider::CompositeCollider(std::vector<std::shared_ptr<const Collider>
 }
 
 void CompositeCollider::add(std::shared_ptr<const Collider> part) {
-  if (!part)
-    throw std::invalid_argument("collider part " + std::to_string(parts_.size()) + " is null");
+  if (!part) throw std::invalid_argument("collider part " + std::to_string(parts_.size()) + " is null");
   parts_.push_back(std::move(part));
 }
 
-std::shared_ptr<const Collider> CompositeCollider::focusedOn(const Eigen::AlignedBox3d& region,
-                                                             double reach) const {
+std::shared_ptr<const Collider> CompositeCollider::focusedOn(const Eigen::AlignedBox3d& region, double reach) const {
   auto focused = std::make_shared<CompositeCollider>();
   bool narrower = false;
   for (const auto& part : parts_) {

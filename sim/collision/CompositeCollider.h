@@ -10,10 +10,10 @@
 // The minimum of lower bounds is a lower bound of the distance to the union's surface,
 // so the solver's query skipping stays exact. The parts are shared and never modified.
 
-#include "sim/collision/Collider.h"
-
 #include <memory>
 #include <vector>
+
+#include "sim/collision/Collider.h"
 
 namespace figment {
 

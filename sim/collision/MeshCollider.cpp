@@ -58,13 +58,20 @@ bool MeshCollider::onOpenEdge(const ClosestPoint& closest) const {
   if (openEdge_.empty()) return false;
   const Triangle& tri = surface_.triangles[closest.triangle];
   switch (closest.feature) {
-    case TriangleFeature::Face: return false;
-    case TriangleFeature::Edge01: return openEdge_[3 * closest.triangle + 0];
-    case TriangleFeature::Edge12: return openEdge_[3 * closest.triangle + 1];
-    case TriangleFeature::Edge20: return openEdge_[3 * closest.triangle + 2];
-    case TriangleFeature::Vertex0: return openVertex_[tri[0]];
-    case TriangleFeature::Vertex1: return openVertex_[tri[1]];
-    case TriangleFeature::Vertex2: return openVertex_[tri[2]];
+    case TriangleFeature::Face:
+      return false;
+    case TriangleFeature::Edge01:
+      return openEdge_[3 * closest.triangle + 0];
+    case TriangleFeature::Edge12:
+      return openEdge_[3 * closest.triangle + 1];
+    case TriangleFeature::Edge20:
+      return openEdge_[3 * closest.triangle + 2];
+    case TriangleFeature::Vertex0:
+      return openVertex_[tri[0]];
+    case TriangleFeature::Vertex1:
+      return openVertex_[tri[1]];
+    case TriangleFeature::Vertex2:
+      return openVertex_[tri[2]];
   }
   return false;
 }
@@ -78,13 +85,27 @@ bool MeshCollider::contact(const Vec3& p, double clearance, double searchRadius,
   const Triangle& tri = surface_.triangles[closest.triangle];
   Vec3 pseudoNormal = faceNormals_[closest.triangle];
   switch (closest.feature) {
-    case TriangleFeature::Face: pseudoNormal = faceNormals_[closest.triangle]; break;
-    case TriangleFeature::Edge01: pseudoNormal = edgeNormals_[3 * closest.triangle + 0]; break;
-    case TriangleFeature::Edge12: pseudoNormal = edgeNormals_[3 * closest.triangle + 1]; break;
-    case TriangleFeature::Edge20: pseudoNormal = edgeNormals_[3 * closest.triangle + 2]; break;
-    case TriangleFeature::Vertex0: pseudoNormal = vertexNormals_[tri[0]]; break;
-    case TriangleFeature::Vertex1: pseudoNormal = vertexNormals_[tri[1]]; break;
-    case TriangleFeature::Vertex2: pseudoNormal = vertexNormals_[tri[2]]; break;
+    case TriangleFeature::Face:
+      pseudoNormal = faceNormals_[closest.triangle];
+      break;
+    case TriangleFeature::Edge01:
+      pseudoNormal = edgeNormals_[3 * closest.triangle + 0];
+      break;
+    case TriangleFeature::Edge12:
+      pseudoNormal = edgeNormals_[3 * closest.triangle + 1];
+      break;
+    case TriangleFeature::Edge20:
+      pseudoNormal = edgeNormals_[3 * closest.triangle + 2];
+      break;
+    case TriangleFeature::Vertex0:
+      pseudoNormal = vertexNormals_[tri[0]];
+      break;
+    case TriangleFeature::Vertex1:
+      pseudoNormal = vertexNormals_[tri[1]];
+      break;
+    case TriangleFeature::Vertex2:
+      pseudoNormal = vertexNormals_[tri[2]];
+      break;
   }
   const Vec3 offset = p - closest.point;
   const double distance = std::sqrt(closest.distanceSquared);

@@ -9,9 +9,9 @@
 //   bound (no contact)    = the inner bound less `offset` (a surface moved out by
 //                           `offset` is at most that much nearer)
 
-#include "sim/collision/Collider.h"
-
 #include <memory>
+
+#include "sim/collision/Collider.h"
 
 namespace figment {
 

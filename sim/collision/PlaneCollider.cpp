@@ -1,9 +1,9 @@
 #include "sim/collision/PlaneCollider.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <cmath>
 #include <stdexcept>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 

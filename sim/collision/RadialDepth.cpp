@@ -1,14 +1,14 @@
 #include "sim/collision/RadialDepth.h"
 
-#include "sim/collision/SurfaceProjection.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "sim/collision/SurfaceProjection.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
@@ -23,8 +23,8 @@ void RadialDepthParameters::validate() const {
   for (size_t j = 0; j < coefficients.size(); ++j)
     if (coefficients[j].size() != static_cast<size_t>(2 * harmonics + 1))
       throw std::invalid_argument("coefficients of section " + std::to_string(j) + ": " +
-                                  std::to_string(coefficients[j].size()) + " values, need 2 harmonics + 1 = " +
-                                  std::to_string(2 * harmonics + 1));
+                                  std::to_string(coefficients[j].size()) +
+                                  " values, need 2 harmonics + 1 = " + std::to_string(2 * harmonics + 1));
 }
 
 RadialDepth::RadialDepth(RadialDepthParameters parameters) : parameters_(std::move(parameters)) {
@@ -99,7 +99,8 @@ double RadialDepth::seriesAt(double s, double cosA, double sinA) const {
   const int harmonics = parameters_.harmonics;
   for (int k = 1; k <= harmonics; k += 2) {
     odd += (g * c0[2 * k - 1] + f * c1[2 * k - 1]) * co + (g * c0[2 * k] + f * c1[2 * k]) * so;
-    if (k < harmonics) even += (g * c0[2 * k + 1] + f * c1[2 * k + 1]) * ce + (g * c0[2 * k + 2] + f * c1[2 * k + 2]) * se;
+    if (k < harmonics)
+      even += (g * c0[2 * k + 1] + f * c1[2 * k + 1]) * ce + (g * c0[2 * k + 2] + f * c1[2 * k + 2]) * se;
     turn(co, so, cos2, sin2), turn(ce, se, cos2, sin2);
   }
   return odd + even;
@@ -109,7 +110,9 @@ double RadialDepth::radius(double s, double a) const {
   return std::max(seriesAt(s, std::cos(a), std::sin(a)), 0.0);
 }
 
-SurfaceSample RadialDepth::sample(double s, double a) const { return sampleAt(s, std::cos(a), std::sin(a)); }
+SurfaceSample RadialDepth::sample(double s, double a) const {
+  return sampleAt(s, std::cos(a), std::sin(a));
+}
 
 SurfaceSample RadialDepth::sampleAt(double s, double cosA, double sinA) const {
   // r and its derivatives: linear in s between sections, a Fourier series in a.
@@ -145,8 +148,8 @@ SurfaceSample RadialDepth::sampleAt(double s, double cosA, double sinA) const {
   const Vec3 radial = cosA * parameters_.reference + sinA * side_;
   const Vec3 turning = -sinA * parameters_.reference + cosA * side_;
   const double radiusHere = std::max(r, 0.0);
-  return {parameters_.base + s * parameters_.direction + radiusHere * radial,
-          parameters_.direction + rs * radial, (clamped ? 0.0 : ra) * radial + radiusHere * turning};
+  return {parameters_.base + s * parameters_.direction + radiusHere * radial, parameters_.direction + rs * radial,
+          (clamped ? 0.0 : ra) * radial + radiusHere * turning};
 }
 
 Vec3 RadialDepth::surface(double s, double a) const {
@@ -168,8 +171,10 @@ void RadialDepth::toAxis(const Vec3& p, double& s, double& cosA, double& sinA, d
   const Vec3 across = d - s * parameters_.direction;
   rho = across.norm();
   const double x = across.dot(parameters_.reference), y = across.dot(side_), h = std::sqrt(x * x + y * y);
-  if (h > 0.0) cosA = x / h, sinA = y / h;
-  else cosA = 1.0, sinA = 0.0;  // on the axis: atan2's angle 0
+  if (h > 0.0)
+    cosA = x / h, sinA = y / h;
+  else
+    cosA = 1.0, sinA = 0.0;  // on the axis: atan2's angle 0
 }
 
 bool RadialDepth::contains(const Vec3& p) const {
@@ -200,9 +205,13 @@ double RadialDepth::distanceBound(const Vec3& p) const {
   return std::max(g / std::sqrt(1.0 + slope * slope + lean * lean), cylinder);
 }
 
-SurfacePoint RadialDepth::nearest(const Vec3& p) const { return closest(p, false); }
+SurfacePoint RadialDepth::nearest(const Vec3& p) const {
+  return closest(p, false);
+}
 
-SurfacePoint RadialDepth::nearestFast(const Vec3& p) const { return closestFast(p); }
+SurfacePoint RadialDepth::nearestFast(const Vec3& p) const {
+  return closestFast(p);
+}
 
 SurfacePoint RadialDepth::closest(const Vec3& p, bool fast) const {
   double s, a, rho;
@@ -212,7 +221,8 @@ SurfacePoint RadialDepth::closest(const Vec3& p, bool fast) const {
   // The side, from the radial projection.
   double t = std::clamp(s, 0.0, length), angle = a;
   const auto side = [this](double ti, double ai) { return sample(ti, ai); };
-  Vec3 best = fast ? refineOnSurface(side, p, 0.0, length, t, angle).w : projectOntoSurface(side, p, 0.0, length, t, angle);
+  Vec3 best =
+      fast ? refineOnSurface(side, p, 0.0, length, t, angle).w : projectOntoSurface(side, p, 0.0, length, t, angle);
   double bestGap = (p - best).norm();
   bool onCap = false;
   Vec3 capNormal;
@@ -221,16 +231,19 @@ SurfacePoint RadialDepth::closest(const Vec3& p, bool fast) const {
     if (rho > radius(capS, a)) continue;
     const Vec3 q = p - (s - capS) * parameters_.direction;
     const double gap = std::abs(s - capS);
-    if (gap < bestGap) best = q, bestGap = gap, onCap = true, capNormal = capS == 0.0 ? -parameters_.direction
-                                                                                     : parameters_.direction;
+    if (gap < bestGap)
+      best = q, bestGap = gap, onCap = true, capNormal = capS == 0.0 ? -parameters_.direction : parameters_.direction;
   }
   SurfacePoint out;
   out.point = best;
   out.distance = inside ? -bestGap : bestGap;
-  if (!inside && bestGap > 1e-6) out.normal = (p - best) / bestGap;
-  else if (onCap) out.normal = capNormal;
-  else out.normal = surfaceNormal(side(t, angle), best - (parameters_.base + t * parameters_.direction),
-                                  parameters_.direction);
+  if (!inside && bestGap > 1e-6)
+    out.normal = (p - best) / bestGap;
+  else if (onCap)
+    out.normal = capNormal;
+  else
+    out.normal =
+        surfaceNormal(side(t, angle), best - (parameters_.base + t * parameters_.direction), parameters_.direction);
   return out;
 }
 
@@ -279,9 +292,12 @@ SurfacePoint RadialDepth::closestFast(const Vec3& p) const {
   SurfacePoint out;
   out.point = best;
   out.distance = inside ? -bestGap : bestGap;
-  if (!inside && bestGap > 1e-6) out.normal = (p - best) / bestGap;
-  else if (onCap) out.normal = capNormal;
-  else out.normal = surfaceNormal(at, best - (parameters_.base + t * parameters_.direction), parameters_.direction);
+  if (!inside && bestGap > 1e-6)
+    out.normal = (p - best) / bestGap;
+  else if (onCap)
+    out.normal = capNormal;
+  else
+    out.normal = surfaceNormal(at, best - (parameters_.base + t * parameters_.direction), parameters_.direction);
   // Inside, where p does not lie along the side's normal (a deep point's steps stop short
   // of the stationary point), a push-out to point + clearance normal would move p
   // sideways: the normal is then the way out from p to the point.

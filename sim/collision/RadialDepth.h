@@ -15,11 +15,11 @@
 // push-out follows the surface normal, not the radius, so cloth on a sloping shoulder
 // is not pushed sideways.
 
+#include <vector>
+
 #include "sim/collision/Capsule.h"  // SurfacePoint
 #include "sim/collision/SurfaceProjection.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <vector>
 
 namespace figment {
 
@@ -41,8 +41,8 @@ class RadialDepth {
   explicit RadialDepth(RadialDepthParameters parameters);
 
   const RadialDepthParameters& parameters() const { return parameters_; }
-  double radius(double s, double a) const;  // m, at axis position s (m) and angle a
-  Vec3 surface(double s, double a) const;   // the side's point at (s, a)
+  double radius(double s, double a) const;         // m, at axis position s (m) and angle a
+  Vec3 surface(double s, double a) const;          // the side's point at (s, a)
   SurfaceSample sample(double s, double a) const;  // ... and its tangents d/ds, d/da
   bool contains(const Vec3& p) const;
   SurfacePoint nearest(const Vec3& p) const;
@@ -87,7 +87,7 @@ class RadialDepth {
   SurfaceSample sampleAt(double s, double cosA, double sinA) const;
 
   RadialDepthParameters parameters_;
-  Vec3 side_;  // direction x reference: angle pi/2
+  Vec3 side_;                    // direction x reference: angle pi/2
   std::vector<double> table_;    // the coefficients, section after section (2K + 1 each)
   std::vector<double> slope_;    // per span: max over a of |dr/ds|
   std::vector<double> turning_;  // per section: max over a of |dr/da|, m/rad

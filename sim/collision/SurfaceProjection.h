@@ -5,12 +5,11 @@
 // sim/collision/RadialDepth.h), whose scale, taper and varying radius move the nearest point
 // away from a radial projection.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -74,8 +73,8 @@ inline void rotateAngle(double delta, double& c, double& s) {
   if (std::abs(delta) <= 0.25) {
     // Taylor series to d^12 and d^11, Horner's rule (constant factors: no division).
     const double d2 = delta * delta;
-    cd = 1.0 + d2 * (-1.0 / 2 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 + d2 * (-1.0 / 3628800 +
-                                                                                            d2 / 479001600)))));
+    cd = 1.0 + d2 * (-1.0 / 2 +
+                     d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 + d2 * (-1.0 / 3628800 + d2 / 479001600)))));
     sd = delta * (1.0 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 * (1.0 / 362880 - d2 / 39916800)))));
   } else {
     cd = std::cos(delta), sd = std::sin(delta);
@@ -106,7 +105,9 @@ SurfaceSample refineOnSurface(const Sample& sample, const Vec3& p, double tMin, 
 
 // How far p - w (r) leans off the unit normal n: its part across n (m). A nearest point's
 // is zero; a push-out from p to w + clearance n moves p sideways by this much.
-inline double sideways(const Vec3& r, const Vec3& n) { return (r - r.dot(n) * n).norm(); }
+inline double sideways(const Vec3& r, const Vec3& n) {
+  return (r - r.dot(n) * n).norm();
+}
 // The sideways part a fast path may leave before it searches on (m): a contact response
 // that takes the push-out into velocity turns it into 1e-6 m / dt (7 mm/s at a 0.15 ms
 // step, under a drape's 10 mm/s at-rest threshold).

@@ -84,11 +84,10 @@ int TriangleBvh::build(int first, int count) {
   int axis = 0;
   centres.size().maxCoeff(&axis);
   const int half = count / 2;
-  std::nth_element(order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count,
-                   [&](int l, int r) {
-                     return centroids_[l][axis] < centroids_[r][axis] ||
-                            (centroids_[l][axis] == centroids_[r][axis] && l < r);
-                   });
+  std::nth_element(
+      order_.begin() + first, order_.begin() + first + half, order_.begin() + first + count, [&](int l, int r) {
+        return centroids_[l][axis] < centroids_[r][axis] || (centroids_[l][axis] == centroids_[r][axis] && l < r);
+      });
   const int left = build(first, half);
   const int right = build(first + half, count - half);
   nodes_[index].left = left;

@@ -4,9 +4,9 @@
 // (Ericson, Real-Time Collision Detection, ch. 6) and the closest point on a triangle
 // by Voronoi regions (ibid. §5.1.5).
 
-#include "sim/core/TriangleMesh.h"
-
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -15,9 +15,9 @@ namespace {
 // the stricter of the two, so a node set on a target (rounded) touches nothing; the touch
 // margin also covers the fast paths' convergence noise (nanometres) in the target's
 // distance to its own volume, which is not searched again.
-constexpr double kTouchMargin = 1e-7;  // m
+constexpr double kTouchMargin = 1e-7;    // m
 constexpr double kClearMargin = 0.5e-9;  // m
-constexpr int kMaxCandidates = 8;  // a node touches a few volumes at most: keep the nearest
+constexpr int kMaxCandidates = 8;        // a node touches a few volumes at most: keep the nearest
 constexpr int kCreasePushes = 16;
 constexpr int kMarchSteps = 64;  // doubling steps from >= 0.1 mm: beyond any body
 
@@ -44,9 +44,9 @@ VolumeSetCollider::VolumeSetCollider(std::vector<PosedCollisionVolume> volumes) 
   }
 }
 
-std::shared_ptr<const Collider> VolumeSetCollider::focusedOn(const Eigen::AlignedBox3d& region,
-                                                             double reach) const {
-  std::shared_ptr<VolumeSetCollider> focused(new VolumeSetCollider(std::vector<PosedCollisionVolume>{}));  // filled below
+std::shared_ptr<const Collider> VolumeSetCollider::focusedOn(const Eigen::AlignedBox3d& region, double reach) const {
+  std::shared_ptr<VolumeSetCollider> focused(
+      new VolumeSetCollider(std::vector<PosedCollisionVolume>{}));  // filled below
   for (size_t i = 0; i < world_.size(); ++i) {
     const BoundingCapsule c = world_[i]->boundingCapsule();
     const Vec3 grow = Vec3::Constant(c.radius);
@@ -174,8 +174,10 @@ double VolumeSetCollider::lowerBound(const Vec3& p, double clear, const Measured
     double gap = std::sqrt(reach_[i].squaredAxisDistance(p)) - reach_[i].radius;
     if (gap < clear) {
       const double* d = measured.find(i);
-      if (d) gap = *d;
-      else if ((gap = world_[i]->distanceBound(p)) < clear) gap = world_[i]->nearest(p).distance;
+      if (d)
+        gap = *d;
+      else if ((gap = world_[i]->distanceBound(p)) < clear)
+        gap = world_[i]->nearest(p).distance;
     }
     bound = std::min(bound, gap);
   }
@@ -192,8 +194,10 @@ Vec3 VolumeSetCollider::creaseTarget(const Vec3& p, const Vec3& start, const Vec
       if (beyond(i, x, clearance - kClearMargin)) continue;
       const SurfacePoint s = world_[i]->nearest(x);
       if (s.distance >= clearance - kClearMargin) continue;
-      if (s.distance < first.distance) second = first, first = s;
-      else if (s.distance < second.distance) second = s;
+      if (s.distance < first.distance)
+        second = first, first = s;
+      else if (s.distance < second.distance)
+        second = s;
     }
     if (first.distance == kFar) return x;
     // Out past each tangent plane by the clearance: delta . n >= h. A convex volume lies

@@ -33,20 +33,19 @@
 // measured at p is also clear of a target whose step from p its bound exceeds by the
 // clearance (distances are 1-Lipschitz).
 
-#include "sim/collision/CollisionVolume.h"
-#include "sim/collision/Collider.h"
-
 #include <Eigen/Geometry>
-
 #include <array>
 #include <memory>
 #include <vector>
 
+#include "sim/collision/Collider.h"
+#include "sim/collision/CollisionVolume.h"
+
 namespace figment {
 
 struct PosedCollisionVolume {
-  int part = -1;                                // skeleton part index (for the caller)
-  std::shared_ptr<const CollisionVolume> volume;  // in the part's rest frame
+  int part = -1;                                            // skeleton part index (for the caller)
+  std::shared_ptr<const CollisionVolume> volume;            // in the part's rest frame
   Eigen::Affine3d transform = Eigen::Affine3d::Identity();  // rest frame -> world
 };
 

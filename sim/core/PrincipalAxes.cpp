@@ -1,7 +1,6 @@
 #include "sim/core/PrincipalAxes.h"
 
 #include <Eigen/Eigenvalues>
-
 #include <stdexcept>
 
 namespace figment {

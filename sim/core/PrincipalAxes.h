@@ -2,9 +2,9 @@
 // The mean of a point set and its principal axes (eigenvectors of the scatter matrix),
 // for fits that start from a part's shape.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

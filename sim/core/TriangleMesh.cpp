@@ -4,12 +4,12 @@
 
 #include "sim/core/TriangleMesh.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 

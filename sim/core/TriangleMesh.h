@@ -21,7 +21,10 @@ struct TriangleMesh {
 struct Bounds {
   Vec3 min = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 max = Vec3::Constant(-std::numeric_limits<double>::infinity());
-  void extend(const Vec3& p) { min = min.cwiseMin(p); max = max.cwiseMax(p); }
+  void extend(const Vec3& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
   bool empty() const { return (min.array() > max.array()).any(); }
   Vec3 size() const { return max - min; }
 };

@@ -5,17 +5,17 @@
 // its fields and chooses the method, then asks this; a front end without Coin asks it
 // directly.
 
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/progressive/ProgressiveDrape.h"
 #include "sim/progressive/ProgressiveMesh.h"
-
-#include <functional>
-#include <memory>
-#include <optional>
-#include <vector>
 
 namespace figment {
 

@@ -12,16 +12,16 @@
 // normal draw. The result never costs more than the starting axis; a search repeats
 // exactly with its seed.
 
+#include <functional>
+
 #include "sim/core/TriangleMesh.h"
 #include "sim/fitting/GeneticSearch.h"
-
-#include <functional>
 
 namespace figment {
 
 struct AxisSearchOptions : GeneticShares {  // population 10, 6 generations
-  double maxTilt = 0.35;    // rad, about each perpendicular
-  double maxShift = 0.02;   // m, along each perpendicular
+  double maxTilt = 0.35;                    // rad, about each perpendicular
+  double maxShift = 0.02;                   // m, along each perpendicular
 };
 
 struct Axis {

@@ -1,11 +1,11 @@
 #include "sim/fitting/CapsuleFit.h"
 
-#include "sim/core/PrincipalAxes.h"
-
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <stdexcept>
+
+#include "sim/core/PrincipalAxes.h"
 
 namespace figment {
 
@@ -25,12 +25,23 @@ GeneticProblem capsuleProblem(const CapsuleParameters& start, double size, const
   const Vec3 centre(start.ox, start.oy, start.oz);
   GeneticProblem problem;
   problem.start.assign(values.begin(), values.end());
-  problem.low = {0, 0, -1.5, -1.5, 0.01 * size, 0.01 * size, 0.01 * size, centre.x() - size, centre.y() - size,
-                 centre.z() - size, -M_PI, -M_PI};
-  problem.high = {1, 1, 1.5, 1.5, 3 * size, 3 * size, 3 * size, centre.x() + size, centre.y() + size,
-                  centre.z() + size, M_PI, M_PI};
-  problem.step = {0.1, 0.1, 0.1, 0.1, 0.03 * size, 0.03 * size, 0.03 * size, 0.01 * size, 0.01 * size, 0.01 * size,
-                  0.03, 0.1};
+  problem.low = {0,
+                 0,
+                 -1.5,
+                 -1.5,
+                 0.01 * size,
+                 0.01 * size,
+                 0.01 * size,
+                 centre.x() - size,
+                 centre.y() - size,
+                 centre.z() - size,
+                 -M_PI,
+                 -M_PI};
+  problem.high = {
+      1,    1,   1.5, 1.5, 3 * size, 3 * size, 3 * size, centre.x() + size, centre.y() + size, centre.z() + size,
+      M_PI, M_PI};
+  problem.step = {0.1,         0.1,         0.1,         0.1,         0.03 * size, 0.03 * size,
+                  0.03 * size, 0.01 * size, 0.01 * size, 0.01 * size, 0.03,        0.1};
   problem.cost = [&points, options](const std::vector<double>& genes) {
     const CapsuleParameters c = parametersOf(genes);
     return options.costAfterEnclosure ? enclosedCapsuleCost(c, points)

@@ -16,10 +16,10 @@
 // the capsule's dimensions in its direction. It is exact at the surface (zero there)
 // and close to the world distance near it, which is where a good fit puts the vertices.
 
+#include <vector>
+
 #include "sim/collision/Capsule.h"
 #include "sim/fitting/GeneticSearch.h"
-
-#include <vector>
 
 namespace figment {
 
@@ -38,7 +38,7 @@ struct CapsuleFitOptions : GeneticShares {
 
 struct CapsuleFit {
   CapsuleParameters parameters;
-  double cost = 0.0;        // of the best member before enclosure
+  double cost = 0.0;            // of the best member before enclosure
   double enclosureScale = 1.0;  // how much enclosure grew it (1: not at all)
 };
 

@@ -1,11 +1,11 @@
 #include "sim/fitting/CollisionVolumeFitting.h"
 
-#include "sim/fitting/CapsuleFit.h"
-#include "sim/fitting/RadialPartFit.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+
+#include "sim/fitting/CapsuleFit.h"
+#include "sim/fitting/RadialPartFit.h"
 
 namespace figment {
 
@@ -56,7 +56,8 @@ double fitPieces(const std::vector<Vec3>& points, uint64_t seed, int budget, std
   }
   std::vector<CapsuleParameters> pieces;
   const int lowBudget = budget / 2;
-  const double split = fitPieces(low, seed + 1, lowBudget, pieces) + fitPieces(high, seed + 2, budget - lowBudget, pieces);
+  const double split =
+      fitPieces(low, seed + 1, lowBudget, pieces) + fitPieces(high, seed + 2, budget - lowBudget, pieces);
   if (split < gap * static_cast<double>(points.size())) {
     out.insert(out.end(), pieces.begin(), pieces.end());
     return split;
@@ -69,20 +70,22 @@ double fitPieces(const std::vector<Vec3>& points, uint64_t seed, int budget, std
 
 double signedDistance(const CollisionVolumeParameters& volume, const Vec3& p) {
   return volume.kind == CollisionVolumeParameters::Kind::Capsule ? Capsule(volume.capsule).nearest(p).distance
-                                                    : RadialDepth(volume.radial).nearest(p).distance;
+                                                                 : RadialDepth(volume.radial).nearest(p).distance;
 }
 
 std::vector<CollisionVolumeParameters> fitPartCapsules(const PartMesh& part, const CollisionVolumeFitOptions& options) {
   std::vector<CapsuleParameters> capsules;
   fitPieces(part.mesh.vertices, options.seed, kMaxCapsules, capsules);
   std::vector<CollisionVolumeParameters> out;
-  for (const CapsuleParameters& c : capsules) out.push_back({part.name, CollisionVolumeParameters::Kind::Capsule, c, {}});
+  for (const CapsuleParameters& c : capsules)
+    out.push_back({part.name, CollisionVolumeParameters::Kind::Capsule, c, {}});
   return out;
 }
 
 std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part, const CollisionVolumeFitOptions& options) {
   const RadialDepth radial = fitRadialPart(part, options.harmonics, options.sectionSpacing);
-  const std::vector<CollisionVolumeParameters> suited = {{part.name, CollisionVolumeParameters::Kind::Radial, {}, radial.parameters()}};
+  const std::vector<CollisionVolumeParameters> suited = {
+      {part.name, CollisionVolumeParameters::Kind::Radial, {}, radial.parameters()}};
   double radialGap = 0.0;
   for (const Vec3& v : part.mesh.vertices) radialGap += std::abs(radial.nearest(v).distance);
   if (radialGap <= kSplitGap * static_cast<double>(part.mesh.vertices.size())) return suited;
@@ -119,12 +122,12 @@ std::vector<CollisionVolumeParameters> fitEachPart(const TriangleMesh& body, con
 }  // namespace
 
 std::vector<CollisionVolumeParameters> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
-                                      const CollisionVolumeFitOptions& options) {
+                                                   const CollisionVolumeFitOptions& options) {
   return fitEachPart(body, skeleton, options, [&](const PartMesh& part) { return fitPartCapsules(part, options); });
 }
 
 std::vector<CollisionVolumeParameters> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
-                                           const CollisionVolumeFitOptions& options) {
+                                                        const CollisionVolumeFitOptions& options) {
   return fitEachPart(body, skeleton, options, [&](const PartMesh& part) { return fitPartRadial(part, options); });
 }
 

@@ -17,15 +17,15 @@
 // holding it) is smaller, the part falls back to them (kind Capsule).
 // Sub-volumes share their part's name, so posing by part still works.
 
-#include "sim/body/BodyParts.h"
-#include "sim/collision/Capsule.h"
-#include "sim/collision/RadialDepth.h"
-#include "sim/body/Skeleton.h"
-
 #include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "sim/body/BodyParts.h"
+#include "sim/body/Skeleton.h"
+#include "sim/collision/Capsule.h"
+#include "sim/collision/RadialDepth.h"
 
 namespace figment {
 
@@ -48,15 +48,17 @@ struct CollisionVolumeFitOptions {
 // One or more capsules per part (every part of skeleton.parts gets at least one volume);
 // each encloses its vertices.
 std::vector<CollisionVolumeParameters> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
-                                      const CollisionVolumeFitOptions& options = {});
+                                                   const CollisionVolumeFitOptions& options = {});
 // Radial depth volumes per part; parts that a radial volume cannot suit fall back to
 // capsules (kind Capsule).
 std::vector<CollisionVolumeParameters> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
-                                           const CollisionVolumeFitOptions& options = {});
+                                                        const CollisionVolumeFitOptions& options = {});
 
 // The same, for parts already cut (splitIntoParts); the bench measures these.
-std::vector<CollisionVolumeParameters> fitPartCapsules(const PartMesh& part, const CollisionVolumeFitOptions& options = {});
-std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part, const CollisionVolumeFitOptions& options = {});
+std::vector<CollisionVolumeParameters> fitPartCapsules(const PartMesh& part,
+                                                       const CollisionVolumeFitOptions& options = {});
+std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part,
+                                                     const CollisionVolumeFitOptions& options = {});
 
 // The signed distance of p to one volume (< 0 inside), by its nearest().
 double signedDistance(const CollisionVolumeParameters& volume, const Vec3& p);

@@ -77,7 +77,8 @@ class Search {
     Member child = population_[parent];
     const int g = static_cast<int>(genes());
     const int k = static_cast<int>(unit_(random_) * g) % g;
-    child.genes[k] = std::clamp(child.genes[k] + normal_(random_) * problem_.step[k], problem_.low[k], problem_.high[k]);
+    child.genes[k] =
+        std::clamp(child.genes[k] + normal_(random_) * problem_.step[k], problem_.low[k], problem_.high[k]);
     evaluate(child);
     return child;
   }

@@ -32,20 +32,20 @@
 namespace figment {
 
 struct GeneticProblem {
-  std::vector<double> start;         // member 0's genes
-  std::vector<double> low, high;     // bounds a mutation clamps to, per gene
-  std::vector<double> step;          // per gene: a mutation's scale
-  std::vector<double> spread;        // per gene, or empty: every member starts at `start`
+  std::vector<double> start;                               // member 0's genes
+  std::vector<double> low, high;                           // bounds a mutation clamps to, per gene
+  std::vector<double> step;                                // per gene: a mutation's scale
+  std::vector<double> spread;                              // per gene, or empty: every member starts at `start`
   std::function<double(const std::vector<double>&)> cost;  // lower is better
 };
 
 struct GeneticSchedule {
   int population = 10;
   int generations = 6;
-  int mutants = 3;                  // replaced by mutation each generation, < population
-  int crossovers = 3;               // replaced by crossover each generation
-  int parents = 3;                  // crossover parents among the best, >= 1
-  double mutationDeviation = 1.0;   // of the normal draw that times step_k moves gene k
+  int mutants = 3;                 // replaced by mutation each generation, < population
+  int crossovers = 3;              // replaced by crossover each generation
+  int parents = 3;                 // crossover parents among the best, >= 1
+  double mutationDeviation = 1.0;  // of the normal draw that times step_k moves gene k
   uint32_t seed = 1;
 };
 

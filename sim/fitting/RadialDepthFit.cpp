@@ -1,13 +1,12 @@
 #include "sim/fitting/RadialDepthFit.h"
 
-#include "sim/body/BodySlices.h"
-
 #include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "sim/body/BodySlices.h"
 
 namespace figment {
 
@@ -240,21 +239,21 @@ RadialDepth fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec
   const Vec3 side = p.direction.cross(p.reference);
   std::vector<Vec3> vertices;
   vertices.reserve(part.vertices.size());
-  for (const Vec3& v : part.vertices) vertices.push_back(base + v.x() * p.reference + v.y() * p.direction + v.z() * side);
+  for (const Vec3& v : part.vertices)
+    vertices.push_back(base + v.x() * p.reference + v.y() * p.direction + v.z() * side);
   raiseSections(p, sectionShortfalls(RadialDepth(p), vertices, 0.0));
   return RadialDepth(p);
 }
 
-RadialDepth fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose,
-                                   const Vec3& base, const Vec3& direction, double length, int sections,
-                                   int harmonics, double outsideWeight) {
+RadialDepth fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose, const Vec3& base,
+                                   const Vec3& direction, double length, int sections, int harmonics,
+                                   double outsideWeight) {
   if (sections < 2) throw std::invalid_argument("sections = " + std::to_string(sections) + " must be >= 2");
   if (points.empty()) throw std::invalid_argument("no points to fit");
   RadialDepthParameters p = axisFrame(base, direction, length, harmonics);
   const int terms = 2 * harmonics + 1;
-  const Eigen::VectorXd solution = envelopeSolution(pointRows(points, p, sections),
-                                                    smoothnessPenalty(sections, harmonics, points.size()), terms,
-                                                    outsideWeight);
+  const Eigen::VectorXd solution = envelopeSolution(
+      pointRows(points, p, sections), smoothnessPenalty(sections, harmonics, points.size()), terms, outsideWeight);
   p.coefficients.assign(sections, std::vector<double>(terms));
   for (int j = 0; j < sections; ++j)
     for (int i = 0; i < terms; ++i) p.coefficients[j][i] = solution[j * terms + i];

@@ -4,10 +4,10 @@
 // techniques" (the axis search is sim/fitting/AxisSearch.h). Two fits, both ending in
 // enclosure (§3.3): every section's constant term grows until the part is inside.
 
+#include <vector>
+
 #include "sim/collision/RadialDepth.h"
 #include "sim/core/TriangleMesh.h"
-
-#include <vector>
 
 namespace figment {
 
@@ -29,8 +29,8 @@ RadialDepth fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec
 // (second differences along the axis, k^4-weighted harmonics) keeps sections with few
 // points well posed. Then enclosure, per section: each point of `enclose` left outside
 // raises the constant terms of its two sections by its shortfall.
-RadialDepth fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose,
-                                   const Vec3& base, const Vec3& direction, double length, int sections,
-                                   int harmonics, double outsideWeight = 100.0);
+RadialDepth fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose, const Vec3& base,
+                                   const Vec3& direction, double length, int sections, int harmonics,
+                                   double outsideWeight = 100.0);
 
 }  // namespace figment

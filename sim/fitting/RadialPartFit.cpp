@@ -1,21 +1,21 @@
 #include "sim/fitting/RadialPartFit.h"
 
-#include "sim/core/PrincipalAxes.h"
-#include "sim/fitting/AxisSearch.h"
-#include "sim/fitting/RadialDepthFit.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
+
+#include "sim/core/PrincipalAxes.h"
+#include "sim/fitting/AxisSearch.h"
+#include "sim/fitting/RadialDepthFit.h"
 
 namespace figment {
 
 namespace {
 
 // A radial volume on the line through `origin` along `direction`, spanning the part.
-RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin,
-                     const Vec3& direction, int harmonics, double sectionSpacing) {
+RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin, const Vec3& direction,
+                     int harmonics, double sectionSpacing) {
   double low = std::numeric_limits<double>::max(), high = -low;
   for (const Vec3& v : part.mesh.vertices) {
     const double s = (v - origin).dot(direction);
@@ -65,12 +65,10 @@ RadialDepth fitRadialPart(const PartMesh& part, int harmonics, double sectionSpa
     if (gap < bestGap) best = std::move(candidate), bestGap = gap, start = k;
   }
   // The genetic search from the best of them (it keeps its best: never worse).
-  const AxisSearchResult searched = searchAxis(
-      {axes[start].first, axes[start].second},
-      [&](const Axis& axis) {
-        return radialGapEstimate(fitAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
-                                 part.mesh.vertices);
-      });
+  const AxisSearchResult searched = searchAxis({axes[start].first, axes[start].second}, [&](const Axis& axis) {
+    return radialGapEstimate(fitAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
+                             part.mesh.vertices);
+  });
   if (searched.cost < bestGap)
     best = fitAlong(part, points, searched.axis.origin, searched.axis.direction, harmonics, sectionSpacing);
   return best;

@@ -3,10 +3,10 @@
 // (sim/fitting/RadialDepthFit.h) along the best axis the genetic search
 // (sim/fitting/AxisSearch.h) finds.
 
+#include <vector>
+
 #include "sim/body/BodyParts.h"
 #include "sim/collision/RadialDepth.h"
-
-#include <vector>
 
 namespace figment {
 

@@ -1,13 +1,13 @@
 #include "sim/garment/FlaredSkirt.h"
 
-#include "sim/body/BodySlices.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "sim/body/BodySlices.h"
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 

@@ -5,8 +5,8 @@
 // The waist is the narrowest torso section between the hips and the armpits; the
 // waistband is that section's convex outline offset outward by `waistClearance`; each
 // ring below it lies `flare * t` further out (t = 0 at the waist, 1 at the hem, `length`
-// below), and never closer to the body's section there than `waistClearance`. Rest shape and starting placement are the same. One open strip, manifold,
-// wound counter-clockwise seen from outside (normals away from the body).
+// below), and never closer to the body's section there than `waistClearance`. Rest shape and starting placement are the
+// same. One open strip, manifold, wound counter-clockwise seen from outside (normals away from the body).
 
 #include "sim/core/TriangleMesh.h"
 
@@ -26,12 +26,12 @@ struct FlaredSkirtOptions {
 };
 
 struct FlaredSkirt {
-  TriangleMesh mesh;           // vertices numbered as the triangles first use them
-  double waistHeight = 0;      // m, of the natural waist and the waistband
-  double waistPerimeter = 0;   // m, of the body's convex waist section
+  TriangleMesh mesh;              // vertices numbered as the triangles first use them
+  double waistHeight = 0;         // m, of the natural waist and the waistband
+  double waistPerimeter = 0;      // m, of the body's convex waist section
   double waistbandPerimeter = 0;  // m
-  double hemHeight = 0;        // m
-  double area = 0;             // m^2 of cloth
+  double hemHeight = 0;           // m
+  double area = 0;                // m^2 of cloth
 };
 
 // Generates the skirt around `body`, a closed surface in the scene frame. Deterministic.

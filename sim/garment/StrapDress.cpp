@@ -24,10 +24,6 @@
 
 #include "sim/garment/StrapDress.h"
 
-#include "sim/body/BodySlices.h"
-#include "sim/garment/StrapDressTube.h"
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -36,26 +32,34 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/body/BodySlices.h"
+#include "sim/core/ParameterChecks.h"
+#include "sim/garment/StrapDressTube.h"
+
 namespace figment {
 
 namespace {
 
 constexpr double kTwoPi = 2.0 * M_PI;
-constexpr int kAnchorSteps = 360;          // over half the top edge, when looking for a strap's lane
-constexpr int kSettleRows = 4;             // rows over which columns go from the straps' layout to even
-constexpr double kStrapBandMargin = 0.01;  // m beside the strap still looked at under it
-constexpr double kStrapCutSpacing = 0.005; // m between the sagittal sections under a strap
-constexpr int kProfileRays = 181;          // rays over the shoulder, front to back
-constexpr double kEndBlend = 0.25;         // fraction of a strap blended onto the tube at each end
+constexpr int kAnchorSteps = 360;           // over half the top edge, when looking for a strap's lane
+constexpr int kSettleRows = 4;              // rows over which columns go from the straps' layout to even
+constexpr double kStrapBandMargin = 0.01;   // m beside the strap still looked at under it
+constexpr double kStrapCutSpacing = 0.005;  // m between the sagittal sections under a strap
+constexpr int kProfileRays = 181;           // rays over the shoulder, front to back
+constexpr double kEndBlend = 0.25;          // fraction of a strap blended onto the tube at each end
 
 void requireAtLeast(const char* field, int value, int least) {
   if (value < least)
-    throw std::invalid_argument(std::string(field) + " = " + std::to_string(value) + " must be >= " +
-                                std::to_string(least));
+    throw std::invalid_argument(std::string(field) + " = " + std::to_string(value) +
+                                " must be >= " + std::to_string(least));
 }
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-Vec2 direction(double angle) { return StrapDressTube::direction(angle); }
+double cross(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+Vec2 direction(double angle) {
+  return StrapDressTube::direction(angle);
+}
 
 // The angle on the front (z > axis) or back half of the top edge where its x equals `x`.
 double angleWhereXIs(const StrapDressTube& shape, double x, bool front) {
@@ -114,8 +118,8 @@ std::vector<double> placeColumns(const StrapDressTube& shape, int columns, std::
   const int side = std::max(1, static_cast<int>(std::lround(intervals * 0.5 * (gapLength[1] + gapLength[3]) / total)));
   const int centres = intervals - 2 * side;
   if (centres < 2) throw std::invalid_argument("columns = " + std::to_string(columns) + " is too few");
-  const int front = std::clamp(static_cast<int>(std::lround(centres * gapLength[0] / (gapLength[0] + gapLength[2]))),
-                               1, centres - 1);
+  const int front =
+      std::clamp(static_cast<int>(std::lround(centres * gapLength[0] / (gapLength[0] + gapLength[2]))), 1, centres - 1);
   const std::array<int, 4> counts = {front, side, centres - front, side};
 
   std::vector<double> angles;
@@ -341,8 +345,8 @@ void StrapDressOptions::validate() const {
   requirePositive("strapWidth", strapWidth);
   requirePositive("strapOffset", strapOffset);
   if (!(strapOffset > 0.5 * strapWidth))
-    throw std::invalid_argument("strapOffset = " + formatNumber(strapOffset) + " must exceed strapWidth / 2 = " +
-                                formatNumber(0.5 * strapWidth));
+    throw std::invalid_argument("strapOffset = " + formatNumber(strapOffset) +
+                                " must exceed strapWidth / 2 = " + formatNumber(0.5 * strapWidth));
   requireAtLeast("strapSegments", strapSegments, 4);
   requirePositive("clusterGap", clusterGap);
   requirePositive("torsoHalfWidth", torsoHalfWidth);
@@ -369,8 +373,8 @@ StrapDress makeStrapDress(const TriangleMesh& body, const StrapDressOptions& opt
   dress.topHeight = options.topHeight.value_or(dress.armpitHeight - options.topBelowArmpit);
   dress.hemHeight = options.hemHeight.value_or(bounds.min.y() + options.hemHeightRatio * bounds.size().y());
   if (!(dress.topHeight > dress.hemHeight))
-    throw std::invalid_argument("hemHeight = " + formatNumber(dress.hemHeight) + " must be below topHeight = " +
-                                formatNumber(dress.topHeight));
+    throw std::invalid_argument("hemHeight = " + formatNumber(dress.hemHeight) +
+                                " must be below topHeight = " + formatNumber(dress.topHeight));
 
   Neckline neckline;
   neckline.rise = options.necklineRise;

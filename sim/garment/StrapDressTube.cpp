@@ -17,30 +17,33 @@
 
 #include "sim/garment/StrapDressTube.h"
 
-#include "sim/core/ParameterChecks.h"
-
 #include <algorithm>
 #include <stdexcept>
+
+#include "sim/core/ParameterChecks.h"
 
 namespace figment {
 
 namespace {
 
 constexpr double kTwoPi = 2.0 * M_PI;
-constexpr double kFrontCentre = 0.5 * M_PI;    // the angle pointing +z, where arc lengths start
-constexpr int kSectionsPerRow = 5;             // sections sampled within each row's band
-constexpr int kAngleSamples = 720;             // around each row, for arc lengths
-constexpr double kNecklineSliceStep = 0.001;   // m between the sections stacked for raised vertices
+constexpr double kFrontCentre = 0.5 * M_PI;   // the angle pointing +z, where arc lengths start
+constexpr int kSectionsPerRow = 5;            // sections sampled within each row's band
+constexpr int kAngleSamples = 720;            // around each row, for arc lengths
+constexpr double kNecklineSliceStep = 0.001;  // m between the sections stacked for raised vertices
 
-double sampleAngle(int k) { return kFrontCentre + kTwoPi * k / kAngleSamples; }
+double sampleAngle(int k) {
+  return kFrontCentre + kTwoPi * k / kAngleSamples;
+}
 
-double smoothstep(double t) { return t * t * (3 - 2 * t); }
+double smoothstep(double t) {
+  return t * t * (3 - 2 * t);
+}
 
 }  // namespace
 
 StrapDressTube::StrapDressTube(const TriangleMesh& body, double top, double hem, double ceiling, int rows,
-                               double clearance, double hemFlare, const SliceOptions& slicing,
-                               const Neckline& neckline)
+                               double clearance, double hemFlare, const SliceOptions& slicing, const Neckline& neckline)
     : clearance_(clearance), ceiling_(ceiling), neckline_(neckline) {
   neckline_.rows = std::clamp(neckline_.rows, 1, rows);
   neckline_.fullRows = std::clamp(neckline_.fullRows, 0, neckline_.rows - 1);

@@ -3,10 +3,10 @@
 // top edge to the hem, each clear of the body's torso section by the clearance, and the top
 // edge raised between the straps (the neckline). Method at the top of StrapDressTube.cpp.
 
-#include "sim/body/BodySlices.h"
-
 #include <cmath>
 #include <vector>
+
+#include "sim/body/BodySlices.h"
 
 namespace figment {
 

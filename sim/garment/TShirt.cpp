@@ -1,15 +1,15 @@
 #include "sim/garment/TShirt.h"
 
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+#include <string>
+
 #include "sim/body/BodyParts.h"
 #include "sim/body/SkeletonEstimate.h"
 #include "sim/core/ParameterChecks.h"
 #include "sim/core/PlaneClip.h"
 #include "sim/progressive/Resampling.h"
-
-#include <algorithm>
-#include <map>
-#include <stdexcept>
-#include <string>
 
 namespace figment {
 

@@ -20,17 +20,16 @@
 // or a section thinner than `minQuality` (4 sqrt(3) area / sum of squared edges: 1 for
 // an equilateral one).
 
-#include "sim/progressive/CollapseNeighbourhood.h"
-
 #include <Eigen/Core>
-
 #include <optional>
 #include <vector>
+
+#include "sim/progressive/CollapseNeighbourhood.h"
 
 namespace figment {
 
 struct DecimationOptions {
-  int targetFaces = 0;           // stop at this many sections, or where nothing may collapse
+  int targetFaces = 0;  // stop at this many sections, or where nothing may collapse
   double perimeterWeight = 10.0;
   double homogeneity = 0.05;
   double maxTurnDegrees = 45.0;

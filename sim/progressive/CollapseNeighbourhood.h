@@ -2,9 +2,9 @@
 // The connectivity the decimation keeps while it collapses edges: each vertex's active
 // faces, each face's current corners, and the rest positions of the current level.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -1,13 +1,13 @@
 #include "sim/progressive/ProgressiveDrape.h"
 
-#include "sim/progressive/SplitPlacement.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
+
+#include "sim/progressive/SplitPlacement.h"
 
 namespace figment {
 
@@ -38,7 +38,8 @@ double stabilityTime(const TriangleMesh& mesh) {
     for (int k = 0; k < 3; ++k) {
       const Vec3& p = mesh.vertices[t[k]];
       area[t[k]] += third;
-      stiffness[t[k]] += 1.0 / (mesh.vertices[t[(k + 1) % 3]] - p).norm() + 1.0 / (mesh.vertices[t[(k + 2) % 3]] - p).norm();
+      stiffness[t[k]] +=
+          1.0 / (mesh.vertices[t[(k + 1) % 3]] - p).norm() + 1.0 / (mesh.vertices[t[(k + 2) % 3]] - p).norm();
     }
   }
   double shortest = std::numeric_limits<double>::infinity();
@@ -59,9 +60,9 @@ ProgressiveDrape::ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParam
       fullStabilityTime_(stabilityTime(mesh.full)),
       level_(mesh) {
   if (schedule.beginLevel < 0 || schedule.beginLevel > endLevel_ || endLevel_ > mesh.levels())
-    throw std::invalid_argument("beginLevel = " + std::to_string(schedule.beginLevel) + " and endLevel = " +
-                                std::to_string(schedule.endLevel) + " must satisfy 0 <= begin <= end <= " +
-                                std::to_string(mesh.levels()));
+    throw std::invalid_argument("beginLevel = " + std::to_string(schedule.beginLevel) +
+                                " and endLevel = " + std::to_string(schedule.endLevel) +
+                                " must satisfy 0 <= begin <= end <= " + std::to_string(mesh.levels()));
   if (!(schedule.splitsPerSecond >= 0.0) || !std::isfinite(schedule.splitsPerSecond))
     throw std::invalid_argument("splitRate = " + std::to_string(schedule.splitsPerSecond) + " must be >= 0");
   batch_ = std::max(1, (endLevel_ - schedule.beginLevel) / kBatches);
@@ -178,8 +179,7 @@ void ProgressiveDrape::step() {
   rebuild();
 }
 
-DrapeResult ProgressiveDrape::run(const std::function<void(const DrapeProgress&)>& progress,
-                                  double progressInterval) {
+DrapeResult ProgressiveDrape::run(const std::function<void(const DrapeProgress&)>& progress, double progressInterval) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   auto lastReport = start;

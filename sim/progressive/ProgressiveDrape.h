@@ -20,12 +20,12 @@
 // Heun with the 30 g clamp then never rests there at 2.5x and more), and maxTime is
 // counted in simulated time.
 
-#include "sim/cloth/ClothSolver.h"
-#include "sim/progressive/ProgressiveMesh.h"
-
 #include <memory>
 #include <utility>
 #include <vector>
+
+#include "sim/cloth/ClothSolver.h"
+#include "sim/progressive/ProgressiveMesh.h"
 
 namespace figment {
 
@@ -40,15 +40,15 @@ struct EndLevelSettling {
 
 struct ProgressiveSchedule {
   int beginLevel = 0;
-  int endLevel = -1;            // -1: every split (the full garment)
+  int endLevel = -1;             // -1: every split (the full garment)
   double splitsPerSecond = 0.0;  // of simulated time; 0: the rest at once when the level rests
 };
 
 class ProgressiveDrape {
  public:
   // `mesh` is kept by reference.
-  ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParameters& parameters,
-                   std::shared_ptr<const Collider> body, const ProgressiveSchedule& schedule);
+  ProgressiveDrape(const ProgressiveMesh& mesh, const ClothParameters& parameters, std::shared_ptr<const Collider> body,
+                   const ProgressiveSchedule& schedule);
 
   // One step of the current level's solver, then the splits due.
   void step();
@@ -96,12 +96,12 @@ class ProgressiveDrape {
   int endLevel_, batch_;
   double fullArea_, fullStabilityTime_;
   MeshLevel level_;
-  std::vector<int> fullIndex_;           // per solver node, its full vertex
-  std::vector<Vec3> x_, v_;              // per full vertex (the active ones meaningful)
-  double endLevelArrival_ = -1.0;        // simulated s
-  std::vector<Vec3> endLevelPlaced_;     // per solver node, as the end level began
+  std::vector<int> fullIndex_;        // per solver node, its full vertex
+  std::vector<Vec3> x_, v_;           // per full vertex (the active ones meaningful)
+  double endLevelArrival_ = -1.0;     // simulated s
+  std::vector<Vec3> endLevelPlaced_;  // per solver node, as the end level began
   std::unique_ptr<ClothSolver> solver_;
-  ImplicitStepCosts retiredCosts_;       // of the solvers of earlier levels
+  ImplicitStepCosts retiredCosts_;  // of the solvers of earlier levels
 };
 
 }  // namespace figment

@@ -74,7 +74,8 @@ TriangleMesh MeshLevel::restMesh(std::vector<int>& fullIndex) const {
       out.vertices.push_back(rest_[v]);
     }
   for (size_t f = 0; f < corners_.size(); ++f)
-    if (faceActive_[f]) out.triangles.push_back({compact[corners_[f][0]], compact[corners_[f][1]], compact[corners_[f][2]]});
+    if (faceActive_[f])
+      out.triangles.push_back({compact[corners_[f][0]], compact[corners_[f][1]], compact[corners_[f][2]]});
   return out;
 }
 

@@ -11,9 +11,9 @@
 // Vertices and faces keep the full garment's numbering at every level, so a level is a
 // choice of which are active (MeshLevel).
 
-#include "sim/core/TriangleMesh.h"
-
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 

@@ -1,17 +1,17 @@
 #include "sim/progressive/Resampling.h"
 
-#include "sim/core/Subdivision.h"
-#include "sim/progressive/Decimation.h"
-
 #include <stdexcept>
 #include <string>
+
+#include "sim/core/Subdivision.h"
+#include "sim/progressive/Decimation.h"
 
 namespace figment {
 
 TriangleMesh resampled(const TriangleMesh& garment, int triangles) {
   if (triangles < 1 || garment.triangles.empty())
-    throw std::invalid_argument("cannot resample " + std::to_string(garment.triangles.size()) +
-                                " triangles to " + std::to_string(triangles));
+    throw std::invalid_argument("cannot resample " + std::to_string(garment.triangles.size()) + " triangles to " +
+                                std::to_string(triangles));
   TriangleMesh fine = garment;
   while (static_cast<int>(fine.triangles.size()) < triangles) fine = subdivided(fine);
   if (static_cast<int>(fine.triangles.size()) == triangles) return numberedByFirstUse(fine);

@@ -1,10 +1,10 @@
 #include "sim/progressive/RestCorrespondence.h"
 
-#include "sim/collision/TriangleBvh.h"
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "sim/collision/TriangleBvh.h"
 
 namespace figment {
 
@@ -21,7 +21,8 @@ std::array<double, 3> barycentric(const Vec3& p, const Vec3& a, const Vec3& b, c
 }  // namespace
 
 RestCorrespondence::RestCorrespondence(const TriangleMesh& from, const TriangleMesh& onto) {
-  if (onto.triangles.empty()) throw std::invalid_argument("RestCorrespondence: the garment to map onto has no sections");
+  if (onto.triangles.empty())
+    throw std::invalid_argument("RestCorrespondence: the garment to map onto has no sections");
   const TriangleBvh bvh(onto);
   for (const Vec3& p : from.vertices) {
     const ClosestPoint closest = bvh.closest(p);

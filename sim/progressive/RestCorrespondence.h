@@ -5,10 +5,10 @@
 // keeps a garment's surface (sim/progressive/Resampling.h), so the points lie on it to
 // within the chords of the coarser one.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <array>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment {
 
@@ -24,7 +24,7 @@ class RestCorrespondence {
   double largestGap() const { return largestGap_; }
 
  private:
-  std::vector<Triangle> corners_;              // per `from` vertex: the section of `onto`
+  std::vector<Triangle> corners_;               // per `from` vertex: the section of `onto`
   std::vector<std::array<double, 3>> weights_;  // and its barycentric weights
   double largestGap_ = 0.0;
 };

@@ -1,7 +1,6 @@
 #include "sim/progressive/SplitPlacement.h"
 
 #include <Eigen/LU>
-
 #include <algorithm>
 
 namespace figment {

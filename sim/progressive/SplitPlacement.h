@@ -10,9 +10,9 @@
 // Both take the mean velocity of the kept vertex and its ring. Positions and velocities
 // are indexed by the full garment's vertices; `level` is the level before the split.
 
-#include "sim/progressive/ProgressiveMesh.h"
-
 #include <vector>
+
+#include "sim/progressive/ProgressiveMesh.h"
 
 namespace figment {
 

@@ -1,10 +1,11 @@
 #include "FuzzTempDir.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace figment::fuzz {
 

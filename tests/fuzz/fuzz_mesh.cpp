@@ -7,12 +7,6 @@
 // Errors are expected and fine (the node reports them and stays empty); a crash, a sanitizer
 // report, a leak or an escaping exception is a finding.
 
-#include "FuzzTempDir.h"
-
-#include "nodes/Init.h"
-#include "nodes/body/MeshFile.h"
-#include "sim/collision/MeshCollider.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/errors/SoDebugError.h>
@@ -21,6 +15,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+
+#include "FuzzTempDir.h"
+#include "nodes/Init.h"
+#include "nodes/body/MeshFile.h"
+#include "sim/collision/MeshCollider.h"
 
 namespace {
 

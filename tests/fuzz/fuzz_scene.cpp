@@ -10,21 +10,20 @@
 // of its timeStep and to kMaxSimulated seconds. Invalid values (zero, negative, NaN) are left as
 // they are, so the engine's own checks of them are fuzzed too.
 
-#include "FuzzTempDir.h"
-
-#include "nodes/cloth/ClothEngine.h"
-#include "viewer/OffscreenContext.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneSession.h"
-
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
+
+#include "FuzzTempDir.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "viewer/OffscreenContext.h"
 
 namespace {
 

@@ -1,12 +1,12 @@
 // The faces of a coordIndex, the one walk over it that the guard's shape check and the node kit
 // share.
 
-#include "guard/CoordIndexFaces.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <vector>
+
+#include "guard/CoordIndexFaces.h"
 
 TEST(CoordIndexFaces, FindsTheFirstIndexThatIsNeitherAVertexNorMinusOne) {
   const std::vector<int32_t> good{0, 1, 2, -1, 2, 3, 0};

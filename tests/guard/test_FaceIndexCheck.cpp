@@ -2,11 +2,10 @@
 // one index of 2147483647 in a ClothingLayer made Coin allocate 2^31 normals (found by
 // fuzzing figment-view, issue 15).
 
-#include "guard/FaceIndexCheck.h"
-#include "support/SceneTestSupport.h"
-
 #include <gtest/gtest.h>
 
+#include "guard/FaceIndexCheck.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 
@@ -16,7 +15,8 @@ namespace {
 std::string square(const std::string& shape, const std::string& coordIndex, const std::string& extra = "") {
   return "#Inventor V2.1 ascii\nSeparator {\n"
          "  Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n"
-         "  " + shape + " { coordIndex [ " + coordIndex + " ] " + extra + " }\n}\n";
+         "  " +
+         shape + " { coordIndex [ " + coordIndex + " ] " + extra + " }\n}\n";
 }
 
 std::string check(const std::string& text) {
@@ -94,11 +94,13 @@ TEST_F(FaceIndexCheckTest, ChecksTheIndicesOfMaterialsNormalsAndTextureCoordinat
                                kTwoTriangles + " materialIndex [ 0, 70000000 ] }")),
             "IndexedFaceSet: materialIndex[1] = 70000000 is not a material: the shape has 2 materials");
   EXPECT_EQ(check(onFourPoints("NormalBinding { value PER_VERTEX_INDEXED } Normal { vector [ 0 0 1 ] }\n  "
-                               "IndexedFaceSet { " + kTwoTriangles + " normalIndex [ 0, 0, 0, -1, 0, 2000000000, 0, -1 ] }")),
+                               "IndexedFaceSet { " +
+                               kTwoTriangles + " normalIndex [ 0, 0, 0, -1, 0, 2000000000, 0, -1 ] }")),
             "IndexedFaceSet: normalIndex[5] = 2000000000 is not a normal: the shape has 1 normal");
-  EXPECT_EQ(check(onFourPoints("Texture2 { image 1 1 3 0xff0000 } TextureCoordinate2 { point [ 0 0, 1 0, 1 1 ] }\n  "
-                               "IndexedLineSet { coordIndex [ 0, 1, 2 ] textureCoordIndex [ 0, 1, 3 ] }")),
-            "IndexedLineSet: textureCoordIndex[2] = 3 is not a texture coordinate: the shape has 3 texture coordinates");
+  EXPECT_EQ(
+      check(onFourPoints("Texture2 { image 1 1 3 0xff0000 } TextureCoordinate2 { point [ 0 0, 1 0, 1 1 ] }\n  "
+                         "IndexedLineSet { coordIndex [ 0, 1, 2 ] textureCoordIndex [ 0, 1, 3 ] }")),
+      "IndexedLineSet: textureCoordIndex[2] = 3 is not a texture coordinate: the shape has 3 texture coordinates");
   // Without a texture, texture coordinates are not read.
   EXPECT_EQ(check(onFourPoints("TextureCoordinate2 { point [ 0 0 ] }\n  IndexedFaceSet { " + kTwoTriangles +
                                " textureCoordIndex [ 0, 9, 0, -1 ] }")),
@@ -108,14 +110,17 @@ TEST_F(FaceIndexCheckTest, ChecksTheIndicesOfMaterialsNormalsAndTextureCoordinat
                                kTwoTriangles + " materialIndex [ 1 ] }")),
             "IndexedFaceSet: materialIndex has 1 entry for 2 faces");
   // A binding per vertex, indexed, without an index of its own reads coordIndex.
-  EXPECT_EQ(check(onFourPoints("Normal { vector [ 0 0 1, 0 0 1, 0 0 1 ] }\n  IndexedFaceSet { " + kTwoTriangles + " }")),
-            "IndexedFaceSet: coordIndex[6] = 3 is not a normal: the shape has 3 normals, and coordIndex indexes them "
-            "as the binding is PER_VERTEX_INDEXED and normalIndex is empty");
+  EXPECT_EQ(
+      check(onFourPoints("Normal { vector [ 0 0 1, 0 0 1, 0 0 1 ] }\n  IndexedFaceSet { " + kTwoTriangles + " }")),
+      "IndexedFaceSet: coordIndex[6] = 3 is not a normal: the shape has 3 normals, and coordIndex indexes them "
+      "as the binding is PER_VERTEX_INDEXED and normalIndex is empty");
   // A VertexProperty's own colours and binding count where it has them.
-  EXPECT_EQ(check(onFourPoints("IndexedFaceSet { " + kTwoTriangles +
-                               " vertexProperty VertexProperty { orderedRGBA [ 0xff0000ff ] materialBinding PER_VERTEX_INDEXED } }")),
-            "IndexedFaceSet: coordIndex[1] = 1 is not a material: the VertexProperty has 1 material, and coordIndex indexes "
-            "them as the binding is PER_VERTEX_INDEXED and materialIndex is empty");
+  EXPECT_EQ(
+      check(onFourPoints(
+          "IndexedFaceSet { " + kTwoTriangles +
+          " vertexProperty VertexProperty { orderedRGBA [ 0xff0000ff ] materialBinding PER_VERTEX_INDEXED } }")),
+      "IndexedFaceSet: coordIndex[1] = 1 is not a material: the VertexProperty has 1 material, and coordIndex indexes "
+      "them as the binding is PER_VERTEX_INDEXED and materialIndex is empty");
 }
 
 TEST_F(FaceIndexCheckTest, ChecksWhatCountedShapesDrawAgainstTheCoordinates) {
@@ -134,7 +139,9 @@ TEST_F(FaceIndexCheckTest, ChecksWhatCountedShapesDrawAgainstTheCoordinates) {
 }
 
 TEST_F(FaceIndexCheckTest, ChecksVrmlShapesAgainstTheirOwnData) {
-  const auto shape = [](const std::string& geometry) { return onFourPoints("VRMLShape { geometry " + geometry + " }"); };
+  const auto shape = [](const std::string& geometry) {
+    return onFourPoints("VRMLShape { geometry " + geometry + " }");
+  };
   EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
                         " color VRMLColor { color [ 1 0 0, 0 1 0 ] } colorPerVertex FALSE }")),
             "");
@@ -145,13 +152,16 @@ TEST_F(FaceIndexCheckTest, ChecksVrmlShapesAgainstTheirOwnData) {
   EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
                         " color VRMLColor { color [ 1 0 0 ] } colorIndex [ 0, 2000000000, 0, -1, 0, 0, 0, -1 ] }")),
             "VRMLIndexedFaceSet: colorIndex[1] = 2000000000 is not a color: the VRMLColor has 1 color");
-  EXPECT_EQ(check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
-                        " color VRMLColor { color [ 1 0 0 ] } colorPerVertex FALSE }")),
-            "VRMLIndexedFaceSet: the VRMLColor has 1 color for 2 faces (colorPerVertex is FALSE and colorIndex is empty)");
-  EXPECT_EQ(check(shape("VRMLIndexedLineSet { " + kVrmlSquare + " coordIndex [ 0, 1, 2, 3 ] color VRMLColor { "
-                        "color [ 1 0 0, 0 1 0 ] } }")),
-            "VRMLIndexedLineSet: coordIndex[2] = 2 is not a color: the VRMLColor has 2 colors, and coordIndex indexes them "
-            "as colorPerVertex is TRUE and colorIndex is empty");
+  EXPECT_EQ(
+      check(shape("VRMLIndexedFaceSet { " + kVrmlSquare + " " + kTwoTriangles +
+                  " color VRMLColor { color [ 1 0 0 ] } colorPerVertex FALSE }")),
+      "VRMLIndexedFaceSet: the VRMLColor has 1 color for 2 faces (colorPerVertex is FALSE and colorIndex is empty)");
+  EXPECT_EQ(
+      check(shape("VRMLIndexedLineSet { " + kVrmlSquare +
+                  " coordIndex [ 0, 1, 2, 3 ] color VRMLColor { "
+                  "color [ 1 0 0, 0 1 0 ] } }")),
+      "VRMLIndexedLineSet: coordIndex[2] = 2 is not a color: the VRMLColor has 2 colors, and coordIndex indexes them "
+      "as colorPerVertex is TRUE and colorIndex is empty");
   EXPECT_EQ(check(shape("VRMLPointSet { " + kVrmlSquare + " color VRMLColor { color [ 1 0 0 ] } }")),
             "VRMLPointSet: the VRMLColor has 1 color for 4 points: one for each");
   EXPECT_EQ(check(shape("VRMLElevationGrid { xDimension 3000 zDimension 3000 height [ 0, 0, 0, 0 ] }")),
@@ -169,21 +179,25 @@ TEST_F(FaceIndexCheckTest, ChecksNurbsControlPointsAndKnots) {
             "NurbsSurface: numUControlPoints x numVControlPoints make 6 control points: the coordinates have 4 points");
   EXPECT_EQ(check(onFourPoints("NurbsSurface { numUControlPoints 2 numVControlPoints 2"
                                " uKnotVector [ 0, 0, 1, 1 ] vKnotVector [ 0 ] }")),
-            "NurbsSurface: vKnotVector has 1 knot for 2 control points: it needs the control points plus the order, at least 2");
-  EXPECT_EQ(check(onFourPoints("IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2, 2000000000 ]" +
-                               knots + " }")),
+            "NurbsSurface: vKnotVector has 1 knot for 2 control points: it needs the control points plus the order, at "
+            "least 2");
+  EXPECT_EQ(check(onFourPoints(
+                "IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2, 2000000000 ]" +
+                knots + " }")),
             "IndexedNurbsSurface: coordIndex[3] = 2000000000 is not a vertex: the coordinates have 4 points");
-  EXPECT_EQ(check(onFourPoints("IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2 ]" +
-                               knots + " }")),
-            "IndexedNurbsSurface: coordIndex has 3 entries for numUControlPoints x numVControlPoints = 4 control points");
+  EXPECT_EQ(
+      check(onFourPoints("IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2 ]" +
+                         knots + " }")),
+      "IndexedNurbsSurface: coordIndex has 3 entries for numUControlPoints x numVControlPoints = 4 control points");
   EXPECT_EQ(check(onFourPoints("NurbsCurve { numControlPoints 5 knotVector [ 0, 0, 0.3, 0.5, 0.7, 1, 1 ] }")),
             "NurbsCurve: numControlPoints make 5 control points: the coordinates have 4 points");
 }
 
 TEST_F(FaceIndexCheckTest, ChecksMarkersAreCoinsMarkers) {
   EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 0, 5, -1 ] }")), "");
-  EXPECT_EQ(check(onFourPoints("MarkerSet { markerIndex [ 2000000000 ] }")),
-            "MarkerSet: markerIndex[0] = 2000000000 is not a marker: there are 90 (and -1, none)");  // crashed figment-view
+  EXPECT_EQ(
+      check(onFourPoints("MarkerSet { markerIndex [ 2000000000 ] }")),
+      "MarkerSet: markerIndex[0] = 2000000000 is not a marker: there are 90 (and -1, none)");  // crashed figment-view
   EXPECT_EQ(check(onFourPoints("IndexedMarkerSet { coordIndex [ 0, 1 ] markerIndex [ 0, 90 ] }")),
             "IndexedMarkerSet: markerIndex[1] = 90 is not a marker: there are 90 (and -1, none)");
   // Coin skips -1 only; 4000000000 is read as -294967296 (crashed; found by fuzz_scene).
@@ -196,9 +210,10 @@ TEST_F(FaceIndexCheckTest, ChecksMarkersAreCoinsMarkers) {
 // In VRML 1.0, PER_VERTEX means per vertex of the shape: Coin reads such materials through
 // coordIndex (a 20,000-point face set read 80 KB past its one material before).
 TEST_F(FaceIndexCheckTest, ReadsAVrml1PerVertexBindingThroughCoordIndex) {
-  const std::string scene = "#VRML V1.0 ascii\nSeparator {\n  MaterialBinding { value PER_VERTEX }\n"
-                            "  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
-                            "  Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n  IndexedFaceSet { coordIndex [ ";
+  const std::string scene =
+      "#VRML V1.0 ascii\nSeparator {\n  MaterialBinding { value PER_VERTEX }\n"
+      "  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
+      "  Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] }\n  IndexedFaceSet { coordIndex [ ";
   EXPECT_EQ(check(scene + "0, 1, 1, -1 ] }\n}\n"), "");
   EXPECT_EQ(check(scene + "0, 1, 3, -1 ] }\n}\n"),
             "IndexedFaceSet: coordIndex[2] = 3 is not a material: the shape has 2 materials, and coordIndex indexes "
@@ -224,8 +239,9 @@ TEST_F(FaceIndexCheckTest, CountsDataTakenOneAfterAnotherAgainstWhatTheyAreFor) 
   // A shape without indices takes an indexed binding as the plain one.
   EXPECT_EQ(check(onFourPoints("Normal { vector [ 0 0 1 ] }\n  LineSet { numVertices [ 4 ] }")),
             "LineSet: the shape has 1 normal for its 4 vertices (bound PER_VERTEX, one each)");
-  EXPECT_EQ(check(onFourPoints("Texture2 { image 1 1 3 0xff0000 } TextureCoordinate2 { point [ 0 0 ] }\n  PointSet { }")),
-            "PointSet: the shape has 1 texture coordinate for its 4 vertices (bound PER_VERTEX, one each)");
+  EXPECT_EQ(
+      check(onFourPoints("Texture2 { image 1 1 3 0xff0000 } TextureCoordinate2 { point [ 0 0 ] }\n  PointSet { }")),
+      "PointSet: the shape has 1 texture coordinate for its 4 vertices (bound PER_VERTEX, one each)");
   // Enough of each.
   EXPECT_EQ(check(onFourPoints("Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n  MaterialBinding { value PER_FACE }\n"
                                "  FaceSet { numVertices [ 3 ] } TriangleStripSet { numVertices [ 4 ] }")),

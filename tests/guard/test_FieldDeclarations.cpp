@@ -2,15 +2,14 @@
 // added a field the class lacks to the field list every node of the class shares, and the
 // next walk over another node of the class crashed (SIGSEGV).
 
-#include "guard/FieldDeclarations.h"
-
 #include <Inventor/SbName.h>
 #include <Inventor/SoDB.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
+
+#include "guard/FieldDeclarations.h"
 
 using figment::guard::FieldDeclarations;
 

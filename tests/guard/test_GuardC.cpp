@@ -2,16 +2,14 @@
 // caller's group; a refused one is one line in the caller's buffer, cut to its size, and
 // leaves the group as it was.
 
-#include "guard/GuardC.h"
-
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "guard/GuardC.h"
+#include "support/SceneTestSupport.h"
 
 namespace {
 

@@ -1,18 +1,16 @@
 // The input scenes are read through refuses a field declaration Coin would add to a whole class,
 // as Coin reads it, in the scene and in the files it includes; the class is left as it was.
 
-#include "guard/GuardedInput.h"
-
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/lists/SoFieldList.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "guard/GuardedInput.h"
+#include "support/SceneTestSupport.h"
 
 using figment::guard::GuardedInput;
 

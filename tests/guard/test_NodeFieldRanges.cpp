@@ -1,12 +1,12 @@
 // Whole-number fields Coin indexes its own arrays with: a TextureUnit's unit below 0
 // corrupted the heap or crashed figment-view, one of 2147483647 ran it out of memory.
 
-#include "guard/NodeFieldRanges.h"
-#include "support/SceneTestSupport.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "guard/NodeFieldRanges.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::guard;
 

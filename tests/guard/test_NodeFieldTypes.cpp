@@ -2,16 +2,15 @@
 // field, and its VRML97 shapes cast what they hold (a VRMLIndexedLineSet whose coord was a
 // VRMLMaterial crashed figment-view); a read scene is checked before any action.
 
-#include "guard/NodeFieldTypes.h"
-#include "guard/SceneExpansion.h"
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/VRMLnodes/SoVRMLMaterial.h>
 #include <Inventor/VRMLnodes/SoVRMLText.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "guard/NodeFieldTypes.h"
+#include "guard/SceneExpansion.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::guard;
 
@@ -30,7 +29,8 @@ const std::string kCoordinates = "VRMLCoordinate { point [ 0 0 0, 1 0 0, 0 1 0 ]
 
 TEST(NodeFieldTypes, AcceptsWhatEachFieldTakes) {
   EXPECT_EQ(problemIn("VRMLShape { appearance VRMLAppearance { material VRMLMaterial { } }\n"
-                      "  geometry VRMLIndexedFaceSet { coord " + kCoordinates +
+                      "  geometry VRMLIndexedFaceSet { coord " +
+                      kCoordinates +
                       " coordIndex [ 0, 1, 2, -1 ]\n"
                       "    color VRMLColor { color [ 1 0 0 ] } normal VRMLNormal { vector [ 0 0 1 ] } } }"),
             "");
@@ -52,8 +52,9 @@ TEST(NodeFieldTypes, NamesTheNodeTheFieldAndWhatItHolds) {
             "VRMLPointSet: coord holds a VRMLMaterial, where a VRMLCoordinate belongs");
   EXPECT_EQ(problemIn("VRMLShape { geometry VRMLText { string \"ab\" fontStyle DEF Red VRMLMaterial { } } }"),
             "VRMLText: fontStyle holds a VRMLMaterial 'Red', where a VRMLFontStyle belongs");
-  EXPECT_EQ(problemIn("VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLMaterial { } coordIndex [ 0, 1, 2, -1 ] } }"),
-            "VRMLIndexedFaceSet: coord holds a VRMLMaterial, where a VRMLCoordinate belongs");
+  EXPECT_EQ(
+      problemIn("VRMLShape { geometry VRMLIndexedFaceSet { coord VRMLMaterial { } coordIndex [ 0, 1, 2, -1 ] } }"),
+      "VRMLIndexedFaceSet: coord holds a VRMLMaterial, where a VRMLCoordinate belongs");
   // Coin casts these as well; they read memory of another type.
   EXPECT_EQ(problemIn("VRMLShape { appearance VRMLMaterial { } geometry VRMLBox { } }"),
             "VRMLShape: appearance holds a VRMLMaterial, where a VRMLAppearance belongs");

@@ -1,12 +1,11 @@
 // The input figment-view reads scenes with holds every object a DEF names until the read is
 // over: Coin's own reference table holds bare pointers, and an engine DEFined in a field
 // connection that failed was destroyed under a later USE of its name (found by fuzz_scene).
-#include "guard/ReferenceHoldingInput.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/nodes/SoCube.h>
-
 #include <gtest/gtest.h>
+
+#include "guard/ReferenceHoldingInput.h"
 
 using figment::guard::ReferenceHoldingInput;
 

@@ -2,8 +2,6 @@
 // are counted as a traversal visits them, and a graph too large or too deep to traverse is
 // refused in one line naming where.
 
-#include "guard/SceneExpansion.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/VRMLnodes/SoVRMLFontStyle.h>
@@ -12,10 +10,11 @@
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "guard/SceneExpansion.h"
 
 using namespace figment::guard;
 
@@ -83,15 +82,16 @@ TEST(SceneExpansion, RefusesAGraphThatDrawsMoreThanTheBoundNamingWhere) {
   EXPECT_EQ(doubled.problem,
             "the scene would draw more than 20000 nodes, counting a USEd node once for each use and an "
             "Array's or MultipleCopy's children once for each copy (passed at Group 'L13')");
-  const Expanded array =
-      expand("#Inventor V2.1 ascii\nDEF Grid Array { numElements1 30000 numElements2 30000 numElements3 30000 "
-             "Cube { } }\n");
+  const Expanded array = expand(
+      "#Inventor V2.1 ascii\nDEF Grid Array { numElements1 30000 numElements2 30000 numElements3 30000 "
+      "Cube { } }\n");
   EXPECT_NE(array.problem.find("more than 20000 nodes"), std::string::npos) << array.problem;
   EXPECT_NE(array.problem.find("(passed at Array 'Grid')"), std::string::npos) << array.problem;
   // Coin loops over the copies of an Array without children too (fuzz_scene: 45 million
   // copies of nothing took 19 s); each copy counts as a visit.
-  const Expanded empty = expand("#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements2 30000 "
-                                "numElements2 15000 numElements3 3000 }\n}\n");
+  const Expanded empty = expand(
+      "#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements2 30000 "
+      "numElements2 15000 numElements3 3000 }\n}\n");
   EXPECT_NE(empty.problem.find("(passed at Array 'Grid')"), std::string::npos) << empty.problem;
   EXPECT_EQ(expand("#Inventor V2.1 ascii\nArray { numElements1 2 numElements2 3 }\n").expansion.visits, 8u);
   // 13 levels draw 16,370 nodes, 14 levels 32,753.

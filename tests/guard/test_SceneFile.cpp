@@ -2,18 +2,16 @@
 // releases what was read; Coin's warnings wait for the read's end and reach the program's own
 // handler only when it succeeds; the program's handlers are its own again afterwards.
 
-#include "guard/SceneFile.h"
-
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/errors/SoReadError.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
+
+#include "guard/SceneFile.h"
+#include "support/SceneTestSupport.h"
 
 using figment::guard::readScene;
 

@@ -2,15 +2,14 @@
 // cycle of includes and a File naming a device are refused, each in one line; every
 // shipped scene passes.
 
-#include "support/TempDir.h"
-#include "guard/SceneTextCheck.h"
-
 #include <Inventor/SoDB.h>
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <string>
+
+#include "guard/SceneTextCheck.h"
+#include "support/TempDir.h"
 
 using namespace figment::guard;
 namespace fs = std::filesystem;
@@ -29,7 +28,9 @@ std::string nested(int levels) {
 }
 
 // "f3.iv" for ("f", 3).
-std::string numbered(const char* stem, int i) { return std::string(stem).append(std::to_string(i)).append(".iv"); }
+std::string numbered(const char* stem, int i) {
+  return std::string(stem).append(std::to_string(i)).append(".iv");
+}
 
 std::string including(const std::string& name) {
   return kHeader + "Separator {\n  File { name \"" + name + "\" }\n}\n";
@@ -93,9 +94,9 @@ TEST_F(SceneTextCheckTest, RefusesAFileThatIncludesItself) {
 TEST_F(SceneTextCheckTest, RefusesTwoFilesThatIncludeEachOther) {
   const std::string a = write("a.iv", including("sub/b.iv"));
   const std::string b = write("sub/b.iv", including("../a.iv"));
-  EXPECT_EQ(checkSceneText(a),
-            "line 3: File { name \"../a.iv\" } includes a file already being read: a.iv -> b.iv -> a.iv (in " + b +
-                ")");
+  EXPECT_EQ(
+      checkSceneText(a),
+      "line 3: File { name \"../a.iv\" } includes a file already being read: a.iv -> b.iv -> a.iv (in " + b + ")");
 }
 
 TEST_F(SceneTextCheckTest, LooksBesideTheFileThatNamesTheInclude) {
@@ -137,7 +138,8 @@ TEST_F(SceneTextCheckTest, BoundsTheIncludesReadInAll) {
 TEST_F(SceneTextCheckTest, TakesAnInlinesUrlForAnInclude) {
   EXPECT_EQ(checkSceneText(write("self.iv", kHeader + "Separator {\n  VRMLInline { url \"self.iv\" }\n}\n")),
             "line 3: VRMLInline { url \"self.iv\" } includes a file already being read: self.iv -> self.iv");
-  EXPECT_EQ(checkSceneText(write("zero.iv", kHeader + "VRMLInline {\n  bboxSize 1 1 1\n  url [ \"/dev/zero\", \"a.iv\" ]\n}\n")),
+  EXPECT_EQ(checkSceneText(
+                write("zero.iv", kHeader + "VRMLInline {\n  bboxSize 1 1 1\n  url [ \"/dev/zero\", \"a.iv\" ]\n}\n")),
             "line 4: VRMLInline { url \"/dev/zero\" } is not a regular file");
   EXPECT_EQ(checkSceneText(write("vrml.wrl", "#VRML V2.0 utf8\nTransform { children Inline { url \"gone.wrl\" } }\n")),
             "line 2: Inline { url \"gone.wrl\" } not found");
@@ -204,9 +206,8 @@ TEST_F(SceneTextCheckTest, RefusesWhatIsNotAsciiSceneText) {
 TEST_F(SceneTextCheckTest, ReadsPastNulBytes) {
   std::string text = nested(kMaxNestingDepth + 1);
   text.insert(kHeader.size(), std::string("Info\0\0 ", 7));
-  EXPECT_EQ(checkSceneText(write("nul.iv", text)),
-            "line 258: nesting depth " + std::to_string(kMaxNestingDepth + 1) + " is more than " +
-                std::to_string(kMaxNestingDepth));
+  EXPECT_EQ(checkSceneText(write("nul.iv", text)), "line 258: nesting depth " + std::to_string(kMaxNestingDepth + 1) +
+                                                       " is more than " + std::to_string(kMaxNestingDepth));
 }
 
 // A node used inside its own definition is a cycle; when the inner node failed to read,
@@ -215,20 +216,19 @@ TEST_F(SceneTextCheckTest, ReadsPastNulBytes) {
 TEST_F(SceneTextCheckTest, RefusesANodeUsedInsideItsOwnDefinition) {
   EXPECT_EQ(checkSceneText(write("self.iv", kHeader + "DEF A Separator {\n  Cube { }\n  USE A\n}\n")),
             "line 4: USE A inside the definition of A (DEF at line 2): a node cannot hold itself");
-  EXPECT_EQ(checkSceneText(write("field.iv", kHeader +
-                                                 "DEF Model Group {\n  Separator {\n    MannequinSkin {\n"
-                                                 "      mannequin USE Model\n    }\n  }\n}\n")),
+  EXPECT_EQ(checkSceneText(write("field.iv", kHeader + "DEF Model Group {\n  Separator {\n    MannequinSkin {\n"
+                                                       "      mannequin USE Model\n    }\n  }\n}\n")),
             "line 5: USE Model inside the definition of Model (DEF at line 2): a node cannot hold itself");
 }
 
 TEST_F(SceneTextCheckTest, TakesAUseAfterItsDefinitionOrOfAnInnerRedefinition) {
   // After the body closes, and in a field's connection, as the shipped scenes do.
   EXPECT_EQ(checkSceneText(write("after.iv", kHeader + "Separator {\n  DEF A Cube { }\n  USE A\n}\n")), "");
-  EXPECT_EQ(checkSceneText(write("connection.iv", kHeader +
-                                                      "DEF Model Group { }\nCoordinate3 {\n"
+  EXPECT_EQ(
+      checkSceneText(write("connection.iv", kHeader + "DEF Model Group { }\nCoordinate3 {\n"
                                                       "  point = DEF Drape ClothEngine { body USE Model } . positions\n"
                                                       "}\n")),
-            "");
+      "");
   // The name DEFined again inside: USE means the inner node, which is closed.
   EXPECT_EQ(checkSceneText(write("inner.iv", kHeader + "DEF A Separator {\n  DEF A Cube { }\n  USE A\n}\n")), "");
   // Names in strings and comments are not nodes.
@@ -240,17 +240,19 @@ TEST_F(SceneTextCheckTest, TakesAUseAfterItsDefinitionOrOfAnInnerRedefinition) {
 // crashed figment-view (SIGSEGV).
 TEST_F(SceneTextCheckTest, RefusesAPrototypeInstantiatedInsideItsOwnDefinition) {
   const std::string vrml = "#VRML V2.0 utf8\n";
-  EXPECT_EQ(checkSceneText(write("body.wrl", vrml + "PROTO Loop [ ] {\n  Group { children [ Loop { } ] }\n}\nLoop { }\n")),
-            "line 3: Loop { } inside the definition of PROTO Loop (at line 2): a prototype cannot hold itself");
+  EXPECT_EQ(
+      checkSceneText(write("body.wrl", vrml + "PROTO Loop [ ] {\n  Group { children [ Loop { } ] }\n}\nLoop { }\n")),
+      "line 3: Loop { } inside the definition of PROTO Loop (at line 2): a prototype cannot hold itself");
   EXPECT_EQ(checkSceneText(write("default.wrl", vrml + "PROTO Loop [ field SFNode n Loop { } ] { Group { } }\n")),
             "line 2: Loop { } inside the definition of PROTO Loop (at line 2): a prototype cannot hold itself");
   EXPECT_EQ(checkSceneText(write("inner.wrl", vrml + "PROTO Outer [ ] {\n  PROTO Inner [ ] { Outer { } }\n"
                                                      "  Group { children [ Inner { } ] }\n}\n")),
             "line 3: Outer { } inside the definition of PROTO Outer (at line 2): a prototype cannot hold itself");
   // One prototype in another's body, or used after its definition closed, is fine.
-  EXPECT_EQ(checkSceneText(write("ok.wrl", vrml + "PROTO Ball [ field SFFloat r 1 ] { Shape { geometry Sphere { radius IS r } } }\n"
-                                                  "PROTO Two [ ] { Group { children [ Ball { } Ball { r 2 } ] } }\n"
-                                                  "Two { } Ball { }\n")),
+  EXPECT_EQ(checkSceneText(write(
+                "ok.wrl", vrml + "PROTO Ball [ field SFFloat r 1 ] { Shape { geometry Sphere { radius IS r } } }\n"
+                                 "PROTO Two [ ] { Group { children [ Ball { } Ball { r 2 } ] } }\n"
+                                 "Two { } Ball { }\n")),
             "");
 }
 
@@ -258,8 +260,10 @@ TEST_F(SceneTextCheckTest, RefusesAPrototypeInstantiatedInsideItsOwnDefinition) 
 // SIGFPE in figment-view.
 TEST_F(SceneTextCheckTest, RefusesACounterStepOfZero) {
   const auto counter = [this](const std::string& engine) {
-    return checkSceneText(write("counter.iv", "#Inventor V2.1 ascii\nTranslation {\n  translation = ComposeVec3f {\n"
-                                              "    x = " + engine + " .output } .vector\n}\n"));
+    return checkSceneText(write("counter.iv",
+                                "#Inventor V2.1 ascii\nTranslation {\n  translation = ComposeVec3f {\n"
+                                "    x = " +
+                                    engine + " .output } .vector\n}\n"));
   };
   EXPECT_EQ(counter("TimeCounter { step 0 }"),
             "line 4: TimeCounter { step 0 } divides by zero: the step must not be 0 (or a multiple of 65536)");

@@ -4,14 +4,13 @@
 // handle used to be 48 bytes long, so that read went past its end (valgrind memcheck on
 // figment-view). The handle now begins with zeros there; this checks it through Coin's own
 // C API, the way Coin gets it.
-#include "headless/OsmesaForCoin.h"
-
 #include <Inventor/C/glue/gl.h>
 #include <Inventor/SoDB.h>
-
 #include <gtest/gtest.h>
 
 #include <cstring>
+
+#include "headless/OsmesaForCoin.h"
 
 namespace {
 

@@ -1,7 +1,4 @@
 // Output files that exist only when complete, in folders made as needed.
-#include "io/AtomicFile.h"
-#include "support/TempDir.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,6 +6,9 @@
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include "io/AtomicFile.h"
+#include "support/TempDir.h"
 
 namespace {
 

@@ -2,15 +2,15 @@
 // never under another; a damaged entry is found out, removed and reported; past its
 // bound the least recently used entries go; a folder that cannot be made is an error
 // naming it.
-#include "io/DrapeCache.h"
-#include "support/IoTestSupport.h"
-
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+
+#include "io/DrapeCache.h"
+#include "support/IoTestSupport.h"
 
 using namespace figment;
 using namespace figment::test;

@@ -1,12 +1,12 @@
 // OBJ output: what is written reads back the same, and a failed write leaves nothing behind.
-#include "support/IoTestSupport.h"
-#include "io/MeshExport.h"
-#include "io/MeshImport.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <stdexcept>
+
+#include "io/MeshExport.h"
+#include "io/MeshImport.h"
+#include "support/IoTestSupport.h"
 
 using namespace figment;
 using figment::test::TempDir;
@@ -16,7 +16,7 @@ namespace {
 // A 3 x 2 quad strip, its vertices numbered in the order its triangles first use them.
 TriangleMesh strip() {
   TriangleMesh mesh;
-  mesh.vertices = {Vec3(0, 0, 0), Vec3(0.1, 0, 0), Vec3(0, 0.1, 0), Vec3(0.1, 0.1, 0.01234567),
+  mesh.vertices = {Vec3(0, 0, 0),   Vec3(0.1, 0, 0),   Vec3(0, 0.1, 0), Vec3(0.1, 0.1, 0.01234567),
                    Vec3(0.2, 0, 0), Vec3(0.2, 0.1, 0), Vec3(0.3, 0, 0), Vec3(0.3, 0.1, -1e-3)};
   mesh.triangles = {{0, 1, 2}, {1, 3, 2}, {1, 4, 3}, {4, 5, 3}, {4, 6, 5}, {6, 7, 5}};
   return mesh;

@@ -1,13 +1,13 @@
 // The importer brings files into the scene frame (metres, y up), leaves out excluded meshes
 // and welds seams; findModelFile walks the model search path in its documented order.
-#include "support/IoTestSupport.h"
-#include "io/MeshImport.h"
-#include "support/MeshChecks.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <stdexcept>
+
+#include "io/MeshImport.h"
+#include "support/IoTestSupport.h"
+#include "support/MeshChecks.h"
 
 using namespace figment;
 using figment::test::ScopedEnvironment;
@@ -136,12 +136,18 @@ TEST_P(UpAxes, TurnOntoYByARotation) {
   const UpAxis up = GetParam();
   auto fileFrame = [up](const Vec3& zUp) -> Vec3 {
     switch (up) {
-      case UpAxis::X: return {zUp.z(), zUp.x(), zUp.y()};
-      case UpAxis::Y: return {zUp.y(), zUp.z(), zUp.x()};
-      case UpAxis::Z: return zUp;
-      case UpAxis::NegX: return {-zUp.z(), -zUp.x(), zUp.y()};
-      case UpAxis::NegY: return {zUp.y(), -zUp.z(), -zUp.x()};
-      case UpAxis::NegZ: return {zUp.x(), -zUp.y(), -zUp.z()};
+      case UpAxis::X:
+        return {zUp.z(), zUp.x(), zUp.y()};
+      case UpAxis::Y:
+        return {zUp.y(), zUp.z(), zUp.x()};
+      case UpAxis::Z:
+        return zUp;
+      case UpAxis::NegX:
+        return {-zUp.z(), -zUp.x(), zUp.y()};
+      case UpAxis::NegY:
+        return {zUp.y(), -zUp.z(), -zUp.x()};
+      case UpAxis::NegZ:
+        return {zUp.x(), -zUp.y(), -zUp.z()};
     }
     return zUp;
   };
@@ -221,7 +227,7 @@ TEST(FindModelFile, SearchesInOrder) {
   EXPECT_EQ(findModelFile("only-scene.obj", scene), inScene);
   EXPECT_EQ(findModelFile("only-scene.obj"), "");
   EXPECT_EQ(findModelFile("missing.obj", scene), "");
-  EXPECT_EQ(findModelFile(inSecondToo, scene), inSecondToo);  // absolute and there
+  EXPECT_EQ(findModelFile(inSecondToo, scene), inSecondToo);                          // absolute and there
   EXPECT_EQ(findModelFile((dir.path() / "nowhere/shared.obj").string(), scene), "");  // absolute, missing
   EXPECT_EQ(findModelFile("", scene), "");
 }
@@ -252,8 +258,9 @@ TEST(FindModelFile, FallsBackToAssimpTestModels) {
 TEST(MeshImport, AMalformedPlyHeaderIsAnErrorNotAHang) {
   TempDir dir;
   const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n";
-  const std::string rest = "property float y\nproperty float z\nelement face 1\n"
-                           "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const std::string rest =
+      "property float y\nproperty float z\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   const std::string tail = " (assimp 5.2 may never finish reading it)";
   const struct {
     const char* name;
@@ -279,7 +286,9 @@ TEST(MeshImport, APlyCountingMoreElementsThanItsBytesHoldIsAnErrorNotAHang) {
   TempDir dir;
   const auto ply = [](const std::string& faces) {
     return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-           "element face " + faces + "\nproperty list uchar int vertex_indices\nend_header\n"
+           "element face " +
+           faces +
+           "\nproperty list uchar int vertex_indices\nend_header\n"
            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   };
   const std::string digits48 = std::string(47, '6') + "0";
@@ -288,7 +297,8 @@ TEST(MeshImport, APlyCountingMoreElementsThanItsBytesHoldIsAnErrorNotAHang) {
     const char* name;
     std::string faces, error;
   } cases[] = {
-      {"digits.ply", digits48, "PLY header line 7: element face count \"66666666666666666666...\" is not a whole number"},
+      {"digits.ply", digits48,
+       "PLY header line 7: element face count \"66666666666666666666...\" is not a whole number"},
       {"billions.ply", "4000000000",
        "PLY header line 7: element face count \"4000000000\" makes more elements than the file's 189 bytes hold"},
       {"million.ply", "1000000",
@@ -326,8 +336,7 @@ TEST(MeshImport, APlyWhoseFacesDisagreeWithItsHeaderDoesNotAbort) {
 TEST(MeshImport, AnOffFileThatDisagreesWithItsCountsIsAnErrorNotACrash) {
   TempDir dir;
   const std::string vertices = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
-  const ImportedMesh tetrahedron =
-      importMesh(dir.file("good.off", vertices + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"));
+  const ImportedMesh tetrahedron = importMesh(dir.file("good.off", vertices + "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"));
   EXPECT_EQ(tetrahedron.mesh.triangles.size(), 4u);
   const struct {
     const char* name;

@@ -1,12 +1,8 @@
 // PNG files whose bytes are their pixels: read back through libpng they hold the rows
 // given (bottom row first in, top row first in the file), they carry no metadata chunk
 // (name, time, program), and the same image gives the same bytes under any file name.
-#include "io/PngFile.h"
-#include "support/TempDir.h"
-
-#include <png.h>
-
 #include <gtest/gtest.h>
+#include <png.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -15,6 +11,9 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include "io/PngFile.h"
+#include "support/TempDir.h"
 
 namespace {
 

@@ -1,14 +1,14 @@
 // The reconstruction script: written and read back, it replays to the same garment; a
 // script of another garment or a damaged one is one line naming the file (and line).
-#include "io/ProgressiveScript.h"
-#include "sim/progressive/Decimation.h"
-#include "support/TempDir.h"
-#include "support/TestMeshes.h"
-
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
+
+#include "io/ProgressiveScript.h"
+#include "sim/progressive/Decimation.h"
+#include "support/TempDir.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 using figment::test::TempDir;
@@ -88,5 +88,6 @@ TEST(ProgressiveScript, ADamagedLineIsNamed) {
   text[fifth + 7] = 'x';  // the third split's kept vertex is no number
   const std::string bad = dir.file("bad.pm", text);
   EXPECT_EQ(errorOf(bad, garment), bad + ":6: not a split");
-  EXPECT_EQ(errorOf((dir.path() / "none.pm").string(), garment), (dir.path() / "none.pm").string() + ": cannot be read");
+  EXPECT_EQ(errorOf((dir.path() / "none.pm").string(), garment),
+            (dir.path() / "none.pm").string() + ": cannot be read");
 }

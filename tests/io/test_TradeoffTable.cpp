@@ -1,11 +1,11 @@
 // The study's front as a table: read back, the fastest within a tolerance picked, its
 // method spelled onto the parameters; a damaged table is an error naming file and line.
-#include "io/TradeoffTable.h"
-#include "support/TempDir.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+
+#include "io/TradeoffTable.h"
+#include "support/TempDir.h"
 
 using namespace figment;
 using figment::test::TempDir;

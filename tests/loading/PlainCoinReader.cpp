@@ -11,8 +11,6 @@
 // are of the default dress's blue; 1 when it did not read (no library on the path),
 // 2 when it read but drew too little, 3 when FIGMENT was there before reading (the
 // program would prove nothing).
-#include "headless/OsmesaForCoin.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -20,19 +18,20 @@
 #include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <dlfcn.h>
 
 #include <cstdio>
 #include <cstdlib>
+
+#include "headless/OsmesaForCoin.h"
 
 namespace {
 
 // FIGMENT classes whose initClass() the scenes' loading must have brought in. Mangled
 // by hand: the program must not see FIGMENT's headers.
 constexpr const char* kInitClassSymbols[] = {
-    "_ZN8MeshFile9initClassEv",      "_ZN11ClothEngine9initClassEv", "_ZN13ClothingLayer9initClassEv",
-    "_ZN9Mannequin9initClassEv",     "_ZN16StencilSeparator9initClassEv",
+    "_ZN8MeshFile9initClassEv",  "_ZN11ClothEngine9initClassEv",      "_ZN13ClothingLayer9initClassEv",
+    "_ZN9Mannequin9initClassEv", "_ZN16StencilSeparator9initClassEv",
 };
 constexpr const char* kTypeNames[] = {"MeshFile", "ClothEngine", "ClothingLayer", "Mannequin", "StencilSeparator"};
 

@@ -9,19 +9,18 @@
 // included, without Coin's static_cast<SoFullPath*> idiom. That cast was undefined behaviour
 // (a search's paths are SoPaths), and the sanitizer build stopped on it in findClothEngines,
 // the stencil rule and the viewer's staging.
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoSwitch.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "support/SceneTestSupport.h"
 
 namespace {
 
@@ -29,12 +28,15 @@ TEST(FindClothEngines, FindsEachEngineOnceInSceneOrder) {
   figment::test::initCoin();
   // A shares a group used 2^16 times; B lies under a Switch that is off; C feeds B's rest
   // points only.
-  std::string text = "#Inventor V2.1 ascii\nSeparator {\n  DEF L0 Group { Coordinate3 { point = DEF A ClothEngine { } . positions } }\n";
+  std::string text =
+      "#Inventor V2.1 ascii\nSeparator {\n  DEF L0 Group { Coordinate3 { point = DEF A ClothEngine { } . positions } "
+      "}\n";
   for (int i = 1; i <= 16; ++i)
     text += "  DEF L" + std::to_string(i) + " Group { USE L" + std::to_string(i - 1) + " USE L" +
             std::to_string(i - 1) + " }\n";
-  text += "  Switch { whichChild -1  Coordinate3 { point = DEF B ClothEngine { restPoints = DEF C ClothEngine { } "
-          ". positions } . positions } }\n}\n";
+  text +=
+      "  Switch { whichChild -1  Coordinate3 { point = DEF B ClothEngine { restPoints = DEF C ClothEngine { } "
+      ". positions } . positions } }\n}\n";
   const figment::test::SceneRoot root = figment::test::readString(text);
   ASSERT_TRUE(root);
   const std::vector<ClothEngine*> engines = figment::findClothEngines(root.get());
@@ -45,7 +47,6 @@ TEST(FindClothEngines, FindsEachEngineOnceInSceneOrder) {
 }
 
 }  // namespace
-
 
 namespace {
 

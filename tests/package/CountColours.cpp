@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   const int pixels = size[0] * size[1];
   for (int i = 0; i < pixels; ++i) {
     const int r = data[i * bytesPerPixel], g = data[i * bytesPerPixel + 1], b = data[i * bytesPerPixel + 2];
-    red += r > g + 40 && r > b + 40;    // lit or in shade
+    red += r > g + 40 && r > b + 40;  // lit or in shade
     green += g > r + 30 && g > b + 20;
   }
   std::printf("red %d green %d of %d\n", red, green, pixels);

@@ -1,20 +1,6 @@
 // The default scene end to end: scenes/dress.iv is read, the dress is draped on the
 // default body by the simulation and comes to rest outside the body, held up at the
 // shoulders, and the front view shows both dress and skin.
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/body/MeshFile.h"
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/body/Mannequin.h"
-#include "sim/body/Skeleton.h"
-#include "sim/collision/VolumeSetCollider.h"
-#include "sim/collision/MeshCollider.h"
-#include "support/Pixels.h"
-#include "viewer/OffscreenContext.h"
-#include "guard/SceneFile.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneStaging.h"
-
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoEngineOutput.h>
 #include <Inventor/fields/SoMFVec3f.h>
@@ -23,16 +9,29 @@
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoTransform.h>
-#include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <limits>
+
+#include "guard/SceneFile.h"
+#include "nodes/SceneSearch.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
+#include "sim/body/Skeleton.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/collision/VolumeSetCollider.h"
+#include "support/Pixels.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -245,8 +244,10 @@ TEST_F(DefaultScene, FrontViewShowsDressAndSkin) {
   const int pixels = 400 * 300;
   for (int i = 0; i < pixels; ++i) {
     const int r = rgb[3 * i], g = rgb[3 * i + 1], b = rgb[3 * i + 2];
-    if (b > r + 30 && b > g + 15) ++dress;       // the blue dress, lit or in shade
-    else if (r > b + 25 && r >= g) ++skin;       // the orange-brown skin
+    if (b > r + 30 && b > g + 15)
+      ++dress;  // the blue dress, lit or in shade
+    else if (r > b + 25 && r >= g)
+      ++skin;  // the orange-brown skin
   }
   // The dress covers the torso and thighs; skin shows at the head, arms and legs.
   EXPECT_GT(dress, pixels / 50) << "dress pixels " << dress;
@@ -283,7 +284,6 @@ TEST_F(DefaultScene, NoSkinInsideTheDressAndArmsInFrontKeepTheirPixels) {
     }
   }
 }
-
 
 namespace {
 // The worst |strain| of the engine's draped edges against its rest shape.

@@ -1,24 +1,23 @@
 // scenes/posed.iv without draping it: the mannequin posed and sized through its fields,
 // its skin and its collision volumes moved by the same transformations.
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/body/Mannequin.h"
-#include "nodes/body/MeshFile.h"
-#include "sim/collision/Collider.h"
-#include "sim/body/Skeleton.h"
-#include "sim/body/Skinning.h"
-#include "sim/core/TriangleMesh.h"
-#include "sim/collision/VolumeSetCollider.h"
-#include "viewer/OffscreenContext.h"
-#include "guard/SceneFile.h"
-
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+
+#include "guard/SceneFile.h"
+#include "nodes/SceneSearch.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "sim/body/Skeleton.h"
+#include "sim/body/Skinning.h"
+#include "sim/collision/Collider.h"
+#include "sim/collision/VolumeSetCollider.h"
+#include "sim/core/TriangleMesh.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::viewer;
 

@@ -236,19 +236,20 @@ TEST_F(SceneExportTest, GarmentsAreInTheWorldFrameFacingTheirFront) {
 // and a Cube are not, and come only with the body (the Cube's 6 faces: 24 corners, shared
 // only where position and normal agree). The drape's edges drawn as lines are neither.
 TEST_F(SceneExportTest, AnyFaceSetADrapeFeedsIsAGarmentTheRestComesWithTheBody) {
-  const std::string scene = dir_.file("cloth.iv",
-                                      "#Inventor V2.1 ascii\nSeparator {\n"
-                                      "  Separator {\n"
-                                      "    Coordinate3 { point = DEF Drape ClothEngine {\n"
-                                      "      restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-                                      "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 } . positions }\n"
-                                      "    DEF Cloth IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n"
-      "    Separator { DrawStyle { style LINES }  DEF Edges IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] } }\n"
-                                      "  }\n"
-                                      "  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
-                                      "  DEF Fixed IndexedFaceSet { coordIndex [ 0 1 2 -1 ] }\n"
-                                      "  DEF Box Cube { }\n"
-                                      "}\n");
+  const std::string scene =
+      dir_.file("cloth.iv",
+                "#Inventor V2.1 ascii\nSeparator {\n"
+                "  Separator {\n"
+                "    Coordinate3 { point = DEF Drape ClothEngine {\n"
+                "      restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+                "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 } . positions }\n"
+                "    DEF Cloth IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n"
+                "    Separator { DrawStyle { style LINES }  DEF Edges IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] } }\n"
+                "  }\n"
+                "  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                "  DEF Fixed IndexedFaceSet { coordIndex [ 0 1 2 -1 ] }\n"
+                "  DEF Box Cube { }\n"
+                "}\n");
   SceneSession session;
   ASSERT_TRUE(session.load(scene)) << session.loadError();
   session.drape();

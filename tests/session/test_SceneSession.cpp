@@ -4,18 +4,10 @@
 // is one line of verdicts(). Two
 // sessions in one process share nothing: each drapes with its own cache and observers.
 
-#include "io/DrapeCache.h"
-#include "nodes/cloth/DrapeKey.h"
-#include "session/SceneSession.h"
-#include "sim/cloth/ClothSolver.h"
-#include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
-
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -24,6 +16,13 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include "io/DrapeCache.h"
+#include "nodes/cloth/DrapeKey.h"
+#include "session/SceneSession.h"
+#include "sim/cloth/ClothSolver.h"
+#include "support/TempDir.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -35,7 +34,9 @@ std::string cloth(const std::string& name, const std::string& fields) {
   return "  Separator {\n    Coordinate3 { point = DEF " + name +
          " ClothEngine {\n"
          "      restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-         "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 " + fields + "\n"
+         "      coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01 " +
+         fields +
+         "\n"
          "    } . positions }\n"
          "    IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n  }\n";
 }
@@ -91,10 +92,10 @@ TEST_F(SceneSessionTest, DrapesEveryEngineOnceInSceneOrderWithItsOwnResult) {
 // squares stopped mid-fall by maxTime), none for a clean one (weightless, at rest once
 // its window passed) nor for one that failed (its error says what happened).
 TEST_F(SceneSessionTest, SaysWhichDrapesAreNotCleanInOneLineEach) {
-  const std::string scene = dir_.file(
-      "four.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("Falling", "timeStep 0.001") +
-                     cloth("Resting", "timeStep 0.001 maxTime 1 gravity 0 0 0 restWindow 0.005") +
-                     cloth("Broken", "thickness -0.001") + cloth("AlsoFalling", "timeStep 0.002") + "}\n");
+  const std::string scene =
+      dir_.file("four.iv", "#Inventor V2.1 ascii\nSeparator {\n" + cloth("Falling", "timeStep 0.001") +
+                               cloth("Resting", "timeStep 0.001 maxTime 1 gravity 0 0 0 restWindow 0.005") +
+                               cloth("Broken", "thickness -0.001") + cloth("AlsoFalling", "timeStep 0.002") + "}\n");
   SceneSession session;
   ASSERT_TRUE(session.load(scene)) << session.loadError();
   const std::vector<EngineDrape>& drapes = session.drape();
@@ -104,7 +105,8 @@ TEST_F(SceneSessionTest, SaysWhichDrapesAreNotCleanInOneLineEach) {
   EXPECT_EQ(drapes[1].method.maxTime, 1.0);  // the method that ran, its bound included
   const std::vector<std::string> lines = session.verdicts();
   ASSERT_EQ(lines.size(), 2u);
-  EXPECT_EQ(lines[0].rfind("ClothEngine 'Falling': not at rest after maxTime 0.01 s (max speed 0.09", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[0].rfind("ClothEngine 'Falling': not at rest after maxTime 0.01 s (max speed 0.09", 0), 0u)
+      << lines[0];
   EXPECT_EQ(lines[1].rfind("ClothEngine 'AlsoFalling': not at rest after maxTime 0.01 s", 0), 0u) << lines[1];
   EXPECT_NEAR(drapes[0].run.maxStretch, 1.0, 1e-6);  // a falling square keeps its shape
 }
@@ -146,9 +148,10 @@ TEST_F(SceneSessionTest, ChecksTheDrapedShapesAndStagesNothingPastTheirData) {
 }
 
 TEST_F(SceneSessionTest, StagingAnUndrapedSceneChecksItsShapesFirst) {
-  const std::string bad = dir_.file("faces.iv",
-                                    "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
-                                    "  IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n");
+  const std::string bad =
+      dir_.file("faces.iv",
+                "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                "  IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n");
   SceneSession session;
   ASSERT_TRUE(session.load(bad)) << session.loadError();
   EXPECT_EQ(session.stage({64, 48}, std::nullopt), nullptr);
@@ -161,8 +164,8 @@ namespace {
 // A box 0.4 m wide whose top is at `top` m, as an OBJ file (faces wound outwards).
 std::string boxObj(double top) {
   const std::string lo = "0.1", hi = std::to_string(top);
-  return "v -0.2 " + lo + " -0.2\nv 0.2 " + lo + " -0.2\nv 0.2 " + lo + " 0.2\nv -0.2 " + lo + " 0.2\n" +
-         "v -0.2 " + hi + " -0.2\nv 0.2 " + hi + " -0.2\nv 0.2 " + hi + " 0.2\nv -0.2 " + hi + " 0.2\n" +
+  return "v -0.2 " + lo + " -0.2\nv 0.2 " + lo + " -0.2\nv 0.2 " + lo + " 0.2\nv -0.2 " + lo + " 0.2\n" + "v -0.2 " +
+         hi + " -0.2\nv 0.2 " + hi + " -0.2\nv 0.2 " + hi + " 0.2\nv -0.2 " + hi + " 0.2\n" +
          "f 5 8 7\nf 5 7 6\nf 1 2 3\nf 1 3 4\nf 4 3 7\nf 4 7 8\nf 1 5 6\nf 1 6 2\nf 2 6 7\nf 2 7 3\n"
          "f 1 4 8\nf 1 8 5\n";
 }
@@ -171,9 +174,12 @@ std::string boxObj(double top) {
 // at steps of 1 ms (200 steps).
 std::string clothOnBox(const std::string& obj, double width, double top) {
   const std::string h = std::to_string(width / 2), y = std::to_string(top + 0.1);
-  return "#Inventor V2.1 ascii\nSeparator {\n  DEF Body MeshFile { fileName \"" + obj + "\" }\n"
-         "  Coordinate3 { point = DEF Drape ClothEngine {\n    restPoints [ -" + h + " " + y + " -" + h + ", " + h +
-         " " + y + " -" + h + ", " + h + " " + y + " " + h + ", -" + h + " " + y + " " + h + ", 0 " + y + " 0 ]\n"
+  return "#Inventor V2.1 ascii\nSeparator {\n  DEF Body MeshFile { fileName \"" + obj +
+         "\" }\n"
+         "  Coordinate3 { point = DEF Drape ClothEngine {\n    restPoints [ -" +
+         h + " " + y + " -" + h + ", " + h + " " + y + " -" + h + ", " + h + " " + y + " " + h + ", -" + h + " " + y +
+         " " + h + ", 0 " + y +
+         " 0 ]\n"
          "    coordIndex [ 0 4 1 -1, 1 4 2 -1, 2 4 3 -1, 3 4 0 -1 ]  body USE Body  timeStep 0.001  maxTime 0.2\n"
          "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 4 1 -1, 1 4 2 -1, 2 4 3 -1, 3 4 0 -1 ] }\n}\n";
 }

@@ -1,19 +1,18 @@
 // The framing camera sees the whole scene from the asked direction, and staging adds
 // a light only where the scene has none.
 
-#include "viewer/OffscreenContext.h"
-#include "session/SceneStaging.h"
-
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "session/SceneStaging.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -47,8 +46,8 @@ TEST(SceneStaging, FramingCameraSeesTheWholeBoxFromEveryDirection) {
   initHeadless();
   const SbBox3f box(SbVec3f(-0.5f, 0.0f, -0.2f), SbVec3f(0.5f, 1.7f, 0.3f));  // a body-like box
   for (float aspect : {4.0f / 3.0f, 0.75f, 1.0f})
-    for (const ViewDirection view : {ViewDirection{0, 0}, ViewDirection{90, 0}, ViewDirection{215, 30},
-                                     ViewDirection{-20, -60}}) {
+    for (const ViewDirection view :
+         {ViewDirection{0, 0}, ViewDirection{90, 0}, ViewDirection{215, 30}, ViewDirection{-20, -60}}) {
       SCOPED_TRACE(testing::Message() << "aspect " << aspect << " view " << view.azimuth << "," << view.elevation);
       SoPerspectiveCamera* camera = framingCamera(box, view, aspect);
       camera->ref();
@@ -63,7 +62,10 @@ TEST(SceneStaging, CameraSitsInTheAskedDirection) {
   const struct {
     ViewDirection view;
     SbVec3f direction;
-  } cases[] = {{{0, 0}, {0, 0, 1}}, {{90, 0}, {1, 0, 0}}, {{180, 0}, {0, 0, -1}}, {{270, 0}, {-1, 0, 0}},
+  } cases[] = {{{0, 0}, {0, 0, 1}},
+               {{90, 0}, {1, 0, 0}},
+               {{180, 0}, {0, 0, -1}},
+               {{270, 0}, {-1, 0, 0}},
                {{0, 45}, {0, float(M_SQRT1_2), float(M_SQRT1_2)}}};
   for (const auto& c : cases) {
     SoPerspectiveCamera* camera = framingCamera(box, c.view, 1.0f);

@@ -2,10 +2,10 @@
 // Bodies built from boxes for the tests of body slicing and garment generation: shapes whose
 // sections, landmarks and distances are known exactly.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <algorithm>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::mannequin {
 
@@ -22,8 +22,7 @@ inline void appendBox(TriangleMesh& mesh, const Box& box) {
   const Vec3 d = box.max - box.min;
   const Vec3 x(d.x(), 0, 0), y(0, d.y(), 0), z(0, 0, d.z());
   const Vec3& o = box.min;
-  const Vec3 faces[6][3] = {{o, z, y},     {o + x, y, z}, {o, x, z},
-                            {o + y, z, x}, {o, y, x},     {o + z, x, y}};
+  const Vec3 faces[6][3] = {{o, z, y}, {o + x, y, z}, {o, x, z}, {o + y, z, x}, {o, y, x}, {o + z, x, y}};
   for (const auto& [origin, u, v] : faces) {
     const int first = static_cast<int>(mesh.vertices.size());
     for (const Vec3& corner : {origin, Vec3(origin + u), Vec3(origin + u + v), Vec3(origin + v)})

@@ -2,10 +2,10 @@
 // The default body (human.zae from assimp-testmodels) without its eyes, read once per test
 // program, for the tests of garments generated around it.
 
-#include "support/IoTestSupport.h"
-#include "io/MeshImport.h"
-
 #include <optional>
+
+#include "io/MeshImport.h"
+#include "support/IoTestSupport.h"
 
 namespace figment::test {
 

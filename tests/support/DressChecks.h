@@ -2,15 +2,17 @@
 // Checks on a generated strap dress (sim/garment/StrapDress.h), shared by the tests on the box figure
 // and on the default body.
 
-#include "support/MeshChecks.h"
-#include "sim/garment/StrapDress.h"
-
 #include <set>
 #include <vector>
 
+#include "sim/garment/StrapDress.h"
+#include "support/MeshChecks.h"
+
 namespace figment::checks {
 
-inline bool onStrap(const StrapDress& dress, int triangle) { return triangle >= dress.tubeTriangles; }
+inline bool onStrap(const StrapDress& dress, int triangle) {
+  return triangle >= dress.tubeTriangles;
+}
 
 // The tube's top edge: the vertices on edges that one tube triangle uses, above the hem.
 inline std::vector<Vec3> tubeTopEdge(const StrapDress& dress) {

@@ -2,12 +2,11 @@
 // Central finite differences, the reference that analytic gradients and forces are
 // checked against.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <Eigen/Core>
-
 #include <functional>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::meshes {
 

@@ -1,17 +1,16 @@
 #pragma once
 // Helpers for the io tests: a temporary folder, a scoped environment variable, the default body.
 
-#include "io/MeshImport.h"
-#include "support/TempDir.h"
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
 
-namespace figment::test {
+#include "io/MeshImport.h"
+#include "support/TempDir.h"
 
+namespace figment::test {
 
 // Sets (or unsets, with nullopt) an environment variable for the scope, then restores it.
 class ScopedEnvironment {

@@ -1,14 +1,14 @@
 #pragma once
 // Topology checks on triangle meshes, shared by the tests of generated and imported meshes.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
 #include <utility>
 #include <vector>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::checks {
 

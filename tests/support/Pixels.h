@@ -38,7 +38,6 @@ struct Image {
   }
 };
 
-inline constexpr Rgb kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kYellow{255, 255, 0},
-    kMagenta{255, 0, 255};
+inline constexpr Rgb kRed{255, 0, 0}, kGreen{0, 255, 0}, kBlue{0, 0, 255}, kYellow{255, 255, 0}, kMagenta{255, 0, 255};
 
 }  // namespace figment::test

@@ -2,12 +2,12 @@
 // A PNG file's decoded pixels, for tests that compare pictures by what they show, never
 // by file bytes (metadata would make equal pictures differ, or differing ones agree).
 
-#include "support/Pixels.h"
-
 #include <Inventor/SbImage.h>
 #include <Inventor/SoDB.h>
 
 #include <string>
+
+#include "support/Pixels.h"
 
 namespace figment::test {
 

@@ -2,9 +2,6 @@
 // Helpers shared by the node tests: Coin set-up, reading and writing .iv text, and
 // small mesh files in a temporary folder.
 
-#include "nodes/Init.h"
-#include "support/TempDir.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/SoOutput.h>
@@ -22,10 +19,15 @@
 #include <string>
 #include <vector>
 
+#include "nodes/Init.h"
+#include "support/TempDir.h"
+
 namespace figment::test {
 
 // Coin and the node kit, once per test program.
-inline void initCoin() { figment::init(); }
+inline void initCoin() {
+  figment::init();
+}
 
 // A root that unrefs itself.
 struct Unref {
@@ -105,8 +107,10 @@ class ScopedModelPath {
     ::setenv("FIGMENT_MODEL_PATH", folders.c_str(), 1);
   }
   ~ScopedModelPath() {
-    if (previous_) ::setenv("FIGMENT_MODEL_PATH", previous_->c_str(), 1);
-    else ::unsetenv("FIGMENT_MODEL_PATH");
+    if (previous_)
+      ::setenv("FIGMENT_MODEL_PATH", previous_->c_str(), 1);
+    else
+      ::unsetenv("FIGMENT_MODEL_PATH");
   }
   ScopedModelPath(const ScopedModelPath&) = delete;
   ScopedModelPath& operator=(const ScopedModelPath&) = delete;
@@ -125,7 +129,6 @@ T* find(SoNode* root, const char* name = nullptr) {
   search.apply(root);
   return search.getPath() ? static_cast<T*>(search.getPath()->getTail()) : nullptr;
 }
-
 
 // A closed unit cube, [0,1]^3, 8 vertices and 12 triangles, faces counter-clockwise
 // from outside; in centimetres when `scale` is 100.

@@ -3,12 +3,12 @@
 // (kept for the object's life, so the body loads when the engine drapes), and its
 // ClothEngine.
 
+#include <string>
+#include <vector>
+
 #include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "support/SceneTestSupport.h"
-
-#include <string>
-#include <vector>
 
 namespace figment::test {
 

@@ -1,9 +1,9 @@
 #pragma once
 // Small literal meshes for the sim tests, built in code so each test says what holds.
 
-#include "sim/core/TriangleMesh.h"
-
 #include <cmath>
+
+#include "sim/core/TriangleMesh.h"
 
 namespace figment::meshes {
 
@@ -13,8 +13,7 @@ inline TriangleMesh grid(int nu, int nv, double width, double height, const Vec3
                          const Vec3& right = Vec3::UnitX(), const Vec3& down = -Vec3::UnitY()) {
   TriangleMesh mesh;
   for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i <= nu; ++i)
-      mesh.vertices.push_back(origin + right * (width * i / nu) + down * (height * j / nv));
+    for (int i = 0; i <= nu; ++i) mesh.vertices.push_back(origin + right * (width * i / nu) + down * (height * j / nv));
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
       const int a = i + j * (nu + 1), b = a + 1, c = a + nu + 1, d = c + 1;

@@ -1,10 +1,10 @@
 // figment-view's output names for several images.
 
-#include "viewer/ImagePaths.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
+
+#include "viewer/ImagePaths.h"
 
 using figment::viewer::imagePaths;
 using Paths = std::vector<std::string>;

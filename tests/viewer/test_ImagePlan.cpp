@@ -1,8 +1,8 @@
 // figment-view's image options turned into views, frame times and paths.
 
-#include "viewer/ImagePlan.h"
-
 #include <gtest/gtest.h>
+
+#include "viewer/ImagePlan.h"
 
 using namespace figment::viewer;
 

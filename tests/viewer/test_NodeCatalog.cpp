@@ -1,17 +1,16 @@
 // --list-nodes' catalogue: FIGMENT's types and their fields from Coin's field data.
 
-#include "nodes/Init.h"
-#include "viewer/NodeCatalog.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/engines/SoEngine.h>
 #include <Inventor/nodes/SoNode.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <string>
 #include <vector>
+
+#include "nodes/Init.h"
+#include "viewer/NodeCatalog.h"
 
 using namespace figment::viewer;
 
@@ -35,9 +34,10 @@ TEST(NodeCatalog, ASecondRegistrationOfTheKitAddsNothing) {
   const bool knownBefore = SoType::fromName("ClothEngine") != SoType::badType();
   std::vector<std::string> names;
   for (SoType type : typesAddedBy([] { figment::init(); })) names.emplace_back(type.getName().getString());
-  if (!knownBefore)
+  if (!knownBefore) {
     for (const char* kit : {"ClothEngine", "ClothingLayer", "DepthSortedGroup", "Mannequin", "StencilSeparator"})
       EXPECT_NE(std::find(names.begin(), names.end(), kit), names.end()) << kit;
+  }
   EXPECT_TRUE(typesAddedBy([] { figment::init(); }).empty());
 }
 

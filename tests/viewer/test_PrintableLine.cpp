@@ -1,8 +1,8 @@
 // Messages built from bad input stay one line: a file name in a mutated scene held the
 // text of the following lines (found by mutating scenes/examples, 3 in 1,400 inputs).
-#include "viewer/PrintableLine.h"
-
 #include <gtest/gtest.h>
+
+#include "viewer/PrintableLine.h"
 
 using figment::viewer::printableLine;
 

@@ -1,11 +1,11 @@
 // figment-view's progress bar: its line, and silence when the stream is no terminal.
 
-#include "viewer/ProgressBar.h"
-
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <string>
+
+#include "viewer/ProgressBar.h"
 
 using namespace figment::viewer;
 

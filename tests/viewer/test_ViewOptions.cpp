@@ -1,8 +1,8 @@
 // figment-view's --size and --view values.
 
-#include "viewer/ViewOptions.h"
-
 #include <gtest/gtest.h>
+
+#include "viewer/ViewOptions.h"
 
 using namespace figment::viewer;
 
@@ -11,8 +11,8 @@ TEST(ViewOptions, ParsesSizes) {
   EXPECT_EQ(parseImageSize("800x600")->width, 800);
   EXPECT_EQ(parseImageSize("800x600")->height, 600);
   EXPECT_EQ(parseImageSize("1X2")->height, 2);
-  for (const char* bad : {"", "800", "800x", "x600", "0x600", "800x0", "-800x600", "800x600x3", "abc", "99999x10",
-                          "800 x 600", "1.5x2"})
+  for (const char* bad :
+       {"", "800", "800x", "x600", "0x600", "800x0", "-800x600", "800x600x3", "abc", "99999x10", "800 x 600", "1.5x2"})
     EXPECT_FALSE(parseImageSize(bad)) << bad;
 }
 
@@ -79,8 +79,7 @@ TEST(ViewOptions, ParsesFrameTimes) {
 }
 
 TEST(ViewOptions, RejectsBadFrameTimes) {
-  for (const char* bad : {"", "0:1", "0:1:", ":1:3", "0::3", "0:1:3:4", "1:0:3", "-1:1:3", "0:1:0", "0:1:-2",
-                          "0:1:1.5", "0:1:10001", "a:1:3", "0:inf:3", "0:nan:3", "0:1e3:3", "0:2000000:3",
-                          "0;1;3", "0:1:3 "})
+  for (const char* bad : {"", "0:1", "0:1:", ":1:3", "0::3", "0:1:3:4", "1:0:3", "-1:1:3", "0:1:0", "0:1:-2", "0:1:1.5",
+                          "0:1:10001", "a:1:3", "0:inf:3", "0:nan:3", "0:1e3:3", "0:2000000:3", "0;1;3", "0:1:3 "})
     EXPECT_FALSE(parseFrameTimes(bad)) << bad;
 }

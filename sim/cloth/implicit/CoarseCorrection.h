@@ -13,12 +13,11 @@
 //
 // A_c is built and factored (sparse LDL^T, Eigen) once per solve; its pattern once.
 
+#include <Eigen/SparseCholesky>
+#include <vector>
+
 #include "sim/cloth/BlockSparseMatrix.h"
 #include "sim/cloth/implicit/NodeFilter.h"
-
-#include <Eigen/SparseCholesky>
-
-#include <vector>
 
 namespace figment {
 
@@ -38,10 +37,10 @@ class CoarseCorrection {
   int aggregateOf(int node) const { return aggregate_[node]; }
 
  private:
-  std::vector<int> aggregate_;              // per node
-  std::vector<std::vector<int>> members_;   // per aggregate, its nodes
-  Eigen::SparseMatrix<double> coarse_;      // 3 aggregates() square
-  std::vector<int> coarseBlockOf_;          // per fine block: its coarse (row, column) pair's index
+  std::vector<int> aggregate_;             // per node
+  std::vector<std::vector<int>> members_;  // per aggregate, its nodes
+  Eigen::SparseMatrix<double> coarse_;     // 3 aggregates() square
+  std::vector<int> coarseBlockOf_;         // per fine block: its coarse (row, column) pair's index
   std::vector<std::pair<int, int>> coarseBlocks_;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor_;
   bool analysed_ = false;

@@ -1,9 +1,9 @@
 #include "sim/cloth/implicit/ContactConstraints.h"
 
-#include "sim/cloth/ContactResponse.h"
-
 #include <algorithm>
 #include <limits>
+
+#include "sim/cloth/ContactResponse.h"
 
 namespace figment {
 
@@ -22,7 +22,9 @@ constexpr double kFollowBand = 2e-4;  // m
 // Nodes per parallel task: far nodes skip the body's query, so the work per node varies.
 constexpr int kNodesPerTask = 64;
 
-Vec3 tangential(const Vec3& v, const Vec3& normal) { return v - v.dot(normal) * normal; }
+Vec3 tangential(const Vec3& v, const Vec3& normal) {
+  return v - v.dot(normal) * normal;
+}
 }  // namespace
 
 ContactConstraints::ContactConstraints(std::shared_ptr<const Collider> body, const ClothParameters& parameters,
@@ -57,8 +59,8 @@ void ContactConstraints::slide(int i, NodeFilter& filter) {
   filter.prescribed[i] = normalChange_[i];
 }
 
-void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt,
-                                   bool firstStep, NodeFilter& filter) {
+void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt, bool firstStep,
+                                   NodeFilter& filter) {
   if (!body_) return;
   const double reach = clearance_ + band_;
   const double search = firstStep ? std::numeric_limits<double>::infinity() : reach + kSearchMargin;
@@ -99,8 +101,8 @@ void ContactConstraints::constrain(const std::vector<Vec3>& x, const std::vector
   }
 }
 
-double ContactConstraints::updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart,
-                                      double mass, NodeFilter& filter) {
+double ContactConstraints::updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart, double mass,
+                                      NodeFilter& filter) {
   const Vec3& normal = filter.normal[i];
   const double jn = impulse.dot(normal);
   normalImpulse_[i] = jn;
@@ -133,8 +135,7 @@ double ContactConstraints::updateNode(int i, const Vec3& impulse, const Vec3& vE
 }
 
 double ContactConstraints::update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v,
-                                  const std::vector<Vec3>& y, const std::vector<double>& masses,
-                                  NodeFilter& filter) {
+                                  const std::vector<Vec3>& y, const std::vector<double>& masses, NodeFilter& filter) {
   if (!body_) return 0.0;
   double changed = 0.0;
   const int n = static_cast<int>(v.size());

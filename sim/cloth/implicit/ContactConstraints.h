@@ -29,12 +29,12 @@
 // Far nodes skip the body's queries, as in the explicit path: each keeps a lower bound
 // of its distance, lowered by its motion.
 
+#include <memory>
+#include <vector>
+
 #include "sim/cloth/ClothParameters.h"
 #include "sim/cloth/implicit/FilteredPcg.h"
 #include "sim/collision/Collider.h"
-
-#include <memory>
-#include <vector>
 
 namespace figment {
 
@@ -44,8 +44,7 @@ class ContactConstraints {
 
   // Marks the held nodes Sliding or (sticking) Fixed in `filter` (Fixed nodes are left
   // as they are) and sets their friction impulses.
-  void constrain(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt, bool firstStep,
-                 NodeFilter& filter);
+  void constrain(const std::vector<Vec3>& x, const std::vector<Vec3>& v, double dt, bool firstStep, NodeFilter& filter);
   // N s per node: the friction impulses to add to the solve's right-hand side.
   const std::vector<Vec3>& friction() const { return friction_; }
   // After a solve: `impulse` = A y - b (b with the friction), `v` the velocities at the
@@ -54,7 +53,7 @@ class ContactConstraints {
   // their first friction) of how much their tangential impulse changed, N s, as far
   // as the node alone tells (the step may solve again when it is large).
   double update(const std::vector<Vec3>& impulse, const std::vector<Vec3>& v, const std::vector<Vec3>& y,
-              const std::vector<double>& masses, NodeFilter& filter);
+                const std::vector<double>& masses, NodeFilter& filter);
   void finish(const NodeFilter& filter, const std::vector<Vec3>& xStart, const std::vector<Vec3>& vStart, double dt,
               bool firstStep, std::vector<Vec3>& x, std::vector<Vec3>& v);
 
@@ -68,8 +67,7 @@ class ContactConstraints {
   void followSurface(Vec3& x, Vec3& v, double& distanceBound) const;
   void stick(int i, const Vec3& v, NodeFilter& filter);
   void slide(int i, NodeFilter& filter);
-  double updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart, double mass,
-                    NodeFilter& filter);
+  double updateNode(int i, const Vec3& impulse, const Vec3& vEnd, const Vec3& vStart, double mass, NodeFilter& filter);
 
   std::shared_ptr<const Collider> body_;
   double clearance_, mu_, band_;

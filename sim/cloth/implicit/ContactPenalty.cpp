@@ -1,19 +1,21 @@
 #include "sim/cloth/implicit/ContactPenalty.h"
 
-#include "sim/cloth/ContactResponse.h"
-
 #include <algorithm>
 #include <limits>
+
+#include "sim/cloth/ContactResponse.h"
 
 namespace figment {
 
 namespace {
-constexpr double kSearchMargin = 0.02;  // m a query looks beyond what it must, so later steps may skip
+constexpr double kSearchMargin = 0.02;   // m a query looks beyond what it must, so later steps may skip
 constexpr double kReleaseMargin = 0.05;  // a sticking node slides beyond (1 + this) mu f_n
 constexpr int kNodesPerTask = 64;
 constexpr double kForceChange = 0.1;  // a node's friction is solved again when its normal force moves more
 
-Vec3 tangential(const Vec3& v, const Vec3& normal) { return v - v.dot(normal) * normal; }
+Vec3 tangential(const Vec3& v, const Vec3& normal) {
+  return v - v.dot(normal) * normal;
+}
 }  // namespace
 
 ContactPenalty::ContactPenalty(std::shared_ptr<const Collider> body, const ClothParameters& parameters, size_t nodes)

@@ -24,12 +24,12 @@
 //    to half the clearance; the spring does the rest.
 // Far nodes skip the body's queries: each keeps a lower bound of its distance.
 
-#include "sim/cloth/ClothParameters.h"
-#include "sim/cloth/BlockSparseMatrix.h"
-#include "sim/collision/Collider.h"
-
 #include <memory>
 #include <vector>
+
+#include "sim/cloth/BlockSparseMatrix.h"
+#include "sim/cloth/ClothParameters.h"
+#include "sim/collision/Collider.h"
 
 namespace figment {
 
@@ -51,8 +51,8 @@ class ContactPenalty {
 
  private:
   struct Touch {
-    int node = 0, block = 0;  // the node and its diagonal block in the matrix
-    Vec3 normal, sliding;     // sliding: unit direction of its motion while it slides
+    int node = 0, block = 0;                                 // the node and its diagonal block in the matrix
+    Vec3 normal, sliding;                                    // sliding: unit direction of its motion while it slides
     double stiffness = 0.0, depth = 0.0, normalForce = 0.0;  // N/m, m (at the start), N
     bool slides = false;
     Block3 assembled;  // the diagonal block and right-hand side before the contact's terms

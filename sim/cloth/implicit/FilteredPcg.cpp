@@ -1,15 +1,17 @@
 #include "sim/cloth/implicit/FilteredPcg.h"
 
-#include "sim/cloth/ParallelLoops.h"
-
 #include <algorithm>
+
+#include "sim/cloth/ParallelLoops.h"
 
 namespace figment {
 
 namespace {
 constexpr int kChunk = 64;  // nodes per partial sum of a dot product
 
-int chunkEnd(int chunk, int n) { return std::min(n, (chunk + 1) * kChunk); }
+int chunkEnd(int chunk, int n) {
+  return std::min(n, (chunk + 1) * kChunk);
+}
 
 // The partial sums added in chunk order: every thread gets the same total, whatever
 // the thread count.
@@ -26,8 +28,7 @@ void NodeFilter::reset(size_t nodes) {
   prescribed.assign(nodes, Vec3::Zero());
 }
 
-FilteredPcg::FilteredPcg(const BlockSparseMatrix& pattern)
-    : coarse_(std::make_unique<CoarseCorrection>(pattern)) {}
+FilteredPcg::FilteredPcg(const BlockSparseMatrix& pattern) : coarse_(std::make_unique<CoarseCorrection>(pattern)) {}
 
 FilteredPcg::~FilteredPcg() = default;
 FilteredPcg::FilteredPcg(FilteredPcg&&) noexcept = default;

@@ -17,10 +17,10 @@
 // products are summed over fixed chunks in a fixed order, so the result does not
 // depend on the thread count.
 
-#include "sim/cloth/implicit/CoarseCorrection.h"
-
 #include <memory>
 #include <vector>
+
+#include "sim/cloth/implicit/CoarseCorrection.h"
 
 namespace figment {
 
@@ -49,14 +49,14 @@ class FilteredPcg {
   // free part when `again`: a second solve of the same matrix after the filter changed
   // at a few nodes, y holding the last answer. Then the coarse matrix of the last solve
   // is kept too (any positive definite one keeps the preconditioner so).
-  PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                  const PcgStop& stop, std::vector<Vec3>& y, bool again = false);
+  PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter, const PcgStop& stop,
+                  std::vector<Vec3>& y, bool again = false);
 
  private:
   // The preconditioner, the starting point y, residual r and direction c, and the sums
   // the loop starts from.
-  void prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-               std::vector<Vec3>& y, bool again);
+  void prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter, std::vector<Vec3>& y,
+               bool again);
   // Node i of P^-1 r, after applyCoarse(r) (two levels: its coarse part).
   Vec3 precondition(const NodeFilter& filter, int i, const Vec3& r) const {
     const Vec3 jacobi = filter.apply(i, inverseDiagonal_[i] * filter.apply(i, r));

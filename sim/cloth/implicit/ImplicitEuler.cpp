@@ -102,8 +102,10 @@ void ImplicitEuler::advance(std::vector<Vec3>& x, std::vector<Vec3>& v, double t
   for (size_t i = 0; i < n; ++i) v[i] += change_[i];
   for (size_t i = 0; i < n; ++i)
     if (!pinned[i]) x[i] += dt * v[i];
-  if (penalties_) penalties_->finish(xStart_, dt, firstStep, x, v);
-  else contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
+  if (penalties_)
+    penalties_->finish(xStart_, dt, firstStep, x, v);
+  else
+    contacts_.finish(filter_, xStart_, vStart_, dt, firstStep, x, v);
   costs_.contactSeconds += lap(clock);
 }
 

@@ -25,17 +25,17 @@
 // size is kept and counted (costs().failedSteps). A step that does not fail is the step
 // as it was without control, bit for bit.
 
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "sim/cloth/ClothModel.h"
 #include "sim/cloth/DrapeVerdict.h"
 #include "sim/cloth/EdgeStretch.h"
 #include "sim/cloth/implicit/ContactConstraints.h"
 #include "sim/cloth/implicit/ContactPenalty.h"
 #include "sim/cloth/implicit/FilteredPcg.h"
 #include "sim/cloth/implicit/ImplicitStepCosts.h"
-#include "sim/cloth/ClothModel.h"
-
-#include <memory>
-#include <optional>
-#include <vector>
 
 namespace figment {
 

@@ -8,10 +8,14 @@ namespace figment {
 struct ImplicitStepCosts {
   // `this` less `earlier`: the costs of the steps in between.
   ImplicitStepCosts since(const ImplicitStepCosts& earlier) const {
-    return {steps - earlier.steps, solverIterations - earlier.solverIterations,
-            unconvergedSolves - earlier.unconvergedSolves, assemblySeconds - earlier.assemblySeconds,
-            solveSeconds - earlier.solveSeconds, contactSeconds - earlier.contactSeconds,
-            halvedSteps - earlier.halvedSteps, failedSteps - earlier.failedSteps};
+    return {steps - earlier.steps,
+            solverIterations - earlier.solverIterations,
+            unconvergedSolves - earlier.unconvergedSolves,
+            assemblySeconds - earlier.assemblySeconds,
+            solveSeconds - earlier.solveSeconds,
+            contactSeconds - earlier.contactSeconds,
+            halvedSteps - earlier.halvedSteps,
+            failedSteps - earlier.failedSteps};
   }
 
   ImplicitStepCosts& operator+=(const ImplicitStepCosts& more) {
@@ -22,8 +26,8 @@ struct ImplicitStepCosts {
   }
 
   long steps = 0;
-  long solverIterations = 0;   // PCG iterations
-  long unconvergedSolves = 0;  // solves stopped by maxIterations
+  long solverIterations = 0;     // PCG iterations
+  long unconvergedSolves = 0;    // solves stopped by maxIterations
   double assemblySeconds = 0.0;  // forces, K v and the matrix A
   double solveSeconds = 0.0;     // filtered PCG
   double contactSeconds = 0.0;   // constraints before, friction and push-out after

@@ -3,10 +3,7 @@
 // rendered without the draw-side check before, refuses a shape indexing past its data. The
 // drape study says whether each drape is clean.
 
-#include "support/TempDir.h"
-
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -14,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "support/TempDir.h"
 
 namespace {
 
@@ -84,13 +83,12 @@ TEST_F(FigmentBench, TheRenderStudyRefusesAShapeIndexingPastItsData) {
 // The drape study says each drape's verdict: in its CSV (clean, the most stretched edge,
 // the step control's halved and failed steps) and on its line.
 TEST_F(FigmentBench, TheDrapeStudySaysWhetherEachDrapeIsClean) {
-  const std::string scene = write(
-      "cloth.iv",
-      "#Inventor V2.1 ascii\nSeparator {\n"
-      "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-      "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-      "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime 0.01\n"
-      "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n");
+  const std::string scene = write("cloth.iv",
+                                  "#Inventor V2.1 ascii\nSeparator {\n"
+                                  "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+                                  "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+                                  "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime 0.01\n"
+                                  "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n");
   const std::string stdoutFile = (dir_.path() / "stdout.txt").string();
   const int raw = std::system((quote(FIGMENT_BENCH_EXECUTABLE) + " drape --scene " + quote(scene) +
                                " --repeat 1 --out " + out() + " > " + quote(stdoutFile) + " 2> /dev/null")

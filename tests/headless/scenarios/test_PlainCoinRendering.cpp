@@ -4,11 +4,6 @@
 // SoOffscreenRenderer, and gets exactly the pixels figment-view writes for the same
 // file. From that side the near arm is in front of the dress: the stencil rule, run
 // inside the render, keeps its pixels.
-#include "headless/OsmesaForCoin.h"
-#include "nodes/Init.h"
-#include "nodes/render/StencilRuleElement.h"
-#include "support/TempDir.h"
-
 #include <Inventor/SbImage.h>
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoDB.h>
@@ -20,7 +15,6 @@
 #include <Inventor/nodes/SoFile.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,6 +23,11 @@
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include "headless/OsmesaForCoin.h"
+#include "nodes/Init.h"
+#include "nodes/render/StencilRuleElement.h"
+#include "support/TempDir.h"
 
 namespace {
 

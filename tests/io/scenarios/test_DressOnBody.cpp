@@ -1,18 +1,18 @@
 // The default dress on the default body (human.zae): the garment figment-make-dress writes
 // to scenes/dress.obj. It must start outside the body everywhere, be one consistently wound
 // piece, and carry its straps over the shoulders.
-#include "support/DressChecks.h"
-#include "support/MeshChecks.h"
-#include "support/DefaultBody.h"
-#include "io/MeshImport.h"
-#include "sim/garment/StrapDress.h"
-#include "sim/collision/TriangleBvh.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <optional>
+
+#include "io/MeshImport.h"
+#include "sim/collision/TriangleBvh.h"
+#include "sim/garment/StrapDress.h"
+#include "support/DefaultBody.h"
+#include "support/DressChecks.h"
+#include "support/MeshChecks.h"
 
 using namespace figment;
 

@@ -7,19 +7,7 @@
 //    its skeleton's arms end at the hands and its lower torso is not a sliver;
 //  - the tools refuse a body in the wrong unit or frame at once, in one line naming the
 //    options that fix it, and a body that is no standing human, without writing anything.
-#include "io/MeshExport.h"
-#include "io/MakeHumanFiles.h"
-#include "io/MeshImport.h"
-#include "sim/body/BodyMeasurements.h"
-#include "sim/body/BodyParts.h"
-#include "sim/body/SkeletonEstimate.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
-#include "sim/garment/StrapDress.h"
-#include "support/DefaultBody.h"
-#include "support/TempDir.h"
-
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -28,6 +16,17 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include "io/MakeHumanFiles.h"
+#include "io/MeshExport.h"
+#include "io/MeshImport.h"
+#include "sim/body/BodyMeasurements.h"
+#include "sim/body/BodyParts.h"
+#include "sim/body/SkeletonEstimate.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/garment/StrapDress.h"
+#include "support/DefaultBody.h"
+#include "support/TempDir.h"
 
 using namespace figment;
 
@@ -73,7 +72,9 @@ const PartMesh& partNamed(const std::vector<PartMesh>& parts, const std::string&
   return *std::find_if(parts.begin(), parts.end(), [&](const PartMesh& p) { return p.name == name; });
 }
 
-std::string quote(const std::string& text) { return "'" + text + "'"; }
+std::string quote(const std::string& text) {
+  return "'" + text + "'";
+}
 
 struct ToolRun {
   int status = -1;
@@ -83,9 +84,9 @@ struct ToolRun {
 // Runs build/bin/<tool> with `arguments`, output in `dir`.
 ToolRun runTool(const std::string& tool, const std::string& arguments, const test::TempDir& dir) {
   const std::string err = (dir.path() / "stderr.txt").string();
-  const int raw = std::system((quote(std::string(FIGMENT_BINARY_DIR) + "/bin/" + tool) + " " + arguments + " 2> " +
-                               quote(err) + " > /dev/null")
-                                  .c_str());
+  const int raw = std::system(
+      (quote(std::string(FIGMENT_BINARY_DIR) + "/bin/" + tool) + " " + arguments + " 2> " + quote(err) + " > /dev/null")
+          .c_str());
   ToolRun run;
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   std::stringstream text;
@@ -94,9 +95,13 @@ ToolRun runTool(const std::string& tool, const std::string& arguments, const tes
   return run;
 }
 
-int lineCount(const std::string& text) { return static_cast<int>(std::count(text.begin(), text.end(), '\n')); }
+int lineCount(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
 
-bool humanBlendAvailable() { return !findModelFile("HUMAN.blend").empty(); }
+bool humanBlendAvailable() {
+  return !findModelFile("HUMAN.blend").empty();
+}
 
 // HUMAN.blend as scenes/second-body.iv reads it: z up, 0.16 m a unit (1.71 m tall).
 TriangleMesh humanBlendInMetres() {
@@ -201,7 +206,8 @@ TEST(HumanBlend, TheDressStrapsCrossTheShouldersNotTheNeck) {
   for (int t = 0; t < dress.tubeTriangles; ++t)
     for (int v : dress.mesh.triangles[t]) tubeVertices = std::max(tubeVertices, v + 1);
   double highest = -1e9;
-  for (size_t v = tubeVertices; v < dress.mesh.vertices.size(); ++v) highest = std::max(highest, dress.mesh.vertices[v].y());
+  for (size_t v = tubeVertices; v < dress.mesh.vertices.size(); ++v)
+    highest = std::max(highest, dress.mesh.vertices[v].y());
   // Over the shoulders (0.64 m under the straps' centre lines), clearance and the slope
   // towards the neck: 0.660 m. Up the neck's side it was 0.681 m, the neck's height less 1 mm.
   EXPECT_LT(highest, dress.neckHeight - 0.015);
@@ -269,8 +275,12 @@ TEST(BodyTools, MeasureTheDefaultBodyAsATapeWould) {
   const BodyMeasurements m = measureBody(*body);
   EXPECT_NEAR(m.stature, boundsOf(body->vertices).size().y(), 1e-12);
   const BodyLandmarks& l = m.landmarks;
-  for (const auto& [lower, upper] : {std::pair{l.crotch, l.hip}, {l.hip, l.waist}, {l.waist, l.underbust},
-                                     {l.underbust, l.bust}, {l.bust, l.armpit}, {l.armpit, l.neck}})
+  for (const auto& [lower, upper] : {std::pair{l.crotch, l.hip},
+                                     {l.hip, l.waist},
+                                     {l.waist, l.underbust},
+                                     {l.underbust, l.bust},
+                                     {l.bust, l.armpit},
+                                     {l.armpit, l.neck}})
     EXPECT_LT(lower, upper);
   // a woman's proportions: the waist narrower than bust and hips, the neck narrowest
   EXPECT_LT(m.waistGirth, m.bustGirth);
@@ -299,9 +309,11 @@ TEST(BodyTools, FigmentBodyRefusesAnUnreachableSetInOneLine) {
   if (findMakeHumanData().empty()) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
   const test::TempDir dir;
   const std::string output = (dir.path() / "body.obj").string();
-  const ToolRun run = runTool("figment-body", "--sex female --waist-girth 0.9 --hip-girth 0.5 -o " + quote(output), dir);
+  const ToolRun run =
+      runTool("figment-body", "--sex female --waist-girth 0.9 --hip-girth 0.5 -o " + quote(output), dir);
   EXPECT_EQ(run.status, 1);
   EXPECT_EQ(lineCount(run.stderrText), 1) << run.stderrText;
-  EXPECT_NE(run.stderrText.find("figment-body: hip_girth 0.500 m is out of reach"), std::string::npos) << run.stderrText;
+  EXPECT_NE(run.stderrText.find("figment-body: hip_girth 0.500 m is out of reach"), std::string::npos)
+      << run.stderrText;
   EXPECT_FALSE(std::filesystem::exists(output));
 }

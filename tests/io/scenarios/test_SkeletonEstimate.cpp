@@ -1,13 +1,13 @@
 // The humanoid skeleton estimated from the default body by cross sections, and the same
 // skeleton from that body turned z-up and in centimetres.
-#include "io/MeshImport.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
-#include "sim/body/SkeletonEstimate.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
+
+#include "io/MeshImport.h"
+#include "sim/body/SkeletonEstimate.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
 
 using namespace figment;
 
@@ -19,7 +19,9 @@ TriangleMesh defaultBody() {
   return importMesh(findModelFile("human.zae"), options).mesh;
 }
 
-bool humanAvailable() { return !findModelFile("human.zae").empty(); }
+bool humanAvailable() {
+  return !findModelFile("human.zae").empty();
+}
 
 }  // namespace
 

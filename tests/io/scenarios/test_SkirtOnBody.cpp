@@ -1,18 +1,18 @@
 // The flared skirt on the default body (human.zae): the garment figment-make-skirt writes to
 // scenes/skirt.obj. An open cone of about 1,600 triangles and 0.7 m^2, wound outward, its
 // waistband 5 mm outside the natural waist, every vertex outside the body.
-#include "support/DefaultBody.h"
-#include "support/MeshChecks.h"
-#include "io/MeshImport.h"
-#include "sim/collision/TriangleBvh.h"
-#include "sim/garment/FlaredSkirt.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <optional>
 #include <map>
+#include <optional>
+
+#include "io/MeshImport.h"
+#include "sim/collision/TriangleBvh.h"
+#include "sim/garment/FlaredSkirt.h"
+#include "support/DefaultBody.h"
+#include "support/MeshChecks.h"
 
 using namespace figment;
 

@@ -1,12 +1,6 @@
 // The T-shirt on the default body (human.zae): the garment figment-make-tshirt writes to
 // scenes/tshirt.obj. One manifold piece of the chosen number of triangles with four
 // openings (neck, hem, two sleeves), wound outward, every vertex outside the body.
-#include "support/DefaultBody.h"
-#include "support/MeshChecks.h"
-#include "io/MeshImport.h"
-#include "sim/collision/TriangleBvh.h"
-#include "sim/garment/TShirt.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +8,12 @@
 #include <map>
 #include <optional>
 #include <set>
+
+#include "io/MeshImport.h"
+#include "sim/collision/TriangleBvh.h"
+#include "sim/garment/TShirt.h"
+#include "support/DefaultBody.h"
+#include "support/MeshChecks.h"
 
 using namespace figment;
 
@@ -83,9 +83,8 @@ double meanHeight(const TriangleMesh& mesh, const std::vector<int>& loop) {
 TEST_F(TShirtOnBody, FourOpeningsNeckSleevesAndAStraightLevelHem) {
   std::vector<std::vector<int>> loops = openings(shirt().mesh);
   ASSERT_EQ(loops.size(), 4u);
-  std::sort(loops.begin(), loops.end(), [](const auto& a, const auto& b) {
-    return meanHeight(shirt().mesh, a) < meanHeight(shirt().mesh, b);
-  });
+  std::sort(loops.begin(), loops.end(),
+            [](const auto& a, const auto& b) { return meanHeight(shirt().mesh, a) < meanHeight(shirt().mesh, b); });
   // The hem, the lowest, is cut along the hem plane: every vertex of it lies on it.
   for (int v : loops[0]) EXPECT_NEAR(shirt().mesh.vertices[v].y(), shirt().hemHeight, 1e-9);
   EXPECT_GT(meanHeight(shirt().mesh, loops[3]), 1.35);  // the neck the highest

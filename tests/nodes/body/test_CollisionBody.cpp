@@ -1,17 +1,16 @@
 // A collision body is an interface: MeshFile and Mannequin provide it, other nodes do
 // not, and a ClothEngine asks only the interface.
 
+#include <Inventor/nodes/SoCube.h>
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
 #include "nodes/body/CollisionBody.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
 #include "support/SceneTestSupport.h"
 #include "support/TPoseSkeleton.h"
-
-#include <Inventor/nodes/SoCube.h>
-
-#include <gtest/gtest.h>
-
-#include <stdexcept>
 
 using namespace figment::test;
 

@@ -1,28 +1,27 @@
 // Mannequin and its volume nodes: .iv round trips, the posed collider, posing moving
 // volumes and skin together, drawing only when shown, and bad input named on read.
 
-#include "nodes/body/CapsuleVolume.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/body/Mannequin.h"
-#include "nodes/body/MannequinSkin.h"
-#include "nodes/body/RadialDepthVolume.h"
-#include "nodes/body/SkeletonJoints.h"
-#include "support/SceneTestSupport.h"
-#include "support/TPoseSkeleton.h"
-#include "sim/collision/Capsule.h"
-#include "sim/collision/Collider.h"
-#include "sim/collision/RadialDepth.h"
-#include "sim/body/Skeleton.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/nodes/SoCoordinate3.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
+
+#include "nodes/body/CapsuleVolume.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MannequinSkin.h"
+#include "nodes/body/RadialDepthVolume.h"
+#include "nodes/body/SkeletonJoints.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "sim/body/Skeleton.h"
+#include "sim/collision/Capsule.h"
+#include "sim/collision/Collider.h"
+#include "sim/collision/RadialDepth.h"
+#include "support/SceneTestSupport.h"
+#include "support/TPoseSkeleton.h"
 
 using namespace figment::test;
 
@@ -35,8 +34,8 @@ const char* kTorso =
     "DEF Torso RadialDepthVolume { part \"upperTorso\"  base 0 1.25 0  direction 0 1 0  reference 1 0 0\n"
     "  length 0.2  harmonics 1  coefficients [ 0.15 0.01 0,  0.14 0 0 ] }\n";
 
-std::string mannequinScene(const std::string& fields, const std::string& children = std::string(kJoints) +
-                                                                                       kForearm + kTorso) {
+std::string mannequinScene(const std::string& fields,
+                           const std::string& children = std::string(kJoints) + kForearm + kTorso) {
   return "#Inventor V2.1 ascii\nSeparator {\n  DEF Model Mannequin {\n" + fields + "\n" + children + "  }\n}\n";
 }
 
@@ -164,10 +163,10 @@ TEST_F(MannequinTest, TheSkinFollowsThePose) {
            "v 0.55 1.40 -0.02\nv 0.6 1.40 -0.02\nv 0.55 1.44 -0.02\nv 0.6 1.44 -0.02\n"
            "v 0.55 1.40 0.02\nv 0.6 1.40 0.02\nv 0.55 1.44 0.02\nv 0.6 1.44 0.02\n"
            "f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 1 3 4 2\nf 5 6 8 7\n");
-  const std::string path = dir.file(
-      "scene.iv", mannequinScene("body DEF Arm MeshFile { fileName \"arm.obj\" }\n"
-                                 "rotatedJoints \"shoulderL\"  rotations 0 0 1 -1.5707963") +
-                      "MannequinSkin { mannequin USE Model }\n");
+  const std::string path =
+      dir.file("scene.iv", mannequinScene("body DEF Arm MeshFile { fileName \"arm.obj\" }\n"
+                                          "rotatedJoints \"shoulderL\"  rotations 0 0 1 -1.5707963") +
+                               "MannequinSkin { mannequin USE Model }\n");
   // The skin is a sibling of the mannequin; read the scene and find it.
   SceneRoot root = readFile(path);
   ASSERT_TRUE(root);
@@ -213,9 +212,9 @@ TEST_F(MannequinTest, AnExactPartCollidesWithItsOwnTrianglesAndFollowsThePose) {
            "v 0.5 1.40 -0.02\nv 0.65 1.40 -0.02\nv 0.5 1.44 -0.02\nv 0.65 1.44 -0.02\n"
            "v 0.5 1.40 0.02\nv 0.65 1.40 0.02\nv 0.5 1.44 0.02\nv 0.65 1.44 0.02\n"
            "f 1 5 7 3\nf 2 4 8 6\nf 1 2 6 5\nf 3 7 8 4\nf 1 3 4 2\nf 5 6 8 7\n");
-  const std::string path = dir.file(
-      "scene.iv", mannequinScene("body DEF Arm MeshFile { fileName \"arm.obj\" }",
-                                 std::string(kJoints) + "ExactVolume { part \"forearmL\" }\n" + kTorso));
+  const std::string path =
+      dir.file("scene.iv", mannequinScene("body DEF Arm MeshFile { fileName \"arm.obj\" }",
+                                          std::string(kJoints) + "ExactVolume { part \"forearmL\" }\n" + kTorso));
   SceneRoot root = readFile(path);
   ASSERT_TRUE(root);
   auto* model = find<Mannequin>(root.get(), "Model");
@@ -274,7 +273,9 @@ TEST_F(MannequinTest, ClothDropsOntoTheForearmAndStaysOutside) {
   const Grid g = grid(9, 0.16, 1.51, 0.575, 0.0);
   SceneRoot root = readString(mannequinScene("") +
                               "Separator { DEF Cloth Coordinate3 { point = DEF Drape ClothEngine {\n"
-                              "  restPoints [ " + g.points + " ] coordIndex [ " + g.coordIndex + " ]\n"
+                              "  restPoints [ " +
+                              g.points + " ] coordIndex [ " + g.coordIndex +
+                              " ]\n"
                               "  body USE Model  maxTime 0.25  clearance 0.002 } . positions } }\n");
   ASSERT_TRUE(root);
   auto* cloth = find<SoCoordinate3>(root.get(), "Cloth");
@@ -302,8 +303,8 @@ class MannequinBadInput : public ::testing::TestWithParam<BadMannequin> {
 TEST_P(MannequinBadInput, IsAReadErrorNamingTheFieldAndValue) {
   const BadMannequin& bad = GetParam();
   CapturedErrors errors;
-  SceneRoot root = readString(bad.children.empty() ? mannequinScene(bad.fields)
-                                                   : mannequinScene(bad.fields, bad.children));
+  SceneRoot root =
+      readString(bad.children.empty() ? mannequinScene(bad.fields) : mannequinScene(bad.fields, bad.children));
   EXPECT_FALSE(root);
   EXPECT_NE(errors.all().find(bad.expected), std::string::npos) << errors.all();
 }
@@ -314,15 +315,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadMannequin{"rotatedJoints \"elbow\"  rotations 0 0 1 1", "", "rotatedJoints[0] = \"elbow\" is not a joint"},
         BadMannequin{"rotatedJoints [ \"elbowL\", \"kneeL\" ]  rotations 0 0 1 1", "",
                      "rotatedJoints has 2 names but rotations has 1 values"},
-        BadMannequin{"height 3", "", "height"},
-        BadMannequin{"blendRadius 0", "", "blendRadius = 0"},
+        BadMannequin{"height 3", "", "height"}, BadMannequin{"blendRadius 0", "", "blendRadius = 0"},
         BadMannequin{"exactParts [ \"forearmL\", \"elbow\" ]", "", "exactParts[1] = \"elbow\" is not a part"},
         BadMannequin{"", std::string(kJoints) + "CapsuleVolume { part \"elbow\" }\n",
                      "CapsuleVolume: part = \"elbow\" is not a part"},
         BadMannequin{"", std::string(kJoints) + "DEF C CapsuleVolume { part \"handL\"  x -1 }\n",
                      "CapsuleVolume 'C': x = -1"},
-        BadMannequin{"", std::string(kJoints) + "RadialDepthVolume { part \"head\"  harmonics 2  coefficients [ 1 2 3 ] }\n",
-                     "coefficients has 3 values"},
+        BadMannequin{
+            "", std::string(kJoints) + "RadialDepthVolume { part \"head\"  harmonics 2  coefficients [ 1 2 3 ] }\n",
+            "coefficients has 3 values"},
         BadMannequin{"", kForearm, "has 0 SkeletonJoints below it"},
         BadMannequin{"", "SkeletonJoints { names \"pelvis\"  positions 0 0 0 }\n" + std::string(kForearm),
                      "names has no \"waist\""}));

@@ -1,14 +1,13 @@
 // MannequinSkin: a `mannequin` that is not a Mannequin is said, never drawn in silence
 // (found by fuzzing figment-view, issue 15).
 
-#include "nodes/body/MannequinSkin.h"
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoCube.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/body/MannequinSkin.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 

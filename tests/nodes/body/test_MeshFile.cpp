@@ -1,24 +1,23 @@
 // MeshFile: reads meshes through io/, resolves names next to the .iv file, reports load
 // errors as read errors, draws through hidden nodes and offers its collision surface.
 
-#include "nodes/body/MeshFile.h"
-#include "support/MeshChecks.h"
-#include "support/ActionChecks.h"
-#include "support/SceneTestSupport.h"
-#include "io/MeshImport.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPickedPoint.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoRayPickAction.h>
-#include <Inventor/SoPickedPoint.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
+
+#include "io/MeshImport.h"
+#include "nodes/body/MeshFile.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/core/TriangleMesh.h"
+#include "support/ActionChecks.h"
+#include "support/MeshChecks.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 
@@ -35,7 +34,9 @@ class MeshFileTest : public ::testing::Test {
   }
 };
 
-bool humanAvailable() { return !figment::findModelFile("human.zae").empty(); }
+bool humanAvailable() {
+  return !figment::findModelFile("human.zae").empty();
+}
 
 }  // namespace
 
@@ -69,8 +70,8 @@ TEST_F(MeshFileTest, AppliesMetresPerUnit) {
 TEST_F(MeshFileTest, RotatesTheUpAxisOntoY) {
   // A 1 x 1 x 3 box standing along +z becomes 3 m tall along y.
   std::string tall = cubeObj();
-  dir.file("tall.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 3\nv 1 0 3\nv 0 1 3\nv 1 1 3\n" +
-                           tall.substr(tall.find("f ")));
+  dir.file("tall.obj",
+           "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 3\nv 1 0 3\nv 0 1 3\nv 1 1 3\n" + tall.substr(tall.find("f ")));
   SceneRoot root = readFile(scene("fileName \"tall.obj\" upAxis Z"));
   ASSERT_TRUE(root);
   auto* mesh = find<MeshFile>(root.get());

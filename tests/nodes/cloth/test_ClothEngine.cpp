@@ -1,21 +1,20 @@
 // ClothEngine: translates fields into a simulation, lazily, and never lets an error
 // escape; findClothEngines finds the engines that feed a scene.
 
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/ClothEngineInputs.h"
-#include "nodes/body/MeshFile.h"
-#include "support/SceneTestSupport.h"
-#include "sim/cloth/ClothParameters.h"
-#include "sim/cloth/MaterialPresets.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoVertexProperty.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/ClothEngineInputs.h"
+#include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/MaterialPresets.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 
@@ -28,14 +27,23 @@ std::string clothScene(const std::string& fields, const std::string& restPoints 
   const Grid g = grid(10, 0.5, 1.0);
   return "#Inventor V2.1 ascii\nSeparator {\n"
          "  Switch { whichChild -1\n"
-         "    DEF Rest Coordinate3 { point [ " + g.points + " ] }\n"
-         "    DEF Faces IndexedFaceSet { coordIndex [ " + g.coordIndex + " ] }\n"
+         "    DEF Rest Coordinate3 { point [ " +
+         g.points +
+         " ] }\n"
+         "    DEF Faces IndexedFaceSet { coordIndex [ " +
+         g.coordIndex +
+         " ] }\n"
          "  }\n"
          "  DEF Cloth Coordinate3 {\n"
          "    point = DEF Drape ClothEngine {\n"
-         "      restPoints " + (restPoints.empty() ? "= USE Rest.point" : restPoints) + "\n"
-         "      coordIndex " + (coordIndex.empty() ? "= USE Faces.coordIndex" : coordIndex) + "\n"
-         "      maxTime 0.02\n" + fields +
+         "      restPoints " +
+         (restPoints.empty() ? "= USE Rest.point" : restPoints) +
+         "\n"
+         "      coordIndex " +
+         (coordIndex.empty() ? "= USE Faces.coordIndex" : coordIndex) +
+         "\n"
+         "      maxTime 0.02\n" +
+         fields +
          "    } . positions\n"
          "  }\n"
          "  ClothingLayer { coordIndex = USE Faces.coordIndex }\n"
@@ -66,8 +74,8 @@ TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaults) {
   EXPECT_EQ(engine->friction.getValue(), sim.friction);
   EXPECT_EQ(engine->clearance.getValue(), sim.clearance);
   EXPECT_EQ(engine->strainRateDamping.getValue(), sim.strainRateDamping);
-  EXPECT_EQ(engine->windDirection.getValue(), SbVec3f(float(sim.wind.direction.x()), float(sim.wind.direction.y()),
-                                                      float(sim.wind.direction.z())));
+  EXPECT_EQ(engine->windDirection.getValue(),
+            SbVec3f(float(sim.wind.direction.x()), float(sim.wind.direction.y()), float(sim.wind.direction.z())));
   EXPECT_EQ(engine->windAmplitude.getValue(), sim.wind.amplitude);
   EXPECT_EQ(engine->windFrequency.getValue(), sim.wind.frequency);
   EXPECT_EQ(engine->windPhaseInterval.getValue(), sim.wind.meanPhaseInterval);
@@ -130,12 +138,15 @@ TEST_F(ClothEngineTest, ClothRestsOnTheBodyInsteadOfFallingThrough) {
   dir.file("cube.obj", cubeObj());
   // A 0.6 m square 5 cm above a unit cube's top (y = 1), centred over it.
   const Grid g = grid(10, 0.6, 1.05, 0.5, 0.5);
-  const std::string path = dir.file(
-      "drape.iv", "#Inventor V2.1 ascii\nSeparator {\n  DEF Box MeshFile { fileName \"cube.obj\" }\n"
-                  "  DEF Cloth Coordinate3 { point = DEF Drape ClothEngine {\n"
-                  "    restPoints [ " + g.points + " ] coordIndex [ " + g.coordIndex + " ]\n"
-                  "    body USE Box  maxTime 0.3 } . positions }\n"
-                  "  IndexedFaceSet { coordIndex [ " + g.coordIndex + " ] }\n}\n");
+  const std::string path = dir.file("drape.iv",
+                                    "#Inventor V2.1 ascii\nSeparator {\n  DEF Box MeshFile { fileName \"cube.obj\" }\n"
+                                    "  DEF Cloth Coordinate3 { point = DEF Drape ClothEngine {\n"
+                                    "    restPoints [ " +
+                                        g.points + " ] coordIndex [ " + g.coordIndex +
+                                        " ]\n"
+                                        "    body USE Box  maxTime 0.3 } . positions }\n"
+                                        "  IndexedFaceSet { coordIndex [ " +
+                                        g.coordIndex + " ] }\n}\n");
   SceneRoot root = readFile(path);
   ASSERT_TRUE(root);
   auto* cloth = find<SoCoordinate3>(root.get(), "Cloth");
@@ -183,8 +194,8 @@ TEST_F(ClothEngineTest, WindFieldsReachTheSimulation) {
 // --- bad input: one line naming the engine, the field and the value -----------------
 
 struct BadField {
-  std::string fields;    // added to the engine
-  std::string expected;  // the whole lastError()
+  std::string fields;                            // added to the engine
+  std::string expected;                          // the whole lastError()
   std::string restPoints = {}, coordIndex = {};  // replace the connections when given
   friend void PrintTo(const BadField& bad, std::ostream* out) { *out << bad.expected; }
 };
@@ -232,10 +243,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"contactModel PENALTY", "ClothEngine 'Drape': contactModel PENALTY needs integrator IMPLICIT"},
         BadField{"", "ClothEngine 'Drape': coordIndex[2] = 100 is not a vertex: restPoints has 100 points", "",
                  "[ 0 1 100 -1 ]"},
-        BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "",
-                 "[ 0 1 -1 ]"},
+        BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "", "[ 0 1 -1 ]"},
         BadField{"", "ClothEngine 'Drape': restPoints is empty", "[ ]"},
-        BadField{"body Cube { }", "ClothEngine 'Drape': body: Cube is not a collision body (use a MeshFile, a Mannequin or a CollisionGroup)"},
+        BadField{"body Cube { }",
+                 "ClothEngine 'Drape': body: Cube is not a collision body (use a MeshFile, a Mannequin or a "
+                 "CollisionGroup)"},
         BadField{"body MeshFile { }", "ClothEngine 'Drape': body: MeshFile has no mesh"}));
 
 // --- finding the engines of a scene --------------------------------------------------
@@ -261,9 +273,9 @@ TEST(ClothEngineStability, FieldsReachTheSimulation) {
   // says which it was; strain clamping and a clamped acceleration keep the run finite.
   initCoin();
   const std::string tooLarge = "youngsModulus 1e9 strainRateDamping 0 timeStep 0.004 maxTime 0.4\n";
-  for (const auto& [field, method] : {std::pair{"integrator EULER", "explicit Euler"},
-                                      std::pair{"integrator SYMPLECTIC", "symplectic Euler"},
-                                      std::pair{"integrator HEUN", "improved Euler (Heun)"}}) {
+  for (const auto& [field, method] :
+       {std::pair{"integrator EULER", "explicit Euler"}, std::pair{"integrator SYMPLECTIC", "symplectic Euler"},
+        std::pair{"integrator HEUN", "improved Euler (Heun)"}}) {
     SceneRoot root = readString(clothScene(tooLarge + field + "\n"));
     ASSERT_TRUE(root);
     auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
@@ -271,7 +283,8 @@ TEST(ClothEngineStability, FieldsReachTheSimulation) {
     find<SoCoordinate3>(root.get(), "Cloth")->point.getNum();  // evaluates
     EXPECT_NE(engine->lastError().find(std::string("method ") + method), std::string::npos) << engine->lastError();
   }
-  SceneRoot root = readString(clothScene(tooLarge + "strainLimit 0.05 accelerationLimiter CLAMP accelerationLimit 5\n"));
+  SceneRoot root =
+      readString(clothScene(tooLarge + "strainLimit 0.05 accelerationLimiter CLAMP accelerationLimit 5\n"));
   ASSERT_TRUE(root);
   auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
   find<SoCoordinate3>(root.get(), "Cloth")->point.getNum();

@@ -3,20 +3,19 @@
 // one line naming the field and value; with none the scene's own fields drape. And the
 // committed table's pick for the default dress at 0.5 % lands within 0.5 % of a
 // converged drape.
-#include "nodes/SceneSearch.h"
-#include "nodes/body/Mannequin.h"
-#include "sim/collision/Collider.h"
-#include "support/IoTestSupport.h"
-#include "support/ShippedGarmentScene.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/fields/SoMFVec3f.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <string>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/body/Mannequin.h"
+#include "sim/collision/Collider.h"
+#include "support/IoTestSupport.h"
+#include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
 
@@ -119,16 +118,17 @@ TEST(ToleranceChoiceMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles
   ASSERT_EQ(found.getLength(), 1);
   auto* mannequin = static_cast<Mannequin*>(found[0]->getTail());
   mannequin->rotatedJoints.setValues(0, 2, std::array<SbString, 2>{"shoulderL", "shoulderR"}.data());
-  mannequin->rotations.setValues(0, 2, std::array<SbRotation, 2>{SbRotation(SbVec3f(0, 0, 1), 0.1f),
-                                                                  SbRotation(SbVec3f(0, 0, 1), -0.1f)}.data());
+  mannequin->rotations.setValues(
+      0, 2, std::array<SbRotation, 2>{SbRotation(SbVec3f(0, 0, 1), 0.1f), SbRotation(SbVec3f(0, 0, 1), -0.1f)}.data());
   const std::vector<SbVec3f> posed = drape(engine);
   ASSERT_EQ(engine.lastError(), "");
   EXPECT_EQ(engine.lastRun().picked, "implicit:0.05, mix, progressive off");
   EXPECT_TRUE(engine.lastRun().atRest);
   // The faster triangles were passed over, and the run says why.
-  EXPECT_EQ(engine.lastRun().passedOver,
-            "implicit:0.05, triangles, progressive off (the Mannequin's triangles are its rest pose and size, and it is "
-            "posed (rotatedJoints))");
+  EXPECT_EQ(
+      engine.lastRun().passedOver,
+      "implicit:0.05, triangles, progressive off (the Mannequin's triangles are its rest pose and size, and it is "
+      "posed (rotatedJoints))");
   // At rest outside the posed body's volumes (the mix's volume parts and more).
   int inside = 0;
   figment::Contact contact;

@@ -1,17 +1,16 @@
 // ClothingLayer: an IndexedFaceSet in every respect, plus `masked`.
 
-#include "nodes/render/ClothingLayer.h"
-#include "support/ActionChecks.h"
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPickedPoint.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoRayPickAction.h>
-#include <Inventor/SoPickedPoint.h>
 #include <Inventor/details/SoFaceDetail.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/render/ClothingLayer.h"
+#include "support/ActionChecks.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 
@@ -26,12 +25,14 @@ std::string squares(const std::string& shape, const std::string& extra = "") {
          "  MaterialBinding { value PER_FACE_INDEXED }\n"
          "  NormalBinding { value PER_VERTEX_INDEXED }\n"
          "  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
-         "  " + shape + " {\n"
+         "  " +
+         shape +
+         " {\n"
          "    coordIndex [ 0 1 4 3 -1, 1 2 5 4 -1 ]\n"
          "    materialIndex [ 1, 0 ]\n"
          "    normalIndex [ 0 0 0 0 -1, 0 0 0 0 -1 ]\n"
-         "    textureCoordIndex [ -1 ]\n" + extra +
-         "  }\n}\n";
+         "    textureCoordIndex [ -1 ]\n" +
+         extra + "  }\n}\n";
 }
 
 class ClothingLayerTest : public ::testing::Test {

@@ -1,7 +1,7 @@
 // Which facets a ClothingLayer draws over what lies beneath, and in which order.
-#include "nodes/render/FacetOrder.h"
-
 #include <gtest/gtest.h>
+
+#include "nodes/render/FacetOrder.h"
 
 using figment::OrderedFacet;
 using figment::ViewPoint;
@@ -48,7 +48,7 @@ TEST(FacetOrder, PerspectiveJudgesEachFacetFromTheEye) {
 
 TEST(FacetOrder, FacetsAreSortedFarToNearByTheirCentres) {
   // Three triangles at z = 0, -2 and 1, listed in that order.
-  const SbVec3f points[] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, -2}, {1, 0, -2},
+  const SbVec3f points[] = {{0, 0, 0},  {1, 0, 0}, {0, 1, 0}, {0, 0, -2}, {1, 0, -2},
                             {0, 1, -2}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
   const int32_t index[] = {0, 1, 2, -1, 3, 4, 5, -1, 6, 7, 8, -1};
   const auto facets = figment::orderFacets(points, 9, index, 12, fromFront());

@@ -1,14 +1,13 @@
 // StencilDecisionElement: the stencil rule's decision is kept per render action, for
 // the scene and view it was made for; another action's render never replaces it.
-#include "nodes/render/StencilDecisionElement.h"
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/misc/SoState.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/render/StencilDecisionElement.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 

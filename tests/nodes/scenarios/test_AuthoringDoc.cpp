@@ -3,8 +3,6 @@
 // lists exactly its fields, each with Coin's own type name and default value (as Coin
 // writes it), and its example, scenes/examples/<Class>.iv, appears in the page word for
 // word.
-#include "nodes/Init.h"
-
 #include <Inventor/SbString.h>
 #include <Inventor/SoType.h>
 #include <Inventor/engines/SoEngine.h>
@@ -14,10 +12,8 @@
 #include <Inventor/fields/SoFieldData.h>
 #include <Inventor/lists/SoTypeList.h>
 #include <Inventor/nodes/SoNode.h>
-
-#include <gtest/gtest.h>
-
 #include <dlfcn.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +24,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "nodes/Init.h"
 
 namespace fs = std::filesystem;
 

@@ -3,6 +3,16 @@
 // simulating); a damaged entry, or one whose record is of another version, is dropped,
 // said and draped again; the key names the node library's file, not the program's, and
 // changes with every field of the engine and of the Mannequin it drapes on, one at a time.
+#include <Inventor/SoPath.h>
+#include <Inventor/fields/SoFields.h>
+#include <Inventor/lists/SoFieldList.h>
+#include <Inventor/nodes/SoCube.h>
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <memory>
+
 #include "io/DrapeCache.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
@@ -11,17 +21,6 @@
 #include "nodes/cloth/RunStatsRecord.h"
 #include "support/ShippedGarmentScene.h"
 #include "support/TempDir.h"
-
-#include <Inventor/SoPath.h>
-#include <Inventor/fields/SoFields.h>
-#include <Inventor/lists/SoFieldList.h>
-#include <Inventor/nodes/SoCube.h>
-
-#include <gtest/gtest.h>
-
-#include <cstring>
-#include <fstream>
-#include <memory>
 
 using namespace figment::test;
 
@@ -58,10 +57,14 @@ bool sameBits(const std::vector<SbVec3f>& a, const std::vector<SbVec3f>& b) {
 bool change(SoField& field) {
   const SoType type = field.getTypeId();
   field.disconnect();  // keeps the value it had
-  if (type == SoSFFloat::getClassTypeId()) return static_cast<SoSFFloat&>(field).setValue(static_cast<SoSFFloat&>(field).getValue() * 1.01f + 0.001f), true;
-  if (type == SoSFDouble::getClassTypeId()) return static_cast<SoSFDouble&>(field).setValue(static_cast<SoSFDouble&>(field).getValue() * 1.01 + 0.001), true;
-  if (type == SoSFInt32::getClassTypeId()) return static_cast<SoSFInt32&>(field).setValue(static_cast<SoSFInt32&>(field).getValue() + 1), true;
-  if (type == SoSFBool::getClassTypeId()) return static_cast<SoSFBool&>(field).setValue(!static_cast<SoSFBool&>(field).getValue()), true;
+  if (type == SoSFFloat::getClassTypeId())
+    return static_cast<SoSFFloat&>(field).setValue(static_cast<SoSFFloat&>(field).getValue() * 1.01f + 0.001f), true;
+  if (type == SoSFDouble::getClassTypeId())
+    return static_cast<SoSFDouble&>(field).setValue(static_cast<SoSFDouble&>(field).getValue() * 1.01 + 0.001), true;
+  if (type == SoSFInt32::getClassTypeId())
+    return static_cast<SoSFInt32&>(field).setValue(static_cast<SoSFInt32&>(field).getValue() + 1), true;
+  if (type == SoSFBool::getClassTypeId())
+    return static_cast<SoSFBool&>(field).setValue(!static_cast<SoSFBool&>(field).getValue()), true;
   if (type == SoSFEnum::getClassTypeId()) {
     auto& f = static_cast<SoSFEnum&>(field);
     int value = 0;
@@ -70,8 +73,12 @@ bool change(SoField& field) {
       if (f.getEnum(i, name) != f.getValue()) value = f.getEnum(i, name);
     return f.setValue(value), true;
   }
-  if (type == SoSFString::getClassTypeId()) return static_cast<SoSFString&>(field).setValue((static_cast<SoSFString&>(field).getValue() + "x").getString()), true;
-  if (type == SoSFVec3f::getClassTypeId()) return static_cast<SoSFVec3f&>(field).setValue(static_cast<SoSFVec3f&>(field).getValue() + SbVec3f(0.001f, 0, 0)), true;
+  if (type == SoSFString::getClassTypeId())
+    return static_cast<SoSFString&>(field).setValue((static_cast<SoSFString&>(field).getValue() + "x").getString()),
+           true;
+  if (type == SoSFVec3f::getClassTypeId())
+    return static_cast<SoSFVec3f&>(field).setValue(static_cast<SoSFVec3f&>(field).getValue() + SbVec3f(0.001f, 0, 0)),
+           true;
   if (type == SoSFColor::getClassTypeId()) return static_cast<SoSFColor&>(field).setValue(0.1f, 0.2f, 0.3f), true;
   if (type == SoSFNode::getClassTypeId()) {
     auto& f = static_cast<SoSFNode&>(field);
@@ -124,7 +131,9 @@ void expectEveryFieldChangesTheKey(const std::string& what, SoFieldContainer* (*
   }
 }
 
-SoFieldContainer* engineOf(const ShippedGarmentScene& scene) { return scene.engine(); }
+SoFieldContainer* engineOf(const ShippedGarmentScene& scene) {
+  return scene.engine();
+}
 SoFieldContainer* mannequinOf(const ShippedGarmentScene& scene) {
   const SoPathList found = figment::findAll(scene.root(), Mannequin::getClassTypeId());
   return found.getLength() == 1 ? found[0]->getTail() : nullptr;
@@ -166,7 +175,7 @@ TEST(DrapeCacheEngine, ADamagedEntryIsDroppedSaidAndDrapedAgain) {
   const std::vector<SbVec3f> second = drape(engine);
   EXPECT_FALSE(engine.lastRun().fromCache);
   EXPECT_NE(engine.lastCacheMessage().find(entry.string()), std::string::npos) << engine.lastCacheMessage();
-  EXPECT_TRUE(sameBits(first, second));  // simulated again, to the same bits
+  EXPECT_TRUE(sameBits(first, second));         // simulated again, to the same bits
   EXPECT_TRUE(std::filesystem::exists(entry));  // and kept again
 }
 
@@ -206,7 +215,9 @@ TEST(DrapeCacheEngine, TheKeyNamesTheNodeLibraryNotTheProgram) {
   EXPECT_EQ(key.find("test_nodes"), std::string::npos) << "the test program is not what drapes";
 }
 
-TEST(DrapeCacheEngine, EveryFieldOfTheEngineChangesTheKey) { expectEveryFieldChangesTheKey("ClothEngine", engineOf); }
+TEST(DrapeCacheEngine, EveryFieldOfTheEngineChangesTheKey) {
+  expectEveryFieldChangesTheKey("ClothEngine", engineOf);
+}
 
 TEST(DrapeCacheEngine, EveryFieldOfTheMannequinChangesTheKey) {
   expectEveryFieldChangesTheKey("Mannequin", mannequinOf);

@@ -2,14 +2,14 @@
 // to read after its ClothEngine destroys the engine unread, and that used to drape the whole
 // maxTime first: a read error took as long as the drape (found by tests/fuzz/fuzz_scene, where
 // a mangled scene took 17 s). The engine now skips a drape nothing can read.
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "support/SceneTestSupport.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "support/SceneTestSupport.h"
 
 namespace {
 
@@ -19,10 +19,14 @@ namespace {
 std::string engineScene(bool thenABadCube) {
   const figment::test::Grid g = figment::test::grid(5, 0.4, 1.0);
   return "#Inventor V2.1 ascii\nSeparator {\n"
-         "  DEF Rest Coordinate3 { point [ " + g.points + " ] }\n"
+         "  DEF Rest Coordinate3 { point [ " +
+         g.points +
+         " ] }\n"
          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
          "    restPoints = USE Rest.point\n"
-         "    coordIndex [ " + g.coordIndex + " ]\n"
+         "    coordIndex [ " +
+         g.coordIndex +
+         " ]\n"
          "    youngsModulus -1\n"
          "  } . positions }\n" +
          std::string(thenABadCube ? "  Cube { width \"not a number\" }\n" : "") + "}\n";

@@ -1,18 +1,17 @@
 // DepthSortedGroup and StencilSeparator outside rendering: a Group and a Separator in
 // every other action (bounding box, picking, primitive count, search, write and read).
-#include "nodes/render/DepthSortedGroup.h"
-#include "nodes/render/StencilSeparator.h"
-#include "support/ActionChecks.h"
-#include "support/SceneTestSupport.h"
-
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPickedPoint.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoRayPickAction.h>
 #include <Inventor/actions/SoSearchAction.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/render/DepthSortedGroup.h"
+#include "nodes/render/StencilSeparator.h"
+#include "support/ActionChecks.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 
@@ -24,7 +23,8 @@ std::string pieces(const std::string& group, const std::string& fields = "") {
          "    DEF Near Separator { BaseColor { rgb 1 0 0 }\n"
          "      Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0, 0 1 0 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }\n"
          "    DEF Far Separator { BaseColor { rgb 0 1 0 }\n"
-         "      Coordinate3 { point [ 0 0 -1, 2 0 -1, 2 2 -1, 0 2 -1 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } }\n"
+         "      Coordinate3 { point [ 0 0 -1, 2 0 -1, 2 2 -1, 0 2 -1 ] } IndexedFaceSet { coordIndex [ 0 1 2 3 -1 ] } "
+         "}\n"
          "  }\n}\n";
 }
 

@@ -1,9 +1,15 @@
 // Garments draped over garments (paper §6's layers): a ClothEngine's body may be a
 // CollisionGroup of the Mannequin and an inner garment's GarmentSurface, whose points
 // are the inner engine's output. The outfit of scenes/outfit-layers.iv (the T-shirt
-// under the dress; the T-shirt under the skirt in outfit-skirt.iv) drapes inside out and comes to rest with no dress node behind the
-// T-shirt's surface and no node of either inside the body's volumes; bad groups and
-// surfaces are one line naming the node, the entry or field and the value.
+// under the dress; the T-shirt under the skirt in outfit-skirt.iv) drapes inside out and comes to rest with no dress
+// node behind the T-shirt's surface and no node of either inside the body's volumes; bad groups and surfaces are one
+// line naming the node, the entry or field and the value.
+#include <Inventor/fields/SoMFVec3f.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
 #include "nodes/SceneSearch.h"
 #include "nodes/body/CollisionBody.h"
 #include "nodes/body/CollisionGroup.h"
@@ -11,13 +17,6 @@
 #include "sim/collision/Collider.h"
 #include "support/SceneTestSupport.h"
 #include "support/ShippedGarmentScene.h"
-
-#include <Inventor/fields/SoMFVec3f.h>
-
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <string>
 
 using namespace figment::test;
 
@@ -118,8 +117,7 @@ TEST(LayeredGarments, TheSkirtOverTheTShirtsHemRestsOutsideItAndTheBody) {
 
 TEST(LayeredGarments, ABadGroupOrSurfaceIsOneLineNamingIt) {
   initCoin();
-  const std::string sheet =
-      "restPoints [ 0 1 0, 0.1 1 0, 0 1 0.1 ]  coordIndex [ 0 1 2 -1 ]  maxTime 0.01\n";
+  const std::string sheet = "restPoints [ 0 1 0, 0.1 1 0, 0 1 0.1 ]  coordIndex [ 0 1 2 -1 ]  maxTime 0.01\n";
   const struct {
     const char* body;
     const char* expected;
@@ -136,8 +134,8 @@ TEST(LayeredGarments, ABadGroupOrSurfaceIsOneLineNamingIt) {
   for (const auto& bad : cases) {
     CapturedErrors errors;
     SceneRoot root =
-        readString(std::string("#Inventor V2.1 ascii\nSeparator { Coordinate3 { point = DEF E ClothEngine { ") +
-                   sheet + " body " + bad.body + " } . positions } }\n");
+        readString(std::string("#Inventor V2.1 ascii\nSeparator { Coordinate3 { point = DEF E ClothEngine { ") + sheet +
+                   " body " + bad.body + " } . positions } }\n");
     ASSERT_TRUE(root) << bad.body << errors.all();
     ClothEngine* engine = engineNamed(root.get(), "E");
     ASSERT_NE(engine, nullptr);

@@ -3,14 +3,14 @@
 // kept the posed dress with height, chest, hips and arm length all set from resting:
 // cloth on it was pushed up by the end cap and out by the side in turn.
 
-#include "nodes/body/Mannequin.h"
-#include "support/SceneTestSupport.h"
-#include "support/TPoseSkeleton.h"
-#include "sim/collision/Collider.h"
-
 #include <gtest/gtest.h>
 
 #include <string>
+
+#include "nodes/body/Mannequin.h"
+#include "sim/collision/Collider.h"
+#include "support/SceneTestSupport.h"
+#include "support/TPoseSkeleton.h"
 
 using namespace figment::test;
 
@@ -20,8 +20,7 @@ namespace {
 // lower torso from the waist joint (1.05), the upper torso up to the neck base (1.45) in
 // sections 2 cm apart, as figment-fit spaces them.
 std::string torsoScene(const std::string& sizing) {
-  return std::string("#Inventor V2.1 ascii\nSeparator {\n  DEF Model Mannequin {\n") + sizing + "\n" +
-         kTPoseJoints +
+  return std::string("#Inventor V2.1 ascii\nSeparator {\n  DEF Model Mannequin {\n") + sizing + "\n" + kTPoseJoints +
          "    RadialDepthVolume { part \"lowerTorso\"  base 0 1.05 0  direction 0 1 0  reference 1 0 0\n"
          "      length 0.2  harmonics 0  coefficients [ 0.15, 0.15 ] }\n"
          "    RadialDepthVolume { part \"upperTorso\"  base 0 1.25 0  direction 0 1 0  reference 1 0 0\n"

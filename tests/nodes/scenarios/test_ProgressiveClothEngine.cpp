@@ -2,20 +2,19 @@
 // level to the level asked for, outputs every rest point and the level's sections, and a
 // script that is missing or belongs to another garment is a one-line error.
 
+#include <Inventor/fields/SoMFInt32.h>
+#include <Inventor/fields/SoMFVec3f.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
 #include "io/ProgressiveScript.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/progressive/Decimation.h"
 #include "support/SceneTestSupport.h"
 #include "support/ShippedGarmentScene.h"
-
-#include <Inventor/fields/SoMFInt32.h>
-#include <Inventor/fields/SoMFVec3f.h>
-
-#include <gtest/gtest.h>
-
-#include <algorithm>
-#include <cmath>
 
 using namespace figment::test;
 
@@ -27,8 +26,12 @@ std::string clothScene(int n) {
   return "#Inventor V2.1 ascii\nSeparator {\n"
          "  DEF Cloth Coordinate3 {\n"
          "    point = DEF Drape ClothEngine {\n"
-         "      restPoints [ " + g.points + " ]\n"
-         "      coordIndex [ " + g.coordIndex + " ]\n"
+         "      restPoints [ " +
+         g.points +
+         " ]\n"
+         "      coordIndex [ " +
+         g.coordIndex +
+         " ]\n"
          "      integrator IMPLICIT  timeStep 0.02  maxTime 0.1  splitRate 500\n"
          "    } . positions\n"
          "  }\n"
@@ -55,8 +58,7 @@ void read(Drape& drape, int n) {
 std::string writeScript(const TempDir& dir, int n) {
   Drape other;
   read(other, n);
-  const figment::TriangleMesh garment =
-      figment::garmentFromFields(other.engine->restPoints, other.engine->coordIndex);
+  const figment::TriangleMesh garment = figment::garmentFromFields(other.engine->restPoints, other.engine->coordIndex);
   const std::string path = (dir.path() / "cloth.pm").string();
   figment::writeProgressiveScript(figment::decimate(garment, figment::DecimationOptions{.targetFaces = 40}), path);
   return path;

@@ -1,19 +1,17 @@
 // A scene with every FIGMENT node type, written with SoWriteAction and read again,
 // comes back with the same nodes and field values.
 
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/body/MeshFile.h"
-#include "nodes/SceneSearch.h"
-#include "support/SceneTestSupport.h"
-
+#include <Inventor/fields/SoMFRotation.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFNode.h>
 #include <Inventor/lists/SoPathList.h>
-
-#include <Inventor/fields/SoMFRotation.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 
@@ -27,8 +25,7 @@ std::vector<SoNode*> nodesOf(SoNode* root) {
   search.setSearchingAll(TRUE);
   search.apply(root);
   std::vector<SoNode*> nodes;
-  for (int i = 0; i < search.getPaths().getLength(); ++i)
-    nodes.push_back(figment::fullTail(search.getPaths()[i]));
+  for (int i = 0; i < search.getPaths().getLength(); ++i) nodes.push_back(figment::fullTail(search.getPaths()[i]));
   return nodes;
 }
 
@@ -126,17 +123,23 @@ TEST(RoundTrip, EveryNodeTypeComesBackWithItsFieldValues) {
       dir,
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  DEF Body MeshFile { fileName \"cube.obj\" metresPerUnit 1 upAxis Y exclude \"nothing\" }\n"
-      "  Switch { whichChild -1  DEF Pattern Coordinate3 { point [ " + g.points + " ] } }\n"
-      "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-      "    restPoints = USE Pattern.point\n"
-      "    coordIndex [ " + g.coordIndex + " ]\n"
-      "    body USE Body\n"
-      "    thickness 0.0007 density 250 youngsModulus 2e6 poissonRatio 0.25 timeStep 1e-4\n"
-      "    maxTime 0.01 restSpeed 0.02 restWindow 0.1 gravity 0 -9 0 airResistance 2\n"
-      "    friction 0.3 clearance 0.002 strainRateDamping 2e-4\n"
-      "  } . positions }\n"
-      "  DEF Layer ClothingLayer { coordIndex [ " + g.coordIndex + " ] masked TRUE }\n"
-      "}\n");
+      "  Switch { whichChild -1  DEF Pattern Coordinate3 { point [ " +
+          g.points +
+          " ] } }\n"
+          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+          "    restPoints = USE Pattern.point\n"
+          "    coordIndex [ " +
+          g.coordIndex +
+          " ]\n"
+          "    body USE Body\n"
+          "    thickness 0.0007 density 250 youngsModulus 2e6 poissonRatio 0.25 timeStep 1e-4\n"
+          "    maxTime 0.01 restSpeed 0.02 restWindow 0.1 gravity 0 -9 0 airResistance 2\n"
+          "    friction 0.3 clearance 0.002 strainRateDamping 2e-4\n"
+          "  } . positions }\n"
+          "  DEF Layer ClothingLayer { coordIndex [ " +
+          g.coordIndex +
+          " ] masked TRUE }\n"
+          "}\n");
   ASSERT_TRUE(scene.first);
   ASSERT_TRUE(scene.second) << scene.text;
   SoSeparator* const second = scene.second.get();
@@ -188,14 +191,14 @@ TEST(RoundTrip, ConnectedInputTakesItsMastersValueNotTheWrittenCopy) {
   initCoin();
   TempDir dir;
   ScopedModelPath modelPath(FIGMENT_SOURCE_DIR "/scenes");
-  const WrittenScene scene = readWriteAndReadAgain(
-      dir,
-      "#Inventor V2.1 ascii\nSeparator {\n"
-      "  Switch { whichChild -1  DEF Pattern MeshFile { fileName \"dress.obj\" } }\n"
-      "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-      "    restPoints = USE Pattern.point  coordIndex = USE Pattern.coordIndex  maxTime 0.001\n"
-      "  } . positions }\n"
-      "}\n");
+  const WrittenScene scene =
+      readWriteAndReadAgain(dir,
+                            "#Inventor V2.1 ascii\nSeparator {\n"
+                            "  Switch { whichChild -1  DEF Pattern MeshFile { fileName \"dress.obj\" } }\n"
+                            "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+                            "    restPoints = USE Pattern.point  coordIndex = USE Pattern.coordIndex  maxTime 0.001\n"
+                            "  } . positions }\n"
+                            "}\n");
   ASSERT_TRUE(scene.first);
   ASSERT_TRUE(scene.second) << scene.text;
   SoSeparator* const second = scene.second.get();

@@ -1,10 +1,10 @@
 // Every scene under scenes/ reads (reading simulates nothing, so this is fast).
 
-#include "support/SceneTestSupport.h"
-
 #include <gtest/gtest.h>
 
 #include <filesystem>
+
+#include "support/SceneTestSupport.h"
 
 using namespace figment::test;
 

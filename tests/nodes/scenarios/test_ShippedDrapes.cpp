@@ -4,17 +4,16 @@
 // with contacts as constraints (it slides onto the hips), and the T-shirt of
 // scenes/tshirt.iv as the scene drapes it (penalty contacts: with constraints its
 // armpit and side nodes chattered and it never rested in 5 s).
-#include "nodes/body/CollisionBody.h"
-#include "sim/collision/Collider.h"
-#include "support/ShippedGarmentScene.h"
-
 #include <Inventor/fields/SoMFVec3f.h>
-
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <ostream>
 #include <string>
+
+#include "nodes/body/CollisionBody.h"
+#include "sim/collision/Collider.h"
+#include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
 
@@ -26,7 +25,9 @@ struct ShippedDrape {
   double lowestAllowed;                         // m: below this the garment has slipped off
 };
 
-void PrintTo(const ShippedDrape& drape, std::ostream* out) { *out << drape.scene; }
+void PrintTo(const ShippedDrape& drape, std::ostream* out) {
+  *out << drape.scene;
+}
 
 class ShippedDrapes : public ::testing::TestWithParam<ShippedDrape> {};
 
@@ -56,21 +57,21 @@ TEST_P(ShippedDrapes, ComeToRestOnTheVolumesWithNoNodeInside) {
   EXPECT_GT(lowest, GetParam().lowestAllowed);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, ShippedDrapes,
-    ::testing::Values(ShippedDrape{"skirt.iv",
-                                   [](ClothEngine& engine) {
-                                     engine.integrator = ClothEngine::IMPLICIT;
-                                     engine.timeStep = 0.05;
-                                     // The scene's 5 s suit Heun (at rest after 3.7 s);
-                                     // at 1/20 s it slides onto the hips in 4.4-6 s
-                                     // (88-119 steps as rounding decides the folds).
-                                     engine.maxTime = 10.0;
-                                   },
-                                   0.3},  // on the hips
-                      ShippedDrape{"tshirt.iv", [](ClothEngine&) {}, 0.8}),  // its hem is cut at about 0.9 m
-    [](const ::testing::TestParamInfo<ShippedDrape>& param) {
-      return param.param.scene.substr(0, param.param.scene.find('.'));
-    });
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedDrapes,
+                         ::testing::Values(ShippedDrape{"skirt.iv",
+                                                        [](ClothEngine& engine) {
+                                                          engine.integrator = ClothEngine::IMPLICIT;
+                                                          engine.timeStep = 0.05;
+                                                          // The scene's 5 s suit Heun (at rest after 3.7 s);
+                                                          // at 1/20 s it slides onto the hips in 4.4-6 s
+                                                          // (88-119 steps as rounding decides the folds).
+                                                          engine.maxTime = 10.0;
+                                                        },
+                                                        0.3},  // on the hips
+                                           ShippedDrape{"tshirt.iv", [](ClothEngine&) {},
+                                                        0.8}),  // its hem is cut at about 0.9 m
+                         [](const ::testing::TestParamInfo<ShippedDrape>& param) {
+                           return param.param.scene.substr(0, param.param.scene.find('.'));
+                         });
 
 }  // namespace

@@ -4,15 +4,14 @@
 // fast membrane modes, which Heun then amplified: the flared skirt of scenes/skirt.iv,
 // sliding onto the hips with CLAMP at 30 g, shredded (edges at 265 % strain, nodes at
 // 5 m/s after 0.3 s).
-#include "support/ShippedGarmentScene.h"
-
 #include <Inventor/fields/SoMFVec3f.h>
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <set>
+
+#include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
 
@@ -28,8 +27,7 @@ double maxEdgeStrain(const ClothEngine& engine, const SoMFVec3f& positions) {
       face.push_back(index);
       continue;
     }
-    for (size_t i = 0; i < face.size(); ++i)
-      edges.insert(std::minmax(face[i], face[(i + 1) % face.size()]));
+    for (size_t i = 0; i < face.size(); ++i) edges.insert(std::minmax(face[i], face[(i + 1) % face.size()]));
     face.clear();
   }
   double worst = 0.0;

@@ -2,23 +2,22 @@
 // progress callback (the progress bar) and the step observer (frames of a time span, the
 // wind force), and the DrapeRecorder built on the observer.
 
-#include "io/DrapeCache.h"
-#include "support/TempDir.h"
-#include "session/DrapeRecorder.h"
-#include "session/FrameDisplay.h"
-#include "viewer/OffscreenContext.h"
-#include "session/SceneSession.h"
-#include "sim/cloth/ClothSolver.h"
-
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "io/DrapeCache.h"
+#include "session/DrapeRecorder.h"
+#include "session/FrameDisplay.h"
+#include "session/SceneSession.h"
+#include "sim/cloth/ClothSolver.h"
+#include "support/TempDir.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -30,7 +29,8 @@ namespace {
 std::string fallingSquare(double seconds, const std::string& fields = "") {
   return "#Inventor V2.1 ascii\nSeparator {\n  DEF Points Coordinate3 { point = DEF Drape ClothEngine {\n"
          "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime " + std::to_string(seconds) + "\n    " + fields +
+         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime " +
+         std::to_string(seconds) + "\n    " + fields +
          "\n  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n";
 }
 

@@ -1,12 +1,12 @@
 // Body sections on box and prism bodies, where sections, hulls and reaches are known exactly.
-#include "support/BoxFigure.h"
-#include "sim/body/BodySlices.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
+
+#include "sim/body/BodySlices.h"
+#include "sim/core/TriangleMesh.h"
+#include "support/BoxFigure.h"
 
 using namespace figment;
 

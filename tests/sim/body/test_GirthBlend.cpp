@@ -1,13 +1,13 @@
 // Girth blending where torso parts of different girth factors meet (sim/body/GirthBlend.h),
 // on a T-posed skeleton with round numbers: waist joint at y = 1.1, chest joint at 1.3
 // (lower torso 1.1-1.3, upper torso 1.3-1.5, hips 0.9-1.1).
-#include "support/RoundNumberSkeleton.h"
-#include "sim/body/GirthBlend.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
+
+#include "sim/body/GirthBlend.h"
+#include "support/RoundNumberSkeleton.h"
 
 using namespace figment;
 using figment::test::partIndex;
@@ -27,8 +27,7 @@ TEST(GirthBlend, TheNarrowerPartGrowsToTheWiderOneAtTheirJointAndFadesOverTheLen
   EXPECT_NEAR(blend.growth(upper, Vec3(0, 1.32, 0.1)), (0.98 + 0.5 * 0.02) / 0.98, 1e-12);
   EXPECT_DOUBLE_EQ(blend.growth(upper, Vec3(0, 1.35, 0)), 1.0);
   // The wider part never changes (the skin, sized by its own factor, stays inside).
-  for (double y : {1.2, 1.29, 1.3, 1.31})
-    EXPECT_DOUBLE_EQ(blend.growth(lower, Vec3(0, y, 0.1)), 1.0) << y;
+  for (double y : {1.2, 1.29, 1.3, 1.31}) EXPECT_DOUBLE_EQ(blend.growth(lower, Vec3(0, y, 0.1)), 1.0) << y;
 }
 
 TEST(GirthBlend, NothingGrowsWithEqualFactorsOrAwayFromTorsoJoints) {

@@ -1,17 +1,17 @@
 // Posing and sizing the jointed mannequin (sim/body/Posing.h) on a small T-posed humanoid
 // skeleton whose joints sit on round numbers: y up, floor at y = 0, arms along +-x.
-#include "support/RoundNumberSkeleton.h"
-#include "support/TestCapsules.h"
-#include "sim/collision/CollisionVolume.h"
-#include "sim/body/Posing.h"
-#include "sim/body/Skinning.h"
-#include "sim/collision/VolumeSetCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+
+#include "sim/body/Posing.h"
+#include "sim/body/Skinning.h"
+#include "sim/collision/CollisionVolume.h"
+#include "sim/collision/VolumeSetCollider.h"
+#include "support/RoundNumberSkeleton.h"
+#include "support/TestCapsules.h"
 
 using namespace figment;
 using figment::test::partIndex;
@@ -24,7 +24,9 @@ Pose rotate(const Skeleton& s, const std::string& joint, const Eigen::Quaternion
   return pose;
 }
 
-Eigen::Quaterniond about(const Vec3& axis, double angle) { return Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)); }
+Eigen::Quaterniond about(const Vec3& axis, double angle) {
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
+}
 
 Eigen::Affine3d rotationAbout(const Vec3& centre, const Eigen::Quaterniond& q) {
   return Eigen::Translation3d(centre) * q * Eigen::Translation3d(-centre);
@@ -36,7 +38,8 @@ using test::segmentCapsule;
 TEST(Posing, IdentityPoseAndUnitSizingGiveIdentityTransforms) {
   const Skeleton s = roundNumberTPose();
   for (const Pose& pose : {Pose{}, rotate(s, "elbowL", Eigen::Quaterniond::Identity())}) {
-    for (const Eigen::Affine3d& t : partTransforms(s, pose, Sizing{})) EXPECT_EQ(t.matrix(), Eigen::Matrix4d::Identity());
+    for (const Eigen::Affine3d& t : partTransforms(s, pose, Sizing{}))
+      EXPECT_EQ(t.matrix(), Eigen::Matrix4d::Identity());
     const std::vector<Vec3> joints = posedJoints(s, pose, Sizing{});
     for (size_t j = 0; j < joints.size(); ++j) EXPECT_EQ(joints[j], s.joints[j].position);
   }
@@ -62,8 +65,8 @@ TEST(Posing, ShoulderRotationMovesTheWholeArm) {
   const int forearm = partIndex(s, "forearmL");
   const VolumeSetCollider rest({{forearm, makeVolume(segmentCapsule(s["elbowL"].position, s["wristL"].position, 0.04)),
                                  Eigen::Affine3d::Identity()}});
-  const VolumeSetCollider posed({{forearm, makeVolume(segmentCapsule(s["elbowL"].position, s["wristL"].position, 0.04)),
-                                  transforms[forearm]}});
+  const VolumeSetCollider posed(
+      {{forearm, makeVolume(segmentCapsule(s["elbowL"].position, s["wristL"].position, 0.04)), transforms[forearm]}});
   const std::vector<Vec3> vertices = {{0.625, 1.47, 0.01}, {0.6, 1.45, -0.045}, {0.65, 1.41, 0.0}};
   const std::vector<Vec3> skinned = skin(skinWeights(s, vertices), transforms, vertices);
   for (size_t v = 0; v < vertices.size(); ++v)
@@ -163,9 +166,11 @@ TEST(Posing, RejectsBadFactorsAndPoses) {
     for (const double value : {0.4, 2.5}) {
       Sizing sizing;
       const std::string field = name;
-      (field == "height" ? sizing.height : field == "chest" ? sizing.chest : field == "waist" ? sizing.waist
-                                         : field == "hips"  ? sizing.hips
-                                                            : sizing.armLength) = value;
+      (field == "height"  ? sizing.height
+       : field == "chest" ? sizing.chest
+       : field == "waist" ? sizing.waist
+       : field == "hips"  ? sizing.hips
+                          : sizing.armLength) = value;
       try {
         partTransforms(s, Pose{}, sizing);
         ADD_FAILURE() << name << " = " << value << " accepted";

@@ -1,25 +1,23 @@
 // Linear blend skinning of the body mesh (sim/body/Skinning.h) on a small T-posed humanoid:
 // rigid far from the joints, half and half at a joint, exact at rest.
-#include "sim/body/Posing.h"
-#include "sim/body/Skinning.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+
+#include "sim/body/Posing.h"
+#include "sim/body/Skinning.h"
 
 using namespace figment;
 
 namespace {
 // The skeleton of test_Posing.cpp: y up, floor at 0, arms along +-x at y = 1.45.
 Skeleton tPose() {
-  return humanoidSkeleton({
-      {0, 1.0, 0},      {0, 1.1, 0},      {0, 1.3, 0},      {0, 1.5, 0},     {0, 1.6, 0},    {0, 1.8, 0},
-      {0.1, 0.95, 0},   {0.1, 0.5, 0},    {0.1, 0.08, 0},   {0.1, 0.0, 0.15},
-      {-0.1, 0.95, 0},  {-0.1, 0.5, 0},   {-0.1, 0.08, 0},  {-0.1, 0.0, 0.15},
-      {0.2, 1.45, 0},   {0.5, 1.45, 0},   {0.75, 1.45, 0},  {0.95, 1.45, 0},
-      {-0.2, 1.45, 0},  {-0.5, 1.45, 0},  {-0.75, 1.45, 0}, {-0.95, 1.45, 0},
-      {0.05, 1.45, 0},  {-0.05, 1.45, 0}, {0, 0.9, 0}});
+  return humanoidSkeleton({{0, 1.0, 0},      {0, 1.1, 0},      {0, 1.3, 0},     {0, 1.5, 0},       {0, 1.6, 0},
+                           {0, 1.8, 0},      {0.1, 0.95, 0},   {0.1, 0.5, 0},   {0.1, 0.08, 0},    {0.1, 0.0, 0.15},
+                           {-0.1, 0.95, 0},  {-0.1, 0.5, 0},   {-0.1, 0.08, 0}, {-0.1, 0.0, 0.15}, {0.2, 1.45, 0},
+                           {0.5, 1.45, 0},   {0.75, 1.45, 0},  {0.95, 1.45, 0}, {-0.2, 1.45, 0},   {-0.5, 1.45, 0},
+                           {-0.75, 1.45, 0}, {-0.95, 1.45, 0}, {0.05, 1.45, 0}, {-0.05, 1.45, 0},  {0, 0.9, 0}});
 }
 
 int part(const Skeleton& s, const std::string& name) {
@@ -86,8 +84,8 @@ TEST(Skinning, VerticesFarFromJointsFollowTheirPartRigidly) {
   const std::vector<Vec3> vertices = {{0.625, 1.48, 0.0}, {0.35, 1.45, 0.03}, {0.62, 1.42, -0.01}};
   const std::vector<int> parts = {part(s, "forearmL"), part(s, "upperArmL"), part(s, "forearmL")};
   const SkinWeights w = skinWeights(s, vertices);
-  const std::vector<Eigen::Affine3d> transforms = partTransforms(s, rotate(s, "elbowL", 1.0, Vec3(0, 1, 1).normalized()),
-                                                                 Sizing{1.1, 1.0, 1.0, 1.0, 1.2});
+  const std::vector<Eigen::Affine3d> transforms =
+      partTransforms(s, rotate(s, "elbowL", 1.0, Vec3(0, 1, 1).normalized()), Sizing{1.1, 1.0, 1.0, 1.0, 1.2});
   const std::vector<Vec3> posed = skin(w, transforms, vertices);
   for (size_t v = 0; v < vertices.size(); ++v) {
     EXPECT_EQ(weightOf(w, v, parts[v]), 1.0);
@@ -101,7 +99,8 @@ TEST(Skinning, VertexAtAJointMovesByTheAverageOfBothParts) {
   const SkinWeights w = skinWeights(s, {v});
   EXPECT_NEAR(weightOf(w, 0, part(s, "upperArmL")), 0.5, 1e-15);
   EXPECT_NEAR(weightOf(w, 0, part(s, "forearmL")), 0.5, 1e-15);
-  const std::vector<Eigen::Affine3d> transforms = partTransforms(s, rotate(s, "elbowL", M_PI / 2, Vec3::UnitZ()), Sizing{});
+  const std::vector<Eigen::Affine3d> transforms =
+      partTransforms(s, rotate(s, "elbowL", M_PI / 2, Vec3::UnitZ()), Sizing{});
   const Vec3 posed = skin(w, transforms, {v})[0];
   const Vec3 average = 0.5 * (transforms[part(s, "upperArmL")] * v + transforms[part(s, "forearmL")] * v);
   EXPECT_LT((posed - average).norm(), 1e-15);
@@ -118,10 +117,14 @@ TEST(Skinning, WeightBlendsSmoothlyAcrossTheJoint) {
   double previous = 0.0;
   for (size_t i = 0; i < line.size(); ++i) {
     const double x = line[i].x() - 0.5, wf = weightOf(w, i, forearm);
-    if (x <= -0.04) { EXPECT_NEAR(wf, 0.0, 1e-12); }
-    if (x >= 0.04) { EXPECT_NEAR(wf, 1.0, 1e-12); }
-    EXPECT_GE(wf, previous - 1e-15);          // monotonic
-    EXPECT_LE(wf - previous, 0.04 + 1e-12);   // no jump: smoothstep's slope is 1.5 / (2 R) per m
+    if (x <= -0.04) {
+      EXPECT_NEAR(wf, 0.0, 1e-12);
+    }
+    if (x >= 0.04) {
+      EXPECT_NEAR(wf, 1.0, 1e-12);
+    }
+    EXPECT_GE(wf, previous - 1e-15);         // monotonic
+    EXPECT_LE(wf - previous, 0.04 + 1e-12);  // no jump: smoothstep's slope is 1.5 / (2 R) per m
     previous = wf;
   }
 }

@@ -1,10 +1,10 @@
 // The dihedral angle at a joint and its gradient against finite differences.
-#include "support/FiniteDifferences.h"
-#include "sim/cloth/BendingJoint.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "sim/cloth/BendingJoint.h"
+#include "support/FiniteDifferences.h"
 
 using namespace figment;
 

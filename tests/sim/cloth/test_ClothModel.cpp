@@ -3,15 +3,14 @@
 // joint-wise bending stiffness bounds the section-wise one with the same forces, K stays
 // positive semi-definite on a crumpled sheet, the requests' forces add up, and the
 // matrix holds the lumped masses.
-#include "support/FiniteDifferences.h"
-#include "support/TestMeshes.h"
-#include "sim/cloth/ClothModel.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <random>
+
+#include "sim/cloth/ClothModel.h"
+#include "support/FiniteDifferences.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

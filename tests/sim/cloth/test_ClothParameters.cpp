@@ -1,12 +1,12 @@
 // ClothParameters::validate: the run's length in steps is bounded, so a slip of the
 // exponent (timeStep 1e-30, found by fuzzing figment-view, issue 15) is said, not run.
 
-#include "sim/cloth/ClothParameters.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <string>
+
+#include "sim/cloth/ClothParameters.h"
 
 using namespace figment;
 
@@ -23,7 +23,9 @@ std::string message(const ClothParameters& p) {
 
 }  // namespace
 
-TEST(ClothParameters, TheDefaultsAreValid) { EXPECT_EQ(message(ClothParameters{}), ""); }
+TEST(ClothParameters, TheDefaultsAreValid) {
+  EXPECT_EQ(message(ClothParameters{}), "");
+}
 
 TEST(ClothParameters, RefusesATimeStepThatWouldTakeMoreThanTenMillionSteps) {
   ClothParameters p;

@@ -1,10 +1,10 @@
 // The solver: analytic free fall, a hanging strip that comes to rest, repeatable runs,
 // collisions that keep cloth outside a body, and failures that are reported.
-#include "support/TestMeshes.h"
+#include <gtest/gtest.h>
+
 #include "sim/cloth/ClothSolver.h"
 #include "sim/collision/MeshCollider.h"
-
-#include <gtest/gtest.h>
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -77,7 +77,8 @@ TEST(ClothSolver, ClothDrapedOverABallStaysOutsideIt) {
   const double radius = 0.15;
   auto body = std::make_shared<MeshCollider>(meshes::sphere(radius, 48, 24));
   // A sheet placed just above the ball, falling onto it.
-  const TriangleMesh sheet = meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, radius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
+  const TriangleMesh sheet =
+      meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, radius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
   ClothSolver solver(sheet, p, body);
   solver.run();
   const double inf = std::numeric_limits<double>::infinity();

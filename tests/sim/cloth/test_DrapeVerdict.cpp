@@ -1,9 +1,9 @@
 // A drape's verdict: clean only when at rest, untorn, unlimited at the end and with no
 // failed implicit step; otherwise one line naming each thing that happened, with its
 // figures.
-#include "sim/cloth/DrapeVerdict.h"
-
 #include <gtest/gtest.h>
+
+#include "sim/cloth/DrapeVerdict.h"
 
 using namespace figment;
 

@@ -1,11 +1,11 @@
 // The garment's edges against their rest lengths: what the drape verdict's tear bound
 // and the implicit step control read.
-#include "sim/cloth/EdgeStretch.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+
+#include "sim/cloth/EdgeStretch.h"
 
 using namespace figment;
 
@@ -50,7 +50,7 @@ TEST(EdgeStretch, AJumpNeedsBothTheBoundAndTheGrowth) {
   grown[3] = Vec3(1, 2.2, 0);    // 1-3: 1 -> 2.2, grown by 1.2, past 1.5
   further[3] = Vec3(1, 2.5, 0);  // from `grown`: 2.2 -> 2.5, past 1.5 but grown by 0.3
   EXPECT_TRUE(edges.jumped(mesh.vertices, grown, 1.5, 1.0));
-  EXPECT_FALSE(edges.jumped(grown, further, 1.5, 1.0));   // stretched, but not in this step
+  EXPECT_FALSE(edges.jumped(grown, further, 1.5, 1.0));        // stretched, but not in this step
   EXPECT_FALSE(edges.jumped(mesh.vertices, grown, 2.5, 1.0));  // grown, but within the bound
   EXPECT_FALSE(edges.jumped(mesh.vertices, mesh.vertices, 1.5, 1.0));
   std::vector<Vec3> lost = mesh.vertices;

@@ -1,12 +1,12 @@
 // Fabric presets: each one valid, in the ranges its comments document (areal density,
 // KES-F thickness and bending rigidity), usable by an explicit solver, and ordered as
 // the fabrics are (denim heavier and stiffer than silk).
-#include "sim/cloth/MaterialPresets.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
+
+#include "sim/cloth/MaterialPresets.h"
 
 using namespace figment;
 

@@ -1,21 +1,24 @@
 // A section's force is minus the gradient of its elastic energy, its stiffness and
 // damping blocks are minus the derivatives of that force (central differences), and the
 // projection keeps the stiffness positive semi-definite under compression.
-#include "support/FiniteDifferences.h"
-#include "sim/cloth/MembraneElement.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <array>
+
+#include "sim/cloth/MembraneElement.h"
+#include "support/FiniteDifferences.h"
 
 using namespace figment;
 
 namespace {
-Material cotton() { return Material{0.0005, 300.0, 2.0e6, 0.3}; }
+Material cotton() {
+  return Material{0.0005, 300.0, 2.0e6, 0.3};
+}
 
-std::vector<Vec3> restTriangle() { return {Vec3(0, 0, 0), Vec3(0.03, 0, 0), Vec3(0.01, 0.025, 0.0)}; }
+std::vector<Vec3> restTriangle() {
+  return {Vec3(0, 0, 0), Vec3(0.03, 0, 0), Vec3(0.01, 0.025, 0.0)};
+}
 
 MembraneElement restSection() {
   const auto X = restTriangle();
@@ -155,7 +158,10 @@ TEST(MembraneElement, DampingIsMinusTheForceDerivativeInVelocity) {
   const double tau = 2e-3;
   const Derivatives damping = derivatives(section, x, v, tau, {0.0, 1.0, 0.0});
   const Eigen::MatrixXd numerical = meshes::numericalJacobian(
-      [&](const std::vector<Vec3>& w) { return forces(section, x, w, {true, tau, 0.0}); }, v, 1e-4);
+      [&](const std::vector<Vec3>& w) {
+        return forces(section, x, w, {true, tau, 0.0});
+      },
+      v, 1e-4);
   EXPECT_LT((damping.blocks + numerical).norm(), 1e-8 * damping.blocks.norm());
   const Derivatives stiffness = derivatives(section, x, v, tau, {0.0, 0.0, 1.0});
   Eigen::VectorXd flat(9);

@@ -2,10 +2,10 @@
 // sections only floats, gravity is minus the gradient of the potential energy, the air's
 // damping is minus the derivative of its force in the velocity (central differences),
 // and the wind's corner forces add up to p A |n . w| w.
-#include "support/FiniteDifferences.h"
-#include "sim/cloth/NodeTerms.h"
-
 #include <gtest/gtest.h>
+
+#include "sim/cloth/NodeTerms.h"
+#include "support/FiniteDifferences.h"
 
 using namespace figment;
 

@@ -1,16 +1,20 @@
 // The plane-stress law's stress is the gradient of its energy density (with the shear
 // strain counted twice), and its tangent C is the stress's derivative.
-#include "sim/cloth/PlaneStressLaw.h"
-
 #include <gtest/gtest.h>
+
+#include "sim/cloth/PlaneStressLaw.h"
 
 using namespace figment;
 
 namespace {
-Material cotton() { return Material{0.0005, 300.0, 2.0e6, 0.3}; }
+Material cotton() {
+  return Material{0.0005, 300.0, 2.0e6, 0.3};
+}
 
 // dw/de = (sigma_u, sigma_v, 2 tau_uv): the energy-conjugate stress.
-Eigen::Vector3d conjugate(const PlaneStress& s) { return {s.sigmaU, s.sigmaV, 2.0 * s.tauUV}; }
+Eigen::Vector3d conjugate(const PlaneStress& s) {
+  return {s.sigmaU, s.sigmaV, 2.0 * s.tauUV};
+}
 }  // namespace
 
 TEST(PlaneStressLaw, StressIsTheEnergyDensityGradient) {

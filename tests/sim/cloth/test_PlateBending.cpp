@@ -3,16 +3,15 @@
 // area on right-triangle and equilateral meshes, in either direction; the stiffness is
 // minus the forces' derivative where Gauss-Newton is exact, and the joint-wise form
 // bounds the section-wise one.
-#include "support/FiniteDifferences.h"
-#include "support/TestMeshes.h"
-#include "sim/cloth/PlateBending.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
-
 #include <cmath>
 #include <random>
+
+#include "sim/cloth/PlateBending.h"
+#include "support/FiniteDifferences.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -96,7 +95,8 @@ TEST(PlateBending, ForcesAreMinusTheEnergyGradient) {
   for (size_t i = 0; i < x.size(); ++i) x[i].y() += 0.004 * std::sin(7.0 * i) + 0.1 * x[i].x() * x[i].z() / 0.03;
   std::fill(force.begin(), force.end(), Vec3::Zero());
   bending.addForces(x, force);
-  const auto gradient = meshes::numericalGradient([&](const std::vector<Vec3>& p) { return bending.energy(p); }, x, 1e-8);
+  const auto gradient =
+      meshes::numericalGradient([&](const std::vector<Vec3>& p) { return bending.energy(p); }, x, 1e-8);
   for (size_t i = 0; i < x.size(); ++i)
     for (int k = 0; k < 3; ++k)
       EXPECT_NEAR(force[i][k], -gradient[i][k], 1e-6 * force[i].norm() + 1e-12) << "node " << i << " axis " << k;

@@ -1,9 +1,5 @@
 // The paper's wind (§2): a sinusoidal pressure whose phase changes at random moments
 // that depend only on the seed, pushing each section by its exposure to the wind.
-#include "support/TestMeshes.h"
-#include "sim/cloth/ClothSolver.h"
-#include "sim/cloth/Wind.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +7,10 @@
 #include <iomanip>
 #include <iostream>
 #include <stdexcept>
+
+#include "sim/cloth/ClothSolver.h"
+#include "sim/cloth/Wind.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -37,7 +37,9 @@ WindParameters gustyWind(uint64_t seed) {
 constexpr int kGrid = 8;
 constexpr int kBottomMiddle = kGrid / 2 + kGrid * (kGrid + 1);
 
-TriangleMesh hangingSheet() { return meshes::grid(kGrid, kGrid, 0.3, 0.3); }
+TriangleMesh hangingSheet() {
+  return meshes::grid(kGrid, kGrid, 0.3, 0.3);
+}
 
 ClothParameters hangingSheetParameters(const WindParameters& wind) {
   ClothParameters p;

@@ -1,19 +1,19 @@
 // The broad phase (sim/collision/BroadPhaseCollider.h): body parts far from the garment
 // are left out, and every answer is still the whole body's, so a drape is the same with
 // it or without it.
-#include "support/TestCapsules.h"
-#include "support/TestMeshes.h"
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+
 #include "sim/cloth/ClothSolver.h"
 #include "sim/collision/BroadPhaseCollider.h"
 #include "sim/collision/CollisionVolume.h"
 #include "sim/collision/CompositeCollider.h"
 #include "sim/collision/PlaneCollider.h"
 #include "sim/collision/VolumeSetCollider.h"
-
-#include <gtest/gtest.h>
-
-#include <limits>
-#include <random>
+#include "support/TestCapsules.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -25,12 +25,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 std::shared_ptr<VolumeSetCollider> capsuleFigure() {
   using test::segmentCapsule;
   const std::vector<CapsuleParameters> capsules = {
-      segmentCapsule(Vec3(0, 0.95, 0), Vec3(0, 1.45, 0), 0.15),        // trunk
-      segmentCapsule(Vec3(-0.1, 0.1, 0), Vec3(-0.1, 0.9, 0), 0.07),    // legs
+      segmentCapsule(Vec3(0, 0.95, 0), Vec3(0, 1.45, 0), 0.15),      // trunk
+      segmentCapsule(Vec3(-0.1, 0.1, 0), Vec3(-0.1, 0.9, 0), 0.07),  // legs
       segmentCapsule(Vec3(0.1, 0.1, 0), Vec3(0.1, 0.9, 0), 0.07),
       segmentCapsule(Vec3(-0.2, 1.45, 0), Vec3(-0.25, 0.85, 0), 0.045),  // arms
       segmentCapsule(Vec3(0.2, 1.45, 0), Vec3(0.25, 0.85, 0), 0.045),
-      segmentCapsule(Vec3(0, 1.6, 0), Vec3(0, 1.7, 0), 0.1),           // head
+      segmentCapsule(Vec3(0, 1.6, 0), Vec3(0, 1.7, 0), 0.1),  // head
   };
   std::vector<PosedCollisionVolume> volumes;
   for (size_t i = 0; i < capsules.size(); ++i)

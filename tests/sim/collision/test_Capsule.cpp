@@ -1,11 +1,6 @@
 // The 12-parameter capsule (paper §3.1): inside/outside, the nearest surface point and
 // the normal, against analytic shapes and against dense sampling of the surface; as a
 // collider under a falling sheet.
-#include "support/TestMeshes.h"
-#include "sim/collision/Capsule.h"
-#include "sim/collision/CapsuleCollider.h"
-#include "sim/cloth/ClothSolver.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +8,11 @@
 #include <memory>
 #include <random>
 #include <string>
+
+#include "sim/cloth/ClothSolver.h"
+#include "sim/collision/Capsule.h"
+#include "sim/collision/CapsuleCollider.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -22,8 +22,7 @@ namespace {
 double sampledDistance(const Capsule& capsule, const Vec3& p, int n = 600) {
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i <= n; ++i)
-    for (int j = 0; j < n; ++j)
-      best = std::min(best, (capsule.surface(3.0 * i / n, 2 * M_PI * j / n) - p).norm());
+    for (int j = 0; j < n; ++j) best = std::min(best, (capsule.surface(3.0 * i / n, 2 * M_PI * j / n) - p).norm());
   return best;
 }
 

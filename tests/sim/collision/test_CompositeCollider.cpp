@@ -1,13 +1,13 @@
 // Several colliders as one: the deepest contact wins, ties go to the first part, and
 // when nothing touches the bound is the smallest of the parts' bounds.
-#include "support/TestMeshes.h"
-#include "sim/collision/CompositeCollider.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/collision/PlaneCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <limits>
+
+#include "sim/collision/CompositeCollider.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/collision/PlaneCollider.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -55,7 +55,7 @@ TEST(CompositeCollider, PicksTheDeepestPenetration) {
   ballInFloor.add(std::make_shared<PlaneCollider>(Vec3(0, -0.1, 0), Vec3::UnitY()));
   Contact c;
   ASSERT_TRUE(ballInFloor.contact(Vec3(0, -0.11, 0), 0.003, 0.05, c));  // 1 cm under the floor
-  EXPECT_NEAR(c.distance, -0.04, 1e-3);  // but ~4 cm inside the ball: the ball wins
+  EXPECT_NEAR(c.distance, -0.04, 1e-3);                                 // but ~4 cm inside the ball: the ball wins
   EXPECT_LT(c.normal.y(), -0.99);
 }
 

@@ -1,13 +1,13 @@
 // The exact collider tells inside from outside on a closed surface and pushes out
 // along the nearest surface normal.
-#include "support/TestMeshes.h"
-#include "sim/collision/MeshCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
+
+#include "sim/collision/MeshCollider.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

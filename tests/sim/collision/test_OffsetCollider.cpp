@@ -1,13 +1,13 @@
 // A surface moved out along its normal (sim/collision/OffsetCollider.h): an inner
 // garment's surface with its thickness on it.
-#include "support/TestMeshes.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/collision/OffsetCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <memory>
+
+#include "sim/collision/MeshCollider.h"
+#include "sim/collision/OffsetCollider.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

@@ -1,11 +1,11 @@
 // The plane collider: signed distances along the normal, projections onto the plane,
 // the plane's normal everywhere, exact bounds, and a zero normal refused.
-#include "sim/collision/PlaneCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
+
+#include "sim/collision/PlaneCollider.h"
 
 using namespace figment;
 

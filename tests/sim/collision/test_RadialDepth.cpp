@@ -1,10 +1,10 @@
 // The radial depth volume (paper §3.2): a cone's nearest point and normal are exact, the
 // push-out follows the normal, not the radius.
-#include "sim/collision/RadialDepth.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "sim/collision/RadialDepth.h"
 
 using namespace figment;
 
@@ -23,7 +23,8 @@ RadialDepthParameters wavyVolume() {
   RadialDepthParameters p;
   p.length = 0.4;
   p.harmonics = 2;
-  p.coefficients = {{0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
+  p.coefficients = {
+      {0.08, 0.01, -0.005, 0.002, 0.001}, {0.06, -0.01, 0.004, 0.0, -0.002}, {0.07, 0.0, 0.0, 0.003, 0.0}};
   return p;
 }
 

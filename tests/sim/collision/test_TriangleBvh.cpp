@@ -1,10 +1,10 @@
 // The BVH's closest points match testing every triangle.
-#include "support/TestMeshes.h"
-#include "sim/collision/TriangleBvh.h"
-
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "sim/collision/TriangleBvh.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

@@ -1,17 +1,17 @@
 // Posed part volumes (sim/collision/CollisionVolume.h) and the mannequin as their union
 // (sim/collision/VolumeSetCollider.h): mapped queries against dense sampling of the mapped surface,
 // and the overlap rule at a bent elbow.
-#include "support/TestMeshes.h"
-#include "support/TestCapsules.h"
-#include "sim/collision/CollisionVolume.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/collision/VolumeSetCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <random>
+
+#include "sim/collision/CollisionVolume.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/collision/VolumeSetCollider.h"
+#include "support/TestCapsules.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -24,7 +24,8 @@ using test::segmentCapsule;
 Eigen::Affine3d stretchedMap() {
   Eigen::Affine3d map = Eigen::Affine3d::Identity();
   map.linear() = Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()).toRotationMatrix() *
-                 Vec3(1.25, 0.85, 1.1).asDiagonal() * Eigen::AngleAxisd(-0.3, Vec3(0, 1, 1).normalized()).toRotationMatrix();
+                 Vec3(1.25, 0.85, 1.1).asDiagonal() *
+                 Eigen::AngleAxisd(-0.3, Vec3(0, 1, 1).normalized()).toRotationMatrix();
   map.translation() = Vec3(0.1, -0.2, 0.3);
   return map;
 }
@@ -48,10 +49,10 @@ Eigen::Affine3d scaling(double x, double y, double z) {
 struct Elbow {
   Capsule upper{segmentCapsule(Vec3::Zero(), Vec3(0.3, 0, 0), 0.05)};
   Capsule fore{segmentCapsule(Vec3(0.3, 0, 0), Vec3(0.55, 0, 0), 0.045)};  // rest: straight on
-  Eigen::Affine3d bend = Eigen::Translation3d(0.3, 0, 0) * Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()) *
-                         Eigen::Translation3d(-0.3, 0, 0);
-  VolumeSetCollider collider{{{0, makeVolume(upper.parameters()), Eigen::Affine3d::Identity()},
-                              {1, makeVolume(fore.parameters()), bend}}};
+  Eigen::Affine3d bend =
+      Eigen::Translation3d(0.3, 0, 0) * Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ()) * Eigen::Translation3d(-0.3, 0, 0);
+  VolumeSetCollider collider{
+      {{0, makeVolume(upper.parameters()), Eigen::Affine3d::Identity()}, {1, makeVolume(fore.parameters()), bend}}};
   // Exact (Levenberg-Marquardt) signed distances to each volume in world space.
   double upperDistance(const Vec3& p) const { return upper.nearest(p).distance; }
   double foreDistance(const Vec3& p) const { return fore.nearest(bend.inverse() * p).distance; }

@@ -1,12 +1,12 @@
 // Cutting along a plane: the kept part's area is the analytic one, the cut edge lies on
 // the plane, windings stay, snapping leaves no sliver.
-#include "support/MeshChecks.h"
-#include "support/TestMeshes.h"
-#include "sim/core/PlaneClip.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "sim/core/PlaneClip.h"
+#include "support/MeshChecks.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

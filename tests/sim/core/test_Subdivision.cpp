@@ -1,11 +1,11 @@
 // Midpoint subdivision: four triangles for one, the surface unmoved, windings kept.
-#include "support/MeshChecks.h"
-#include "support/TestMeshes.h"
-#include "sim/core/Subdivision.h"
-
 #include <gtest/gtest.h>
 
 #include <map>
+
+#include "sim/core/Subdivision.h"
+#include "support/MeshChecks.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

@@ -1,11 +1,11 @@
 // Bounds and welding by position: literal meshes where the answer is known.
-#include "support/BoxFigure.h"
-#include "support/MeshChecks.h"
-#include "sim/core/TriangleMesh.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+
+#include "sim/core/TriangleMesh.h"
+#include "support/BoxFigure.h"
+#include "support/MeshChecks.h"
 
 using namespace figment;
 
@@ -17,7 +17,9 @@ TEST(TriangleMesh, BoundsOfPoints) {
   EXPECT_FALSE(bounds.empty());
 }
 
-TEST(TriangleMesh, BoundsOfNothingIsEmpty) { EXPECT_TRUE(boundsOf({}).empty()); }
+TEST(TriangleMesh, BoundsOfNothingIsEmpty) {
+  EXPECT_TRUE(boundsOf({}).empty());
+}
 
 // A box with four vertices per face (split along every edge, as texture seams split a mesh)
 // welds into the closed box: 8 corners, every edge shared by two triangles, volume intact.
@@ -54,7 +56,7 @@ TEST(TriangleMesh, MergeByPositionUsesTheTolerance) {
   const double tolerance = 1e-3;
   TriangleMesh mesh;
   mesh.vertices = {Vec3(0.9999e-3, 0, 0), Vec3(1.0004e-3, 0, 0),  // 0.5 um apart, either side of x = 1 mm
-                   Vec3(0, 1, 0), Vec3(0, 1.0011, 0),              // 1.1 mm apart
+                   Vec3(0, 1, 0), Vec3(0, 1.0011, 0),             // 1.1 mm apart
                    Vec3(1, 0, 0)};
   mesh.triangles = {{0, 2, 4}, {1, 3, 4}};
   const TriangleMesh merged = mergeByPosition(mesh, tolerance);
@@ -117,8 +119,8 @@ TEST(TriangleMesh, CroppedToBoxKeepsTrianglesWhoseCentroidIsInside) {
 // true distance: the far copies weld, the near ones stay apart from them.
 TEST(TriangleMesh, MergeByPositionTakesCoordinatesFarBeyondAnyBody) {
   TriangleMesh mesh;
-  mesh.vertices = {Vec3(-1.1e20, 0, 0), Vec3(1, 0, 0), Vec3(0, 1e300, 0), Vec3(-1.1e20, 0, 0),
-                   Vec3(0, 0, -1e300), Vec3(0, 0, 0)};
+  mesh.vertices = {Vec3(-1.1e20, 0, 0), Vec3(1, 0, 0),      Vec3(0, 1e300, 0),
+                   Vec3(-1.1e20, 0, 0), Vec3(0, 0, -1e300), Vec3(0, 0, 0)};
   mesh.triangles = {{0, 1, 2}, {3, 4, 5}};
   const TriangleMesh merged = mergeByPosition(mesh);
   EXPECT_EQ(merged.vertices.size(), 5u);  // the two at -1.1e20 m weld

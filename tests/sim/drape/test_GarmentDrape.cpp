@@ -2,12 +2,12 @@
 // garment, parameters and body make the drape; a whole drape reports every step to its
 // observer and returns the garment's own sections, a progressive one the level it
 // reached; both rest on the ball, not in it.
+#include <gtest/gtest.h>
+
 #include "sim/collision/MeshCollider.h"
 #include "sim/drape/GarmentDrape.h"
 #include "sim/progressive/Decimation.h"
 #include "support/TestMeshes.h"
-
-#include <gtest/gtest.h>
 
 using namespace figment;
 
@@ -17,8 +17,7 @@ constexpr double kRadius = 0.15;  // m, the ball
 DrapeRequest sheetOnBall() {
   DrapeRequest request;
   // A 50 cm sheet of 16 x 16 quads, 2 cm above the ball.
-  request.garment =
-      meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
+  request.garment = meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
   request.parameters.integrator = Integrator::Implicit;
   request.parameters.timeStep = 1.0 / 50.0;
   request.parameters.maxTime = 6.0;

@@ -1,12 +1,12 @@
 // The genetic axis search of the radial depth fit: finds a tube's axis from a nearby
 // start, never ends worse than its start, repeats with its seed.
-#include "sim/fitting/AxisSearch.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 #include <vector>
+
+#include "sim/fitting/AxisSearch.h"
 
 using namespace figment;
 
@@ -46,7 +46,8 @@ TEST(AxisSearch, FindsATubesAxisFromANearbyStart) {
   AxisSearchOptions options;
   options.population = 30;
   options.generations = 60;
-  const AxisSearchResult found = searchAxis(start, [&](const Axis& a) { return spread(points, a); }, options);
+  const AxisSearchResult found = searchAxis(
+      start, [&](const Axis& a) { return spread(points, a); }, options);
   EXPECT_LT(found.cost, 0.1 * spread(points, start));
   EXPECT_LT(std::acos(std::min(1.0, found.axis.direction.dot(kTrue.direction))), 0.03);
   // The found axis passes within 3 mm of the true one at the tube's middle.

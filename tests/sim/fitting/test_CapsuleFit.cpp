@@ -1,14 +1,14 @@
 // Fitting a capsule by the paper's genetic algorithm: a capsule fitted to points of a
 // known capsule's surface reproduces that surface; a fit encloses its points; a seed
 // repeats a fit exactly.
-#include "sim/fitting/CapsuleFit.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
+
+#include "sim/fitting/CapsuleFit.h"
 
 using namespace figment;
 
@@ -50,7 +50,8 @@ TEST(CapsuleFit, AFittedCapsuleReproducesTheCapsuleItsPointsCameFrom) {
   const CapsuleFit fit = fitCapsule(points);
   const Capsule fitted(fit.parameters);
   const double size = thigh().y;
-  RecordProperty("hausdorff_mm", std::to_string(1000 * std::max(oneSidedHausdorff(truth, fitted), oneSidedHausdorff(fitted, truth))));
+  RecordProperty("hausdorff_mm",
+                 std::to_string(1000 * std::max(oneSidedHausdorff(truth, fitted), oneSidedHausdorff(fitted, truth))));
   RecordProperty("enclosure_scale", std::to_string(fit.enclosureScale));
   EXPECT_LT(oneSidedHausdorff(truth, fitted), 0.01 * size);
   EXPECT_LT(oneSidedHausdorff(fitted, truth), 0.01 * size);

@@ -2,14 +2,14 @@
 // part (an L of two tubes, which one capsule cannot fit) and a straight one. Each
 // volume carries its part's name, every part gets one, and the part's vertices are all
 // inside its volumes (§3.3: forced enclosure).
-#include "support/TestMeshes.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
-#include "sim/collision/Capsule.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
+
+#include "sim/collision/Capsule.h"
+#include "sim/fitting/CollisionVolumeFitting.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -45,7 +45,9 @@ void addTube(TriangleMesh& mesh, const Vec3& a, const Vec3& b, double r, int sli
 // long leg of the L).
 Skeleton twoParts() {
   Skeleton s;
-  s.joints = {{"knee", -1, Vec3(0, 0.5, 0)}, {"ankle", 0, Vec3(0, 0.12, 0)}, {"heel", 1, Vec3(0, 0.05, 0)},
+  s.joints = {{"knee", -1, Vec3(0, 0.5, 0)},
+              {"ankle", 0, Vec3(0, 0.12, 0)},
+              {"heel", 1, Vec3(0, 0.05, 0)},
               {"toe", 2, Vec3(0, 0.05, 0.3)}};
   s.parts = {{"shin", 0, 1}, {"foot", 2, 3}};
   return s;

@@ -1,12 +1,12 @@
 // The genetic search both fits share: it finds a bowl's minimum, keeps its best member
 // (never worse than the start), stays within its bounds, repeats with its seed, counts
 // its evaluations and refuses a schedule it cannot run.
-#include "sim/fitting/GeneticSearch.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 #include <vector>
+
+#include "sim/fitting/GeneticSearch.h"
 
 using namespace figment;
 

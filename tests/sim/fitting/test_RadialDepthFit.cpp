@@ -1,12 +1,12 @@
 // Fitting the radial depth volume (paper §3.2): a cylinder has a constant radial depth
 // and no higher harmonics; a fitted volume encloses its part's vertices; an envelope fit
 // encloses its points and hugs them.
-#include "support/TestMeshes.h"
-#include "sim/fitting/RadialDepthFit.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "sim/fitting/RadialDepthFit.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

@@ -2,14 +2,14 @@
 // exact: a connected, consistently wound mesh with a boundary, outside the body everywhere by
 // the clearance, its straps over the shoulders. The same dress on the default body is tested
 // in tests/io/scenarios/test_DressOnBody.cpp.
-#include "support/BoxFigure.h"
-#include "support/DressChecks.h"
-#include "support/MeshChecks.h"
-#include "sim/garment/StrapDress.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+
+#include "sim/garment/StrapDress.h"
+#include "support/BoxFigure.h"
+#include "support/DressChecks.h"
+#include "support/MeshChecks.h"
 
 using namespace figment;
 
@@ -95,8 +95,8 @@ TEST(StrapDress, NormalsPointAwayFromTheBody) {
   for (size_t i = 0; i < mesh.triangles.size(); ++i) {
     const Triangle& t = mesh.triangles[i];
     const Vec3 c = checks::centroidOf(mesh, t);
-    const Vec3 inside = checks::onStrap(dress, static_cast<int>(i)) ? Vec3(c.x(), dress.topHeight, 0.0)
-                                                                    : Vec3(0.0, c.y(), 0.0);
+    const Vec3 inside =
+        checks::onStrap(dress, static_cast<int>(i)) ? Vec3(c.x(), dress.topHeight, 0.0) : Vec3(0.0, c.y(), 0.0);
     if (checks::normalOf(mesh, t).dot(c - inside) > 0) ++outward;
   }
   EXPECT_EQ(outward, static_cast<int>(mesh.triangles.size()));

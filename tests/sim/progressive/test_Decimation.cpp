@@ -1,14 +1,14 @@
 // Decimation by edge collapses and its inverse, the vertex splits: replaying every split
 // gives back the garment exactly, no level folds over, the perimeter stays the perimeter.
-#include "support/TestMeshes.h"
-#include "sim/progressive/Decimation.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
+
+#include "sim/progressive/Decimation.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

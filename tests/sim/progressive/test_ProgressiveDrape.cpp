@@ -1,16 +1,16 @@
 // Progressive drapes: splits place their vertices from the deformed neighbourhood (exact
 // for any affine deformation), keep the garment's mass, never fold a section over, and
 // end near the drape of the full garment.
-#include "support/TestMeshes.h"
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
 #include "sim/collision/CapsuleCollider.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/progressive/Decimation.h"
 #include "sim/progressive/ProgressiveDrape.h"
 #include "sim/progressive/SplitPlacement.h"
-
-#include <gtest/gtest.h>
-
-#include <Eigen/Geometry>
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -22,7 +22,9 @@ TriangleMesh sheetAboveBall() {
   return meshes::grid(20, 20, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
 }
 
-std::shared_ptr<const Collider> ball() { return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24)); }
+std::shared_ptr<const Collider> ball() {
+  return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24));
+}
 
 ClothParameters implicitDrape() {
   ClothParameters p;
@@ -111,8 +113,7 @@ TEST(ProgressiveDrape, SplitsOnTheBallPutNoVertexInsideItNorStretchAnEdgeFar) {
   while (drape.level() == 0 && drape.solver().time() < 6.0) drape.step();
   ASSERT_EQ(drape.level(), pm.levels()) << "the coarse level never rested";
   const std::vector<Vec3> placed = drape.fullPositions();  // as the split left them
-  for (size_t i = 0; i < placed.size(); ++i)
-    EXPECT_GT(placed[i].norm(), kRadius + 0.7 * p.clearance) << "vertex " << i;
+  for (size_t i = 0; i < placed.size(); ++i) EXPECT_GT(placed[i].norm(), kRadius + 0.7 * p.clearance) << "vertex " << i;
   double longest = 0.0;
   for (const Triangle& t : sheet.triangles)
     for (int k = 0; k < 3; ++k) {

@@ -1,16 +1,18 @@
 // A garment at any number of sections: finer by subdivision then decimation, coarser by
 // decimation alone; the shape and the perimeter stay.
-#include "support/TestMeshes.h"
-#include "sim/progressive/Resampling.h"
-
 #include <gtest/gtest.h>
 
 #include <stdexcept>
 
+#include "sim/progressive/Resampling.h"
+#include "support/TestMeshes.h"
+
 using namespace figment;
 
 namespace {
-Bounds boundsOf(const TriangleMesh& mesh) { return figment::boundsOf(mesh.vertices); }
+Bounds boundsOf(const TriangleMesh& mesh) {
+  return figment::boundsOf(mesh.vertices);
+}
 }  // namespace
 
 TEST(Resampling, AnyCountAboveOrBelowTheGarmentsKeepsItsShape) {

@@ -1,14 +1,13 @@
 // Drapes at two resolutions compared point by point: a garment's vertices found on a
 // resampled copy's rest surface, and carried along when that copy moves.
-#include "sim/progressive/RestCorrespondence.h"
-#include "sim/progressive/Resampling.h"
-#include "support/TestMeshes.h"
-
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-
 #include <stdexcept>
+
+#include "sim/progressive/Resampling.h"
+#include "sim/progressive/RestCorrespondence.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

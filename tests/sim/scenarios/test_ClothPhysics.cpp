@@ -1,13 +1,13 @@
 // The solver against closed-form physics: a sheet falling flat through air reaches its
 // terminal speed exponentially, and cloth on an inclined plane sticks or slides as
 // Coulomb's law says (friction coefficient above or below tan(slope)).
-#include "support/TestMeshes.h"
-#include "sim/cloth/ClothSolver.h"
-#include "sim/collision/PlaneCollider.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "sim/cloth/ClothSolver.h"
+#include "sim/collision/PlaneCollider.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -18,7 +18,7 @@ TEST(ClothPhysics, SheetFallingThroughAirApproachesTerminalSpeedExponentially) {
   //   y(t) = y0 - v_t (t - tau (1 - exp(-t / tau))).
   ClothParameters p;
   p.strainRateDamping = 0.0;
-  p.airResistance = 1.5;                                         // N.s/m^3
+  p.airResistance = 1.5;                                           // N.s/m^3
   const double tau = p.material.arealDensity() / p.airResistance;  // 0.1 s
   const double g = -p.gravity.y();
   const double terminal = g * tau;
@@ -58,9 +58,8 @@ struct Method {
   double timeStep;
   ContactModel contacts = ContactModel::Constraints;
 };
-const Method kMethods[] = {{Integrator::Heun, 1.5e-4},
-                           {Integrator::Implicit, 0.01},
-                           {Integrator::Implicit, 0.01, ContactModel::Penalty}};
+const Method kMethods[] = {
+    {Integrator::Heun, 1.5e-4}, {Integrator::Implicit, 0.01}, {Integrator::Implicit, 0.01, ContactModel::Penalty}};
 
 std::string nameOf(const Method& m) {
   return std::string(integratorName(m.integrator)) + (m.contacts == ContactModel::Penalty ? " + penalty" : "");
@@ -106,8 +105,8 @@ Slide drape(const Incline& incline, const ClothParameters& p) {
     s.leastDownhill = std::min(s.leastDownhill, moved.dot(incline.downhill()));
     s.mostDownhill = std::max(s.mostDownhill, moved.dot(incline.downhill()));
     s.largestMotion = std::max(s.largestMotion, moved.norm());
-    s.largestHeightError = std::max(
-        s.largestHeightError, std::abs(solver.positions()[i].dot(incline.normal()) - restHeight(incline, p)));
+    s.largestHeightError =
+        std::max(s.largestHeightError, std::abs(solver.positions()[i].dot(incline.normal()) - restHeight(incline, p)));
   }
   return s;
 }
@@ -115,27 +114,27 @@ Slide drape(const Incline& incline, const ClothParameters& p) {
 
 TEST(ClothPhysics, ClothStaysOnASlopeWhenFrictionExceedsTanAlpha) {
   for (const Method& method : kMethods)
-  for (const double degrees : {15.0, 30.0}) {
-    SCOPED_TRACE(testing::Message() << nameOf(method) << ", " << degrees << " degrees");
-    const Incline incline{degrees * M_PI / 180.0};
-    const ClothParameters p = onIncline(std::tan(incline.slope) + 0.1, method);
-    const Slide s = drape(incline, p);
-    EXPECT_LT(s.largestMotion, 1e-3);
-    EXPECT_LT(s.largestHeightError, 1e-9);  // held at its rest height
-  }
+    for (const double degrees : {15.0, 30.0}) {
+      SCOPED_TRACE(testing::Message() << nameOf(method) << ", " << degrees << " degrees");
+      const Incline incline{degrees * M_PI / 180.0};
+      const ClothParameters p = onIncline(std::tan(incline.slope) + 0.1, method);
+      const Slide s = drape(incline, p);
+      EXPECT_LT(s.largestMotion, 1e-3);
+      EXPECT_LT(s.largestHeightError, 1e-9);  // held at its rest height
+    }
 }
 
 TEST(ClothPhysics, ClothSlidesDownASlopeWhenFrictionIsBelowTanAlpha) {
   for (const Method& method : kMethods)
-  for (const double degrees : {15.0, 30.0}) {
-    SCOPED_TRACE(testing::Message() << nameOf(method) << ", " << degrees << " degrees");
-    const Incline incline{degrees * M_PI / 180.0};
-    const ClothParameters p = onIncline(std::tan(incline.slope) - 0.1, method);
-    const Slide s = drape(incline, p);
-    EXPECT_GT(s.leastDownhill, 0.05);
-    EXPECT_LT(s.mostDownhill - s.leastDownhill, 1e-6);  // the square slides as one piece
-    EXPECT_LT(s.largestHeightError, 1e-9);              // on the plane, at its rest height
-  }
+    for (const double degrees : {15.0, 30.0}) {
+      SCOPED_TRACE(testing::Message() << nameOf(method) << ", " << degrees << " degrees");
+      const Incline incline{degrees * M_PI / 180.0};
+      const ClothParameters p = onIncline(std::tan(incline.slope) - 0.1, method);
+      const Slide s = drape(incline, p);
+      EXPECT_GT(s.leastDownhill, 0.05);
+      EXPECT_LT(s.mostDownhill - s.leastDownhill, 1e-6);  // the square slides as one piece
+      EXPECT_LT(s.largestHeightError, 1e-9);              // on the plane, at its rest height
+    }
 }
 
 // Caught a defect: the contact response once set a touching node's velocity to its mean
@@ -145,19 +144,18 @@ TEST(ClothPhysics, SlidingClothAcceleratesAtCoulombsRate) {
   // On a slope with sliding friction mu the acceleration is g (sin a - mu cos a), so in
   // t seconds the cloth slides g (sin a - mu cos a) t^2 / 2.
   for (const Method& method : kMethods)
-  for (const double degrees : {15.0, 30.0}) {
-    for (const double below : {0.1, 0.3}) {
-      SCOPED_TRACE(testing::Message() << nameOf(method) << ", " << degrees
-                                      << " degrees, mu = tan a - " << below);
-      const Incline incline{degrees * M_PI / 180.0};
-      const ClothParameters p = onIncline(std::max(0.0, std::tan(incline.slope) - below), method);
-      const Slide s = drape(incline, p);
-      const double g = -p.gravity.y();
-      const double a = g * (std::sin(incline.slope) - p.friction * std::cos(incline.slope));
-      const double expected = 0.5 * a * p.maxTime * p.maxTime;
-      // Backward Euler runs ahead by a dt t / 2, dt / t = 2 % at 1/100 s.
-      const double tolerance = method.integrator == Integrator::Implicit ? 0.025 : 0.02;
-      EXPECT_NEAR(s.leastDownhill, expected, tolerance * expected);
+    for (const double degrees : {15.0, 30.0}) {
+      for (const double below : {0.1, 0.3}) {
+        SCOPED_TRACE(testing::Message() << nameOf(method) << ", " << degrees << " degrees, mu = tan a - " << below);
+        const Incline incline{degrees * M_PI / 180.0};
+        const ClothParameters p = onIncline(std::max(0.0, std::tan(incline.slope) - below), method);
+        const Slide s = drape(incline, p);
+        const double g = -p.gravity.y();
+        const double a = g * (std::sin(incline.slope) - p.friction * std::cos(incline.slope));
+        const double expected = 0.5 * a * p.maxTime * p.maxTime;
+        // Backward Euler runs ahead by a dt t / 2, dt / t = 2 % at 1/100 s.
+        const double tolerance = method.integrator == Integrator::Implicit ? 0.025 : 0.02;
+        EXPECT_NEAR(s.leastDownhill, expected, tolerance * expected);
+      }
     }
-  }
 }

@@ -1,11 +1,11 @@
 // The three integrators converge at their orders, and the acceleration limiters cap
 // each node's net acceleration as the paper's Fig. 2.3 draws them.
-#include "support/TestMeshes.h"
-#include "sim/cloth/ClothSolver.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "sim/cloth/ClothSolver.h"
+#include "support/TestMeshes.h"
 
 using namespace figment;
 

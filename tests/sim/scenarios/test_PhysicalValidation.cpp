@@ -8,17 +8,17 @@
 // evaluation per step. Air resistance (mass-proportional damping) settles every mode and
 // vanishes at rest. Both run again with the implicit integrator at dt = 1/100 s, far
 // beyond the explicit limit, to the same tolerances.
-#include "support/TestMeshes.h"
-#include "sim/cloth/ClothSolver.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "sim/cloth/ClothSolver.h"
+#include "support/TestMeshes.h"
+
 using namespace figment;
 
 namespace {
-constexpr double kG = 9.81;  // m/s^2, |gravity| in ClothParameters
+constexpr double kG = 9.81;             // m/s^2, |gravity| in ClothParameters
 constexpr double kImplicitStep = 0.01;  // s
 
 // `explicitStep`: symplectic Euler's stable step; with Integrator::Implicit the step is
@@ -50,9 +50,9 @@ void expectHookesHangingStrip(Integrator integrator) {
   // the middle third only; its effect on dL is ~ nu^2 w / L ~ 0.5 %.
   const int across = 4, along = 80;
   const double width = 0.05, length = 1.0;
-  const Material m;  // the default cloth
-  const double waveSpeed = std::sqrt(m.youngsModulus / m.density);          // 58 m/s
-  const double omega1 = M_PI * waveSpeed / (2.0 * length);                  // fixed-free bar
+  const Material m;                                                 // the default cloth
+  const double waveSpeed = std::sqrt(m.youngsModulus / m.density);  // 58 m/s
+  const double omega1 = M_PI * waveSpeed / (2.0 * length);          // fixed-free bar
   const double expectedElongation = m.density * kG * length * length / (2.0 * m.youngsModulus);
   const ClothParameters p = settling(m, omega1, 5e-5, 1e-3 * expectedElongation * omega1, integrator);
   const TriangleMesh strip = meshes::grid(across, along, width, length);
@@ -90,8 +90,7 @@ namespace {
 // x = 0 by pinning the nodes at x = -L/n and x = 0 (so the edge cannot rotate), sagging
 // under its own weight along -y. `mesh` builds n sections along x and 4 across.
 double cantileverDroop(const TriangleMesh& mesh, const std::vector<int>& clamped, const std::vector<int>& tip,
-                       double youngsModulus, double thickness, double length, double spacing,
-                       Integrator integrator) {
+                       double youngsModulus, double thickness, double length, double spacing, Integrator integrator) {
   Material m;
   m.youngsModulus = youngsModulus;
   m.thickness = thickness;
@@ -163,7 +162,9 @@ void expectBeamFormulaDroop(Integrator integrator) {
 }
 }  // namespace
 
-TEST(PhysicalValidation, CantileverDroopsAsTheBeamFormulaSays) { expectBeamFormulaDroop(Integrator::SymplecticEuler); }
+TEST(PhysicalValidation, CantileverDroopsAsTheBeamFormulaSays) {
+  expectBeamFormulaDroop(Integrator::SymplecticEuler);
+}
 
 TEST(PhysicalValidation, ImplicitCantileverDroopsAsTheBeamFormulaSays) {
   expectBeamFormulaDroop(Integrator::Implicit);

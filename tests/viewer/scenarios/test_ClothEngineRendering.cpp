@@ -1,16 +1,15 @@
 // Rendering reads the garment's coordinates but simulates only when an input changed.
 
-#include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngine.h"
-#include "viewer/OffscreenContext.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneStaging.h"
-
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
+
+#include "nodes/SceneSearch.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;

@@ -1,14 +1,9 @@
 // Every scene in scenes/examples/ (the examples of docs/authoring.md, one per node) is
 // read and rendered by figment-view, and draws something: one test per file, found by
 // listing the folder, so a new example is covered without touching this file.
-#include "io/MakeHumanFiles.h"
-#include "support/TempDir.h"
-
 #include <Inventor/SbImage.h>
 #include <Inventor/SoDB.h>
-
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -18,6 +13,9 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "io/MakeHumanFiles.h"
+#include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
@@ -34,7 +32,9 @@ std::vector<std::string> exampleNames() {
   return names;
 }
 
-std::string quote(const std::string& text) { return "'" + text + "'"; }
+std::string quote(const std::string& text) {
+  return "'" + text + "'";
+}
 
 // Pixels of `png` that differ from figment-view's grey background (0.8).
 int drawnPixels(const std::string& png) {
@@ -66,9 +66,9 @@ TEST_P(ExampleScene, RendersNonEmptyPixels) {
   const std::string png = (dir.path() / "example.png").string();
   const std::string err = (dir.path() / "stderr.txt").string();
   constexpr int kWidth = 160, kHeight = 120;
-  const int raw = std::system((quote(FIGMENT_VIEW_EXECUTABLE) + " " + quote(scene) + " -o " + quote(png) +
-                               " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
-                               " --no-cache 2> " + quote(err) + " > /dev/null")
+  const int raw = std::system((quote(FIGMENT_VIEW_EXECUTABLE) + " " + quote(scene) + " -o " + quote(png) + " --size " +
+                               std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --no-cache 2> " + quote(err) +
+                               " > /dev/null")
                                   .c_str());
   std::stringstream message;
   message << std::ifstream(err).rdbuf();

@@ -2,30 +2,31 @@
 // input gives one line on stderr naming the file, node, field and value, a non-zero
 // exit status and no image.
 
-#include "io/MeshImport.h"
-#include "support/PngPixels.h"
-#include "support/SceneTestSupport.h"
-#include "support/TPoseSkeleton.h"
-#include "support/TempDir.h"
-
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+
+#include "io/MeshImport.h"
+#include "support/PngPixels.h"
+#include "support/SceneTestSupport.h"
+#include "support/TPoseSkeleton.h"
+#include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
 // `text` as one shell word.
-std::string quote(const std::string& text) { return std::string("'").append(text).append("'"); }
+std::string quote(const std::string& text) {
+  return std::string("'").append(text).append("'");
+}
 
 struct ProcessResult {
   int status = -1;
@@ -67,9 +68,13 @@ std::string clothScene(const std::string& fields, const std::string& before = ""
          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
          "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
          "    coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01\n"
-         "    " + fields + "\n"
+         "    " +
+         fields +
+         "\n"
          "  } . positions }\n"
-         "  DEF Layer ClothingLayer { coordIndex [ " + layerIndex + " ] }\n"
+         "  DEF Layer ClothingLayer { coordIndex [ " +
+         layerIndex +
+         " ] }\n"
          "}\n";
 }
 
@@ -86,7 +91,8 @@ void expectOnlyStoppedMidFall(const std::string& err, const std::string& scene) 
 std::string sharedChainScene(int levels) {
   std::string text = "#Inventor V2.1 ascii\nDEF L0 Cube { }\n";
   for (int i = 1; i <= levels; ++i)
-    text += "DEF L" + std::to_string(i) + " Group { USE L" + std::to_string(i - 1) + " USE L" + std::to_string(i - 1) + " }\n";
+    text += "DEF L" + std::to_string(i) + " Group { USE L" + std::to_string(i - 1) + " USE L" + std::to_string(i - 1) +
+            " }\n";
   return text;
 }
 
@@ -159,11 +165,11 @@ TEST_F(FigmentView, ACacheThatCannotBeKeptIsSaidInOneLineAndTheImageIsStillMade)
 }
 
 TEST_F(FigmentView, StatisticsSayWhatTheGarmentCollidedWith) {
-  const std::string mannequin = std::string("  DEF Body Mannequin {\n") + figment::test::kTPoseJoints +
-                                figment::test::kForearmCapsule + "  }\n";
+  const std::string mannequin =
+      std::string("  DEF Body Mannequin {\n") + figment::test::kTPoseJoints + figment::test::kForearmCapsule + "  }\n";
   const std::string scene = write("cloth.iv", clothScene("body USE Body", mannequin));
-  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " +
-                              quote(path("stats.json")));
+  const ProcessResult r =
+      run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " + quote(path("stats.json")));
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json body = nlohmann::json::parse(std::ifstream(path("stats.json")))["garments"][0]["body"];
   EXPECT_EQ(body["kind"], "mannequin");
@@ -180,8 +186,8 @@ TEST_F(FigmentView, StatisticsReportTheMethodAndHowOftenTheLimitersEngaged) {
       write("limited.iv", clothScene("body USE Body integrator SYMPLECTIC accelerationLimiter CLAMP "
                                      "accelerationLimit 0.01 strainLimit 0.2 timeStep 1e-3 maxTime 0.1",
                                      "  Switch { whichChild -1  DEF Body MeshFile { fileName \"cube.obj\" } }\n"));
-  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " +
-                              quote(path("stats.json")));
+  const ProcessResult r =
+      run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --stats " + quote(path("stats.json")));
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json method = nlohmann::json::parse(std::ifstream(path("stats.json")))["garments"][0]["method"];
   EXPECT_EQ(method["integrator"], "SYMPLECTIC");
@@ -196,8 +202,8 @@ TEST_F(FigmentView, StatisticsReportTheMethodAndHowOftenTheLimitersEngaged) {
 
 struct BadInput {
   std::string name;
-  std::string scene;      // scene file contents; empty: no scene file is written
-  std::string arguments;  // after the scene and -o
+  std::string scene;                  // scene file contents; empty: no scene file is written
+  std::string arguments;              // after the scene and -o
   std::vector<std::string> mentions;  // what the one line must name
   friend void PrintTo(const BadInput& bad, std::ostream* out) { *out << bad.name; }
 };
@@ -222,7 +228,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"MissingScene", "", "", {"missing.iv", "no such file"}},
         BadInput{"SyntaxError", "#Inventor V2.1 ascii\nSeparator {\n  Cube { width }\n", "", {"scene.iv", "line"}},
         BadInput{"NotInventor", "hello\n", "", {"scene.iv"}},
-        BadInput{"UnknownNodeType", "#Inventor V2.1 ascii\nSeparator { Frobnicator { } }\n", "",
+        BadInput{"UnknownNodeType",
+                 "#Inventor V2.1 ascii\nSeparator { Frobnicator { } }\n",
+                 "",
                  {"scene.iv", "line 2", "Frobnicator"}},
         BadInput{"MissingMeshFile",
                  "#Inventor V2.1 ascii\nSeparator {\n  DEF Body MeshFile { fileName \"nothere.obj\" }\n}\n",
@@ -232,31 +240,44 @@ INSTANTIATE_TEST_SUITE_P(
                  clothScene("body USE Body", "  DEF Body MeshFile { fileName \"nobody.zae\" }\n"),
                  "",
                  {"scene.iv", "line 3", "MeshFile 'Body'", "fileName \"nobody.zae\""}},
-        BadInput{"NegativeThickness", clothScene("thickness -0.001"), "",
+        BadInput{"NegativeThickness",
+                 clothScene("thickness -0.001"),
+                 "",
                  {"scene.iv", "ClothEngine 'Drape'", "thickness = -0.001 must be > 0"}},
         BadInput{"ZeroDensity", clothScene("density 0"), "", {"scene.iv", "ClothEngine 'Drape'", "density = 0"}},
-        BadInput{"ZeroYoungsModulus", clothScene("youngsModulus 0"), "",
-                 {"ClothEngine 'Drape'", "youngsModulus = 0"}},
+        BadInput{"ZeroYoungsModulus", clothScene("youngsModulus 0"), "", {"ClothEngine 'Drape'", "youngsModulus = 0"}},
         BadInput{"PoissonRatioHalf", clothScene("poissonRatio 0.5"), "", {"ClothEngine 'Drape'", "poissonRatio = 0.5"}},
-        BadInput{"PoissonRatioMinusOne", clothScene("poissonRatio -1"), "",
-                 {"ClothEngine 'Drape'", "poissonRatio = -1"}},
+        BadInput{
+            "PoissonRatioMinusOne", clothScene("poissonRatio -1"), "", {"ClothEngine 'Drape'", "poissonRatio = -1"}},
         BadInput{"ZeroTimeStep", clothScene("timeStep 0"), "", {"ClothEngine 'Drape'", "timeStep = 0"}},
         BadInput{"BadSize", clothScene(""), "--size 800by600", {"--size", "800by600"}},
         BadInput{"ZeroSize", clothScene(""), "--size 0x600", {"--size", "0x600"}},
         BadInput{"BadViewName", clothScene(""), "--view up", {"--view", "up"}},
         BadInput{"ViewStraightDown", clothScene(""), "--view 0,-90", {"--view", "0,-90"}},
         // Found by fuzzing (issue 15): each crashed, hung or was accepted in silence.
-        BadInput{"ViewAzimuthOf400Digits", clothScene(""), "--view " + std::string(400, '7') + ",0",
+        BadInput{"ViewAzimuthOf400Digits",
+                 clothScene(""),
+                 "--view " + std::string(400, '7') + ",0",
                  {"--view", "'" + std::string(400, '7') + ",0'"}},
-        BadInput{"TimeStepFarTooSmall", clothScene("timeStep 1e-30"), "",
+        BadInput{"TimeStepFarTooSmall",
+                 clothScene("timeStep 1e-30"),
+                 "",
                  {"scene.iv", "ClothEngine 'Drape'", "timeStep = 1e-30", "more than 1e+07"}},
-        BadInput{"LayerIndexOfTwoToThe31", clothScene("", "", "0 3 2 2147483647 -1"), "",
+        BadInput{"LayerIndexOfTwoToThe31",
+                 clothScene("", "", "0 3 2 2147483647 -1"),
+                 "",
                  {"scene.iv", "ClothingLayer 'Layer'", "coordIndex[3] = 2147483647", "4 points"}},
-        BadInput{"LayerIndexOfTwoToThe31DrawnAsAFaceSet", clothScene("", "", "0 3 2 2147483647 -1"),
-                 "--depth-buffer-only", {"ClothingLayer 'Layer'", "coordIndex[3] = 2147483647"}},
-        BadInput{"LayerIndexOutOfRange", clothScene("", "", "0 3 2 1 -1 0 1 4 -1"), "",
+        BadInput{"LayerIndexOfTwoToThe31DrawnAsAFaceSet",
+                 clothScene("", "", "0 3 2 2147483647 -1"),
+                 "--depth-buffer-only",
+                 {"ClothingLayer 'Layer'", "coordIndex[3] = 2147483647"}},
+        BadInput{"LayerIndexOutOfRange",
+                 clothScene("", "", "0 3 2 1 -1 0 1 4 -1"),
+                 "",
                  {"ClothingLayer 'Layer'", "coordIndex[7] = 4", "4 points"}},
-        BadInput{"LayerIndexNegative", clothScene("", "", "0 3 -2 1 -1"), "",
+        BadInput{"LayerIndexNegative",
+                 clothScene("", "", "0 3 -2 1 -1"),
+                 "",
                  {"ClothingLayer 'Layer'", "coordIndex[2] = -2"}},
         BadInput{"FaceSetIndexOutOfRange",
                  "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
@@ -264,20 +285,33 @@ INSTANTIATE_TEST_SUITE_P(
                  "",
                  {"IndexedFaceSet 'Faces'", "coordIndex[2] = 2147483647", "3 points"}},
         BadInput{"MannequinSkinOfACube",
-                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Arms MannequinSkin { mannequin Cube { } }\n}\n", "",
+                 "#Inventor V2.1 ascii\nSeparator {\n  DEF Arms MannequinSkin { mannequin Cube { } }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "MannequinSkin 'Arms'", "mannequin is a Cube, not a Mannequin"}},
-        BadInput{"SceneIncludesItself", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"scene.iv\" }\n}\n", "",
+        BadInput{"SceneIncludesItself",
+                 "#Inventor V2.1 ascii\nSeparator {\n  File { name \"scene.iv\" }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "File { name \"scene.iv\" }", "scene.iv -> scene.iv"}},
-        BadInput{"IncludesADevice", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"/dev/zero\" }\n}\n", "",
+        BadInput{"IncludesADevice",
+                 "#Inventor V2.1 ascii\nSeparator {\n  File { name \"/dev/zero\" }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "\"/dev/zero\"", "not a regular file"}},
-        BadInput{"InlinesItself", "#Inventor V2.1 ascii\nSeparator {\n  VRMLInline { url \"scene.iv\" }\n}\n", "",
+        BadInput{"InlinesItself",
+                 "#Inventor V2.1 ascii\nSeparator {\n  VRMLInline { url \"scene.iv\" }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "VRMLInline { url \"scene.iv\" }", "scene.iv -> scene.iv"}},
-        BadInput{"InlinesADevice", "#Inventor V2.1 ascii\nSeparator {\n  VRMLInline { url \"/dev/zero\" }\n}\n", "",
+        BadInput{"InlinesADevice",
+                 "#Inventor V2.1 ascii\nSeparator {\n  VRMLInline { url \"/dev/zero\" }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "\"/dev/zero\"", "not a regular file"}},
-        BadInput{"ExternProtoOfItself", "#VRML V2.0 utf8\nEXTERNPROTO Foo [ ] \"scene.iv\"\nFoo { }\n", "",
+        BadInput{"ExternProtoOfItself",
+                 "#VRML V2.0 utf8\nEXTERNPROTO Foo [ ] \"scene.iv\"\nFoo { }\n",
+                 "",
                  {"scene.iv", "line 2", "EXTERNPROTO Foo \"scene.iv\"", "scene.iv -> scene.iv"}},
         // Text one level deep whose graph no traversal finishes: 2^40 Cubes, 2.7e13 Cubes.
-        BadInput{"GroupsEachUsingTheOneBeforeTwice", sharedChainScene(40), "",
+        BadInput{"GroupsEachUsingTheOneBeforeTwice",
+                 sharedChainScene(40),
+                 "",
                  {"scene.iv", "more than 20000 nodes", "(passed at Group 'L13')"}},
         BadInput{"ArrayOfTwentySevenTrillion",
                  "#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements1 30000 numElements2 30000 "
@@ -290,63 +324,77 @@ INSTANTIATE_TEST_SUITE_P(
                  "",
                  {"scene.iv", "VRMLIndexedLineSet: coord holds a VRMLMaterial, where a VRMLCoordinate belongs"}},
         BadInput{"VrmlTextWhoseFontStyleIsAMaterial",
-                 "#VRML V2.0 utf8\nShape { geometry Text { string \"A\" fontStyle Material { } } }\n", "",
+                 "#VRML V2.0 utf8\nShape { geometry Text { string \"A\" fontStyle Material { } } }\n",
+                 "",
                  {"scene.iv", "VRMLText: fontStyle holds a VRMLMaterial, where a VRMLFontStyle belongs"}},
         // Coin reads a shape's data where its indices and counts say: each crashed figment-view.
-        BadInput{"MaterialIndexPastTheMaterials",
-                 "#Inventor V2.1 ascii\nSeparator {\n  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
-                 "  MaterialBinding { value PER_FACE_INDEXED }\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
-                 "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] materialIndex [ 70000000 ] }\n}\n",
-                 "",
-                 {"scene.iv", "IndexedFaceSet: materialIndex[0] = 70000000 is not a material: the shape has 2 materials"}},
+        BadInput{
+            "MaterialIndexPastTheMaterials",
+            "#Inventor V2.1 ascii\nSeparator {\n  Material { diffuseColor [ 1 0 0, 0 1 0 ] }\n"
+            "  MaterialBinding { value PER_FACE_INDEXED }\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+            "  IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] materialIndex [ 70000000 ] }\n}\n",
+            "",
+            {"scene.iv", "IndexedFaceSet: materialIndex[0] = 70000000 is not a material: the shape has 2 materials"}},
         BadInput{"FaceSetCountingPastTheCoordinates",
                  "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
                  "  FaceSet { numVertices [ 3, 2000000000 ] }\n}\n",
                  "",
-                 {"scene.iv", "FaceSet: numVertices draw 2000000003 vertices from startIndex 0: the coordinates have 3 points"}},
-        BadInput{"VrmlColorIndexPastTheColors",
-                 "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] }"
-                 " coordIndex [ 0, 1, 2, -1 ] color Color { color [ 1 0 0 ] } colorIndex [ 0, 2000000000, 0, -1 ] } }\n",
-                 "",
-                 {"scene.iv", "VRMLIndexedFaceSet: colorIndex[1] = 2000000000 is not a color: the VRMLColor has 1 color"}},
+                 {"scene.iv",
+                  "FaceSet: numVertices draw 2000000003 vertices from startIndex 0: the coordinates have 3 points"}},
+        BadInput{
+            "VrmlColorIndexPastTheColors",
+            "#VRML V2.0 utf8\nShape { geometry IndexedFaceSet { coord Coordinate { point [ 0 0 0, 1 0 0, 0 1 0 ] }"
+            " coordIndex [ 0, 1, 2, -1 ] color Color { color [ 1 0 0 ] } colorIndex [ 0, 2000000000, 0, -1 ] } }\n",
+            "",
+            {"scene.iv", "VRMLIndexedFaceSet: colorIndex[1] = 2000000000 is not a color: the VRMLColor has 1 color"}},
         BadInput{"NurbsSurfacePastTheCoordinates",
                  "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0, 1 1 0 ] }\n"
                  "  IndexedNurbsSurface { numUControlPoints 2 numVControlPoints 2 coordIndex [ 0, 1, 2, 2000000000 ]"
                  " uKnotVector [ 0, 0, 1, 1 ] vKnotVector [ 0, 0, 1, 1 ] }\n}\n",
                  "",
-                 {"scene.iv", "IndexedNurbsSurface: coordIndex[3] = 2000000000 is not a vertex: the coordinates have 4 points"}},
+                 {"scene.iv",
+                  "IndexedNurbsSurface: coordIndex[3] = 2000000000 is not a vertex: the coordinates have 4 points"}},
         BadInput{"MarkerPastCoinsMarkers",
                  "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0 ] }\n"
                  "  MarkerSet { markerIndex [ 2000000000 ] }\n}\n",
                  "",
                  {"scene.iv", "MarkerSet: markerIndex[0] = 2000000000 is not a marker"}},
-        BadInput{"PrototypeInsideItself", "#VRML V2.0 utf8\nPROTO Loop [ ] { Group { children [ Loop { } ] } }\nLoop { }\n",
-                 "", {"scene.iv", "line 2", "Loop { } inside the definition of PROTO Loop"}},
+        BadInput{"PrototypeInsideItself",
+                 "#VRML V2.0 utf8\nPROTO Loop [ ] { Group { children [ Loop { } ] } }\nLoop { }\n",
+                 "",
+                 {"scene.iv", "line 2", "Loop { } inside the definition of PROTO Loop"}},
         BadInput{"TimeCounterStepOfZero",
                  "#Inventor V2.1 ascii\nSeparator {\n  Translation { translation = ComposeVec3f {"
                  " x = TimeCounter { step 0 } .output } .vector }\n  Cube { }\n}\n",
                  "",
                  {"scene.iv", "line 3", "TimeCounter { step 0 } divides by zero"}},
-        BadInput{"TimeCounterStepOfAHalf",  // Coin reads 0 (SIGFPE); found by fuzz_scene
-                 "#Inventor V2.1 ascii\nSeparator {\n  DirectionalLight { intensity = TimeCounter { step 0.5 } .output }\n"
-                 "  Cube { }\n}\n",
-                 "",
-                 {"scene.iv", "line 3", "TimeCounter { step 0.5 } divides by zero: Coin reads it as 0"}},
+        BadInput{
+            "TimeCounterStepOfAHalf",  // Coin reads 0 (SIGFPE); found by fuzz_scene
+            "#Inventor V2.1 ascii\nSeparator {\n  DirectionalLight { intensity = TimeCounter { step 0.5 } .output }\n"
+            "  Cube { }\n}\n",
+            "",
+            {"scene.iv", "line 3", "TimeCounter { step 0.5 } divides by zero: Coin reads it as 0"}},
         BadInput{"TextureUnitBelowZero",  // corrupted the heap (double free)
                  "#Inventor V2.1 ascii\nSeparator {\n  TextureUnit { unit -5 }\n  Texture2 { image 1 1 3 0xff0000 }\n"
                  "  Cube { }\n}\n",
                  "",
                  {"scene.iv", "TextureUnit: unit = -5 is not a texture unit: 0 to 31"}},
-        BadInput{"ImageLargerThanTheFile", "#Inventor V2.1 ascii\nSeparator {\n  Texture2 { image 30000 30000 4 0 }\n}\n", "",
+        BadInput{"ImageLargerThanTheFile",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Texture2 { image 30000 30000 4 0 }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "image 30000 x 30000 declares 900000000 pixels"}},
         BadInput{"EmptyArrayOfFortyFiveMillion",  // found by fuzz_scene: 19 s to bound the scene
                  "#Inventor V2.1 ascii\nSeparator {\n  DEF Grid Array { numElements2 30000 numElements2 15000"
                  " numElements3 3000 }\n}\n",
                  "",
                  {"scene.iv", "more than 20000 nodes", "(passed at Array 'Grid')"}},
-        BadInput{"IncludesAMissingFile", "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n", "",
+        BadInput{"IncludesAMissingFile",
+                 "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n",
+                 "",
                  {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
-        BadInput{"HundredThousandNestedSeparators", nestedScene("Separator", 100000), "",
+        BadInput{"HundredThousandNestedSeparators",
+                 nestedScene("Separator", 100000),
+                 "",
                  {"scene.iv", "line 258", "nesting depth 257 is more than 256"}},
         BadInput{"NodeUsedInsideItsOwnDefinition",
                  "#Inventor V2.1 ascii\nSeparator {\n  DEF Model Separator {\n    Cube { }\n"
@@ -362,14 +410,16 @@ INSTANTIATE_TEST_SUITE_P(
                  {"scene.iv", "ClothEngine 'Drape'", "restPoints is empty"}},
         // Found by fuzz_scene: Coin took 9 bytes beginning "MM" for a 3D Studio file, and its
         // reader never finished.
-        BadInput{"ThreeDStudioBytes", std::string("MM\001\000o\226\215\000\006", 9), "",
+        BadInput{"ThreeDStudioBytes",
+                 std::string("MM\001\000o\226\215\000\006", 9),
+                 "",
                  {"scene.iv", "a 3D Studio file", "MeshFile"}},
         BadInput{"BinaryInventor", "#Inventor V2.1 binary\n", "", {"scene.iv", "a binary Inventor file"}},
         BadInput{"TenThousandNestedSeparators", nestedScene("Separator", 10000), "", {"nesting depth 257"}},
-        BadInput{"TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "",
-                 {"nesting depth 257"}},
-        BadInput{"TenThousandNestedStencilSeparators", nestedScene("StencilSeparator", 10000), "",
-                 {"nesting depth 257"}},
+        BadInput{
+            "TenThousandNestedDepthSortedGroups", nestedScene("DepthSortedGroup", 10000), "", {"nesting depth 257"}},
+        BadInput{
+            "TenThousandNestedStencilSeparators", nestedScene("StencilSeparator", 10000), "", {"nesting depth 257"}},
         // Issue 28: Coin added a declared field the node lacks to every node of its class
         // (SIGSEGV at the next walk over the graph); a field declared with another type was
         // taken without a word.
@@ -377,20 +427,24 @@ INSTANTIATE_TEST_SUITE_P(
                  "#Inventor V2.1 ascii\nSeparator {\n  CapsuleVolume { fields [ SFString part, SFFloat r1e308 ] "
                  "part \"head\" }\n  CapsuleVolume { part \"neck\" }\n}\n",
                  "",
-                 {"scene.iv", "line 3", "CapsuleVolume: fields [ SFFloat r1e308 ] declares a field CapsuleVolume "
+                 {"scene.iv", "line 3",
+                  "CapsuleVolume: fields [ SFFloat r1e308 ] declares a field CapsuleVolume "
                   "does not have"}},
         BadInput{"FieldDeclaredWithAnotherType",
                  "#Inventor V2.1 ascii\nSeparator {\n  DEF Head CapsuleVolume { fields [ SFInt32 r1 ] r1 1 }\n}\n",
                  "",
-                 {"scene.iv", "line 3", "CapsuleVolume 'Head': fields [ SFInt32 r1 ] declares r1 an SFInt32, but it is "
+                 {"scene.iv", "line 3",
+                  "CapsuleVolume 'Head': fields [ SFInt32 r1 ] declares r1 an SFInt32, but it is "
                   "an SFFloat"}},
-        BadInput{"CoinNodeDeclaringAFieldItDoesNotHave",
-                 "#Inventor V2.1 ascii\nSeparator {\n  Cube { fields [ SFFloat width, SFFloat wobble ] }\n  Cube { }\n}\n",
-                 "",
-                 {"scene.iv", "line 3", "Cube: fields [ SFFloat wobble ] declares a field Cube does not have"}},
+        BadInput{
+            "CoinNodeDeclaringAFieldItDoesNotHave",
+            "#Inventor V2.1 ascii\nSeparator {\n  Cube { fields [ SFFloat width, SFFloat wobble ] }\n  Cube { }\n}\n",
+            "",
+            {"scene.iv", "line 3", "Cube: fields [ SFFloat wobble ] declares a field Cube does not have"}},
         // Found by mutating scenes/examples (issue 15): each printed several lines.
         BadInput{"IncludeNameAcrossLines",
-                 "#Inventor V2.1 ascii\nSeparator {\n  File { name \"incl\n  Switch {\n  ude.iv\" }\n}\n", "",
+                 "#Inventor V2.1 ascii\nSeparator {\n  File { name \"incl\n  Switch {\n  ude.iv\" }\n}\n",
+                 "",
                  {"scene.iv", "line 3", "\"incl\\n  Switch {\\n  ude.iv\"", "not found"}}),
     [](const ::testing::TestParamInfo<BadInput>& param) { return param.param.name; });
 
@@ -448,8 +502,7 @@ TEST_F(FigmentView, IncludesSeventeenDeepAreOneLine) {
   const ProcessResult r = run(quote(path("f0.iv")) + " -o " + quote(path("out.png")));
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
-  EXPECT_NE(r.err.find("File { name \"f17.iv\" } would be 17 includes deep, more than 16"), std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find("File { name \"f17.iv\" } would be 17 includes deep, more than 16"), std::string::npos) << r.err;
   EXPECT_TRUE(noImageWritten());
 }
 
@@ -465,7 +518,8 @@ TEST_F(FigmentView, ACompressedSceneIsOneLine) {
   EXPECT_EQ(r.err, "figment-view: " + path("scene.iv") + ": a gzip-compressed file: decompress it first\n");
   EXPECT_TRUE(noImageWritten());
 
-  const std::string including = write("including.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"scene.iv\" } }\n");
+  const std::string including =
+      write("including.iv", "#Inventor V2.1 ascii\nSeparator { File { name \"scene.iv\" } }\n");
   const ProcessResult included = run(quote(including) + " -o " + quote(path("out.png")));
   EXPECT_EQ(included.status, 1) << included.err;
   EXPECT_NE(included.err.find("line 2: File { name \"scene.iv\" } names a gzip-compressed file"), std::string::npos)

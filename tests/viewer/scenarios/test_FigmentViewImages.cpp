@@ -2,28 +2,29 @@
 // --frames of a time span, --wind-force, --list-nodes; each image whole or not at all,
 // none left after an error.
 
-#include "io/MeshImport.h"
-#include "support/PngPixels.h"
-#include "support/TempDir.h"
-
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
-
 #include <sys/wait.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "io/MeshImport.h"
+#include "support/PngPixels.h"
+#include "support/TempDir.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string quote(const std::string& text) { return std::string("'").append(text).append("'"); }
+std::string quote(const std::string& text) {
+  return std::string("'").append(text).append("'");
+}
 
 std::string contents(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -49,9 +50,8 @@ class FigmentViewImages : public ::testing::Test {
   std::string write(const std::string& name, const std::string& text) const { return dir_.file(name, text); }
   // figment-view with `arguments` (shell words), its drape cache in this test's folder.
   ProcessResult run(const std::string& arguments) const {
-    const std::string command = "XDG_CACHE_HOME=" + quote(path("cache")) + " " + quote(FIGMENT_VIEW_EXECUTABLE) +
-                                " " + arguments + " > " + quote(path("stdout.txt")) + " 2> " +
-                                quote(path("stderr.txt"));
+    const std::string command = "XDG_CACHE_HOME=" + quote(path("cache")) + " " + quote(FIGMENT_VIEW_EXECUTABLE) + " " +
+                                arguments + " > " + quote(path("stdout.txt")) + " 2> " + quote(path("stderr.txt"));
     const int raw = std::system(command.c_str());
     return ProcessResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, contents(path("stdout.txt")),
                          contents(path("stderr.txt"))};
@@ -82,7 +82,8 @@ std::string fallingSquare(double seconds, const std::string& fields = "") {
          "  Material { diffuseColor 0.1 0.3 0.8 }\n"
          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
          "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime " + std::to_string(seconds) + "\n    " + fields +
+         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime " +
+         std::to_string(seconds) + "\n    " + fields +
          "\n  } . positions }\n"
          "  DEF Layer ClothingLayer { coordIndex [ 0 3 2 1 -1 ] }\n"
          "}\n";
@@ -113,9 +114,9 @@ std::vector<WindRow> readWindCsv(const std::string& file, std::string& header) {
 
 TEST_F(FigmentViewImages, RepeatedViewsGiveNumberedImagesOfOneDrape) {
   const std::string scene = write("cloth.iv", fallingSquare(0.01));
-  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) +
-                              " --size 80x60 --view front --view -30,20 --view back --stats " +
-                              quote(path("stats.json")));
+  const ProcessResult r =
+      run(quote(scene) + " -o " + quote(path("out.png")) +
+          " --size 80x60 --view front --view -30,20 --view back --stats " + quote(path("stats.json")));
   ASSERT_EQ(r.status, 0) << r.err;
   // Stopped mid-fall by maxTime: its verdict's one line (test_FigmentViewVerdict.cpp).
   EXPECT_EQ(r.err.rfind("figment-view: " + scene + ": ClothEngine 'Drape': not at rest after maxTime 0.01 s (", 0), 0u)
@@ -135,7 +136,8 @@ TEST_F(FigmentViewImages, ATurntableGoesAroundTheScene) {
   EXPECT_EQ(images(), (std::set<std::string>{"turn-00.png", "turn-01.png", "turn-02.png", "turn-03.png"}));
   expectAllDiffer({"turn-00.png", "turn-01.png", "turn-02.png", "turn-03.png"});
   // The same turntable started from a view: its first image is that view's.
-  const ProcessResult from = run(quote(scene) + " -o " + quote(path("from.png")) + " --size 80x60 --turntable 2 "
+  const ProcessResult from = run(quote(scene) + " -o " + quote(path("from.png")) +
+                                 " --size 80x60 --turntable 2 "
                                  "--view 90,0");
   ASSERT_EQ(from.status, 0) << from.err;
   const ProcessResult right = run(quote(scene) + " -o " + quote(path("right.png")) + " --size 80x60 --view right");
@@ -149,8 +151,8 @@ TEST_F(FigmentViewImages, AnErrorAfterSomeImagesLeavesNone) {
   // The statistics come after the images, into a folder that cannot be made (a file
   // stands where it would be).
   write("a-file", "x");
-  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) +
-                              " --size 80x60 --turntable 3 --stats " + quote(path("a-file/stats.json")));
+  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 80x60 --turntable 3 --stats " +
+                              quote(path("a-file/stats.json")));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("a-file/stats.json: cannot make the folder"), std::string::npos) << r.err;
   EXPECT_EQ(images(), std::set<std::string>{});
@@ -213,8 +215,8 @@ TEST_F(FigmentViewImages, TheWindForceHasThePapersForm) {
   const double amplitude = 0.5, frequency = 2.0;
   const std::string scene = write(
       "wind.iv", fallingSquare(3.0, "windDirection 0 2 0 windAmplitude 0.5 windFrequency 2 windPhaseInterval 0.3"));
-  const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " --size 40x30 --wind-force " +
-                              quote(path("wind.csv")));
+  const ProcessResult r =
+      run(quote(scene) + " -o " + quote(path("out.png")) + " --size 40x30 --wind-force " + quote(path("wind.csv")));
   ASSERT_EQ(r.status, 0) << r.err;
   std::string header;
   const std::vector<WindRow> rows = readWindCsv(path("wind.csv"), header);
@@ -251,10 +253,10 @@ TEST_F(FigmentViewImages, ListNodesNamesFigmentsTypesAndTheirFields) {
   const ProcessResult r = run("--list-nodes");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  for (const char* expected : {"ClothEngine (engine, derived from Engine)\n", "Mannequin (node, derived from Group)\n",
-                               "ClothingLayer (node, derived from IndexedFaceSet)\n", "MeshFile (node",
-                               "StencilSeparator (node", "  windSeed             SFInt32      1\n",
-                               "  fileName             SFString     \"\"\n"})
+  for (const char* expected :
+       {"ClothEngine (engine, derived from Engine)\n", "Mannequin (node, derived from Group)\n",
+        "ClothingLayer (node, derived from IndexedFaceSet)\n", "MeshFile (node", "StencilSeparator (node",
+        "  windSeed             SFInt32      1\n", "  fileName             SFString     \"\"\n"})
     EXPECT_NE(r.out.find(expected), std::string::npos) << expected;
   for (const char* coins : {"\nCube (node", "\nSeparator (node", "\nCalculator (engine"})
     EXPECT_EQ(r.out.find(coins), std::string::npos) << coins << " is Coin's";

@@ -6,21 +6,19 @@
 // 0.5 rad (the sleeve tears off the arm), the default dress at 0.2 s and 0.5 s implicit
 // steps (the step control recovers them, or the line says what is left), a skirt whose
 // waistband starts inside the body.
-#include "io/MeshImport.h"
-#include "support/TempDir.h"
-
-#include <nlohmann/json.hpp>
-
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "io/MeshImport.h"
+#include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
@@ -28,7 +26,9 @@ namespace {
 
 const fs::path kScenes = FIGMENT_SOURCE_DIR "/scenes";
 
-std::string quote(const std::string& text) { return "'" + text + "'"; }
+std::string quote(const std::string& text) {
+  return "'" + text + "'";
+}
 
 std::string readText(const fs::path& path) {
   std::stringstream text;
@@ -79,7 +79,8 @@ class FigmentViewVerdict : public ::testing::Test {
   // A shipped scene's text with its File include made absolute, so it reads from here.
   static std::string shipped(const std::string& name) {
     std::string text = readText(kScenes / name);
-    replace(text, "File { name \"human-volumes.iv\" }", "File { name \"" + (kScenes / "human-volumes.iv").string() + "\" }");
+    replace(text, "File { name \"human-volumes.iv\" }",
+            "File { name \"" + (kScenes / "human-volumes.iv").string() + "\" }");
     return text;
   }
 
@@ -93,7 +94,8 @@ class FigmentViewVerdict : public ::testing::Test {
 
   // Not clean: rc 0, the image and one line; --strict (from the drape cache): rc 1, the
   // same line, no image. Returns the first run.
-  ViewRun expectSaidAndStrictRefuses(const std::string& sceneText, const std::string& engine, const std::string& words) {
+  ViewRun expectSaidAndStrictRefuses(const std::string& sceneText, const std::string& engine,
+                                     const std::string& words) {
     const ViewRun plain = view(sceneText);
     EXPECT_EQ(plain.status, 0);
     EXPECT_TRUE(plain.image);
@@ -114,19 +116,24 @@ std::string fallingSquare(const std::string& fields) {
   return "#Inventor V2.1 ascii\nSeparator {\n"
          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
          "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  " + fields + "\n"
+         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  " +
+         fields +
+         "\n"
          "  } . positions }\n"
          "  ClothingLayer { coordIndex [ 0 3 2 1 -1 ] }\n"
          "}\n";
 }
 
-bool haveTheDefaultBody() { return !figment::findModelFile("human.zae").empty(); }
+bool haveTheDefaultBody() {
+  return !figment::findModelFile("human.zae").empty();
+}
 
 }  // namespace
 
 TEST_F(FigmentViewVerdict, AShortDrapeStoppedAtMaxTimeSaysSoAndStrictRefusesIt) {
   // 10 ms of fall: 0.095 m/s (g t less the air's drag), faster than the rest speed.
-  expectSaidAndStrictRefuses(fallingSquare("maxTime 0.01"), "Drape", "not at rest after maxTime 0.01 s (max speed 0.09");
+  expectSaidAndStrictRefuses(fallingSquare("maxTime 0.01"), "Drape",
+                             "not at rest after maxTime 0.01 s (max speed 0.09");
 }
 
 TEST_F(FigmentViewVerdict, ACleanDrapeIsQuietEvenWhenStrict) {
@@ -143,8 +150,9 @@ TEST_F(FigmentViewVerdict, ACleanDrapeIsQuietEvenWhenStrict) {
 TEST_F(FigmentViewVerdict, TheSleeveTornOffARaisedArmIsSaid) {
   if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
   std::string scene = shipped("tshirt.iv");
-  replace(scene, "      body USE Body\n", "      body USE Body\n      rotatedJoints [ \"shoulderL\" ]\n"
-                                       "      rotations [ 0 0 1 0.5 ]\n");
+  replace(scene, "      body USE Body\n",
+          "      body USE Body\n      rotatedJoints [ \"shoulderL\" ]\n"
+          "      rotations [ 0 0 1 0.5 ]\n");
   const ViewRun run = expectSaidAndStrictRefuses(scene, "ShirtDrape", "torn: an edge at ");
   EXPECT_GT(run.stats["garments"][0]["verdict"]["max_edge_stretch"].get<double>(), 1.5);
 }

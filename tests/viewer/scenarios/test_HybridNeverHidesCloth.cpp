@@ -7,27 +7,26 @@
 // (Before, the stencil rule kept a masked layer's facets off every pixel an arm had
 // marked, even where the strap lies in front of the arm: notches along the straps.)
 
-#include "nodes/cloth/ClothEngine.h"
-#include "nodes/render/ClothingLayer.h"
-#include "support/Pixels.h"
-#include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneSession.h"
-#include "session/SceneStaging.h"
-
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <cctype>
 #include <string>
 #include <vector>
+
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "session/SceneStaging.h"
+#include "support/Pixels.h"
+#include "viewer/DepthBufferOnly.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -91,7 +90,8 @@ Image render(SceneSession& session, double azimuth, const SbBox3f& box) {
   SceneRenderer renderer(kFullSize);
   EXPECT_EQ(renderer.render(root), "");
   Image image{kFullSize.width, kFullSize.height, {}};
-  if (renderer.pixels()) image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kFullSize.width * kFullSize.height);
+  if (renderer.pixels())
+    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kFullSize.width * kFullSize.height);
   return image;
 }
 

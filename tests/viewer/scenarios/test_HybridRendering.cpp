@@ -1,30 +1,29 @@
 // Paper §5 in pictures that can fail: scenes/hybrid/*.iv rendered through OSMesa with
 // FIGMENT's nodes and with the depth buffer alone (the -plain files), pixels counted by
 // flat colour.
-#include "nodes/render/ClothingLayer.h"
-#include "nodes/render/DepthSortedGroup.h"
-#include "nodes/render/StencilRule.h"
-#include "nodes/render/StencilSeparator.h"
-#include "support/Pixels.h"
-#include "support/TempDir.h"
-#include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
-#include "guard/SceneFile.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneStaging.h"
-
-#include <Inventor/SoPath.h>
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
+
+#include "guard/SceneFile.h"
+#include "nodes/render/ClothingLayer.h"
+#include "nodes/render/DepthSortedGroup.h"
+#include "nodes/render/StencilRule.h"
+#include "nodes/render/StencilSeparator.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
+#include "support/Pixels.h"
+#include "support/TempDir.h"
+#include "viewer/DepthBufferOnly.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;

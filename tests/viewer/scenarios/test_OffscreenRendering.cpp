@@ -2,18 +2,17 @@
 // design.md: without glXGetProcAddress forwarded to OSMesa, face sets drawn through
 // vertex arrays come out blank with no error.
 
-#include "viewer/OffscreenContext.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneStaging.h"
-
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
-
 #include <gtest/gtest.h>
+
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;

@@ -9,15 +9,8 @@
 // The silhouette is where the outer garment, drawn alone with back faces culled, shows
 // its outside: through a neckline or over a waistband one sees the garment's inside, and
 // the T-shirt rightly covers that.
-#include "nodes/render/ClothingLayer.h"
-#include "support/Pixels.h"
-#include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneSession.h"
-
-#include <Inventor/SoPath.h>
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoBaseColor.h>
@@ -27,12 +20,18 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoTransform.h>
-
 #include <gtest/gtest.h>
 
 #include <ostream>
 #include <string>
 #include <vector>
+
+#include "nodes/render/ClothingLayer.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneSession.h"
+#include "support/Pixels.h"
+#include "viewer/DepthBufferOnly.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -71,7 +70,8 @@ class Outfit {
     SoSeparator* separator = part(name);
     ASSERT_NE(separator, nullptr);
     int material = 0;
-    while (material < separator->getNumChildren() && !separator->getChild(material)->isOfType(SoMaterial::getClassTypeId()))
+    while (material < separator->getNumChildren() &&
+           !separator->getChild(material)->isOfType(SoMaterial::getClassTypeId()))
       ++material;
     ASSERT_LT(material, separator->getNumChildren()) << name << " has no Material";
     auto* base = new SoBaseColor;
@@ -162,8 +162,7 @@ TEST_P(OutfitPixels, NoTShirtPixelInsideTheOuterGarmentFromEightViews) {
   outfit.paint(outer, figment::test::kBlue);
   int plainTotal = 0, shirtOutside = 0;
   for (double azimuth : kEightAzimuths) {
-    const std::vector<bool> silhouette =
-        outfit.render(azimuth, {"Skin", "Shirt"}, outer).where(figment::test::kBlue);
+    const std::vector<bool> silhouette = outfit.render(azimuth, {"Skin", "Shirt"}, outer).where(figment::test::kBlue);
     int silhouettePixels = 0;
     for (bool inside : silhouette) silhouettePixels += inside;
     EXPECT_GT(silhouettePixels, 2000) << file << ", azimuth " << azimuth;
@@ -176,8 +175,10 @@ TEST_P(OutfitPixels, NoTShirtPixelInsideTheOuterGarmentFromEightViews) {
   // close the depth buffer alone lets it through: the test has something to catch.
   EXPECT_GT(shirtOutside, 8 * 500) << file;
   RecordProperty("depth_buffer_shirt_pixels", plainTotal);
-  if (depthBufferShowsTheShirt) EXPECT_GT(plainTotal, 0) << file;
-  else EXPECT_EQ(plainTotal, 0) << file;
+  if (depthBufferShowsTheShirt)
+    EXPECT_GT(plainTotal, 0) << file;
+  else
+    EXPECT_EQ(plainTotal, 0) << file;
 }
 
 TEST_P(OutfitPixels, TheControlAnOuterGarmentDrawnIntoTheShirtStillCoversIt) {
@@ -196,8 +197,10 @@ TEST_P(OutfitPixels, TheControlAnOuterGarmentDrawnIntoTheShirtStillCoversIt) {
   for (double azimuth : {0.0, 90.0, 180.0, 270.0}) {
     const std::vector<bool> silhouette =
         outfit.render(azimuth, {"Skin", "Shirt"}, outer, outer, kNarrowing).where(figment::test::kBlue);
-    const int hybrid = outfit.render(azimuth, {}, nullptr, outer, kNarrowing).countWithin(figment::test::kGreen, silhouette);
-    const int plain = outfit.renderDepthBufferOnly(azimuth, outer, kNarrowing).countWithin(figment::test::kGreen, silhouette);
+    const int hybrid =
+        outfit.render(azimuth, {}, nullptr, outer, kNarrowing).countWithin(figment::test::kGreen, silhouette);
+    const int plain =
+        outfit.renderDepthBufferOnly(azimuth, outer, kNarrowing).countWithin(figment::test::kGreen, silhouette);
     EXPECT_EQ(hybrid, 0) << file << ", azimuth " << azimuth;
     EXPECT_GT(plain, 100) << file << ", azimuth " << azimuth;
   }

@@ -1,29 +1,28 @@
 // figment-view on scenes/second-body.iv (HUMAN.blend from assimp-testmodels, brought into
 // metres and y up by its MeshFile, with the volumes and dress the tools made for it), and
 // the posed dress with height and chest factors set together, which never came to rest.
-#include "support/PngPixels.h"
-#include "support/TempDir.h"
-
-#include "io/MeshImport.h"
-
-#include <nlohmann/json.hpp>
-
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+
+#include "io/MeshImport.h"
+#include "support/PngPixels.h"
+#include "support/TempDir.h"
 
 namespace {
 
 const std::filesystem::path kScenes = FIGMENT_SOURCE_DIR "/scenes";
 
-std::string quote(const std::string& text) { return "'" + text + "'"; }
+std::string quote(const std::string& text) {
+  return "'" + text + "'";
+}
 
 std::string readText(const std::filesystem::path& path) {
   std::stringstream text;
@@ -41,10 +40,10 @@ void replace(std::string& text, const std::string& from, const std::string& to) 
 int view(const std::string& scene, const figment::test::TempDir& dir, nlohmann::json& stats, std::string& errors) {
   const std::string png = (dir.path() / "view.png").string(), json = (dir.path() / "stats.json").string();
   const std::string err = (dir.path() / "stderr.txt").string();
-  const int raw = std::system((quote(FIGMENT_VIEW_EXECUTABLE) + " " + quote(scene) + " -o " + quote(png) +
-                               " --size 180x280 --no-cache --stats " + quote(json) + " 2> " + quote(err) +
-                               " > /dev/null")
-                                  .c_str());
+  const int raw =
+      std::system((quote(FIGMENT_VIEW_EXECUTABLE) + " " + quote(scene) + " -o " + quote(png) +
+                   " --size 180x280 --no-cache --stats " + quote(json) + " 2> " + quote(err) + " > /dev/null")
+                      .c_str());
   errors = readText(err);
   if (std::filesystem::exists(json)) stats = nlohmann::json::parse(readText(json));
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

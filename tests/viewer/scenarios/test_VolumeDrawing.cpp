@@ -1,21 +1,20 @@
 // Mannequin.showVolumes in pictures: the posed volumes drawn as wireframes in their
 // colour, over the body, only when shown (what figment-view --show-volumes switches on).
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "guard/SceneFile.h"
 #include "nodes/body/Mannequin.h"
+#include "session/SceneRenderer.h"
+#include "session/SceneStaging.h"
 #include "support/Pixels.h"
 #include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
 #include "viewer/OffscreenContext.h"
-#include "guard/SceneFile.h"
-#include "session/SceneRenderer.h"
-#include "session/SceneStaging.h"
-
-#include <Inventor/SoPath.h>
-#include <Inventor/actions/SoSearchAction.h>
-#include <Inventor/nodes/SoSeparator.h>
-
-#include <gtest/gtest.h>
-
-#include <string>
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -27,11 +26,12 @@ constexpr ImageSize kSize{200, 200};
 
 // A T-posed skeleton, a forearm capsule along +x and a red box (the "body") inside it;
 // lines in pure green, flat colours.
-const std::string kScene = std::string("#Inventor V2.1 ascii\n"
-                                       "Separator {\n"
-                                       "  LightModel { model BASE_COLOR }\n"
-                                       "  DEF Model Mannequin {\n"
-                                       "    volumeColor 0 1 0\n") +
+const std::string kScene = std::string(
+                               "#Inventor V2.1 ascii\n"
+                               "Separator {\n"
+                               "  LightModel { model BASE_COLOR }\n"
+                               "  DEF Model Mannequin {\n"
+                               "    volumeColor 0 1 0\n") +
                            figment::test::kTPoseJoints + figment::test::kForearmCapsule +
                            "  }\n"
                            "  BaseColor { rgb 1 0 0 }\n"

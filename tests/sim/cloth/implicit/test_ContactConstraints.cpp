@@ -3,10 +3,10 @@
 // plane over a curved body drifts it off by d^2 / 2R) is put back on the clearance,
 // so it stays held instead of falling back in and being pushed out every other step;
 // a node lifting off, or one farther off, is left where it is.
+#include <gtest/gtest.h>
+
 #include "sim/cloth/implicit/ContactConstraints.h"
 #include "sim/collision/PlaneCollider.h"
-
-#include <gtest/gtest.h>
 
 using namespace figment;
 
@@ -17,8 +17,7 @@ constexpr double kDt = 0.05;          // s
 
 class ContactConstraintsTest : public ::testing::Test {
  protected:
-  ContactConstraintsTest()
-      : contacts_(std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY()), parameters(), 1) {
+  ContactConstraintsTest() : contacts_(std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY()), parameters(), 1) {
     filter_.reset(1);
   }
 

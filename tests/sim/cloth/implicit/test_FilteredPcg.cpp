@@ -1,13 +1,13 @@
 // The filtered conjugate-gradient solve: free directions satisfy the equations, the
 // constrained ones take their prescribed values, and the answer does not depend on the
 // thread count (the loop runs in one parallel region above kParallelSolveNodes nodes).
-#include "sim/cloth/implicit/FilteredPcg.h"
-#include "sim/cloth/ParallelLoops.h"
-
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <random>
+
+#include "sim/cloth/ParallelLoops.h"
+#include "sim/cloth/implicit/FilteredPcg.h"
 
 using namespace figment;
 
@@ -109,7 +109,8 @@ TEST(FilteredPcg, TheCoarseCorrectionGivesTheSameAnswerInFewerIterations) {
   EXPECT_TRUE(jacobi.converged);
   EXPECT_TRUE(twoLevel.converged);
   double scale = 0.0, worst = 0.0;
-  for (size_t i = 0; i < a.size(); ++i) scale = std::max(scale, a[i].norm()), worst = std::max(worst, (a[i] - b[i]).norm());
+  for (size_t i = 0; i < a.size(); ++i)
+    scale = std::max(scale, a[i].norm()), worst = std::max(worst, (a[i] - b[i]).norm());
   EXPECT_LT(worst, 1e-6 * scale);
   EXPECT_LT(twoLevel.iterations, 0.6 * jacobi.iterations) << jacobi.iterations << " block Jacobi";
 }

@@ -1,18 +1,17 @@
 // The implicit integrator as a drape: large steps onto a body end outside it and at
 // rest, pins hold, the thread count does not change the result, and the step control
 // takes a step that would tear the cloth again as halves.
-#include "support/TestMeshes.h"
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <limits>
+
 #include "sim/cloth/ClothSolver.h"
 #include "sim/cloth/EdgeStretch.h"
 #include "sim/cloth/implicit/ImplicitEuler.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/PlaneCollider.h"
-
-#include <gtest/gtest.h>
-
-#include <omp.h>
-
-#include <limits>
+#include "support/TestMeshes.h"
 
 using namespace figment;
 
@@ -27,7 +26,9 @@ ClothParameters implicitDrape(double timeStep) {
   return p;
 }
 
-std::shared_ptr<const MeshCollider> ball() { return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24)); }
+std::shared_ptr<const MeshCollider> ball() {
+  return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24));
+}
 
 // A 50 cm sheet of 16 x 16 quads, 2 cm above the ball, falling onto it.
 TriangleMesh sheetAboveBall() {
