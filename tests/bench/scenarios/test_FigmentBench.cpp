@@ -12,32 +12,20 @@
 #include <sstream>
 #include <string>
 
+#include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
 namespace {
 
-std::string quote(const std::string& text) {
-  return std::string("'").append(text).append("'");
-}
-
-struct ProcessResult {
-  int status = -1;
-  std::string err;
-};
+using figment::test::quote;
+using ProcessResult = figment::test::ProgramResult;
 
 class FigmentBench : public ::testing::Test {
  protected:
   std::string write(const std::string& name, const std::string& text) const { return dir_.file(name, text); }
   // Runs figment-bench with `arguments` (shell words), capturing stderr.
   ProcessResult run(const std::string& arguments) const {
-    const std::string err = (dir_.path() / "stderr.txt").string();
-    const std::string command = "XDG_CACHE_HOME=" + quote((dir_.path() / "cache").string()) + " " +
-                                quote(FIGMENT_BENCH_EXECUTABLE) + " " + arguments + " 2> " + quote(err) +
-                                " > /dev/null";
-    const int raw = std::system(command.c_str());
-    std::stringstream text;
-    text << std::ifstream(err).rdbuf();
-    return ProcessResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, text.str()};
+    return figment::test::runProgram(FIGMENT_BENCH_EXECUTABLE, arguments, dir_.path(), dir_.path() / "cache");
   }
   std::string out() const { return quote((dir_.path() / "out").string()); }
 

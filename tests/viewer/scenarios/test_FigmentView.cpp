@@ -15,6 +15,7 @@
 
 #include "io/MeshImport.h"
 #include "support/PngPixels.h"
+#include "support/ProgramRun.h"
 #include "support/SceneTestSupport.h"
 #include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
@@ -23,15 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// `text` as one shell word.
-std::string quote(const std::string& text) {
-  return std::string("'").append(text).append("'");
-}
-
-struct ProcessResult {
-  int status = -1;
-  std::string err;
-};
+using figment::test::quote;
+using ProcessResult = figment::test::ProgramResult;
 
 class FigmentView : public ::testing::Test {
  protected:
@@ -40,16 +34,10 @@ class FigmentView : public ::testing::Test {
   // Runs figment-view with `arguments` (shell words), capturing stderr; its drape cache
   // in `cache` (by default a folder of this test's own).
   ProcessResult run(const std::string& arguments, const std::string& cache = "") const {
-    const std::string command = "XDG_CACHE_HOME=" + quote(cache.empty() ? path("cache") : cache) + " " +
-                                quote(FIGMENT_VIEW_EXECUTABLE) + " " + arguments + " 2> " + quote(path("stderr.txt")) +
-                                " > /dev/null";
-    const int raw = std::system(command.c_str());
-    std::ifstream in(path("stderr.txt"));
-    std::stringstream err;
-    err << in.rdbuf();
-    return ProcessResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, err.str()};
+    return figment::test::runProgram(FIGMENT_VIEW_EXECUTABLE, arguments, dir_.path(),
+                                     cache.empty() ? path("cache") : cache);
   }
-  // Nothing but stderr.txt and the inputs: no image, no temporary left behind.
+  // Nothing but stdout.txt, stderr.txt and the inputs: no image, no temporary left behind.
   bool noImageWritten() const {
     for (const auto& entry : fs::directory_iterator(dir_.path()))
       if (entry.path().extension() == ".png") return false;

@@ -12,20 +12,15 @@
 #include <string>
 #include <vector>
 
+#include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string quote(const std::string& text) {
-  return std::string("'").append(text).append("'");
-}
-
-struct ProcessResult {
-  int status = -1;
-  std::string err;
-};
+using figment::test::quote;
+using ProcessResult = figment::test::ProgramResult;
 
 // A square of cloth, weightless and so at rest once its rest window has passed (a clean
 // drape: an error's line is the only one), drawn by a ClothingLayer.
@@ -43,21 +38,16 @@ class FigmentViewExport : public ::testing::Test {
   void SetUp() override { scene_ = dir_.file("cloth.iv", kCloth); }
   std::string path(const std::string& name) const { return (dir_.path() / name).string(); }
   ProcessResult run(const std::string& arguments) const {
-    const std::string command = "XDG_CACHE_HOME=" + quote(path("cache")) + " " + quote(FIGMENT_VIEW_EXECUTABLE) + " " +
-                                quote(scene_) + " " + arguments + " > /dev/null 2> " + quote(path("stderr.txt"));
-    const int raw = std::system(command.c_str());
-    std::ifstream in(path("stderr.txt"));
-    std::stringstream err;
-    err << in.rdbuf();
-    return ProcessResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, err.str()};
+    return figment::test::runProgram(FIGMENT_VIEW_EXECUTABLE, quote(scene_) + " " + arguments, dir_.path(),
+                                     path("cache"));
   }
   // The files the run left in `folder` (the test's own folder: besides the scene, the
-  // cache and stderr.txt).
+  // cache, stdout.txt and stderr.txt).
   std::vector<std::string> outputs(const std::string& folder = "") const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(folder.empty() ? dir_.path() : fs::path(folder))) {
       const std::string name = entry.path().filename().string();
-      if (name != "cloth.iv" && name != "cache" && name != "stderr.txt") names.push_back(name);
+      if (name != "cloth.iv" && name != "cache" && name != "stdout.txt" && name != "stderr.txt") names.push_back(name);
     }
     std::sort(names.begin(), names.end());
     return names;

@@ -16,22 +16,14 @@
 
 #include "io/MeshImport.h"
 #include "support/PngPixels.h"
+#include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string quote(const std::string& text) {
-  return std::string("'").append(text).append("'");
-}
-
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using figment::test::quote;
 
 // An image's pixels as bytes, for comparing pictures; empty when unreadable.
 std::string pixels(const std::string& path) {
@@ -39,10 +31,7 @@ std::string pixels(const std::string& path) {
   return std::string(image.rgb.begin(), image.rgb.end());
 }
 
-struct ProcessResult {
-  int status = -1;
-  std::string out, err;
-};
+using ProcessResult = figment::test::ProgramResult;
 
 class FigmentViewImages : public ::testing::Test {
  protected:
@@ -50,11 +39,7 @@ class FigmentViewImages : public ::testing::Test {
   std::string write(const std::string& name, const std::string& text) const { return dir_.file(name, text); }
   // figment-view with `arguments` (shell words), its drape cache in this test's folder.
   ProcessResult run(const std::string& arguments) const {
-    const std::string command = "XDG_CACHE_HOME=" + quote(path("cache")) + " " + quote(FIGMENT_VIEW_EXECUTABLE) + " " +
-                                arguments + " > " + quote(path("stdout.txt")) + " 2> " + quote(path("stderr.txt"));
-    const int raw = std::system(command.c_str());
-    return ProcessResult{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, contents(path("stdout.txt")),
-                         contents(path("stderr.txt"))};
+    return figment::test::runProgram(FIGMENT_VIEW_EXECUTABLE, arguments, dir_.path(), path("cache"));
   }
   // The PNG files in the test's folder, by name.
   std::set<std::string> images() const {
