@@ -62,7 +62,10 @@ AngleGradient BendingJoint::gradient(const std::vector<Vec3>& x) const {
 }
 
 void BendingJoint::momentForces(double moment, const std::vector<Vec3>& x, Vec3* force) const {
-  if (moment == 0.0) return momentForces(moment, AngleGradient{}, force);
+  if (moment == 0.0) {  // no gradient needed (nor made: Eigen leaves a default vector unset)
+    for (int k = 0; k < 4; ++k) force[k] = Vec3::Zero();
+    return;
+  }
   const Vec3 &x0 = x[corners_[0]], &x2 = x[corners_[2]], &x3 = x[corners_[3]];
   momentForces(moment, Hinge(x0, x[corners_[1]], x2, x3).gradient(x0, x2, x3), force);
 }
