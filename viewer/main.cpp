@@ -316,8 +316,8 @@ std::string oneLine(std::string text) {
   return text;
 }
 
-// The command line: every option, its help and the examples of --help.
-void describeOptions(CLI::App& app, Options& options) {
+// The options that say which images and files come out: scene, views, frames, outputs.
+void describeOutputOptions(CLI::App& app, Options& options) {
   // Not required by CLI11: --list-nodes needs neither (checked below).
   app.add_option("scene", options.scene, "Scene file (.iv)");
   app.add_option(
@@ -344,6 +344,17 @@ void describeOptions(CLI::App& app, Options& options) {
                  "pressure_Pa, phase_rad, force_x_N, force_y_N, force_z_N, force_N; every 5 ms simulated). Drapes are "
                  "simulated, neither read from nor kept in the drape cache");
   app.add_option("--stats", options.stats, "Write simulation and render statistics (JSON) here");
+  app.add_option("--export", options.exportPath,
+                 "After draping, write the draped garments here, one mesh each with its Material's diffuse colour "
+                 "and smooth normals, in metres, y up: .glb or .gltf (glTF 2.0; a .gltf gets its .bin beside it) or "
+                 ".obj (with its .mtl). Written whole or not at all. With it, -o is optional");
+  app.add_flag("--export-body", options.exportBody,
+               "With --export: the body too (every other shape the scene draws, one mesh each)");
+}
+
+// The command line: every option, its help and the examples of --help.
+void describeOptions(CLI::App& app, Options& options) {
+  describeOutputOptions(app, options);
   app.add_flag("--depth-buffer-only", options.depthBufferOnly,
                "Draw ClothingLayer, DepthSortedGroup and StencilSeparator as IndexedFaceSet, Group and "
                "Separator: the depth buffer alone, to compare with the hybrid rendering");
@@ -361,12 +372,6 @@ void describeOptions(CLI::App& app, Options& options) {
   app.add_flag("--no-cache", options.noCache,
                "Drape even where the drape cache ($XDG_CACHE_HOME/figment, else ~/.cache/figment) holds this "
                "drape, and keep nothing there");
-  app.add_option("--export", options.exportPath,
-                 "After draping, write the draped garments here, one mesh each with its Material's diffuse colour "
-                 "and smooth normals, in metres, y up: .glb or .gltf (glTF 2.0; a .gltf gets its .bin beside it) or "
-                 ".obj (with its .mtl). Written whole or not at all. With it, -o is optional");
-  app.add_flag("--export-body", options.exportBody,
-               "With --export: the body too (every other shape the scene draws, one mesh each)");
   app.add_flag("--list-nodes", options.listNodes,
                "Print FIGMENT's node and engine types with each field's type and default value (from Coin's "
                "field data), and exit");

@@ -41,6 +41,16 @@ struct ClothEngine::Impl {
   // simulated last. Throws naming the field and value, or the file, that cannot be used.
   std::vector<figment::Vec3> simulate(const ClothEngine& engine, std::vector<figment::Triangle>& sections);
   void recordRun(const figment::DrapeResult& run, int triangles);
+  // The configuration the tolerance picks (ToleranceChoice.h): its method onto
+  // `parameters`, its progressive mesh and schedule when it drapes so, its name in the
+  // statistics; returns the body to collide with.
+  std::shared_ptr<const figment::Collider> pickForTolerance(const ClothEngine& engine,
+                                                            const figment::TriangleMesh& garment,
+                                                            figment::ClothParameters& parameters,
+                                                            std::optional<figment::ProgressiveMesh>& mesh,
+                                                            figment::ProgressiveSchedule& schedule);
+  // A progressive drape's level, sections and settling in the statistics.
+  void recordLevels(const figment::GarmentDrape& drape);
   void recordMethod(const figment::ClothParameters& parameters);
   // The context's drape cache: read an entry into the output, keep a new one.
   bool readCached(const std::string& key, int numRest, std::vector<SbVec3f>& result, std::vector<int32_t>& indices);
@@ -240,6 +250,33 @@ void ClothEngine::Impl::recordMethod(const figment::ClothParameters& parameters)
   stats.maxTime = parameters.maxTime;
 }
 
+std::shared_ptr<const figment::Collider> ClothEngine::Impl::pickForTolerance(
+    const ClothEngine& engine, const figment::TriangleMesh& garment, figment::ClothParameters& parameters,
+    std::optional<figment::ProgressiveMesh>& mesh, figment::ProgressiveSchedule& schedule) {
+  const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, garment, parameters);
+  stats.picked = choice.picked.label();
+  stats.pickedDeviation = choice.picked.worstMeanDeviation;
+  stats.pickedBody = choice.picked.body;
+  stats.passedOver = choice.passedOver;
+  if (choice.picked.progressive != "off") {
+    mesh = figment::decimate(
+        garment, figment::DecimationOptions{.targetFaces = static_cast<int>(
+                                                std::lround(figment::kStudyCoarseShare * garment.triangles.size()))});
+    const figment::ScheduleText s = figment::parseScheduleText(choice.picked.progressive);
+    schedule = {static_cast<int>(std::lround(s.beginShare * mesh->levels())), -1, s.rate};
+  }
+  return choice.body;
+}
+
+void ClothEngine::Impl::recordLevels(const figment::GarmentDrape& drape) {
+  stats.level = drape.level;
+  stats.levels = drape.levels;
+  stats.sections = static_cast<int>(drape.sections.size());
+  stats.endLevelSeconds = drape.settling.arrival;
+  stats.meanMoveAfterEndLevel = drape.settling.meanMove;
+  stats.maxMoveAfterEndLevel = drape.settling.maxMove;
+}
+
 std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine,
                                                        std::vector<figment::Triangle>& sections) {
   const figment::TriangleMesh garment = figment::garmentFromFields(engine.restPoints, engine.coordIndex);
@@ -254,20 +291,8 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                         engine.splitRate.getValue()};
   std::optional<figment::ProgressiveMesh> mesh;  // the garment's progressive mesh, when draped so
   if (engine.tolerance.getValue() > 0.0) {
-    const figment::ToleranceChoice choice = figment::chooseForTolerance(engine, garment, parameters);
-    collider = choice.body;
-    stats.picked = choice.picked.label();
-    stats.pickedDeviation = choice.picked.worstMeanDeviation;
-    stats.pickedBody = choice.picked.body;
-    stats.passedOver = choice.passedOver;
+    collider = pickForTolerance(engine, garment, parameters, mesh, schedule);
     script.clear();
-    if (choice.picked.progressive != "off") {
-      mesh = figment::decimate(
-          garment, figment::DecimationOptions{.targetFaces = static_cast<int>(
-                                                  std::lround(figment::kStudyCoarseShare * garment.triangles.size()))});
-      const figment::ScheduleText s = figment::parseScheduleText(choice.picked.progressive);
-      schedule = {static_cast<int>(std::lround(s.beginShare * mesh->levels())), -1, s.rate};
-    }
   } else {
     collider = figment::colliderFromBody(engine.body);
   }
@@ -293,12 +318,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   figment::GarmentDrape drape = figment::drapeGarment(request);
   stats.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   recordRun(drape.run, static_cast<int>(garment.triangles.size()));
-  stats.level = drape.level;
-  stats.levels = drape.levels;
-  stats.sections = static_cast<int>(drape.sections.size());
-  stats.endLevelSeconds = drape.settling.arrival;
-  stats.meanMoveAfterEndLevel = drape.settling.meanMove;
-  stats.maxMoveAfterEndLevel = drape.settling.maxMove;
+  recordLevels(drape);
   sections = std::move(drape.sections);
   return drape.positions;
 }
