@@ -26,11 +26,14 @@
 #include "sim/fitting/CollisionVolumeFitting.h"
 #include "sim/garment/StrapDress.h"
 #include "support/DefaultBody.h"
+#include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
 using namespace figment;
 
 namespace {
+
+using figment::test::quote;
 
 // The default body in centimetres, z up: the inverse of importMesh's toYUp(·, Z) and
 // metresPerUnit 0.01, so reading it back with those options gives the default body.
@@ -70,10 +73,6 @@ double largestDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
 
 const PartMesh& partNamed(const std::vector<PartMesh>& parts, const std::string& name) {
   return *std::find_if(parts.begin(), parts.end(), [&](const PartMesh& p) { return p.name == name; });
-}
-
-std::string quote(const std::string& text) {
-  return "'" + text + "'";
 }
 
 struct ToolRun {

@@ -26,19 +26,15 @@
 #include <vector>
 
 #include "nodes/Init.h"
+#include "support/SceneText.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kSource = FIGMENT_SOURCE_DIR;
+using figment::test::readText;
 
-std::string readText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+const fs::path kSource = FIGMENT_SOURCE_DIR;
 
 // Runs of white space as one space, none at either end: Coin writes long values over
 // several lines, a table on one.

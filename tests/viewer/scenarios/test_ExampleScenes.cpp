@@ -15,11 +15,14 @@
 #include <vector>
 
 #include "io/MakeHumanFiles.h"
+#include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using figment::test::quote;
 
 const fs::path kExamples = FIGMENT_SOURCE_DIR "/scenes/examples";
 
@@ -30,10 +33,6 @@ std::vector<std::string> exampleNames() {
     if (entry.is_regular_file() && entry.path().extension() == ".iv") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
   return names;
-}
-
-std::string quote(const std::string& text) {
-  return "'" + text + "'";
 }
 
 // Pixels of `png` that differ from figment-view's grey background (0.8).

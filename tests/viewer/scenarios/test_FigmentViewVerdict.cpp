@@ -18,29 +18,19 @@
 #include <vector>
 
 #include "io/MeshImport.h"
+#include "support/ProgramRun.h"
+#include "support/SceneText.h"
 #include "support/TempDir.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
+using figment::test::quote;
+using figment::test::readText;
+using figment::test::replace;
+
 const fs::path kScenes = FIGMENT_SOURCE_DIR "/scenes";
-
-std::string quote(const std::string& text) {
-  return "'" + text + "'";
-}
-
-std::string readText(const fs::path& path) {
-  std::stringstream text;
-  text << std::ifstream(path).rdbuf();
-  return text.str();
-}
-
-void replace(std::string& text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-}
 
 struct ViewRun {
   int status = -1;

@@ -14,27 +14,17 @@
 
 #include "io/MeshImport.h"
 #include "support/PngPixels.h"
+#include "support/ProgramRun.h"
+#include "support/SceneText.h"
 #include "support/TempDir.h"
 
 namespace {
 
+using figment::test::quote;
+using figment::test::readText;
+using figment::test::replace;
+
 const std::filesystem::path kScenes = FIGMENT_SOURCE_DIR "/scenes";
-
-std::string quote(const std::string& text) {
-  return "'" + text + "'";
-}
-
-std::string readText(const std::filesystem::path& path) {
-  std::stringstream text;
-  text << std::ifstream(path).rdbuf();
-  return text.str();
-}
-
-void replace(std::string& text, const std::string& from, const std::string& to) {
-  const size_t at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from;
-  text.replace(at, from.size(), to);
-}
 
 // Runs figment-view on `scene` with --stats; the exit status, the stats in `stats`.
 int view(const std::string& scene, const figment::test::TempDir& dir, nlohmann::json& stats, std::string& errors) {
