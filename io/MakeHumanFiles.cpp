@@ -11,6 +11,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/MeshImport.h"
+
 namespace fs = std::filesystem;
 
 namespace figment {
@@ -52,13 +54,8 @@ std::vector<int> faceIndices(std::istringstream& line, int vertexCount, const st
 
 std::string findMakeHumanData() {
   if (const char* dir = std::getenv("FIGMENT_MAKEHUMAN_DIR"); dir && *dir) return holdsBase(dir) ? dir : "";
-  if (const char* path = std::getenv("FIGMENT_MODEL_PATH")) {
-    std::istringstream folders(path);
-    std::string folder;
-    while (std::getline(folders, folder, ':'))
-      if (!folder.empty() && holdsBase(fs::path(folder) / "makehuman"))
-        return (fs::path(folder) / "makehuman").string();
-  }
+  for (const fs::path& folder : modelPathFolders())
+    if (holdsBase(folder / "makehuman")) return (folder / "makehuman").string();
   return holdsBase(FIGMENT_MAKEHUMAN_DEFAULT_DIR) ? FIGMENT_MAKEHUMAN_DEFAULT_DIR : "";
 }
 

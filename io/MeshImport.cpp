@@ -69,16 +69,7 @@ void appendTriangles(const aiMesh& part, const ImportOptions& options, TriangleM
 }
 
 std::vector<fs::path> searchFolders(const std::string& sceneDir) {
-  std::vector<fs::path> folders;
-  if (const char* list = std::getenv("FIGMENT_MODEL_PATH")) {
-    const std::string text = list;
-    size_t start = 0;
-    while (start <= text.size()) {
-      const size_t end = std::min(text.find(':', start), text.size());
-      if (end > start) folders.emplace_back(text.substr(start, end - start));
-      start = end + 1;
-    }
-  }
+  std::vector<fs::path> folders = modelPathFolders();
   if (!sceneDir.empty()) folders.emplace_back(sceneDir);
   const fs::path debian = "/usr/share/assimp/models";  // Debian's assimp-testmodels
   folders.push_back(debian);
@@ -145,6 +136,20 @@ std::string findModelFile(const std::string& name, const std::string& sceneDir) 
     if (fs::is_regular_file(candidate, error)) return candidate.string();
   }
   return {};
+}
+
+std::vector<fs::path> modelPathFolders() {
+  std::vector<fs::path> folders;
+  if (const char* list = std::getenv("FIGMENT_MODEL_PATH")) {
+    const std::string text = list;
+    size_t start = 0;
+    while (start <= text.size()) {
+      const size_t end = std::min(text.find(':', start), text.size());
+      if (end > start) folders.emplace_back(text.substr(start, end - start));
+      start = end + 1;
+    }
+  }
+  return folders;
 }
 
 }  // namespace figment

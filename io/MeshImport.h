@@ -2,6 +2,7 @@
 // Reads a mesh file (Collada, .zae, OBJ, PLY, ... anything assimp reads) into the
 // scene frame: metres, y up. Bodies and garments both come in through here.
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,8 @@ ImportedMesh importMesh(const std::string& path, const ImportOptions& options = 
 // then in `sceneDir`, then in the standard Debian location of assimp-testmodels
 // (/usr/share/assimp/models and its subfolders). Returns "" when not found.
 std::string findModelFile(const std::string& name, const std::string& sceneDir = {});
+
+// The folders of $FIGMENT_MODEL_PATH (colon separated, empty entries skipped), in order.
+std::vector<std::filesystem::path> modelPathFolders();
 
 }  // namespace figment
