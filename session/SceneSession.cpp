@@ -143,12 +143,13 @@ SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<View
   return stage(size, view, sceneBox(scene_, size));
 }
 
-SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box) {
+SoSeparator* SceneSession::stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box,
+                                 float distance) {
   if (!shapesChecked_) checkShapes();
   if (!shapeError_.empty()) return nullptr;
   if (staged_) staged_->unref();
   stagedBox_ = box;
-  staged_ = stageScene(scene_, size, view, stagedBox_);
+  staged_ = stageScene(scene_, size, view, stagedBox_, distance);
   staged_->ref();
   return staged_;
 }

@@ -101,8 +101,11 @@ class SceneSession {
   // the shapes failed their check (shapeError(); checked here when the scene was not draped):
   // Coin would bound and draw past their data.
   SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view);
-  // The same, framing `box` (frames of a time span share one camera: the box of them all).
-  SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box);
+  // The same, framing `box` (frames of a time span share one camera: the box of them all),
+  // from `distance` when it is positive (the views of a turntable share one: see
+  // framingDistance).
+  SoSeparator* stage(const ImageSize& size, const std::optional<ViewDirection>& view, const SbBox3f& box,
+                     float distance = 0.0f);
 
   // Takes the context back from the engines and unreferences the scene and the staged
   // root; the session is empty again (its context stays).

@@ -51,22 +51,35 @@ void removeCameras(SoNode* scene) {
 
 }  // namespace
 
-SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view, float aspect) {
-  SbVec3f low(-1.0f, -1.0f, -1.0f), high(1.0f, 1.0f, 1.0f);  // an empty scene: the unit box
+namespace {
+
+// What a framing camera frames: `box`, the unit box about the origin when it is empty,
+// and at least a unit-sized box about a single point.
+void framedBounds(const SbBox3f& box, SbVec3f& low, SbVec3f& high) {
+  low.setValue(-1.0f, -1.0f, -1.0f), high.setValue(1.0f, 1.0f, 1.0f);
   if (!box.isEmpty()) box.getBounds(low, high);
   if ((high - low).length() < 1e-6f) {  // a single point still needs a size to frame
     low -= SbVec3f(0.5f, 0.5f, 0.5f);
     high += SbVec3f(0.5f, 0.5f, 0.5f);
   }
-  const SbVec3f centre = 0.5f * (low + high);
-  const float radius = 0.5f * (high - low).length();
+}
 
+// The camera's axes for `view`: towards the camera, right and up on the screen.
+void viewAxes(const ViewDirection& view, SbVec3f& toCamera, SbVec3f& right, SbVec3f& up) {
   const float az = radians(view.azimuth), el = radians(view.elevation);
-  const SbVec3f toCamera(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
-  SbVec3f right = SbVec3f(0.0f, 1.0f, 0.0f).cross(toCamera);
+  toCamera.setValue(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
+  right = SbVec3f(0.0f, 1.0f, 0.0f).cross(toCamera);
   right.normalize();
-  const SbVec3f up = toCamera.cross(right);
+  up = toCamera.cross(right);
+}
 
+}  // namespace
+
+float framingDistance(const SbBox3f& box, const ViewDirection& view, float aspect) {
+  SbVec3f low, high, toCamera, right, up;
+  framedBounds(box, low, high);
+  viewAxes(view, toCamera, right, up);
+  const SbVec3f centre = 0.5f * (low + high);
   // The nearest distance at which every corner of the box lies inside both fields of
   // view: a corner at (x, y) across and z towards the camera from the centre needs
   // d - z >= |x| / tan(horizontal / 2) and d - z >= |y| / tan(vertical / 2).
@@ -81,6 +94,16 @@ SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view
         v.dot(toCamera) + std::max(std::abs(v.dot(right)) / tanHorizontal, std::abs(v.dot(up)) / tanVertical);
     distance = std::max(distance, needed);
   }
+  return distance;
+}
+
+SoPerspectiveCamera* framingCamera(const SbBox3f& box, const ViewDirection& view, float aspect, float distance) {
+  SbVec3f low, high, toCamera, right, up;
+  framedBounds(box, low, high);
+  viewAxes(view, toCamera, right, up);
+  const SbVec3f centre = 0.5f * (low + high);
+  const float radius = 0.5f * (high - low).length();
+  if (!(distance > 0.0f)) distance = framingDistance(box, view, aspect);
 
   auto* camera = new SoPerspectiveCamera;
   camera->position = centre + distance * toCamera;
@@ -106,7 +129,7 @@ SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optiona
 }
 
 SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optional<ViewDirection>& view,
-                        const SbBox3f& box) {
+                        const SbBox3f& box, float distance) {
   auto* root = new SoSeparator;
   SbVec3f lookDirection(0.0f, 0.0f, -1.0f);
   SoPathList cameras;
@@ -117,7 +140,7 @@ SoSeparator* stageScene(SoNode* scene, const ImageSize& size, const std::optiona
   } else {
     removeCameras(scene);
     SoPerspectiveCamera* camera =
-        framingCamera(box, view.value_or(ViewDirection{}), float(size.width) / float(size.height));
+        framingCamera(box, view.value_or(ViewDirection{}), float(size.width) / float(size.height), distance);
     camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), lookDirection);
     root->addChild(camera);
   }

@@ -30,6 +30,7 @@ std::optional<ImagePlan> planImages(const ImageOptions& options, ImageOptionErro
     const std::vector<ViewDirection> around =
         turntableViews(*count, plan.views.empty() ? std::nullopt : plan.views.front());
     plan.views.assign(around.begin(), around.end());
+    plan.oneDistance = true;
   }
   if (plan.views.empty()) plan.views.push_back(std::nullopt);
   if (!options.frames.empty()) {

@@ -24,6 +24,9 @@ struct ImagePlan {
   std::vector<std::optional<ViewDirection>> views;  // nullopt: the scene's camera
   std::vector<double> frameTimes;                   // s; empty: the drape itself, an image per view
   std::vector<std::string> paths;                   // an image per frame, else per view (imagePaths)
+  // --turntable: the views keep one camera distance, so the figure keeps its size as
+  // it turns (each --view otherwise frames the scene as closely as it can).
+  bool oneDistance = false;
 };
 
 // The option at fault and what is wrong with its value, as figment-view says it.

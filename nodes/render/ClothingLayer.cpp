@@ -81,6 +81,7 @@ struct ClothingLayer::DrawCache {
   SbUniqueId coordinatesId = 0, layerId = 0;
   std::vector<SbVec3f> points, smooth;  // coordinates and smooth normals
   std::vector<figment::FacetGeometry> facets;
+  figment::Winding winding = figment::Winding::UNDECIDED;  // which side is the outside
   // The view the arrays were built for.
   bool built = false;
   SbMatrix toCamera;
@@ -106,6 +107,7 @@ struct ClothingLayer::DrawCache {
     for (int i = 0; i < pointCount; ++i) points[i] = coordinates->get3(i);
     smooth = vertexNormals(points.data(), pointCount, index, indexCount);
     facets = figment::describeFacets(points.data(), pointCount, index, indexCount);
+    winding = figment::outsideWinding(facets);
     coordinatesId = coordinates->getNodeId();
     layerId = layer.getNodeId();
     built = false;
@@ -154,7 +156,11 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   if (auto* properties = static_cast<SoVertexProperty*>(vertexProperty.getValue())) properties->GLRender(action);
   if (!cache_) cache_ = std::make_unique<DrawCache>();
   cache_->takeGeometry(SoCoordinateElement::getInstance(state), *this);
-  cache_->arrangeForView(viewPoint(state), coordIndex.getValues(0));
+  figment::ViewPoint view = viewPoint(state);
+  // The garment's own shape says which side is its outside, whatever the ShapeHints
+  // say; the hints decide for a sheet whose shape cannot tell.
+  if (cache_->winding != figment::Winding::UNDECIDED) view.clockwise = cache_->winding == figment::Winding::CLOCKWISE;
+  cache_->arrangeForView(view, coordIndex.getValues(0));
   SoMaterialBundle material(action);
   material.sendFirst();
   drawArranged(state, maskedByParts);

@@ -25,7 +25,12 @@
   few millimetres through the cloth stays hidden. Facets facing away (the inside of the
   garment, seen through a neckline or under a hem) use the usual depth test. All facets
   are drawn far to near by their centres, so folds of the same mesh cover each other
-  rightly. The front is the counter-clockwise side unless a ShapeHints says CLOCKWISE.
+  rightly. The front of a facet is the garment's outside, found from the layer's shape
+  (figment::outsideWinding: the side facing away from the garment's middle), whatever
+  the winding of its faces: a garment wound clockwise is drawn as the same garment
+  wound counter-clockwise (its inside, seen under a hem, keeps the depth test). Only a
+  sheet too flat to tell takes the ShapeHints' ordering: counter-clockwise unless it
+  says CLOCKWISE.
   When the layer is masked, the facets drawn over are kept off the pixels that a
   StencilSeparator marked (paper §5: a forearm in front of a shirt). With `stencilRule`
   TRUE (the default) the stencil rule (figment::decideStencil, nodes/render/StencilRule.h)

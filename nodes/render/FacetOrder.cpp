@@ -1,6 +1,7 @@
 #include "nodes/render/FacetOrder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "guard/CoordIndexFaces.h"
@@ -24,6 +25,28 @@ std::vector<FacetGeometry> describeFacets(const SbVec3f* points, int pointCount,
     facets.push_back({face.first, corners, centre / static_cast<float>(corners), normal});
   }
   return facets;
+}
+
+Winding outsideWinding(const std::vector<FacetGeometry>& facets) {
+  // Newell's normal is twice the facet's area along its normal: the weights come with it.
+  SbVec3f middle(0, 0, 0);
+  float area = 0.0f;
+  for (const FacetGeometry& f : facets) {
+    middle += f.normal.length() * f.centre;
+    area += f.normal.length();
+  }
+  if (!(area > 0.0f)) return Winding::UNDECIDED;
+  middle /= area;
+  double outward = 0.0, magnitude = 0.0;  // sums over the facets of n . (c - middle), and of |n . (c - middle)|
+  for (const FacetGeometry& f : facets) {
+    const double part = f.normal.dot(f.centre - middle);
+    outward += part;
+    magnitude += std::abs(part);
+  }
+  constexpr double kDecisive = 1.0 / 3.0;
+  if (outward > kDecisive * magnitude) return Winding::COUNTERCLOCKWISE;
+  if (outward < -kDecisive * magnitude) return Winding::CLOCKWISE;
+  return Winding::UNDECIDED;
 }
 
 std::vector<OrderedFacet> orderFacets(const std::vector<FacetGeometry>& facets, const ViewPoint& view) {

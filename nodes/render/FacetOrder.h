@@ -36,6 +36,16 @@ struct FacetGeometry {
 std::vector<FacetGeometry> describeFacets(const SbVec3f* points, int pointCount, const int32_t* coordIndex,
                                           int indexCount);
 
+// Which way round a layer's facets are wound, judged from its shape: a garment wraps
+// what it covers (a body, an inner layer), so its outside is the side that faces away
+// from its middle. Counter-clockwise when the facets' counter-clockwise normals point
+// away from the area-weighted centre of the facets, taken over all of them (each
+// weighted by its area): outward by at least a third of the sum of the parts, clockwise
+// when they point inward by as much, undecided in between (a flat or barely curved
+// sheet, whose sides cannot be told apart this way).
+enum class Winding { COUNTERCLOCKWISE, CLOCKWISE, UNDECIDED };
+Winding outsideWinding(const std::vector<FacetGeometry>& facets);
+
 struct OrderedFacet {
   int32_t firstIndex;  // into coordIndex: the facet's first corner
   int32_t corners;     // how many corners it has (>= 3)

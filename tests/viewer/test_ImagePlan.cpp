@@ -32,6 +32,7 @@ TEST(ImagePlan, AnImagePerViewOrTurntableStepOrFrame) {
   ASSERT_TRUE(views);
   EXPECT_EQ(views->paths, (std::vector<std::string>{"out-0.png", "out-1.png"}));
   EXPECT_DOUBLE_EQ(views->views[1]->azimuth, 30.0);
+  EXPECT_FALSE(views->oneDistance) << "each view frames the scene itself";
 
   const auto turntable = plan({.views = {"45,20"}, .turntable = "8"}, error);
   ASSERT_TRUE(turntable);
@@ -39,6 +40,7 @@ TEST(ImagePlan, AnImagePerViewOrTurntableStepOrFrame) {
   EXPECT_DOUBLE_EQ(turntable->views[1]->azimuth, 90.0);
   EXPECT_DOUBLE_EQ(turntable->views[7]->elevation, 20.0);
   EXPECT_EQ(turntable->paths.back(), "out-7.png");
+  EXPECT_TRUE(turntable->oneDistance) << "a turntable keeps one camera distance";
 
   const auto frames = plan({.output = "f-%03d.png", .views = {"back"}, .frames = "1:2:11"}, error);
   ASSERT_TRUE(frames);

@@ -1,6 +1,10 @@
 // Which facets a ClothingLayer draws over what lies beneath, and in which order.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "nodes/render/FacetOrder.h"
 
 using figment::OrderedFacet;
@@ -65,4 +69,49 @@ TEST(FacetOrder, FacetsWithBadIndicesOrTooFewCornersAreSkipped) {
   ASSERT_EQ(facets.size(), 1u);
   EXPECT_EQ(facets[0].firstIndex, 7);
   EXPECT_EQ(facets[0].corners, 3);
+}
+
+namespace {
+// An open tube about the y axis (a skirt): `around` quads round, radius 1, 1 high,
+// counter-clockwise seen from outside unless `reversed`.
+std::vector<int32_t> tube(std::vector<SbVec3f>& points, int around, bool reversed) {
+  std::vector<int32_t> index;
+  for (int i = 0; i < around; ++i) {
+    const float angle = 2.0f * float(M_PI) * float(i) / float(around);
+    points.emplace_back(std::sin(angle), 0.0f, std::cos(angle));
+    points.emplace_back(std::sin(angle), 1.0f, std::cos(angle));
+  }
+  for (int i = 0; i < around; ++i) {
+    const int j = (i + 1) % around;
+    std::vector<int32_t> quad = {2 * i, 2 * j, 2 * j + 1, 2 * i + 1};  // outward: (bottom i, bottom j, top j, top i)
+    if (reversed) std::reverse(quad.begin(), quad.end());
+    index.insert(index.end(), quad.begin(), quad.end());
+    index.push_back(-1);
+  }
+  return index;
+}
+}  // namespace
+
+TEST(FacetOrder, TheOutsideOfAGarmentIsFoundWhateverItsWinding) {
+  for (bool reversed : {false, true}) {
+    std::vector<SbVec3f> points;
+    const std::vector<int32_t> index = tube(points, 24, reversed);
+    const auto facets = figment::describeFacets(points.data(), int(points.size()), index.data(), int(index.size()));
+    ASSERT_EQ(facets.size(), 24u);
+    EXPECT_EQ(figment::outsideWinding(facets),
+              reversed ? figment::Winding::CLOCKWISE : figment::Winding::COUNTERCLOCKWISE);
+  }
+}
+
+TEST(FacetOrder, AFlatSheetLeavesTheWindingToTheShapeHints) {
+  // A 4 x 4 grid of quads in the plane z = 0: both sides alike.
+  std::vector<SbVec3f> points;
+  for (int y = 0; y < 5; ++y)
+    for (int x = 0; x < 5; ++x) points.emplace_back(float(x), float(y), 0.0f);
+  std::vector<int32_t> index;
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) index.insert(index.end(), {5 * y + x, 5 * y + x + 1, 5 * y + x + 6, 5 * y + x + 5, -1});
+  const auto facets = figment::describeFacets(points.data(), int(points.size()), index.data(), int(index.size()));
+  EXPECT_EQ(figment::outsideWinding(facets), figment::Winding::UNDECIDED);
+  EXPECT_EQ(figment::outsideWinding({}), figment::Winding::UNDECIDED);
 }
