@@ -130,13 +130,23 @@ struct ClothingLayer::DrawCache {
     built = true;
   }
 
-  // The facet's fan of triangles, corner by corner.
+  // The facet's triangles, corner by corner: a fan from its first corner, but a quad
+  // split along its second diagonal (corners 0 1 3 and 1 2 3), as OpenGL splits the
+  // GL_QUADS Coin draws an IndexedFaceSet's quads with (Mesa, last provoking vertex):
+  // a bent quad then covers the very pixels it covers in the depth buffer's picture.
   void addTriangles(const figment::OrderedFacet& facet, const int32_t* index) {
+    const int32_t* corners = index + facet.firstIndex;
+    if (facet.corners == 4) {
+      for (int corner : {corners[0], corners[1], corners[3], corners[1], corners[2], corners[3]}) addCorner(corner);
+      return;
+    }
     for (int k = 1; k + 1 < facet.corners; ++k)
-      for (int corner : {index[facet.firstIndex], index[facet.firstIndex + k], index[facet.firstIndex + k + 1]}) {
-        positions.insert(positions.end(), points[corner].getValue(), points[corner].getValue() + 3);
-        normals.insert(normals.end(), smooth[corner].getValue(), smooth[corner].getValue() + 3);
-      }
+      for (int corner : {corners[0], corners[k], corners[k + 1]}) addCorner(corner);
+  }
+
+  void addCorner(int corner) {
+    positions.insert(positions.end(), points[corner].getValue(), points[corner].getValue() + 3);
+    normals.insert(normals.end(), smooth[corner].getValue(), smooth[corner].getValue() + 3);
   }
 };
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -120,15 +121,58 @@ TEST_F(FigmentViewImages, ATurntableGoesAroundTheScene) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(images(), (std::set<std::string>{"turn-00.png", "turn-01.png", "turn-02.png", "turn-03.png"}));
   expectAllDiffer({"turn-00.png", "turn-01.png", "turn-02.png", "turn-03.png"});
-  // The same turntable started from a view: its first image is that view's.
+  // The same turntable started from a view: the same views, numbered from there.
   const ProcessResult from = run(quote(scene) + " -o " + quote(path("from.png")) +
-                                 " --size 80x60 --turntable 2 "
+                                 " --size 80x60 --turntable 4 "
                                  "--view 90,0");
   ASSERT_EQ(from.status, 0) << from.err;
-  const ProcessResult right = run(quote(scene) + " -o " + quote(path("right.png")) + " --size 80x60 --view right");
-  ASSERT_EQ(right.status, 0) << right.err;
-  EXPECT_EQ(pixels(path("from-0.png")), pixels(path("right.png")));
-  EXPECT_EQ(pixels(path("from-1.png")), pixels(path("turn-03.png")));  // 270 degrees both
+  EXPECT_EQ(pixels(path("from-0.png")), pixels(path("turn-01.png")));  // 90 degrees both
+  EXPECT_EQ(pixels(path("from-2.png")), pixels(path("turn-03.png")));  // 270 degrees both
+}
+
+namespace {
+// Rows of `image` holding something other than the grey background: the figure's
+// height in pixels (its top row to its bottom row).
+int figureHeight(const figment::test::Image& image) {
+  int top = -1, bottom = -1;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (!image.is(y * image.width + x, {204, 204, 204}, 20)) {
+        if (top < 0) top = y;
+        bottom = y;
+        break;
+      }
+  return top < 0 ? 0 : bottom - top + 1;
+}
+}  // namespace
+
+TEST_F(FigmentViewImages, ATurntableKeepsOneCameraDistance) {
+  // A post 1.8 m high with a bar 1.6 m wide across it (a figure with its arms out): its
+  // box needs the camera farther away from the front (the bar across the picture) than
+  // from the side (the bar end on). A turntable keeps the farthest distance for every
+  // view, so the post keeps its height in pixels; views framed one by one pulse.
+  const std::string scene = write("post.iv",
+                                  "#Inventor V2.1 ascii\nSeparator {\n"
+                                  "  Material { diffuseColor 0.8 0.2 0.2 }\n"
+                                  "  Cylinder { radius 0.05 height 1.8 }\n"
+                                  "  Translation { translation 0 0.5 0 }\n"
+                                  "  Cube { width 1.6 height 0.08 depth 0.1 }\n"
+                                  "}\n");
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("turn.png")) + " --size 240x200 --turntable 8").status, 0);
+  std::string views;
+  for (int i = 0; i < 8; ++i) views += " --view " + std::to_string(45 * i) + ",0";
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("each.png")) + " --size 240x200" + views).status, 0);
+  int lowest = 1 << 20, highest = 0, eachLowest = 1 << 20, eachHighest = 0;
+  for (int i = 0; i < 8; ++i) {
+    const int height = figureHeight(figment::test::readPng(path("turn-" + std::to_string(i) + ".png")));
+    const int each = figureHeight(figment::test::readPng(path("each-" + std::to_string(i) + ".png")));
+    lowest = std::min(lowest, height), highest = std::max(highest, height);
+    eachLowest = std::min(eachLowest, each), eachHighest = std::max(eachHighest, each);
+  }
+  ASSERT_GT(lowest, 50) << "the post is in every picture";
+  EXPECT_LE(highest - lowest, 0.02 * highest) << lowest << " to " << highest << " pixels high";
+  EXPECT_GT(eachHighest - eachLowest, 0.2 * eachHighest) << "the control: views framed one by one pulse ("
+                                                         << eachLowest << " to " << eachHighest << ")";
 }
 
 TEST_F(FigmentViewImages, AnErrorAfterSomeImagesLeavesNone) {

@@ -2,8 +2,9 @@
 // showing through cloth, so it may add cloth pixels to what the depth buffer alone
 // draws, never remove one. Every shipped scene with a ClothingLayer, draped, is drawn
 // in flat colours (every garment pure blue, everything else as the scene colours it)
-// from 8 azimuths at figment-view's default size, with the hybrid nodes and with the
-// depth buffer alone: each cloth pixel of the second is a cloth pixel of the first.
+// from 8 azimuths at 1000 x 1200 (the size the notches were reported at; figment-view's
+// default is 800 x 600), with the hybrid nodes and with the depth buffer alone: each
+// cloth pixel of the second is a cloth pixel of the first, without exception.
 // (Before, the stencil rule kept a masked layer's facets off every pixel an arm had
 // marked, even where the strap lies in front of the arm: notches along the straps.)
 
@@ -15,10 +16,15 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
+#include "io/MakeHumanFiles.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/SceneRenderer.h"
@@ -34,32 +40,7 @@ using figment::test::Image;
 
 namespace {
 
-constexpr ImageSize kFullSize{800, 600};
-
-// The 4-neighbours of pixel `i` (none past the image's border).
-std::vector<int> neighbours(int i) {
-  const int x = i % kFullSize.width, y = i / kFullSize.width;
-  std::vector<int> around;
-  if (x > 0) around.push_back(i - 1);
-  if (x + 1 < kFullSize.width) around.push_back(i + 1);
-  if (y > 0) around.push_back(i - kFullSize.width);
-  if (y + 1 < kFullSize.height) around.push_back(i + kFullSize.width);
-  return around;
-}
-
-// Whether pixel `i` of `mask` has a 4-neighbour outside it.
-bool onEdge(const std::vector<bool>& mask, int i) {
-  for (int j : neighbours(i))
-    if (!mask[j]) return true;
-  return false;
-}
-
-// Whether a 4-neighbour of pixel `i` is cloth in `image`.
-bool besideCloth(const Image& image, int i) {
-  for (int j : neighbours(i))
-    if (image.is(j, figment::test::kBlue, 0)) return true;
-  return false;
-}
+constexpr ImageSize kFullSize{1000, 1200};
 
 // Flat colours: BASE_COLOR lighting over the whole scene, and pure blue, overriding
 // any Material after it, just before each ClothingLayer.
@@ -95,12 +76,30 @@ Image render(SceneSession& session, double azimuth, const SbBox3f& box) {
   return image;
 }
 
+// Every shipped scene that draws a garment (its text names a ClothingLayer), under
+// scenes/ and its folders, by its path there: a new scene is checked without a word.
+std::vector<std::string> garmentScenes() {
+  const std::filesystem::path root = std::filesystem::path(FIGMENT_SOURCE_DIR) / "scenes";
+  std::vector<std::string> scenes;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    if (entry.path().extension() != ".iv") continue;
+    std::ifstream in(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (text.find("ClothingLayer") != std::string::npos)
+      scenes.push_back(std::filesystem::relative(entry.path(), root).generic_string());
+  }
+  std::sort(scenes.begin(), scenes.end());
+  return scenes;
+}
+
 class HybridNeverHidesCloth : public ::testing::TestWithParam<std::string> {
  protected:
   static void SetUpTestSuite() { initHeadless(); }
 };
 
 TEST_P(HybridNeverHidesCloth, EveryClothPixelOfTheDepthBufferAloneStays) {
+  if (GetParam() == "human-body.iv" && figment::findMakeHumanData().empty())
+    GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
   SceneSession session;
   ASSERT_TRUE(session.load(std::string(FIGMENT_SOURCE_DIR) + "/scenes/" + GetParam())) << session.loadError();
   // The wind scene blows for 4.4 s in 880 steps; its first 0.5 s show the same skirt.
@@ -117,28 +116,73 @@ TEST_P(HybridNeverHidesCloth, EveryClothPixelOfTheDepthBufferAloneStays) {
     const Image plain = render(session, azimuth, box);
     swap.use(false);
     const std::vector<bool> plainCloth = plain.where(figment::test::kBlue);
-    int plainClothPixels = 0, removed = 0, rim = 0;
+    int plainClothPixels = 0, removed = 0;
     for (int i = 0; i < kFullSize.width * kFullSize.height; ++i) {
       plainClothPixels += plainCloth[i];
-      if (!plainCloth[i] || hybrid.is(i, figment::test::kBlue, 0)) continue;
-      // On the outline of the depth buffer's cloth, beside a hybrid cloth pixel, the
-      // outline moved by a pixel: rasterisation (vertex arrays against Coin's own face
-      // set, a pixel here and there). Anything else is the rule removing cloth.
-      (onEdge(plainCloth, i) && besideCloth(hybrid, i) ? rim : removed) += 1;
+      removed += plainCloth[i] && !hybrid.is(i, figment::test::kBlue, 0);
     }
     ASSERT_GT(plainClothPixels, 500) << "azimuth " << azimuth << ": the garment is in the picture";
+    // Not one pixel, the outline's too: the layer splits its quads as GL splits the
+    // plain face set's, so the two cover the same pixels wherever the rule leaves cloth.
     EXPECT_EQ(removed, 0) << GetParam() << ", azimuth " << azimuth << ": cloth pixels the hybrid nodes removed, of "
                           << plainClothPixels;
-    EXPECT_LE(rim, plainClothPixels / 1000) << GetParam() << ", azimuth " << azimuth << ": outline pixels";
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(ShippedScenes, HybridNeverHidesCloth,
-                         ::testing::Values("dress.iv", "close-fit.iv", "dress-progressive.iv", "outfit-layers.iv",
-                                           "outfit-skirt.iv", "posed.iv", "second-body.iv", "skirt.iv",
-                                           "skirt-capsules.iv", "skirt-triangles.iv", "tshirt.iv", "wind.iv",
-                                           "hybrid/forearm.iv", "hybrid/layers.iv", "hybrid/poke-through.iv",
-                                           "hybrid/shirt.iv", "hybrid/three-layers.iv"),
+// Every face of every ClothingLayer under `scene` turned round (its corners in reverse
+// order): the garment wound clockwise, as a mesh from another tool may come.
+void reverseWinding(SoNode* scene) {
+  SoSearchAction search;
+  search.setType(ClothingLayer::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.apply(scene);
+  for (int i = 0; i < search.getPaths().getLength(); ++i) {
+    auto* layer = static_cast<ClothingLayer*>(search.getPaths()[i]->getTail());
+    std::vector<int32_t> index(layer->coordIndex.getValues(0), layer->coordIndex.getValues(0) + layer->coordIndex.getNum());
+    for (auto start = index.begin(); start != index.end();) {
+      const auto end = std::find(start, index.end(), -1);
+      std::reverse(start, end);
+      start = end == index.end() ? end : end + 1;
+    }
+    layer->coordIndex.disconnect();
+    layer->coordIndex.setValues(0, int(index.size()), index.data());
+  }
+}
+
+// Pixels that are cloth in one image and not in the other.
+int clothDiffering(const Image& a, const Image& b) {
+  int differing = 0;
+  for (int i = 0; i < a.width * a.height; ++i)
+    differing += a.is(i, figment::test::kBlue, 0) != b.is(i, figment::test::kBlue, 0);
+  return differing;
+}
+
+TEST(HybridWinding, AClockwiseSkirtIsDrawnAsItsCounterClockwiseSelf) {
+  // The skirt, turned round face by face after its drape: its outside is now the
+  // clockwise side of its faces, though the scene's ShapeHints still say
+  // COUNTERCLOCKWISE. Before, the hybrid nodes took its inside for its outside and drew
+  // the inside of the back wall over the belly, above the waistband. Now the layer's
+  // shape says which side is out, and the picture is the counter-clockwise skirt's.
+  initHeadless();
+  SceneSession session;
+  ASSERT_TRUE(session.load(std::string(FIGMENT_SOURCE_DIR) + "/scenes/skirt.iv")) << session.loadError();
+  for (ClothEngine* engine : session.engines()) engine->maxTime = 0.05;  // on the hips or not: drawn alike
+  session.drape();
+  ASSERT_EQ(session.firstError(), "");
+  paintGarmentsBlue(session.scene());
+  const SbBox3f box = sceneBox(session.scene(), kFullSize);
+  std::vector<Image> counterClockwise;
+  for (double azimuth : {0.0, 90.0, 180.0, 270.0}) counterClockwise.push_back(render(session, azimuth, box));
+  reverseWinding(session.scene());
+  int view = 0;
+  for (double azimuth : {0.0, 90.0, 180.0, 270.0}) {
+    const Image clockwise = render(session, azimuth, box);
+    ASSERT_GT(clockwise.count(figment::test::kBlue), 5000) << "azimuth " << azimuth;
+    EXPECT_EQ(clothDiffering(clockwise, counterClockwise[view++]), 0) << "azimuth " << azimuth;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(ShippedScenes, HybridNeverHidesCloth, ::testing::ValuesIn(garmentScenes()),
                          [](const auto& scene) {
                            std::string name;
                            for (char c : scene.param)
