@@ -43,9 +43,15 @@ void widenLines(void* k, SoGLRenderAction*) {
 
 }  // namespace
 
+// The largest side OSMesa draws (OSMESA_MAX_WIDTH and _HEIGHT, and GL_MAX_VIEWPORT_DIMS,
+// on llvmpipe): Coin's SoOffscreenRenderer::getMaximumResolution() says 32767 with the
+// OSMesa context, and past 16384 Coin would split the image into tiles.
+constexpr int kOsmesaLargestSide = 16384;
+
 SceneRenderer::SceneRenderer(const ImageSize& size, int supersample) : size_(size) {
   const SbVec2s largest = SoOffscreenRenderer::getMaximumResolution();
-  supersample_ = supersampleWithin(size, supersample, largest[0], largest[1]);
+  supersample_ = supersampleWithin(size, supersample, std::min<int>(largest[0], kOsmesaLargestSide),
+                                   std::min<int>(largest[1], kOsmesaLargestSide));
   const SbViewportRegion region(short(size.width * supersample_), short(size.height * supersample_));
   renderer_ = std::make_unique<SoOffscreenRenderer>(region);
   renderer_->setComponents(SoOffscreenRenderer::RGB);

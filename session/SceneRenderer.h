@@ -19,7 +19,8 @@ class SceneRenderer {
   // Images of `size`; with `supersample` k > 1 each is drawn at k times the width and
   // the height and box-filtered down (each pixel the mean of its k x k samples), so
   // edges are anti-aliased. k is lowered where k times the size would pass the largest
-  // image the off-screen context draws in one piece (supersample()).
+  // image the off-screen context draws in one piece, 16384 pixels a side with OSMesa
+  // (supersample() says what it is).
   explicit SceneRenderer(const ImageSize& size, int supersample = 1);
   ~SceneRenderer();
 

@@ -244,7 +244,8 @@ float sharedDistance(const ImagePlan& plan, const SbBox3f& box) {
   const float aspect = float(plan.size.width) / float(plan.size.height);
   float distance = 0.0f;
   for (const std::optional<figment::session::ViewDirection>& view : plan.views)
-    distance = std::max(distance, figment::session::framingDistance(box, view.value_or(figment::session::ViewDirection{}), aspect));
+    distance = std::max(
+        distance, figment::session::framingDistance(box, view.value_or(figment::session::ViewDirection{}), aspect));
   return distance;
 }
 

@@ -171,8 +171,8 @@ TEST_F(FigmentViewImages, ATurntableKeepsOneCameraDistance) {
   }
   ASSERT_GT(lowest, 50) << "the post is in every picture";
   EXPECT_LE(highest - lowest, 0.02 * highest) << lowest << " to " << highest << " pixels high";
-  EXPECT_GT(eachHighest - eachLowest, 0.2 * eachHighest) << "the control: views framed one by one pulse ("
-                                                         << eachLowest << " to " << eachHighest << ")";
+  EXPECT_GT(eachHighest - eachLowest, 0.2 * eachHighest)
+      << "the control: views framed one by one pulse (" << eachLowest << " to " << eachHighest << ")";
 }
 
 TEST_F(FigmentViewImages, AnErrorAfterSomeImagesLeavesNone) {

@@ -138,7 +138,8 @@ void reverseWinding(SoNode* scene) {
   search.apply(scene);
   for (int i = 0; i < search.getPaths().getLength(); ++i) {
     auto* layer = static_cast<ClothingLayer*>(search.getPaths()[i]->getTail());
-    std::vector<int32_t> index(layer->coordIndex.getValues(0), layer->coordIndex.getValues(0) + layer->coordIndex.getNum());
+    std::vector<int32_t> index(layer->coordIndex.getValues(0),
+                               layer->coordIndex.getValues(0) + layer->coordIndex.getNum());
     for (auto start = index.begin(); start != index.end();) {
       const auto end = std::find(start, index.end(), -1);
       std::reverse(start, end);
