@@ -357,7 +357,7 @@ void describeOutputOptions(CLI::App& app, Options& options) {
       ->allow_extra_args(false);
   app.add_option("--turntable", options.turntable,
                  "N images around the body: azimuths 0, 360/N, 2*360/N, ... degrees at elevation 0 (with one "
-                 "--view AZ,EL: from AZ, at EL)");
+                 "--view AZ,EL: from AZ, at EL), all from one camera distance, so the figure keeps its size");
   app.add_option("--frames", options.frames,
                  "T0:T1:N: the drape's state at N simulated times from T0 to T1 seconds, evenly spaced (both "
                  "included), one image each, from one camera framing them all; the drape runs to T1 at least "
