@@ -41,12 +41,12 @@ void widenLines(void* k, SoGLRenderAction*) {
   glPointSize(factor);
 }
 
-}  // namespace
-
 // The largest side OSMesa draws (OSMESA_MAX_WIDTH and _HEIGHT, and GL_MAX_VIEWPORT_DIMS,
 // on llvmpipe): Coin's SoOffscreenRenderer::getMaximumResolution() says 32767 with the
 // OSMesa context, and past 16384 Coin would split the image into tiles.
 constexpr int kOsmesaLargestSide = 16384;
+
+}  // namespace
 
 SceneRenderer::SceneRenderer(const ImageSize& size, int supersample) : size_(size) {
   const SbVec2s largest = SoOffscreenRenderer::getMaximumResolution();

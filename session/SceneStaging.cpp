@@ -49,10 +49,6 @@ void removeCameras(SoNode* scene) {
   }
 }
 
-}  // namespace
-
-namespace {
-
 // What a framing camera frames: `box`, the unit box about the origin when it is empty,
 // and at least a unit-sized box about a single point.
 void framedBounds(const SbBox3f& box, SbVec3f& low, SbVec3f& high) {
