@@ -92,7 +92,8 @@ Pixels renderWithCoin(SoNode* root, bool keepStencilFields = false) {
 Pixels renderWithFigmentView(const figment::test::TempDir& dir, const std::string& scene) {
   const std::string png = (dir.path() / "figment-view.png").string();
   const std::string command = std::string("'") + FIGMENT_VIEW_EXECUTABLE + "' '" + scene + "' -o '" + png +
-                              "' --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight);
+                              "' --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) +
+                              " --supersample 1";  // one sample a pixel, as the plain program draws
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   SbImage image;
   EXPECT_TRUE(image.readFile(png.c_str())) << png;
