@@ -212,6 +212,8 @@ TEST_F(FigmentViewImages, BadImageOptionsAreOneLineNamingTheOptionAndValue) {
       {"--frames -1:1:3", "--frames: '-1:1:3'"},
       {"--frames 0:1:3 --turntable 2", "--frames: takes one view, not 2"},
       {"--view front --view up", "--view: 'up'"},
+      {"--supersample 0", "usage: --supersample: Value 0 not in range 1 to 8"},
+      {"--supersample 9", "usage: --supersample: Value 9 not in range 1 to 8"},
   };
   for (const auto& [options, message] : cases) {
     const ProcessResult r = run(quote(scene) + " -o " + quote(path("out.png")) + " " + options);
