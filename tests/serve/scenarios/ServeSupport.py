@@ -158,7 +158,7 @@ def _read_reply(reader):
 
 class JobWorker:
     """figment-serve --job-worker on `redis_url` with a drape cache of its own (a machine of
-    its own), its stderr in a file."""
+    its own); its stderr in `log` once stopped."""
 
     def __init__(self, executable, redis_url, name, *arguments):
         self.folder = tempfile.TemporaryDirectory(prefix="figment-jobs-test-")
@@ -180,6 +180,8 @@ class JobWorker:
         status = self.process.wait(timeout=120)
         self.process.stdout.close()
         self.log_file.close()
+        with open(self.log_file.name) as log:
+            self.log = log.read()  # its stderr, kept
         self.folder.cleanup()
         return status
 

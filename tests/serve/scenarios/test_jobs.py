@@ -97,6 +97,10 @@ class WorkQueue(unittest.TestCase):
         self.assertIn(key, done)  # the killed worker's job, done by the other
         self.assertEqual(set(made.values()), {"1"})  # each rendered once
         self.assertEqual(len(made), 100)
+        # Redis crashes and starts again: every acknowledged result is still there.
+        self.redis.kill()
+        self.redis.start()
+        self.assertEqual(hash_of(self.redis, "figment:jobs:done"), done)
         self.check_images(done)
 
     def check_images(self, done):
@@ -135,6 +139,22 @@ class WorkQueue(unittest.TestCase):
             self.assertEqual(self.redis.command("HLEN", "figment:jobs:done"), 1)
         finally:
             self.assertEqual(worker.stop(), 0)
+
+    def test_a_job_worker_goes_on_after_redis_restarts(self):
+        worker = JobWorker(EXECUTABLE, self.redis.url, "only", "--workers", "1")
+        try:
+            self.redis.kill()
+            time.sleep(1.5)  # the worker finds Redis away (its reads fail) before it is back
+            self.redis.start()
+            result = precompute(self.redis, "--requests", self.write_requests(["outfit=dress:S&size=64x80"]))
+            self.assertEqual(result.returncode, 0, result.stderr)
+            result = precompute(self.redis, "--status", "--wait", "600")
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("1 jobs: 1 done, 0 failed", result.stdout)
+        finally:
+            self.assertEqual(worker.stop(), 0)
+        self.assertEqual(worker.log.count("unreachable"), 1, worker.log)
+        self.assertEqual(worker.log.count("reachable again"), 1, worker.log)
 
     def test_a_bad_request_line_is_refused_and_nothing_queued(self):
         path = self.write_requests(["outfit=dress:M&size=64x80", "outfit=dress:Q&size=64x80"])
