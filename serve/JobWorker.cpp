@@ -69,6 +69,10 @@ void JobWorker::take(int slot) {
 }
 
 void JobWorker::handle(JobQueue& queue, const SharedImages& images, const RedisStore& store, const Job& job) {
+  if (job.request.empty()) {  // an entry added by hand, or one whose fields are gone
+    queue.fail(job, "400: the job has no request");
+    return;
+  }
   auto parsed = RenderRequest::parseCanonical(job.request);
   if (const auto* error = std::get_if<ParameterError>(&parsed)) {
     queue.fail(job, "400: " + error->error + (error->parameter.empty() ? "" : " (" + error->parameter + ")"));

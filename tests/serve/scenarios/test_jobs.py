@@ -124,6 +124,7 @@ class WorkQueue(unittest.TestCase):
 
     def test_a_bad_job_is_recorded_once_and_not_retried(self):
         self.redis.command("XADD", "figment:jobs", "*", "key", "handmade", "request", "garbage=1&outfit=dress:M")
+        self.redis.command("XADD", "figment:jobs", "*", "key", "norequest")
         worker = JobWorker(EXECUTABLE, self.redis.url, "only", "--workers", "1", "--claim-after", "0.5")
         try:
             result = precompute(self.redis, "--requests", self.write_requests(["outfit=skirt:M&size=64x80"]))
@@ -131,9 +132,10 @@ class WorkQueue(unittest.TestCase):
             result = precompute(self.redis, "--status", "--wait", "600")
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
             self.assertIn("failed: handmade: 400: unknown parameter (garbage)", result.stdout)
+            self.assertIn("failed: norequest: 400: the job has no request", result.stdout)
             time.sleep(2)  # past the claim time, several times: nothing comes back to be tried
             failed = hash_of(self.redis, "figment:jobs:failed")
-            self.assertEqual(list(failed), ["handmade"])
+            self.assertEqual(sorted(failed), ["handmade", "norequest"])
             self.assertEqual(self.redis.command("XLEN", "figment:jobs"), 0)
             self.assertEqual(self.redis.command("XPENDING", "figment:jobs", "workers")[0], 0)
             self.assertEqual(self.redis.command("HLEN", "figment:jobs:done"), 1)
