@@ -145,6 +145,22 @@ class WorkQueue(unittest.TestCase):
         finally:
             self.assertEqual(worker.stop(), 0)
 
+    def test_a_job_that_never_finishes_is_given_up_after_five_deliveries(self):
+        # Every render runs past a time limit of 1 ms: its worker is killed and the job left
+        # pending, taken over again after the claim time, until it has been delivered 5 times.
+        worker = JobWorker(EXECUTABLE, self.redis.url, "only", "--workers", "1", "--time-limit", "0.001",
+                           "--claim-after", "0.2")
+        try:
+            result = precompute(self.redis, "--requests", self.write_requests(["outfit=dress:L&size=64x80"]))
+            self.assertEqual(result.returncode, 0, result.stderr)
+            result = precompute(self.redis, "--status", "--wait", "600")
+            self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
+            self.assertIn("1 jobs: 0 done, 1 failed", result.stdout)
+            self.assertIn("given up after 5 deliveries", result.stdout)
+            self.assertEqual(self.redis.command("XLEN", "figment:jobs"), 0)
+        finally:
+            self.assertEqual(worker.stop(), 0)
+
     def test_a_job_worker_goes_on_after_redis_restarts(self):
         worker = JobWorker(EXECUTABLE, self.redis.url, "only", "--workers", "1")
         try:
