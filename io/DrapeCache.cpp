@@ -12,6 +12,7 @@
 #include "io/ByteReader.h"
 #include "io/ByteWriter.h"
 #include "io/Fnv1a.h"
+#include "io/SharedCacheStore.h"
 
 namespace figment {
 
@@ -40,57 +41,17 @@ std::vector<unsigned char> payloadOf(const CachedDrape& drape) {
   out.putArray(drape.stats);
   return out.take();
 }
-}  // namespace
 
-DrapeCache::DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes)
-    : folder_(std::move(folder)), maxBytes_(maxBytes) {}
-
-std::filesystem::path DrapeCache::userFolder() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "figment";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "figment";
-  return {};
+// An entry's name: two digests of its key, so the folder and a shared store name it alike.
+std::string stemOf(const std::string& key) {
+  char name[40];
+  std::snprintf(name, sizeof name, "%016" PRIx64 "%016" PRIx64, digest(key, 0), digest(key, 1));
+  return name;
 }
 
-std::filesystem::path DrapeCache::entryPath(const std::string& key) const {
-  char name[48];
-  std::snprintf(name, sizeof name, "%016" PRIx64 "%016" PRIx64 ".drape", digest(key, 0), digest(key, 1));
-  return folder_ / name;
-}
-
-std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string& problem) const {
-  problem.clear();
-  const std::filesystem::path path = entryPath(key);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  ByteReader header(bytes);
-  std::array<char, 16> magic{};
-  std::uint64_t keyDigest = 0, size = 0, sum = 0;
-  CachedDrape drape;
-  bool sound = header.get(magic) && magic == kMagic && header.get(keyDigest) && keyDigest == digest(key, 2) &&
-               header.get(size) && header.get(sum);
-  const std::size_t headerSize = kMagic.size() + 3 * sizeof(std::uint64_t);
-  sound = sound && bytes.size() == headerSize + size;
-  if (sound) {
-    const std::vector<unsigned char> payload(bytes.begin() + headerSize, bytes.end());
-    ByteReader body(payload);
-    sound = checksum(payload) == sum && body.getArray(drape.positions) && body.getArray(drape.sectionIndices) &&
-            body.getArray(drape.stats) && body.done();
-  }
-  std::error_code ec;
-  if (!sound) {
-    std::filesystem::remove(path, ec);
-    problem = path.string() + ": a damaged entry, removed; draped again";
-    return std::nullopt;
-  }
-  std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);  // recently used
-  return drape;
-}
-
-std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) const {
-  std::error_code ec;
-  std::filesystem::create_directories(folder_, ec);
-  if (ec) return folder_.string() + ": cannot make the cache folder: " + ec.message();
+// An entry's bytes: the magic, a third digest of the key, the payload's size and checksum,
+// the payload.
+std::vector<unsigned char> encode(const std::string& key, const CachedDrape& drape) {
   const std::vector<unsigned char> payload = payloadOf(drape);
   ByteWriter entry;
   entry.put(kMagic);
@@ -99,14 +60,97 @@ std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) 
   entry.put(checksum(payload));
   std::vector<unsigned char> bytes = entry.take();
   bytes.insert(bytes.end(), payload.begin(), payload.end());
-  const std::filesystem::path path = entryPath(key);
-  const std::string error = writeAtomically(path.string(), [&](const std::string& temporary) -> std::string {
+  return bytes;
+}
+
+// The drape an entry's bytes hold, if they are sound and made for `key`.
+std::optional<CachedDrape> decode(const std::vector<unsigned char>& bytes, const std::string& key) {
+  ByteReader header(bytes);
+  std::array<char, 16> magic{};
+  std::uint64_t keyDigest = 0, size = 0, sum = 0;
+  const bool sound = header.get(magic) && magic == kMagic && header.get(keyDigest) && keyDigest == digest(key, 2) &&
+                     header.get(size) && header.get(sum);
+  const std::size_t headerSize = kMagic.size() + 3 * sizeof(std::uint64_t);
+  if (!sound || bytes.size() != headerSize + size) return std::nullopt;
+  const std::vector<unsigned char> payload(bytes.begin() + headerSize, bytes.end());
+  ByteReader body(payload);
+  CachedDrape drape;
+  if (checksum(payload) != sum || !body.getArray(drape.positions) || !body.getArray(drape.sectionIndices) ||
+      !body.getArray(drape.stats) || !body.done())
+    return std::nullopt;
+  return drape;
+}
+
+std::string writeEntry(const std::filesystem::path& path, const std::vector<unsigned char>& bytes) {
+  return writeAtomically(path.string(), [&](const std::string& temporary) -> std::string {
     std::ofstream out(temporary, std::ios::binary);
     out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
     out.close();
     return out ? "" : "cannot write";
   });
-  if (!error.empty()) return path.string() + ": " + error;
+}
+}  // namespace
+
+DrapeCache::DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes,
+                       std::shared_ptr<const SharedCacheStore> shared)
+    : folder_(std::move(folder)), maxBytes_(maxBytes), shared_(std::move(shared)) {}
+
+std::filesystem::path DrapeCache::userFolder() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) return std::filesystem::path(xdg) / "figment";
+  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "figment";
+  return {};
+}
+
+std::filesystem::path DrapeCache::entryPath(const std::string& key) const {
+  return folder_ / (stemOf(key) + ".drape");
+}
+
+std::string DrapeCache::sharedName(const std::string& key) const {
+  return "drape:" + stemOf(key);
+}
+
+std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string& problem) const {
+  problem.clear();
+  const std::filesystem::path path = entryPath(key);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return shared_ ? findShared(key, problem) : std::nullopt;
+  const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  std::optional<CachedDrape> drape = decode(bytes, key);
+  std::error_code ec;
+  if (!drape) {
+    std::filesystem::remove(path, ec);
+    problem = path.string() + ": a damaged entry, removed; draped again";
+    return std::nullopt;
+  }
+  std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);  // recently used
+  return drape;
+}
+
+std::optional<CachedDrape> DrapeCache::findShared(const std::string& key, std::string& problem) const {
+  const std::string name = sharedName(key);
+  const std::optional<std::string> kept = shared_->get(name);
+  if (!kept) return std::nullopt;
+  const std::vector<unsigned char> bytes(kept->begin(), kept->end());
+  std::optional<CachedDrape> drape = decode(bytes, key);
+  if (!drape) {
+    shared_->remove(name);
+    problem = "shared entry " + name + ": damaged or foreign, removed; draped again";
+    return std::nullopt;
+  }
+  // The folder is the first level: the next read of this entry is local. A folder that
+  // cannot be written costs only that.
+  if (writeEntry(entryPath(key), bytes).empty()) trim();
+  return drape;
+}
+
+std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) const {
+  const std::vector<unsigned char> bytes = encode(key, drape);
+  if (shared_) shared_->put(sharedName(key), std::string(bytes.begin(), bytes.end()));
+  std::error_code ec;
+  std::filesystem::create_directories(folder_, ec);
+  if (ec) return folder_.string() + ": cannot make the cache folder: " + ec.message();
+  const std::filesystem::path path = entryPath(key);
+  if (std::string error = writeEntry(path, bytes); !error.empty()) return path.string() + ": " + error;
   trim();
   return "";
 }
@@ -114,6 +158,7 @@ std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) 
 void DrapeCache::remove(const std::string& key) const {
   std::error_code ignored;  // an entry that is not there is removed already
   std::filesystem::remove(entryPath(key), ignored);
+  if (shared_) shared_->remove(sharedName(key));
 }
 
 void DrapeCache::trim() const {

@@ -6,15 +6,23 @@
 // digests of the key and carries a third, and a checksum of its contents, so a damaged
 // or foreign entry is found out and dropped, never used. Entries are written through a
 // temporary name; past `maxBytes` the least recently used go first.
+//
+// With a shared store below it (io/SharedCacheStore.h: figment-serve's Redis), the folder
+// is the first level: an entry missing here is looked for there, checked as a file is
+// (a damaged or foreign one is dropped from the store too) and copied into the folder;
+// a stored entry goes to both.
 
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace figment {
+
+class SharedCacheStore;
 
 struct CachedDrape {
   std::vector<std::array<float, 3>> positions;  // the engine's output, as it gave it
@@ -24,7 +32,8 @@ struct CachedDrape {
 
 class DrapeCache {
  public:
-  DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes);
+  DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes,
+             std::shared_ptr<const SharedCacheStore> shared = nullptr);
 
   // $XDG_CACHE_HOME/figment, else $HOME/.cache/figment; empty when neither is set.
   static std::filesystem::path userFolder();
@@ -40,12 +49,17 @@ class DrapeCache {
   void remove(const std::string& key) const;
   // The file an entry for `key` lives in.
   std::filesystem::path entryPath(const std::string& key) const;
+  // The name an entry for `key` has in the shared store: "drape:" and its file's stem.
+  std::string sharedName(const std::string& key) const;
 
  private:
+  // The entry the shared store holds for `key`, checked and copied into the folder.
+  std::optional<CachedDrape> findShared(const std::string& key, std::string& problem) const;
   void trim() const;
 
   std::filesystem::path folder_;
   std::uintmax_t maxBytes_;
+  std::shared_ptr<const SharedCacheStore> shared_;  // null: the folder alone
 };
 
 }  // namespace figment

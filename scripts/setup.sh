@@ -12,12 +12,15 @@ targets=("$@")
 # call from a pivy program (tests/guard/test_GuardC.py). libcpp-httplib-dev: figment-serve's
 # HTTP; chromium, chromium-driver, python3-selenium: its page tested in a real browser
 # (tests/serve/scenarios/test_page.py); wrk: bench/serve-load.sh; clang-format: ctest's
-# lint.Formatting (scripts/check-format.sh).
+# lint.Formatting (scripts/check-format.sh). libhiredis-dev, redis-server: figment-serve's
+# shared cache and work queue, and the tests that start a Redis of their own; nginx: the
+# load balancer the deployment test puts before two instances (docs/deploy.md).
 packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   assimp-testmodels python3-matplotlib python3-pivy
   libcpp-httplib-dev chromium chromium-driver python3-selenium wrk
+  libhiredis-dev redis-server nginx
   clang-format)
 
 missing=()

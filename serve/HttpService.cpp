@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "serve/Catalogue.h"
 #include "serve/Digest.h"
+#include "serve/RedisStore.h"
 #include "serve/RenderRequest.h"
 #include "serve/WebAssets.h"
 
@@ -81,13 +83,14 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
       images_(options.imageCacheBytes),
       rateLimit_(options.renderRate, options.renderBurst),
       server_(std::make_unique<httplib::Server>()) {
-  PoolOptions pool;
-  pool.program = program;
-  pool.arguments = {"--worker", "--scenes", options_.scenesFolder, "--cache", options_.cacheFolder};
-  pool.workers = std::max(1, options_.workers);
-  pool.queue = options_.queue > 0 ? options_.queue : 4 * pool.workers;
-  pool.timeLimit = options_.timeLimit;
-  pool_ = std::make_unique<WorkerPool>(pool);
+  if (!options_.redisUrl.empty()) {
+    RedisConnection::Options redis;
+    redis.commandTimeout = 0.5;  // s: a request waits no longer on Redis than that, then goes on without it
+    redis.log = [](const std::string& line) { std::fprintf(stderr, "figment-serve: %s\n", line.c_str()); };
+    redis_ = std::make_shared<RedisConnection>(options_.redisUrl, redis);
+    sharedImages_ = std::make_unique<SharedImages>(std::make_shared<RedisStore>(redis_, options_.redisTtl));
+  }
+  pool_ = std::make_unique<WorkerPool>(workerPoolOptions(options_, program));
   server_->new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
   server_->set_keep_alive_max_count(1000);
   server_->set_payload_max_length(0);  // GET only: no request carries a body
@@ -135,7 +138,10 @@ void HttpService::health(httplib::Response& response) const {
             {"busy", load.busy},
             {"queued", load.queued},
             {"restarts", load.restarts},
-            {"imageCacheBytes", images_.bytes()}});
+            {"imageCacheBytes", images_.bytes()},
+            {"redis", !redis_           ? "off"
+                      : redis_->check() ? "up"
+                                        : "down"}});
 }
 
 void HttpService::render(const httplib::Request& request, httplib::Response& response) {
@@ -163,7 +169,7 @@ void HttpService::render(const httplib::Request& request, httplib::Response& res
     response.set_header("Cache-Control", "public, max-age=86400");
     return;
   }
-  if (std::shared_ptr<const std::string> png = images_.find(tag)) return answer(*png, true);
+  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(*kept, true);
   if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
     response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
     return sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
@@ -176,7 +182,16 @@ void HttpService::render(const httplib::Request& request, httplib::Response& res
   if (result->status != 200)
     return sendJson(response, result->status, nlohmann::json::parse(result->body, nullptr, false));
   images_.store(tag, std::make_shared<const std::string>(result->body));
+  if (sharedImages_) sharedImages_->store(tag.substr(1, tag.size() - 2), result->body);
   answer(result->body, result->drapeFromCache);
+}
+
+std::shared_ptr<const std::string> HttpService::keptImage(const std::string& tag) {
+  if (std::shared_ptr<const std::string> image = images_.find(tag)) return image;
+  if (!sharedImages_) return nullptr;
+  std::shared_ptr<const std::string> image = sharedImages_->find(tag.substr(1, tag.size() - 2));  // unquoted
+  if (image) images_.store(tag, image);
+  return image;
 }
 
 int HttpService::bind(std::string& error) {

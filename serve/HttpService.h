@@ -1,6 +1,7 @@
 #pragma once
 // figment-serve's HTTP side (cpp-httplib): the routes, their headers and errors, the
-// in-memory image cache in front of the worker pool. Every answer but a PNG, the page and
+// in-memory image cache in front of the worker pool, and with --redis the images every
+// instance made (serve/SharedImages.h) below it. Every answer but a PNG, the page and
 // a 304 is JSON; an unknown path is 404 JSON and reads no file.
 
 #include <memory>
@@ -9,7 +10,9 @@
 
 #include "serve/ClientRateLimit.h"
 #include "serve/ImageCache.h"
+#include "serve/RedisConnection.h"
 #include "serve/ServeOptions.h"
+#include "serve/SharedImages.h"
 #include "serve/WorkerPool.h"
 
 namespace httplib {
@@ -39,11 +42,15 @@ class HttpService {
   void addRoutes();
   void render(const httplib::Request& request, httplib::Response& response);
   void health(httplib::Response& response) const;
+  // The image for the quoted ETag `tag` from memory, else from Redis (then kept in memory).
+  std::shared_ptr<const std::string> keptImage(const std::string& tag);
 
   ServeOptions options_;
   std::string build_;  // Digest::buildDigest()
   std::unique_ptr<WorkerPool> pool_;
   ImageCache images_;
+  std::shared_ptr<RedisConnection> redis_;      // null without --redis
+  std::unique_ptr<SharedImages> sharedImages_;  // images in Redis, below images_
   ClientRateLimit rateLimit_;
   std::unique_ptr<httplib::Server> server_;
 };

@@ -8,6 +8,7 @@
 #include "io/PngFile.h"
 #include "serve/FrameChannel.h"
 #include "serve/OutfitScene.h"
+#include "serve/RedisStore.h"
 #include "serve/RenderRequest.h"
 #include "session/SceneExport.h"
 
@@ -23,9 +24,18 @@ RenderWorker::Answer failure(int status, const std::string& error) {
 
 }  // namespace
 
-RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder) {
+RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder, const std::string& redisUrl,
+                           long redisTtl) {
   startError_ = wardrobe_.read(scenesFolder);
-  if (!cacheFolder.empty()) session_.context().cache = std::make_shared<DrapeCache>(cacheFolder, kCacheBytes);
+  if (cacheFolder.empty()) return;
+  std::shared_ptr<RedisStore> shared;
+  if (!redisUrl.empty()) {
+    // Quiet: the server says once whether Redis is there; its workers would say it N times.
+    RedisConnection::Options quiet;
+    quiet.commandTimeout = 1.0;  // s
+    shared = std::make_shared<RedisStore>(std::make_shared<RedisConnection>(redisUrl, quiet), redisTtl);
+  }
+  session_.context().cache = std::make_shared<DrapeCache>(cacheFolder, kCacheBytes, shared);
 }
 
 void RenderWorker::serve(const FrameChannel& channel) {

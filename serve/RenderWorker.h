@@ -19,8 +19,10 @@ class RenderRequest;
 
 class RenderWorker {
  public:
-  // Drapes kept in `cacheFolder` (none when empty); body and patterns from `scenesFolder`.
-  RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder);
+  // Drapes kept in `cacheFolder` (none when empty), over Redis at `redisUrl` when one is
+  // given (entries kept `redisTtl` s unread); body and patterns from `scenesFolder`.
+  RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder, const std::string& redisUrl = "",
+               long redisTtl = 0);
 
   // "" when the wardrobe read, else why not (the worker then exits).
   const std::string& startError() const { return startError_; }

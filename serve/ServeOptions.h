@@ -16,6 +16,8 @@ struct ServeOptions {
   size_t imageCacheBytes = 64u << 20;  // rendered images kept in memory
   double renderRate = 10;              // renders a second per client (its address); 0: no limit
   double renderBurst = 60;             // renders a client may ask at once
+  std::string redisUrl;                // the shared cache (and work queue) in Redis; "" for none
+  long redisTtl = 30L * 24 * 3600;     // s an entry stays in Redis unread
 };
 
 }  // namespace figment::serve

@@ -1,5 +1,6 @@
 #include "serve/WorkerPool.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 namespace figment::serve {
@@ -17,6 +18,19 @@ RenderResult failure(int status, const std::string& error) {
 }
 
 }  // namespace
+
+PoolOptions workerPoolOptions(const ServeOptions& options, const std::string& program) {
+  PoolOptions pool;
+  pool.program = program;
+  pool.arguments = {"--worker", "--scenes", options.scenesFolder, "--cache", options.cacheFolder};
+  if (!options.redisUrl.empty())
+    pool.arguments.insert(pool.arguments.end(),
+                          {"--redis", options.redisUrl, "--redis-ttl", std::to_string(options.redisTtl)});
+  pool.workers = std::max(1, options.workers);
+  pool.queue = options.queue > 0 ? options.queue : 4 * pool.workers;
+  pool.timeLimit = options.timeLimit;
+  return pool;
+}
 
 WorkerPool::WorkerPool(PoolOptions options) : options_(std::move(options)) {
   for (int slot = 0; slot < options_.workers; ++slot) threads_.emplace_back([this, slot] { run(slot); });

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "serve/ServeOptions.h"
 #include "serve/WorkerProcess.h"
 
 namespace figment::serve {
@@ -32,6 +33,10 @@ struct PoolOptions {
   int queue = 8;          // requests waiting at most (beside those rendering)
   double timeLimit = 60;  // s per render
 };
+
+// The pool a figment-serve of these options runs (HTTP or job worker): `program` started
+// again in its worker mode, with the drape cache, scenes and Redis of `options`.
+PoolOptions workerPoolOptions(const ServeOptions& options, const std::string& program);
 
 class WorkerPool {
  public:

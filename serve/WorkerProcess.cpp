@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -47,6 +48,7 @@ std::string WorkerProcess::start() {
   for (std::string& argument : arguments_) argv.push_back(argument.data());
   argv.push_back(nullptr);
   std::vector<char*> envp = environment();
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
@@ -62,6 +64,11 @@ std::string WorkerProcess::start() {
     sigemptyset(&none);
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
     ::signal(SIGPIPE, SIG_DFL);
+    // A server or job worker killed outright (SIGKILL) takes its workers with it, rather
+    // than leaving them to finish a render nobody reads. (The parent is the pool's thread
+    // that started it, which lives as long as the pool.)
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);  // it died already
     ::execve(program_.c_str(), argv.data(), envp.data());
     ::_exit(127);
   }

@@ -1,15 +1,19 @@
 // The drape cache on disk: what goes in comes back bit for bit under the same key and
 // never under another; a damaged entry is found out, removed and reported; past its
 // bound the least recently used entries go; a folder that cannot be made is an error
-// naming it.
+// naming it. Over a shared store (io/SharedCacheStore.h) the folder is the first level:
+// what another program stored there is found, checked and copied in; a damaged or
+// foreign shared entry is dropped.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "io/DrapeCache.h"
+#include "io/SharedCacheStore.h"
 #include "support/IoTestSupport.h"
 
 using namespace figment;
@@ -23,6 +27,21 @@ CachedDrape someDrape(int n) {
   d.stats = {1, 2, 3, 250, 0};
   return d;
 }
+
+// A shared store in memory, as two programs over one Redis see it.
+class MemoryStore : public SharedCacheStore {
+ public:
+  std::optional<std::string> get(const std::string& name) const override {
+    auto it = entries.find(name);
+    return it == entries.end() ? std::nullopt : std::optional<std::string>(it->second);
+  }
+  bool put(const std::string& name, const std::string& bytes) const override {
+    entries[name] = bytes;
+    return true;
+  }
+  void remove(const std::string& name) const override { entries.erase(name); }
+  mutable std::map<std::string, std::string> entries;
+};
 }  // namespace
 
 TEST(DrapeCache, GivesBackWhatWasStoredBitForBitAndOnlyUnderItsKey) {
@@ -104,4 +123,61 @@ TEST(DrapeCache, LivesInTheUsersCacheFolder) {
   const ScopedEnvironment xdg("XDG_CACHE_HOME", std::nullopt);
   const ScopedEnvironment home("HOME", (dir.path() / "home").string());
   EXPECT_EQ(DrapeCache::userFolder(), dir.path() / "home" / ".cache" / "figment");
+}
+
+TEST(DrapeCache, FindsWhatAnotherFolderStoredInTheSharedStoreAndKeepsItLocally) {
+  const TempDir dir;
+  const auto store = std::make_shared<MemoryStore>();
+  const DrapeCache first(dir.path() / "first", 1 << 20, store);
+  const DrapeCache second(dir.path() / "second", 1 << 20, store);
+  const CachedDrape drape = someDrape(30);
+  ASSERT_EQ(first.store("scene", drape), "");
+  ASSERT_EQ(store->entries.count(first.sharedName("scene")), 1u);
+  ASSERT_FALSE(std::filesystem::exists(second.entryPath("scene")));
+  std::string problem;
+  const std::optional<CachedDrape> back = second.find("scene", problem);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(problem, "");
+  EXPECT_EQ(std::memcmp(back->positions.data(), drape.positions.data(), drape.positions.size() * 12), 0);
+  EXPECT_EQ(back->sectionIndices, drape.sectionIndices);
+  EXPECT_TRUE(std::filesystem::exists(second.entryPath("scene")));  // the first level now holds it
+  store->entries.clear();
+  EXPECT_TRUE(second.find("scene", problem));  // read from the folder alone
+  EXPECT_FALSE(second.find("another scene", problem));
+  EXPECT_EQ(problem, "");
+}
+
+TEST(DrapeCache, ADamagedOrForeignSharedEntryIsDroppedNeverUsed) {
+  const TempDir dir;
+  const auto store = std::make_shared<MemoryStore>();
+  const DrapeCache maker(dir.path() / "maker", 1 << 20, store);
+  const DrapeCache reader(dir.path() / "reader", 1 << 20, store);
+  ASSERT_EQ(maker.store("scene", someDrape(30)), "");
+  ASSERT_EQ(maker.store("other scene", someDrape(20)), "");
+  const std::string name = maker.sharedName("scene");
+  for (const std::string damage : {"flip", "truncate", "foreign"}) {
+    std::string bytes = store->entries.at(maker.sharedName("scene"));
+    if (damage == "flip") bytes[100] ^= 0x40;
+    if (damage == "truncate") bytes.resize(bytes.size() - 3);
+    if (damage == "foreign") bytes = store->entries.at(maker.sharedName("other scene"));
+    const std::string good = store->entries.at(name);
+    store->entries[name] = bytes;
+    std::string problem;
+    EXPECT_FALSE(reader.find("scene", problem)) << damage;
+    EXPECT_NE(problem.find(name), std::string::npos) << damage << ": " << problem;
+    EXPECT_EQ(store->entries.count(name), 0u) << damage;
+    EXPECT_FALSE(std::filesystem::exists(reader.entryPath("scene"))) << damage;
+    store->entries[name] = good;
+  }
+}
+
+TEST(DrapeCache, RemovingAnEntryRemovesItFromTheSharedStoreToo) {
+  const TempDir dir;
+  const auto store = std::make_shared<MemoryStore>();
+  const DrapeCache cache(dir.path(), 1 << 20, store);
+  ASSERT_EQ(cache.store("scene", someDrape(10)), "");
+  cache.remove("scene");
+  EXPECT_TRUE(store->entries.empty());
+  std::string problem;
+  EXPECT_FALSE(cache.find("scene", problem));
 }

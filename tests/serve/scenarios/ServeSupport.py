@@ -2,24 +2,31 @@
 
 The server is started on a free loopback port (--port 0: it prints the one it took) in a
 temporary folder, with its drape cache there; stop() sends SIGTERM and waits for it.
+RedisServer is a redis-server of the test's own, on a Unix socket in a temporary folder (no
+TCP port at all), stopped at the end; JobWorker is figment-serve --job-worker on it.
 """
 import http.client
+import socket
 import json
 import os
 import signal
 import struct
 import subprocess
 import tempfile
+import time
 import zlib
 
 
 class Server:
-    def __init__(self, executable, *arguments):
+    def __init__(self, executable, *arguments, capture_log=False):
+        """`capture_log`: its stderr goes to a file, read by log()."""
         self.folder = tempfile.TemporaryDirectory(prefix="figment-serve-test-")
         cache = os.path.join(self.folder.name, "cache")
+        self.log_path = os.path.join(self.folder.name, "stderr")
+        self.log_file = open(self.log_path, "w") if capture_log else None
         self.process = subprocess.Popen(
             [executable, "--port", "0", "--cache", cache, *arguments],
-            stdout=subprocess.PIPE, cwd=self.folder.name, text=True)
+            stdout=subprocess.PIPE, stderr=self.log_file, cwd=self.folder.name, text=True)
         line = self.process.stdout.readline()
         if "http://" not in line:
             self.process.kill()
@@ -59,6 +66,122 @@ class Server:
             self.process.send_signal(signal.SIGTERM)
         status = self.process.wait(timeout=120)
         self.process.stdout.close()
+        if self.log_file:
+            self.log_file.close()
+        self.folder.cleanup()
+        return status
+
+    def log(self):
+        with open(self.log_path) as log:
+            return log.read()
+
+
+class RedisServer:
+    """redis-server on a Unix socket in a temporary folder, no TCP port. Every write is
+    appended to its log and synced before it is answered (appendfsync always), so a Redis
+    killed and started again on the same folder has everything it acknowledged."""
+
+    def __init__(self):
+        self.folder = tempfile.TemporaryDirectory(prefix="figment-redis-test-")
+        self.socket = os.path.join(self.folder.name, "redis.sock")
+        self.url = self.socket
+        self.process = None
+        self.start()
+
+    def start(self):
+        self.process = subprocess.Popen(
+            ["redis-server", "--port", "0", "--unixsocket", self.socket, "--unixsocketperm", "700",
+             "--dir", self.folder.name, "--save", "", "--appendonly", "yes", "--appendfsync", "always",
+             "--maxmemory", "256mb", "--maxmemory-policy", "volatile-lru",
+             "--logfile", os.path.join(self.folder.name, "redis.log")],
+            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        deadline = time.monotonic() + 60
+        while True:
+            try:
+                if self.command("PING") == "PONG":
+                    return
+            except (OSError, RuntimeError):  # not listening yet, or still loading its log
+                pass
+            if self.process.poll() is not None or time.monotonic() > deadline:
+                raise RuntimeError("redis-server did not start")
+            time.sleep(0.05)
+
+    def kill(self):
+        """SIGKILL: a crash, nothing flushed beyond what each write synced."""
+        self.process.kill()
+        self.process.wait(timeout=60)
+
+    def stop(self):
+        if self.process.poll() is None:
+            self.process.terminate()
+            self.process.wait(timeout=60)
+        self.folder.cleanup()
+
+    def command(self, *arguments):
+        """One command over a connection of its own; the reply as str, bytes (when not
+        UTF-8), int, list or None. An error reply raises RuntimeError."""
+        with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as connection:
+            connection.settimeout(30)
+            connection.connect(self.socket)
+            message = b"*%d\r\n" % len(arguments)
+            for argument in arguments:
+                data = argument if isinstance(argument, bytes) else str(argument).encode()
+                message += b"$%d\r\n%s\r\n" % (len(data), data)
+            connection.sendall(message)
+            with connection.makefile("rb") as reader:
+                return _read_reply(reader)
+
+
+def _read_reply(reader):
+    line = reader.readline()
+    if not line:
+        raise OSError("redis closed the connection")
+    kind, rest = line[:1], line[1:-2]
+    if kind == b"+":
+        return rest.decode()
+    if kind == b"-":
+        raise RuntimeError(rest.decode())
+    if kind == b":":
+        return int(rest)
+    if kind == b"$":
+        if int(rest) < 0:
+            return None
+        data = reader.read(int(rest) + 2)[:-2]
+        try:
+            return data.decode()
+        except UnicodeDecodeError:
+            return data
+    if kind == b"*":
+        return None if int(rest) < 0 else [_read_reply(reader) for _ in range(int(rest))]
+    raise RuntimeError("unreadable reply %r" % line)
+
+
+class JobWorker:
+    """figment-serve --job-worker on `redis_url` with a drape cache of its own (a machine of
+    its own); its stderr in `log` once stopped."""
+
+    def __init__(self, executable, redis_url, name, *arguments):
+        self.folder = tempfile.TemporaryDirectory(prefix="figment-jobs-test-")
+        self.name = name
+        self.log_file = open(os.path.join(self.folder.name, "stderr"), "w")
+        self.process = subprocess.Popen(
+            [executable, "--job-worker", "--redis", redis_url, "--consumer", name,
+             "--cache", os.path.join(self.folder.name, "cache"), *arguments],
+            stdout=subprocess.PIPE, stderr=self.log_file, cwd=self.folder.name, text=True)
+        line = self.process.stdout.readline()
+        if "job worker" not in line:
+            self.process.kill()
+            raise RuntimeError("figment-serve --job-worker did not start: " + repr(line))
+
+    def stop(self):
+        """Stops it (SIGTERM, unless it was killed); its exit status."""
+        if self.process.poll() is None:
+            self.process.send_signal(signal.SIGTERM)
+        status = self.process.wait(timeout=120)
+        self.process.stdout.close()
+        self.log_file.close()
+        with open(self.log_file.name) as log:
+            self.log = log.read()  # its stderr, kept
         self.folder.cleanup()
         return status
 
