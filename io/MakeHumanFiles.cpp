@@ -83,6 +83,7 @@ HumanBase readHumanBase(const std::string& dir) {
   if (faces.empty()) throw std::runtime_error(path + ": no faces in group 'body'");
   HumanBase base;
   base.fileVertexCount = int(all.size());
+  base.fileVertices = all;
   std::vector<int> skinIndex(all.size(), -1);
   for (const std::vector<int>& face : faces) {
     for (int v : face) {

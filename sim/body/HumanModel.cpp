@@ -70,4 +70,24 @@ TriangleMesh HumanModel::make(const HumanParameters& p) const {
   return body;
 }
 
+std::vector<Vec3> HumanModel::fileVertices(const HumanParameters& p) const {
+  if (int(base_.fileVertices.size()) != base_.fileVertexCount)
+    throw std::logic_error("HumanModel: the base has no file vertices to place a rig from");
+  std::vector<Vec3> all = base_.fileVertices;
+  for (const WeightedTarget& t : targets(p)) {
+    const MorphTarget* target = lookup_(t.name);
+    if (!target) continue;
+    for (size_t k = 0; k < target->vertices.size(); ++k) {
+      const int file = target->vertices[k];
+      if (file >= 0 && file < int(all.size())) all[file] += t.weight * target->offsets[k];
+    }
+  }
+  // The same arithmetic as make() on the skin's vertices, so the same floor to the bit.
+  double floor = std::numeric_limits<double>::infinity();
+  for (Vec3& v : all) v *= base_.metresPerUnit;
+  for (int file : base_.fileIndex) floor = std::min(floor, all[file].y());
+  for (Vec3& v : all) v.y() -= floor;
+  return all;
+}
+
 }  // namespace figment

@@ -25,6 +25,10 @@ struct HumanBase {
   TriangleMesh skin;
   std::vector<int> fileIndex;
   int fileVertexCount = 0;
+  // Every vertex of the file (the skin, the helper geometry and the joint cubes), the
+  // file's unit: where the rig's joints are placed from (sim/body/HumanRig.h). May be
+  // empty (a base made in code); fileVertices() then throws.
+  std::vector<Vec3> fileVertices;
   double metresPerUnit = 0.1;  // MakeHuman models in decimetres
 };
 
@@ -55,6 +59,10 @@ class HumanModel {
   // The body: metres, y up, its lowest point on y = 0, as symmetric about x = 0 as the base.
   // Throws as targets().
   TriangleMesh make(const HumanParameters& p) const;
+  // Every file vertex blended as make() blends the skin, in the same frame (metres, y up,
+  // moved by make()'s floor): what the rig's joints follow. Throws as targets(), and
+  // std::logic_error when the base has no fileVertices.
+  std::vector<Vec3> fileVertices(const HumanParameters& p) const;
   const HumanBase& base() const { return base_; }
 
  private:

@@ -1,5 +1,6 @@
 #include "sim/drape/GarmentDrape.h"
 
+#include <stdexcept>
 #include <utility>
 
 namespace figment {
@@ -8,7 +9,13 @@ namespace {
 
 GarmentDrape drapeWhole(const DrapeRequest& request) {
   ClothSolver solver(request.garment, request.parameters, request.body);
-  if (request.stepObserver) solver.setStepObserver(request.stepObserver);
+  if (request.bodyClock)
+    solver.setStepObserver([&request](const ClothSolver& s) {
+      request.bodyClock(s.time());
+      if (request.stepObserver) request.stepObserver(s);
+    });
+  else if (request.stepObserver)
+    solver.setStepObserver(request.stepObserver);
   GarmentDrape out;
   out.run = solver.run(request.progress, request.progressInterval);
   out.positions = solver.positions();
@@ -31,6 +38,8 @@ GarmentDrape drapeProgressively(const DrapeRequest& request) {
 }  // namespace
 
 GarmentDrape drapeGarment(const DrapeRequest& request) {
+  if (request.bodyClock && request.progressive)
+    throw std::invalid_argument("a body that moves into its pose needs a whole-garment drape, not a progressive one");
   return request.progressive ? drapeProgressively(request) : drapeWhole(request);
 }
 

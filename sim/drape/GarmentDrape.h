@@ -29,6 +29,10 @@ struct DrapeRequest {
   // Called before the first step and after every step of a whole-garment drape (a
   // progressive drape's solver changes with its level and is not observed).
   ClothSolver::StepObserver stepObserver{};
+  // Set: the body moves during the drape (sim/collision/MovingMeshCollider.h); called
+  // with the simulated time before the first step and after every step, before
+  // stepObserver. A whole-garment drape only: with `progressive` set it is refused.
+  std::function<void(double time)> bodyClock{};
   // Called about every `progressInterval` s of wall time (0: every 64 steps).
   std::function<void(const DrapeProgress&)> progress{};
   double progressInterval = 1.0;
@@ -43,7 +47,8 @@ struct GarmentDrape {
 };
 
 // Throws SimulationError (sim/cloth/ClothSolver.h) when the simulation blows up, and
-// std::invalid_argument naming the parameter when one cannot be used.
+// std::invalid_argument naming the parameter when one cannot be used (or a moving body
+// with a progressive drape).
 GarmentDrape drapeGarment(const DrapeRequest& request);
 
 }  // namespace figment

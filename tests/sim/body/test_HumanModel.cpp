@@ -54,3 +54,22 @@ TEST(HumanModel, UnknownOrOutOfRangeMeasuresAreNamed) {
   p.measures["waist"] = 1.0;
   EXPECT_EQ(model.make(p).vertices.size(), 3u);  // a target the data lacks adds nothing
 }
+
+TEST(HumanModel, FileVerticesAreBlendedAndFlooredAsTheSkin) {
+  std::map<std::string, MorphTarget> data;
+  data["torso/measure-bust-circ-incr"] = {{3, 0}, {Vec3(2, 0, 0), Vec3(0, 4, 0)}};  // file 0: helper geometry
+  HumanBase base = tinyBase();
+  const TargetLookup lookup = [&](const std::string& name) -> const MorphTarget* {
+    const auto it = data.find(name);
+    return it == data.end() ? nullptr : &it->second;
+  };
+  EXPECT_THROW(HumanModel(base, lookup).fileVertices({}), std::logic_error);  // a base made without them
+  base.fileVertices = {Vec3(0, 0, 0), Vec3(0, -5, 0), Vec3(1, -5, 0), Vec3(0, 5, 0)};
+  const HumanModel model(base, lookup);
+  HumanParameters p;
+  p.measures["bust"] = 0.5;
+  const std::vector<Vec3> all = model.fileVertices(p);
+  const TriangleMesh skin = model.make(p);
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(all[base.fileIndex[k]], skin.vertices[k]);  // the same to the bit
+  EXPECT_NEAR(all[0].y(), 0.5 * 0.4 + 0.5, 1e-15);  // the helper moved too, on the skin's floor
+}

@@ -68,3 +68,21 @@ TEST(GarmentDrape, AProgressiveDrapeEndsAtItsFullLevelWithEveryRestPoint) {
   EXPECT_GE(drape.settling.arrival, 0.0);
   expectRestsOnTheBall(drape.positions);
 }
+
+TEST(GarmentDrape, AMovingBodysClockRunsBeforeTheObserverAndOnlyForAWholeDrape) {
+  DrapeRequest request = sheetOnBall();
+  request.parameters.maxTime = 0.1;  // five steps
+  std::vector<double> clock, observed;
+  request.bodyClock = [&](double time) { clock.push_back(time); };
+  request.stepObserver = [&](const ClothSolver& s) {
+    ASSERT_FALSE(clock.empty());
+    EXPECT_EQ(clock.back(), s.time());  // the body moved first
+    observed.push_back(s.time());
+  };
+  drapeGarment(request);
+  ASSERT_EQ(clock.size(), 6u);  // before the first step and after each of five
+  EXPECT_EQ(clock.front(), 0.0);
+  EXPECT_EQ(observed, clock);
+  request.progressive = decimate(request.garment, DecimationOptions{.targetFaces = 120});
+  EXPECT_THROW(drapeGarment(request), std::invalid_argument);
+}
