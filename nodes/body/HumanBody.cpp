@@ -3,7 +3,14 @@
 #include <Inventor/SoInput.h>
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/errors/SoReadError.h>
+#include <Inventor/fields/SoField.h>
+#include <Inventor/misc/SoChildList.h>
+#include <Inventor/misc/SoNotification.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoSeparator.h>
 
+#include <algorithm>
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,15 +18,43 @@
 #include <vector>
 
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanRig.h"
 #include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
+#include "sim/body/PosePresets.h"
+#include "sim/body/RigSkin.h"
+#include "sim/collision/MovingMeshCollider.h"
 
 SO_NODE_SOURCE(HumanBody);
 
+// The rest body and the pose it turns into, kept for the moving collider's shapes.
+struct PoseMotion {
+  std::shared_ptr<const figment::HumanRig> rig;
+  std::shared_ptr<const figment::RigSkin> skin;
+  std::vector<figment::PlacedBone> placed;
+  figment::RigPose pose;
+  figment::TriangleMesh rest;
+  figment::SkinningMethod method = figment::SkinningMethod::DualQuaternion;
+  double duration = 0.0;
+
+  std::vector<figment::Vec3> shapeAt(double share) const {
+    return figment::skinVertices(*skin, figment::boneTransforms(*rig, placed, pose.partway(share)), rest.vertices,
+                                 method);
+  }
+};
+
 struct HumanBody::Data {
+  ~Data() {
+    if (material) material->unref();
+  }
   std::string dir;
   std::unique_ptr<figment::TargetLibrary> library;
   std::optional<figment::HumanModel> model;
+  std::shared_ptr<const figment::HumanRig> rig;  // read on the first pose
+  std::shared_ptr<const figment::RigSkin> skin;
+  std::shared_ptr<const PoseMotion> motion;  // null: the rest pose
+  mutable std::shared_ptr<const figment::MovingMeshCollider> moving;
+  SoMaterial* material = nullptr;  // the skin tone's, in the hidden mesh when set
 };
 
 void HumanBody::initClass() {
@@ -45,6 +80,21 @@ HumanBody::HumanBody() : data_(std::make_unique<Data>()) {
   SO_NODE_ADD_FIELD(neckGirth, (0.0f));
   SO_NODE_ADD_FIELD(upperArmGirth, (0.0f));
   SO_NODE_ADD_FIELD(thighGirth, (0.0f));
+  SO_NODE_ADD_FIELD(pose, (A_POSE));
+  SO_NODE_ADD_EMPTY_MFIELD(rotatedJoints);
+  SO_NODE_ADD_EMPTY_MFIELD(rotations);
+  SO_NODE_ADD_FIELD(skinning, (DUAL_QUATERNION));
+  SO_NODE_ADD_FIELD(poseTime, (0.0f));
+  SO_NODE_ADD_FIELD(skinTone, (0));
+  SO_NODE_DEFINE_ENUM_VALUE(Pose, A_POSE);
+  SO_NODE_DEFINE_ENUM_VALUE(Pose, ARMS_DOWN);
+  SO_NODE_DEFINE_ENUM_VALUE(Pose, ARM_RAISED);
+  SO_NODE_DEFINE_ENUM_VALUE(Pose, WALKING_STEP);
+  SO_NODE_DEFINE_ENUM_VALUE(Pose, SITTING);
+  SO_NODE_SET_SF_ENUM_TYPE(pose, Pose);
+  SO_NODE_DEFINE_ENUM_VALUE(Skinning, LINEAR_BLEND);
+  SO_NODE_DEFINE_ENUM_VALUE(Skinning, DUAL_QUATERNION);
+  SO_NODE_SET_SF_ENUM_TYPE(skinning, Skinning);
 }
 
 HumanBody::~HumanBody() = default;
@@ -52,6 +102,9 @@ HumanBody::~HumanBody() = default;
 bool HumanBody::isLoadOption(const SoField* field) const {
   for (const SoSFFloat* own : {&gender, &age, &muscle, &weight, &height, &proportions, &cupSize, &stature, &bustGirth,
                                &underbustGirth, &waistGirth, &hipGirth, &neckGirth, &upperArmGirth, &thighGirth})
+    if (field == own) return true;
+  for (const SoField* own :
+       std::initializer_list<const SoField*>{&pose, &rotatedJoints, &rotations, &skinning, &poseTime, &skinTone})
     if (field == own) return true;
   return inherited::isLoadOption(field);
 }
@@ -100,14 +153,29 @@ bool HumanBody::load(SoInput* in) {
       data_->library = std::make_unique<figment::TargetLibrary>(data_->dir);
       data_->model.emplace(figment::loadHumanModel(data_->dir, *data_->library));
     }
+    if (skinTone.getValue() < 0 || skinTone.getValue() > 10)
+      throw std::invalid_argument("skinTone " + std::to_string(skinTone.getValue()) + " is not 0 (none) or 1 to 10");
+    if (!(poseTime.getValue() >= 0.0f))
+      throw std::invalid_argument("poseTime " + std::to_string(poseTime.getValue()) + " must be >= 0");
     const std::vector<figment::MeasurementGoal> goals = goalsOf(*this);
-    const figment::TriangleMesh body = goals.empty() ? data_->model->make(parametersOf(*this))
-                                                     : figment::fitBody(*data_->model, parametersOf(*this), goals).body;
+    figment::HumanParameters parameters = parametersOf(*this);
+    figment::TriangleMesh body;
+    if (goals.empty()) {
+      body = data_->model->make(parameters);
+    } else {
+      figment::BodyFitResult fit = figment::fitBody(*data_->model, parameters, goals);
+      body = std::move(fit.body);
+      parameters = fit.parameters;
+    }
+    body = posed(parameters, std::move(body));
     setMesh(body, body);
+    colourSkin();
     return true;
   } catch (const std::exception& e) {
     error = e.what();
   }
+  data_->motion.reset();
+  data_->moving.reset();
   clearMesh();
   const SbName name = getName();
   const std::string message =
@@ -117,4 +185,84 @@ bool HumanBody::load(SoInput* in) {
   else
     SoDebugError::post("HumanBody::load", "%s", message.c_str());
   return false;
+}
+
+namespace {
+
+figment::RigPose poseOf(const HumanBody& node, const figment::HumanRig& rig,
+                        const std::vector<figment::PlacedBone>& placed) {
+  figment::RigPose pose = figment::presetPose(static_cast<figment::PosePreset>(node.pose.getValue()), rig, placed);
+  if (node.rotatedJoints.getNum() != node.rotations.getNum())
+    throw std::invalid_argument("rotatedJoints has " + std::to_string(node.rotatedJoints.getNum()) +
+                                " names but rotations " + std::to_string(node.rotations.getNum()) + " rotations");
+  for (int k = 0; k < node.rotatedJoints.getNum(); ++k) {
+    const std::string name = node.rotatedJoints[k].getString();
+    const int b = rig.find(name);
+    if (b < 0) throw std::invalid_argument("rotatedJoints: no bone '" + name + "' in MakeHuman's rig");
+    float q[4];
+    node.rotations[k].getValue(q[0], q[1], q[2], q[3]);
+    pose.set(b, Eigen::Quaterniond(q[3], q[0], q[1], q[2]).normalized() * pose.of(b));
+  }
+  return pose;
+}
+
+}  // namespace
+
+// The rest body turned into the fields' pose; the rest body itself in the rest pose.
+figment::TriangleMesh HumanBody::posed(const figment::HumanParameters& parameters, figment::TriangleMesh rest) {
+  data_->motion.reset();
+  data_->moving.reset();
+  if (pose.getValue() == A_POSE && rotatedJoints.getNum() == 0 && rotations.getNum() == 0) return rest;
+  if (!data_->rig) {
+    const int count = data_->model->base().fileVertexCount;
+    data_->rig = std::make_shared<const figment::HumanRig>(figment::readHumanRig(data_->dir, count));
+    data_->skin =
+        std::make_shared<const figment::RigSkin>(figment::bindSkin(*data_->rig, data_->model->base().fileIndex));
+  }
+  auto motion = std::make_shared<PoseMotion>();
+  motion->rig = data_->rig;
+  motion->skin = data_->skin;
+  motion->placed = data_->rig->place(data_->model->fileVertices(parameters));
+  motion->pose = poseOf(*this, *data_->rig, motion->placed);
+  motion->method = skinning.getValue() == LINEAR_BLEND ? figment::SkinningMethod::LinearBlend
+                                                       : figment::SkinningMethod::DualQuaternion;
+  motion->duration = poseTime.getValue();
+  motion->rest = std::move(rest);
+  figment::TriangleMesh body = motion->rest;
+  body.vertices = motion->shapeAt(1.0);
+  data_->motion = std::move(motion);
+  return body;
+}
+
+SbColor HumanBody::monkSkinTone(int tone) {
+  // The Monk Skin Tone scale (skintone.google), tones 1 to 10.
+  static constexpr unsigned kTones[10] = {0xf6ede4, 0xf3e7db, 0xf7ead0, 0xeadaba, 0xd7bd96,
+                                          0xa07e56, 0x825c43, 0x604134, 0x3a312a, 0x292420};
+  const unsigned rgb = kTones[std::clamp(tone, 1, 10) - 1];
+  return SbColor(((rgb >> 16) & 0xff) / 255.0f, ((rgb >> 8) & 0xff) / 255.0f, (rgb & 0xff) / 255.0f);
+}
+
+// The tone's material first in the hidden mesh (so the drawn body takes it), or none.
+void HumanBody::colourSkin() {
+  auto* root = static_cast<SoSeparator*>((*getChildren())[0]);
+  if (data_->material && root->findChild(data_->material) >= 0) root->removeChild(data_->material);
+  if (skinTone.getValue() == 0) return;
+  if (!data_->material) {
+    data_->material = new SoMaterial;
+    data_->material->ref();
+  }
+  data_->material->diffuseColor = monkSkinTone(skinTone.getValue());
+  data_->material->specularColor = SbColor(0.1f, 0.1f, 0.1f);
+  data_->material->shininess = 0.2f;
+  root->insertChild(data_->material, 0);
+}
+
+std::shared_ptr<const figment::Collider> HumanBody::bodyCollider() const {
+  if (!data_->motion) return inherited::bodyCollider();
+  if (!data_->moving) {
+    std::shared_ptr<const PoseMotion> motion = data_->motion;
+    data_->moving = std::make_shared<const figment::MovingMeshCollider>(
+        motion->rest.triangles, [motion](double share) { return motion->shapeAt(share); }, motion->duration);
+  }
+  return data_->moving;
 }

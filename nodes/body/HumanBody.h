@@ -2,11 +2,20 @@
 // HumanBody: MakeHuman's body (CC0, docs/bodies.md) made from macro parameters and typed
 // measurements; a MeshFile whose mesh is made instead of read.
 
+#include <Inventor/SbColor.h>
+#include <Inventor/fields/SoMFRotation.h>
+#include <Inventor/fields/SoMFString.h>
+#include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
+#include <Inventor/fields/SoSFInt32.h>
 
 #include <memory>
 
 #include "nodes/body/MeshFile.h"
+
+namespace figment {
+struct HumanParameters;
+}
 
 /*!
   \class HumanBody nodes/body/HumanBody.h
@@ -20,6 +29,21 @@
   ClothEngine's body (its triangles, exactly) and a Mannequin's body; the file fields
   (fileName, metresPerUnit, upAxis, exclude, collisionExclude, crop) are not used and
   fileName must stay "".
+
+  Posed by MakeHuman's own rig and skinning weights (sim/body/RigPose.h, RigSkin.h): `pose`
+  picks a preset (sim/body/PosePresets.h), then each bone named in `rotatedJoints` turns by
+  its entry of `rotations` (axis and angle, rest frame, about the bone's head, after the
+  preset's turn). The joints are placed from the made body's own vertices, so they follow
+  its measurements. Drawn and measured posed. As a ClothEngine's body a posed HumanBody
+  moves: the garment is put on in the rest pose and the body turns into its pose over the
+  first `poseTime` simulated seconds, its triangles rebuilt about every centimetre of
+  motion (sim/collision/MovingMeshCollider.h), so a raised arm carries the sleeve up
+  instead of passing through it. Only a whole-garment drape moves it (a progressive one is
+  refused), and only as the engine's own body (inside a CollisionGroup it stands posed).
+
+  `skinTone` 1 to 10 draws the body in that tone of the Monk Skin Tone scale (Ellis Monk,
+  Google, 2022, skintone.google, CC BY 4.0): #f6ede4 #f3e7db #f7ead0 #eadaba #d7bd96
+  #a07e56 #825c43 #604134 #3a312a #292420; 0 leaves the colour to the scene's Material.
 
   The data is found as io/MakeHumanFiles.h says ($FIGMENT_MAKEHUMAN_DIR, a "makehuman" folder
   on $FIGMENT_MODEL_PATH, the build's data folder); each node reads the targets it blends
@@ -45,12 +69,20 @@
         neckGirth 0
         upperArmGirth 0
         thighGirth 0
+        pose A_POSE
+        rotatedJoints [ ]
+        rotations [ ]
+        skinning DUAL_QUATERNION
+        poseTime 0
+        skinTone 0
     }
   \endcode
 
   Example (scenes/examples/HumanBody.iv):
   \code
     DEF Body HumanBody { stature 1.68  bustGirth 0.88  waistGirth 0.72  hipGirth 0.96 }
+    HumanBody { gender 1  pose ARM_RAISED  skinTone 7 }
+    HumanBody { rotatedJoints "lowerleg01.L"  rotations 1 0 0 1.047 }   # the left knee bent 60 deg
   \endcode
 */
 class HumanBody : public MeshFile {
@@ -69,6 +101,30 @@ class HumanBody : public MeshFile {
   // Typed measurements, m (ISO 8559-1, sim/body/BodyMeasurements.h); 0 = not typed. Default 0.
   SoSFFloat stature, bustGirth, underbustGirth, waistGirth, hipGirth, neckGirth, upperArmGirth, thighGirth;
 
+  enum Pose { A_POSE, ARMS_DOWN, ARM_RAISED, WALKING_STEP, SITTING };
+  enum Skinning { LINEAR_BLEND, DUAL_QUATERNION };
+  // The preset (sim/body/PosePresets.h). Default A_POSE (MakeHuman's rest pose).
+  SoSFEnum pose;
+  // Bones to turn, by the rig's names (e.g. "upperarm01.L", "lowerleg01.R"; .L is the
+  // body's left, +x), and their rotations, one each (rest frame, about the bone's head),
+  // after the preset's. Default [ ] and [ ].
+  SoMFString rotatedJoints;
+  SoMFRotation rotations;
+  // How the skin follows the bones (sim/body/RigSkin.h). Default DUAL_QUATERNION.
+  SoSFEnum skinning;
+  // Simulated seconds a drape takes to turn the body from rest into its pose; 0: as long
+  // as its farthest-moving point needs at 0.25 m/s. Default 0. Must be >= 0.
+  SoSFFloat poseTime;
+  // The Monk Skin Tone scale's tone, 1 (lightest) to 10 (deepest), as the body's diffuse
+  // colour; 0: the scene's Material. Default 0.
+  SoSFInt32 skinTone;
+  // The scale's ten colours (sRGB, 0..1), tone 1 first.
+  static SbColor monkSkinTone(int tone);
+
+  // As a ClothEngine's body: the rest body moving into its pose (posed), else the
+  // MeshFile's collider. Throws as MeshFile's.
+  std::shared_ptr<const figment::Collider> bodyCollider() const override;
+
  protected:
   ~HumanBody() override;
   bool load(SoInput* in) override;
@@ -77,4 +133,6 @@ class HumanBody : public MeshFile {
  private:
   struct Data;
   std::unique_ptr<Data> data_;  // MakeHuman's targets, read on first use
+  figment::TriangleMesh posed(const figment::HumanParameters& parameters, figment::TriangleMesh rest);
+  void colourSkin();
 };

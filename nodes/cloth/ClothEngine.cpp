@@ -20,6 +20,7 @@
 #include "nodes/cloth/ToleranceChoice.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/cloth/DrapeVerdict.h"
+#include "sim/collision/MovingMeshCollider.h"
 #include "sim/core/ParameterChecks.h"
 #include "sim/drape/GarmentDrape.h"
 #include "sim/progressive/Decimation.h"
@@ -309,6 +310,9 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                 .schedule = schedule};
   if (context.stepObserver)
     request.stepObserver = [&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); };
+  // A body that moves into its pose (a posed HumanBody) follows the drape's clock.
+  if (auto moving = std::dynamic_pointer_cast<const figment::MovingMeshCollider>(request.body))
+    request.bodyClock = [moving](double time) { moving->advanceTo(time); };
   request.progress = [&](const figment::DrapeProgress& p) {
     if (!context.progress) return;
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
