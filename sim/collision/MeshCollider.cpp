@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace figment {
@@ -16,15 +18,49 @@ double cornerAngle(const Vec3& corner, const Vec3& next, const Vec3& previous) {
 MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_(std::move(surface)), bvh_(surface_) {
   const auto& V = surface_.vertices;
   const auto& T = surface_.triangles;
+  // Number the edges once: triangle edge 3t + k (its corners k, k + 1) -> edge.
+  std::map<std::pair<int, int>, int> edges;
+  edgeOf_.resize(3 * T.size());
+  for (size_t t = 0; t < T.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      edgeOf_[3 * t + k] = edges.emplace(std::minmax(T[t][k], T[t][(k + 1) % 3]), int(edges.size())).first->second;
+  edgeCount_ = int(edges.size());
+  // Closest-point feature k of triangle t is edge (k, k+1): Edge01, Edge12, Edge20.
+  if (openEdges == OpenEdges::Outside) {
+    std::vector<int> faces(edgeCount_, 0);
+    for (int e : edgeOf_) ++faces[e];
+    openEdge_.assign(3 * T.size(), 0);
+    openVertex_.assign(V.size(), 0);
+    for (size_t t = 0; t < T.size(); ++t)
+      for (int k = 0; k < 3; ++k) {
+        if (faces[edgeOf_[3 * t + k]] != 1) continue;
+        openEdge_[3 * t + k] = 1;
+        openVertex_[T[t][k]] = openVertex_[T[t][(k + 1) % 3]] = 1;
+      }
+  }
+  computeNormals();
+}
+
+MeshCollider::MeshCollider(const MeshCollider& shape, std::vector<Vec3> vertices)
+    : surface_{std::move(vertices), shape.surface_.triangles},
+      bvh_(surface_),
+      edgeOf_(shape.edgeOf_),
+      edgeCount_(shape.edgeCount_),
+      openEdge_(shape.openEdge_),
+      openVertex_(shape.openVertex_) {
+  if (surface_.vertices.size() != shape.surface_.vertices.size())
+    throw std::invalid_argument("MeshCollider: " + std::to_string(surface_.vertices.size()) +
+                                " vertices for a surface of " + std::to_string(shape.surface_.vertices.size()));
+  computeNormals();
+}
+
+void MeshCollider::computeNormals() {
+  const auto& V = surface_.vertices;
+  const auto& T = surface_.triangles;
   faceNormals_.resize(T.size());
   vertexNormals_.assign(V.size(), Vec3::Zero());
-  edgeNormals_.assign(3 * T.size(), Vec3::Zero());
-  // Per edge, the sum of its faces' normals and how many faces share it.
-  struct EdgeFaces {
-    Vec3 normalSum = Vec3::Zero();
-    int count = 0;
-  };
-  std::map<std::pair<int, int>, EdgeFaces> edges;
+  // Per edge, the sum of its faces' normals, in the order the triangles list them.
+  std::vector<Vec3> edgeSums(edgeCount_, Vec3::Zero());
   for (size_t t = 0; t < T.size(); ++t) {
     const Vec3 &a = V[T[t][0]], &b = V[T[t][1]], &c = V[T[t][2]];
     const Vec3 cross = (b - a).cross(c - a);
@@ -33,25 +69,11 @@ MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_
     for (int k = 0; k < 3; ++k) {
       const int i = T[t][k], j = T[t][(k + 1) % 3], l = T[t][(k + 2) % 3];
       vertexNormals_[i] += cornerAngle(V[i], V[j], V[l]) * faceNormals_[t];
-      EdgeFaces& edge = edges[std::minmax(i, j)];
-      edge.normalSum += faceNormals_[t];
-      ++edge.count;
+      edgeSums[edgeOf_[3 * t + k]] += faceNormals_[t];
     }
   }
-  // Closest-point feature k of triangle t is edge (k, k+1): Edge01, Edge12, Edge20.
-  if (openEdges == OpenEdges::Outside) {
-    openEdge_.assign(3 * T.size(), 0);
-    openVertex_.assign(V.size(), 0);
-  }
-  for (size_t t = 0; t < T.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int i = T[t][k], j = T[t][(k + 1) % 3];
-      const EdgeFaces& edge = edges[std::minmax(i, j)];
-      edgeNormals_[3 * t + k] = edge.normalSum;
-      if (openEdge_.empty() || edge.count != 1) continue;
-      openEdge_[3 * t + k] = 1;
-      openVertex_[i] = openVertex_[j] = 1;
-    }
+  edgeNormals_.resize(3 * T.size());
+  for (size_t e = 0; e < edgeOf_.size(); ++e) edgeNormals_[e] = edgeSums[edgeOf_[e]];
 }
 
 bool MeshCollider::onOpenEdge(const ClosestPoint& closest) const {

@@ -20,6 +20,10 @@ class MeshCollider : public Collider {
   // `surface` should be closed (or open only where `openEdges` says so) and consistently
   // wound (counter-clockwise from outside).
   explicit MeshCollider(TriangleMesh surface, OpenEdges openEdges = OpenEdges::PseudoNormal);
+  // `shape`'s surface with its vertices moved to `vertices` (the same triangles, the same
+  // open edges): a moving body's next keyframe without numbering its edges again, a third
+  // of the cost. Throws std::invalid_argument when the vertex count differs.
+  MeshCollider(const MeshCollider& shape, std::vector<Vec3> vertices);
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
   const TriangleMesh& surface() const { return surface_; }
   const TriangleBvh& bvh() const { return bvh_; }
@@ -29,9 +33,12 @@ class MeshCollider : public Collider {
   TriangleBvh bvh_;
   std::vector<Vec3> faceNormals_, vertexNormals_;
   std::vector<Vec3> edgeNormals_;  // per triangle edge (3 per triangle), angle-weighted sum
+  std::vector<int> edgeOf_;        // per triangle edge, its edge's number
+  int edgeCount_ = 0;
   // With OpenEdges::Outside: per triangle edge and per vertex, whether it is (on) an open edge.
   std::vector<char> openEdge_, openVertex_;
   bool onOpenEdge(const ClosestPoint& closest) const;
+  void computeNormals();
 };
 
 }  // namespace figment

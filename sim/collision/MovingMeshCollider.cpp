@@ -43,10 +43,12 @@ MovingMeshCollider::MovingMeshCollider(std::vector<Triangle> triangles, ShapeAt 
 
 void MovingMeshCollider::build(int keyframe) const {
   if (keyframe == keyframe_) return;
-  TriangleMesh surface;
-  surface.vertices = shapeAt_(double(keyframe) / keyframes_);
-  surface.triangles = triangles_;
-  current_ = std::make_shared<const MeshCollider>(std::move(surface), openEdges_);
+  std::vector<Vec3> vertices = shapeAt_(double(keyframe) / keyframes_);
+  if (current_) {  // the same triangles: keep their edges' numbering
+    current_ = std::make_shared<const MeshCollider>(*current_, std::move(vertices));
+  } else {
+    current_ = std::make_shared<const MeshCollider>(TriangleMesh{std::move(vertices), triangles_}, openEdges_);
+  }
   keyframe_ = keyframe;
 }
 

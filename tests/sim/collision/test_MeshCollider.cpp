@@ -66,3 +66,20 @@ TEST(MeshCollider, AnOpenEdgeSaysNothingOfInsideWhenAskedTo) {
     EXPECT_NEAR(c.distance, -0.05, 2e-3);
   }
 }
+
+TEST(MeshCollider, AMovedCopyAnswersAsOneBuiltAnewOnTheMovedSurface) {
+  const TriangleMesh ball = meshes::sphere(0.1);
+  TriangleMesh moved = ball;
+  for (Vec3& v : moved.vertices) v = Vec3(1.5 * v.x(), v.y() + 0.2, v.z());
+  const MeshCollider original(ball, OpenEdges::Outside);
+  const MeshCollider copy(original, moved.vertices);
+  const MeshCollider fresh(moved, OpenEdges::Outside);
+  for (const Vec3& p : {Vec3(0.14, 0.2, 0.0), Vec3(0.0, 0.31, 0.0), Vec3(0.05, 0.25, 0.02), Vec3(0.3, 0.0, 0.1)}) {
+    Contact a, b;
+    EXPECT_EQ(copy.contact(p, 0.01, 1.0, a), fresh.contact(p, 0.01, 1.0, b));
+    EXPECT_EQ(a.distance, b.distance);
+    EXPECT_EQ(a.normal, b.normal);
+    EXPECT_EQ(a.surfacePoint, b.surfacePoint);
+  }
+  EXPECT_THROW(MeshCollider(original, {Vec3::Zero()}), std::invalid_argument);
+}
