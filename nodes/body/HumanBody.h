@@ -41,8 +41,8 @@ struct HumanParameters;
   instead of passing through it. Only a whole-garment drape moves it (a progressive one is
   refused), and only as the engine's own body (inside a CollisionGroup it stands posed).
 
-  `skinTone` 1 to 10 draws the body in that tone of the Monk Skin Tone scale (Ellis Monk,
-  Google, 2022, skintone.google, CC BY 4.0): #f6ede4 #f3e7db #f7ead0 #eadaba #d7bd96
+  `skinTone` 1 to 10 draws the body in that tone of the Monk Skin Tone scale (Ellis Monk;
+  released by Google in 2022, skintone.google, CC BY 4.0): #f6ede4 #f3e7db #f7ead0 #eadaba #d7bd96
   #a07e56 #825c43 #604134 #3a312a #292420; 0 leaves the colour to the scene's Material.
 
   The data is found as io/MakeHumanFiles.h says ($FIGMENT_MAKEHUMAN_DIR, a "makehuman" folder
@@ -81,6 +81,9 @@ struct HumanParameters;
   Example (scenes/examples/HumanBody.iv):
   \code
     DEF Body HumanBody { stature 1.68  bustGirth 0.88  waistGirth 0.72  hipGirth 0.96 }
+  \endcode
+  Posed (scenes/human-posed-arm.iv drapes a T-shirt on such a body):
+  \code
     HumanBody { gender 1  pose ARM_RAISED  skinTone 7 }
     HumanBody { rotatedJoints "lowerleg01.L"  rotations 1 0 0 1.047 }   # the left knee bent 60 deg
   \endcode
