@@ -1,12 +1,15 @@
 #include "sim/garment/TShirt.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
 
 #include "sim/body/BodyParts.h"
 #include "sim/body/SkeletonEstimate.h"
+#include "sim/core/BoundaryLoops.h"
 #include "sim/core/ParameterChecks.h"
 #include "sim/core/PlaneClip.h"
 #include "sim/progressive/Resampling.h"
@@ -24,39 +27,68 @@ void TShirtOptions::validate() const {
 namespace {
 
 constexpr double kHemSnap = 0.005;  // m: a third of the skin's shortest edges or so
+constexpr double kNeckBand = 0.01;  // m above and below the neck's base where the neck is measured
+// The decimation's perimeterWeight (CollapseEnergy.h): 30 times its default keeps the
+// openings' vertices where they curve, so the sleeves' ends (26 to 28 of the skin's
+// vertices round) and the neckline keep enough to read as curves. At 10 the default shirt's
+// openings turn a median 12.1 degrees (559 vertices), at 300 8.9 (581); the thinnest
+// sections' area stays that of the decimation alone.
+constexpr double kOpeningWeight = 300.0;
+constexpr int kSmoothingSteps = 20;  // Taubin steps along each opening
+constexpr int kCountRounds = 6;      // at most, to find how coarse to decimate
+// m the neckline's sphere is centred above the neck's base: it then crosses the upright neck
+// at 50 degrees or so, not grazing it (centred at the base it crossed at about 23 degrees, and
+// the 5 mm snap stepped its edge up and down the neck's back).
+constexpr double kNecklineCentreRise = 0.05;
 
-// Whether the shirt covers triangle t of the body.
+// Which of the body's triangles the shirt is cut from, and the surfaces its openings are cut
+// along: the hem level, the neckline round the neck, each sleeve's end across its upper arm's
+// axis. The parts are kept whole up to past each cut, so every opening's edge runs along a
+// plane or sphere (a smooth curve round the body) rather than along the skin's triangles,
+// which zig-zag (the shirt's openings turned a median 49 degrees at each vertex).
 class ShirtRegion {
  public:
   ShirtRegion(const Skeleton& skeleton, const TShirtOptions& options)
       : skeleton_(skeleton),
         hem_(skeleton["pelvisFloor"].position.y() + options.hemAboveCrotch),
-        neckline_(skeleton["neckBase"].position.y() - options.necklineDrop),
+        drop_(options.necklineDrop),
         share_(options.sleeveShare) {}
 
   double hemHeight() const { return hem_; }
 
   // `top`: the triangle's highest corner; a triangle across the hem is kept whole here
-  // and cut along it later.
-  bool covers(const std::string& part, const Vec3& centroid, double top) const {
-    if (part == "upperTorso" || part == "lowerTorso") return true;
+  // and cut along it later, as are the neck and the upper arms.
+  bool covers(const std::string& part, double top) const {
+    if (part == "upperTorso" || part == "lowerTorso" || part == "neck") return true;
+    if (part == "upperArmL" || part == "upperArmR") return true;
     // Over the hips' sides the thighs' parts reach above the hem.
     if (part == "hips" || part == "thighL" || part == "thighR") return top > hem_;
-    if (part == "neck") return centroid.y() < neckline_;  // the slopes down to the shoulders
-    if (part == "upperArmL") return withinSleeve(centroid, "shoulderL", "elbowL");
-    if (part == "upperArmR") return withinSleeve(centroid, "shoulderR", "elbowR");
     return false;
   }
 
- private:
-  bool withinSleeve(const Vec3& c, const char* shoulder, const char* elbow) const {
+  // The surfaces the openings are cut along, each keeping the shirt's side.
+  Plane hem() const { return {Vec3(0.0, hem_, 0.0), Vec3::UnitY()}; }
+  // Round the neck: the sphere through the neck's section at its base (`neck`: the skin's
+  // vertices about that height), crossing the upright neck `drop` below the base, and lower
+  // in front, where the chest slopes away from the neck.
+  Sphere neckline(const std::vector<Vec3>& neck) const {
+    const Vec3 base = skeleton_["neckBase"].position + Vec3(0.0, kNecklineCentreRise, 0.0);
+    std::vector<double> across;
+    for (const Vec3& x : neck) across.push_back(std::hypot(x.x() - base.x(), x.z() - base.z()));
+    std::nth_element(across.begin(), across.begin() + static_cast<long>(across.size() / 2), across.end());
+    const double r = across[across.size() / 2];
+    const double h = drop_ + kNecklineCentreRise;
+    return {base, std::sqrt(r * r + h * h)};
+  }
+  double neckBaseHeight() const { return skeleton_["neckBase"].position.y(); }
+  Plane sleeveEnd(const char* shoulder, const char* elbow) const {
     const Vec3 from = skeleton_[shoulder].position, to = skeleton_[elbow].position;
-    const Vec3 axis = to - from;
-    return (c - from).dot(axis) <= share_ * axis.squaredNorm();
+    return {from + share_ * (to - from), (from - to).normalized()};
   }
 
+ private:
   const Skeleton& skeleton_;
-  double hem_, neckline_, share_;
+  double hem_, drop_, share_;
 };
 
 // How many triangles use each edge.
@@ -111,7 +143,8 @@ std::vector<Triangle> largestPiece(const std::vector<Triangle>& triangles) {
   return out;
 }
 
-// The skin region with each vertex moved `ease` out along its area-weighted normal.
+// The skin region with each vertex moved `ease` out along its area-weighted normal; vertices
+// numbered as the body's.
 TriangleMesh offsetSkin(const TriangleMesh& body, const std::vector<Triangle>& triangles, double ease) {
   TriangleMesh skin{body.vertices, triangles};
   std::vector<Vec3> normal(body.vertices.size(), Vec3::Zero());
@@ -121,7 +154,75 @@ TriangleMesh offsetSkin(const TriangleMesh& body, const std::vector<Triangle>& t
   }
   for (size_t v = 0; v < skin.vertices.size(); ++v)
     if (normal[v].norm() > 0.0) skin.vertices[v] += ease * normal[v].normalized();
-  return numberedByFirstUse(skin);
+  return skin;
+}
+
+// The surfaces the openings are cut along and which cuts each of the skin's vertices (numbered
+// as the body's): the sleeves' ends across each upper arm's axis, each plane cutting only its
+// own arm's vertices (the plane runs on through the torso beside the arm), the neckline round
+// the neck's base, and the hem level, cutting the rest.
+struct OpeningCuts {
+  std::vector<CutSurface> surfaces;  // sleeves' ends (left, right), neckline, hem
+  std::vector<int> surfaceOf;        // per vertex
+};
+
+OpeningCuts openingCuts(const TriangleMesh& skin, const TriangleMesh& body, const Skeleton& skeleton,
+                        const std::vector<int>& triangleParts, const ShirtRegion& region) {
+  const std::vector<int> vertexPart = vertexParts(body, triangleParts, skeleton.parts.size());
+  std::vector<Vec3> neck;  // the neck's skin about its base
+  for (size_t v = 0; v < skin.vertices.size(); ++v)
+    if (vertexPart[v] >= 0 && skeleton.parts[vertexPart[v]].name == "neck" &&
+        std::abs(body.vertices[v].y() - region.neckBaseHeight()) < kNeckBand)
+      neck.push_back(skin.vertices[v]);
+  if (neck.empty()) throw std::invalid_argument("body: no neck at the neck's base");
+  OpeningCuts cuts;
+  cuts.surfaces = {region.sleeveEnd("shoulderL", "elbowL"), region.sleeveEnd("shoulderR", "elbowR"),
+                   region.neckline(neck), region.hem()};
+  cuts.surfaceOf.assign(skin.vertices.size(), 2);
+  for (size_t v = 0; v < skin.vertices.size(); ++v) {
+    if (vertexPart[v] < 0) continue;
+    const std::string& part = skeleton.parts[vertexPart[v]].name;
+    if (part == "upperArmL") cuts.surfaceOf[v] = 0;
+    if (part == "upperArmR") cuts.surfaceOf[v] = 1;
+  }
+  return cuts;
+}
+
+// `skin` at `triangles` sections whose openings have twice the vertices decimation alone
+// leaves them: decimated to fewer sections, as many fewer as the openings have edges at the
+// full count, and those edges split (about a third of the skin's boundary vertices stay).
+TriangleMesh resampledWithFineOpenings(const TriangleMesh& skin, int triangles) {
+  DecimationOptions decimation;
+  decimation.perimeterWeight = kOpeningWeight;
+  auto openingEdges = [](const TriangleMesh& mesh) {
+    int edges = 0;
+    for (const std::vector<int>& loop : boundaryLoops(mesh.triangles)) edges += static_cast<int>(loop.size());
+    return edges;
+  };
+  // Fewer sections, as many fewer as the openings then have edges: a few rounds find the count.
+  int coarser = triangles;
+  TriangleMesh mesh = resampled(skin, coarser, decimation);
+  for (int round = 0; round < kCountRounds && coarser + openingEdges(mesh) != triangles; ++round) {
+    coarser = std::max(1, std::min(triangles, coarser + triangles - (coarser + openingEdges(mesh))));
+    mesh = resampled(skin, coarser, decimation);
+  }
+  return numberedByFirstUse(withBoundaryEdgesSplit(mesh, triangles - static_cast<int>(mesh.triangles.size())));
+}
+
+// The openings of `shirt` smoothed along the surfaces they were cut along: each loop on the
+// surface its vertices lie nearest, Taubin-smoothed there (decimation leaves its vertices
+// unevenly spaced, and a snapped corner may step off the curve by a few millimetres).
+void smoothOpenings(TriangleMesh& shirt, const std::vector<CutSurface>& surfaces) {
+  for (const std::vector<int>& loop : boundaryLoops(shirt.triangles)) {
+    double nearest = std::numeric_limits<double>::infinity();
+    const CutSurface* on = nullptr;
+    for (const CutSurface& surface : surfaces) {
+      double farthest = 0;
+      for (int v : loop) farthest = std::max(farthest, std::abs(signedDistance(surface, shirt.vertices[v])));
+      if (farthest < nearest) nearest = farthest, on = &surface;
+    }
+    smoothLoop(shirt.vertices, loop, kSmoothingSteps, [on](const Vec3& x) { return projected(*on, x); });
+  }
 }
 
 }  // namespace
@@ -134,20 +235,25 @@ TShirt makeTShirt(const TriangleMesh& body, const TShirtOptions& options) {
   std::vector<Triangle> chosen;
   for (size_t f = 0; f < body.triangles.size(); ++f) {
     const Triangle& t = body.triangles[f];
-    const Vec3 centroid = (body.vertices[t[0]] + body.vertices[t[1]] + body.vertices[t[2]]) / 3.0;
     const double top = std::max({body.vertices[t[0]].y(), body.vertices[t[1]].y(), body.vertices[t[2]].y()});
-    if (region.covers(skeleton.parts[parts[f]].name, centroid, top)) chosen.push_back(t);
+    if (region.covers(skeleton.parts[parts[f]].name, top)) chosen.push_back(t);
   }
   removeSpikes(chosen);
-
   chosen = largestPiece(chosen);
+
   TShirt shirt;
-  // The hem level and straight: cut along the plane (corners within kHemSnap of it moved
-  // onto it, so the cut leaves no slivers).
-  const Plane hem{Vec3(0.0, region.hemHeight(), 0.0), Vec3::UnitY()};
-  const TriangleMesh skin = clippedByPlane(offsetSkin(body, chosen, options.ease), hem, kHemSnap);
+  // Each opening cut along its surface (corners within kHemSnap of it moved onto it, so the
+  // cut leaves no slivers): the hem level and straight, the neckline round the neck, the
+  // sleeves' ends square to the arms.
+  TriangleMesh skin = offsetSkin(body, chosen, options.ease);
+  const OpeningCuts cuts = openingCuts(skin, body, skeleton, parts, region);
+  skin = clippedBySurfaces(skin, cuts.surfaces, cuts.surfaceOf, kHemSnap);
+  skin = clippedByPlane(skin, region.hem(), kHemSnap);
+  skin.triangles = largestPiece(skin.triangles);  // what the cuts parted from the shirt goes
+  skin = numberedByFirstUse(skin);
   shirt.skinTriangles = static_cast<int>(skin.triangles.size());
-  shirt.mesh = resampled(skin, options.triangles);
+  shirt.mesh = resampledWithFineOpenings(skin, options.triangles);
+  smoothOpenings(shirt.mesh, cuts.surfaces);
   shirt.hemHeight = region.hemHeight();
   shirt.area = surfaceArea(shirt.mesh);
   return shirt;

@@ -8,14 +8,16 @@
 
 namespace figment {
 
-TriangleMesh resampled(const TriangleMesh& garment, int triangles) {
+TriangleMesh resampled(const TriangleMesh& garment, int triangles, const DecimationOptions& decimation) {
   if (triangles < 1 || garment.triangles.empty())
     throw std::invalid_argument("cannot resample " + std::to_string(garment.triangles.size()) + " triangles to " +
                                 std::to_string(triangles));
   TriangleMesh fine = garment;
   while (static_cast<int>(fine.triangles.size()) < triangles) fine = subdivided(fine);
   if (static_cast<int>(fine.triangles.size()) == triangles) return numberedByFirstUse(fine);
-  const ProgressiveMesh decimated = decimate(fine, DecimationOptions{.targetFaces = triangles});
+  DecimationOptions options = decimation;
+  options.targetFaces = triangles;
+  const ProgressiveMesh decimated = decimate(fine, options);
   std::vector<int> fullIndex;
   return numberedByFirstUse(MeshLevel(decimated).restMesh(fullIndex));
 }

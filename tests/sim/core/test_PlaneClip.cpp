@@ -59,3 +59,36 @@ TEST(PlaneClip, ASphereCutInHalf) {
   EXPECT_EQ(checks::mostTrianglesOnAnEdge(half), 2);
   EXPECT_NEAR(surfaceArea(half), 0.5 * surfaceArea(ball) * (1.0 - 0.13), 0.02 * surfaceArea(ball));
 }
+
+// Each vertex by its own plane: the top 20 cm of the sheet (rows every 5 cm) are cut at
+// y = -0.1234, the 10 cm below, though behind that plane, have none and are kept whole (as
+// the torso beyond a sleeve's cut is): two pieces, each manifold and wound as before.
+TEST(PlaneClip, CutsEachVertexByItsOwnPlane) {
+  const TriangleMesh sheet = meshes::grid(8, 6, 0.4, 0.3);
+  std::vector<int> planeOf(sheet.vertices.size());
+  for (size_t v = 0; v < planeOf.size(); ++v) planeOf[v] = sheet.vertices[v].y() > -0.2 - 1e-9 ? 0 : -1;
+  const Plane plane{Vec3(0, -0.1234, 0), Vec3::UnitY()};
+  const TriangleMesh cut = clippedBySurfaces(sheet, {plane}, planeOf);
+  EXPECT_NEAR(surfaceArea(cut), 0.4 * 0.1234 + 0.4 * 0.1, 1e-12);
+  for (const Vec3& x : cut.vertices) EXPECT_TRUE(plane.signedDistance(x) >= -1e-15 || x.y() <= -0.2 + 1e-9);
+  EXPECT_EQ(checks::connectedComponents(cut), 2);
+  EXPECT_TRUE(checks::consistentlyOriented(cut));
+  EXPECT_LE(checks::mostTrianglesOnAnEdge(cut), 2);
+}
+
+// A sphere of radius 4 cm round a point 1 cm above a flat sheet cuts a round hole of
+// radius sqrt(4^2 - 1^2) cm, its edge exactly on the sphere.
+TEST(PlaneClip, ASphereCutsARoundHole) {
+  const TriangleMesh sheet = meshes::grid(40, 40, 0.4, 0.4, Vec3(-0.2, 0.2, 0));
+  const Sphere sphere{Vec3(0, 0, 0.01), 0.04};
+  const TriangleMesh cut = clippedBySurfaces(sheet, {sphere}, std::vector<int>(sheet.vertices.size(), 0), 0.002);
+  const double r = std::sqrt(0.04 * 0.04 - 0.01 * 0.01);
+  EXPECT_NEAR(surfaceArea(cut), 0.16 - M_PI * r * r, 0.03 * M_PI * r * r);
+  int onSphere = 0;
+  for (const Vec3& x : cut.vertices) {
+    EXPECT_GE(sphere.signedDistance(x), -1e-12);
+    onSphere += std::abs(sphere.signedDistance(x)) < 1e-12;
+  }
+  EXPECT_GT(onSphere, 16);
+  EXPECT_TRUE(checks::consistentlyOriented(cut));
+}
