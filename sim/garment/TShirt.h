@@ -1,13 +1,14 @@
 #pragma once
 // A T-shirt with short sleeves generated around a body in its rest pose (metres, y up,
 // facing +z): the body's own skin over the torso and the upper arms, stood off it by
-// `ease` along the skin's normals, cut straight along the hem's level, then resampled
+// `ease` along the skin's normals, its openings cut along smooth surfaces, then resampled
 // (sim/progressive/Resampling.h: decimated, or subdivided and decimated) to the chosen
-// number of even sections. The skin is cut into parts by the estimated skeleton
-// (sim/body/BodyParts.h): the shirt keeps the upper and lower torso, the hips above the
-// hem (and the thighs' tops above it), and each upper arm from the shoulder to `sleeveShare` of the way to the elbow;
-// and the neck's skin below the neckline (its slopes down to the shoulders); the rest of
-// the neck, the forearms and below the hem stay open (neck hole, sleeve ends, hem).
+// number of sections, the openings kept finer and smoothed along their surfaces. The skin
+// is cut into parts by the estimated skeleton (sim/body/BodyParts.h): the shirt keeps the
+// upper and lower torso, the hips above the hem (and the thighs' tops above it), the neck
+// and the upper arms, then cuts the hem along its level plane, each sleeve's end square to
+// its upper arm at `sleeveShare` of the way to the elbow, and the neckline along a sphere
+// round the neck `necklineDrop` below its base (neck hole, sleeve ends, hem).
 // One piece, manifold, wound counter-clockwise seen from outside; rest shape and
 // starting placement are the same.
 
