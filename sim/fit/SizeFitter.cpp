@@ -8,6 +8,7 @@
 #include "sim/body/BodyMeasurements.h"
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/collision/MeshCollider.h"
+#include "sim/collision/TriangleBvh.h"
 
 namespace figment {
 
@@ -35,6 +36,25 @@ std::vector<FitRegion> styleRegions(const TriangleMesh& body, const BodyMeasurem
   return regions;
 }
 
+// The barycentric weights of `p` (on the triangle) in triangle (a, b, c).
+Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a, d = p - a;
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), dp1 = d.dot(e1), dp2 = d.dot(e2);
+  const double denominator = d11 * d22 - d12 * d12;
+  if (denominator <= 0) return Vec3(1, 0, 0);  // a degenerate section: its first corner
+  const double v = (d22 * dp1 - d12 * dp2) / denominator, w = (d11 * dp2 - d12 * dp1) / denominator;
+  return Vec3(1 - v - w, v, w);
+}
+
+// Where the point of `earlier`'s rest surface nearest `p` went in its drape.
+Vec3 interpolated(const TriangleBvh& earlierRest, const TriangleMesh& earlier, const std::vector<Vec3>& earlierDrape,
+                  const Vec3& p) {
+  const ClosestPoint nearest = earlierRest.closest(p);
+  const Triangle& t = earlier.triangles[nearest.triangle];
+  const Vec3 w = barycentric(nearest.point, earlier.vertices[t[0]], earlier.vertices[t[1]], earlier.vertices[t[2]]);
+  return w[0] * earlierDrape[t[0]] + w[1] * earlierDrape[t[1]] + w[2] * earlierDrape[t[2]];
+}
+
 HumanParameters sexStart(Sex sex) {
   HumanParameters start;
   start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
@@ -57,14 +77,12 @@ ClothParameters sizeDrapeParameters(const GarmentStyle& style) {
 
 std::vector<Vec3> warmStart(const TriangleMesh& garment, const TriangleMesh& earlier,
                             const std::vector<Vec3>& earlierDrape, const Collider& body, double clearance) {
+  // Graded from one pattern (the same triangles): each point starts where its own went.
+  const bool samePattern = garment.triangles == earlier.triangles;
+  const TriangleBvh earlierRest = samePattern ? TriangleBvh() : TriangleBvh(earlier);
   std::vector<Vec3> start(garment.vertices.size());
   for (size_t i = 0; i < garment.vertices.size(); ++i) {
-    const Vec3& p = garment.vertices[i];
-    size_t nearest = 0;
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t j = 0; j < earlier.vertices.size(); ++j)
-      if (const double d = (earlier.vertices[j] - p).squaredNorm(); d < best) best = d, nearest = j;
-    start[i] = p + (earlierDrape[nearest] - earlier.vertices[nearest]);
+    start[i] = samePattern ? earlierDrape[i] : interpolated(earlierRest, earlier, earlierDrape, garment.vertices[i]);
     Contact contact;
     if (body.contact(start[i], clearance, kPushOutSearch, contact) && contact.distance < clearance)
       start[i] = contact.surfacePoint + 1.5 * clearance * contact.normal;
@@ -132,6 +150,13 @@ SizeFit SizeFitter::fitSize(const Graded& graded, const std::string& name, const
   fit.text = shopperText(fit.regions, graded.ownFit, fit.verdicts, rule());
   fit.drape = std::move(drape);
   return fit;
+}
+
+SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
+  const Graded& graded = grade(sex, size);
+  const auto collider = std::make_shared<const MeshCollider>(body);
+  const std::vector<FitRegion> regions = styleRegions(body, measureBody(body), sex, style_);
+  return fitSize(graded, chart_.sizes(sex).at(size).name, *collider, regions, drape(graded.garment, collider));
 }
 
 Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool warm) {

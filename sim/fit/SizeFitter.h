@@ -44,9 +44,13 @@ struct Recommendation {
   std::vector<SizeFit> sizes;  // the candidates, smallest first
 };
 
-// Moves an earlier drape onto another garment: each rest point of `garment` starts where
-// the nearest rest point of `earlier` went, offset as it was from it, and then out of
-// `body` by its clearance.
+// Starts another size from an earlier drape, in its draped shape: graded from the same
+// pattern (the same triangles), each point of `garment` starts where the earlier size's
+// own point went; else where the nearest point of `earlier`'s rest surface went (its
+// triangle's corners' drape by the point's barycentric weights). Then out of `body` by
+// its clearance. The new size starts stretched or slack by one size step and springs to
+// its own shape (docs/sizes.md: what this saves, and what moving the earlier drape by the
+// sizes' offset instead did).
 std::vector<Vec3> warmStart(const TriangleMesh& garment, const TriangleMesh& earlier,
                             const std::vector<Vec3>& earlierDrape, const Collider& body, double clearance);
 
@@ -69,6 +73,9 @@ class SizeFitter {
   // Drapes the candidate sizes on `body` and recommends one. `warm` false drapes every
   // size cold (for the bench's comparison).
   Recommendation recommend(const TriangleMesh& body, Sex sex, bool warm = true);
+
+  // Drapes one size (cold) on `body` and judges it: what a shopper sees trying it on.
+  SizeFit tryOn(const TriangleMesh& body, Sex sex, int size);
 
   const ClothParameters& parameters() const { return parameters_; }
   VerdictRule rule() const;
