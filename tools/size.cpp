@@ -13,10 +13,13 @@
 #include <vector>
 
 #include "ToolMain.h"
+#include "io/FitMapScene.h"
 #include "io/MakeHumanFiles.h"
+#include "io/MeshExport.h"
 #include "io/SizeChartFile.h"
 #include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
+#include "sim/fit/FitMap.h"
 #include "sim/fit/SizeFitter.h"
 
 namespace {
@@ -27,6 +30,7 @@ struct Request {
   std::string style, sex, body, chart;
   std::map<std::string, double> typed;  // fitBody's keys -> m
   bool json = false, cold = false;
+  std::string fitMap, fitMapDir;  // kind; folder for body.obj and <size>.iv
 };
 
 double inUnit(double value, double scale) {
@@ -76,6 +80,28 @@ void printText(const figment::Recommendation& r, const std::string& style) {
   }
 }
 
+// Each candidate's fit map: DIR/body.obj and DIR/<size>.iv, for figment-view.
+void writeFitMaps(const Request& request, figment::SizeFitter& fitter, const figment::SizeChart& chart,
+                  figment::Sex sex, const figment::TriangleMesh& body, const figment::Recommendation& r) {
+  const std::string dir = request.fitMapDir.empty() ? "." : request.fitMapDir;
+  figment::exportObj(figment::numberedByFirstUse(body), dir + "/body.obj");
+  const figment::MeshCollider collider(body);
+  const figment::FitMapKind kind = figment::fitMapKind(request.fitMap);
+  for (const figment::SizeFit& fit : r.sizes) {
+    const figment::TriangleMesh& garment = fitter.graded(sex, chart.find(sex, fit.size)).garment;
+    figment::FitInput input;
+    input.rest = &garment;
+    input.positions = &fit.drape.positions;
+    input.body = &collider;
+    input.parameters = fitter.parameters();
+    std::vector<int> bands;
+    for (const double value : figment::fitMapValues(input, kind))
+      bands.push_back(figment::fitMapBand(figment::fitMapShare(value, kind, fitter.rule().limits)));
+    figment::writeFitMapScene(dir + "/" + fit.size + ".iv", {fit.drape.positions, garment.triangles}, bands,
+                              "body.obj");
+  }
+}
+
 // The recommendation for `body`; the exit status.
 int recommend(const Request& request, figment::HumanModel& model, const figment::TriangleMesh& body) {
   const figment::SizeChart chart = figment::readSizeChart(request.chart);
@@ -83,6 +109,7 @@ int recommend(const Request& request, figment::HumanModel& model, const figment:
   figment::SizeFitter fitter(model, chart, style);
   const figment::Sex sex = request.sex == "male" ? figment::Sex::Male : figment::Sex::Female;
   const figment::Recommendation r = fitter.recommend(body, sex, !request.cold);
+  if (!request.fitMap.empty()) writeFitMaps(request, fitter, chart, sex, body, r);
   request.json ? printJson(r) : printText(r, request.style);
   return 0;
 }
@@ -130,6 +157,11 @@ int main(int argc, char** argv) {
   app.add_option("--chart", request.chart, "size chart file")->capture_default_str();
   app.add_flag("--json", request.json, "one JSON object on stdout");
   app.add_flag("--cold", request.cold, "drape every size from its cut shape (no warm starts)");
+  app.add_option("--fit-map", request.fitMap,
+                 "write each size's fit map, a scene for figment-view: stretch, ease or pressure")
+      ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
+  app.add_option("--fit-map-dir", request.fitMapDir, "folder for the fit maps (<size>.iv and body.obj)")
+      ->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
   if (!figment::findStyle(request.style))
     return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames());
