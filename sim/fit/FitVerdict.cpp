@@ -16,12 +16,13 @@ std::string reason(const RegionFit& fit, const RegionFit& intended, Verdict verd
   char text[96];
   const double girthDifference =
       known(fit.girthEase) && known(intended.girthEase) ? fit.girthEase - intended.girthEase : 0.0;
+  const double low = fit.drop - intended.drop;
   if (verdict == Verdict::Tight && fit.pressure > rule.limits.pressure)
     std::snprintf(text, sizeof text, "%.1f kPa", fit.pressure / 1000.0);
-  else if (verdict == Verdict::Tight && (fit.meanStrain > rule.limits.stretch || girthDifference == 0))
+  else if (verdict == Verdict::Tight && fit.meanStrain > rule.limits.stretch)
     std::snprintf(text, sizeof text, "%.0f %% stretch", 100.0 * fit.meanStrain);
-  else if (verdict == Verdict::Loose && fit.drop > intended.drop + rule.dropTolerance)
-    std::snprintf(text, sizeof text, "hangs %.0f cm low", 100.0 * (fit.drop - intended.drop));
+  else if (std::abs(low) > rule.dropTolerance && known(intended.girthEase))
+    std::snprintf(text, sizeof text, low > 0 ? "hangs %.0f cm low" : "%.0f cm too high", 100.0 * std::abs(low));
   else if (girthDifference != 0)
     std::snprintf(text, sizeof text, "%.0f cm too %s ease", 100.0 * std::abs(girthDifference),
                   girthDifference < 0 ? "little" : "much");
@@ -56,6 +57,7 @@ Verdict judge(const RegionFit& fit, const RegionFit& intended, const VerdictRule
   if (!fit.covered() || !intended.covered()) return Verdict::Fits;
   if (fit.meanStrain > rule.limits.stretch || fit.pressure > rule.limits.pressure) return Verdict::Tight;
   if (known(intended.girthEase) && fit.drop > intended.drop + rule.dropTolerance) return Verdict::Loose;
+  if (known(intended.girthEase) && fit.drop < intended.drop - rule.dropTolerance) return Verdict::Tight;
   if (known(fit.girthEase) && known(intended.girthEase)) {
     if (fit.girthEase < intended.girthEase - rule.girthTolerance) return Verdict::Tight;
     if (fit.girthEase > intended.girthEase + rule.girthTolerance) return Verdict::Loose;

@@ -53,6 +53,22 @@ TEST(FitVerdict, WithoutAGirthTheDistanceDecides) {
   EXPECT_EQ(judge(region("shoulders", NAN, 0.0, 0.020), intended, rule), Verdict::Loose);
 }
 
+// A region whose garment hangs more than 2 cm lower than intended is loose (a size too large
+// slides down), one that rides more than 2 cm higher is tight (a waistband too small climbs
+// to where the body is narrower).
+TEST(FitVerdict, HangingLowIsLooseRidingHighTight) {
+  const VerdictRule rule{fabricLimits("cotton")};
+  RegionFit intended = region("waist", 0.02);
+  intended.drop = 0.08;
+  RegionFit low = region("waist", 0.02), high = region("waist", 0.02), near = region("waist", 0.02);
+  low.drop = 0.11, high.drop = 0.05, near.drop = 0.09;
+  EXPECT_EQ(judge(low, intended, rule), Verdict::Loose);
+  EXPECT_EQ(judge(high, intended, rule), Verdict::Tight);
+  EXPECT_EQ(judge(near, intended, rule), Verdict::Fits);
+  EXPECT_EQ(shopperText({low, high}, {intended, intended}, {Verdict::Loose, Verdict::Tight}, rule),
+            "tight at the waist: 3 cm too high; loose at the waist: hangs 3 cm low");
+}
+
 TEST(FitVerdict, UncoveredRegionsFit) {
   RegionFit none = region("bust", 0.0);
   none.nodes = 0;
