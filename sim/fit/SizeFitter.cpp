@@ -174,7 +174,7 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
   for (const int k : drapeOrder(count, centre)) {
     const Graded& graded = grade(sex, candidates[k]);
     std::vector<Vec3> start;
-    if (const int from = k > centre ? k - 1 : k + 1; warm && k != centre)
+    if (const int from = k > centre ? k - 1 : k + 1; warm && style_.warmStarts && k != centre)
       start = warmStart(graded.garment, grade(sex, candidates[from]).garment, out.sizes[from].drape.positions,
                         *collider, parameters_.clearance);
     out.sizes[k] = fitSize(graded, chart_.sizes(sex)[candidates[k]].name, *collider, regions,

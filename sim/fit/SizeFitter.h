@@ -70,8 +70,8 @@ class SizeFitter {
   SizeDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
                   const std::vector<Vec3>* start = nullptr) const;
 
-  // Drapes the candidate sizes on `body` and recommends one. `warm` false drapes every
-  // size cold (for the bench's comparison).
+  // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
+  // without warm starts) drapes every size cold.
   Recommendation recommend(const TriangleMesh& body, Sex sex, bool warm = true);
 
   // Drapes one size (cold) on `body` and judges it: what a shopper sees trying it on.

@@ -28,6 +28,10 @@ struct GarmentStyle {
   // The body regions (sim/fit/FitRegion.h) its fit is told for: where it is shaped to the
   // body. A flared skirt's hips and thighs hang free, a dress's thighs are A-line.
   std::vector<std::string> regions;
+  // Whether its sizes may start from each other's drapes (sim/fit/SizeFitter.h). Not for
+  // a garment held up by friction alone (the flared skirt): it ends where it starts, so a
+  // warm start would decide its fit.
+  bool warmStarts = true;
 };
 
 // Every style, in a fixed order.
