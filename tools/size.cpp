@@ -31,6 +31,7 @@ struct Request {
   std::map<std::string, double> typed;  // fitBody's keys -> m
   bool json = false, cold = false;
   std::string fitMap, fitMapDir;  // kind; folder for body.obj and <size>.iv
+  std::string size;               // set: try this size on only, no recommendation
 };
 
 double inUnit(double value, double scale) {
@@ -38,8 +39,11 @@ double inUnit(double value, double scale) {
 }
 
 void printJson(const figment::Recommendation& r) {
-  std::printf("{\"recommended\": \"%s\", \"all_tight\": %s, \"sizes\": {", r.recommended.c_str(),
-              r.allTight ? "true" : "false");
+  if (r.recommended.empty())
+    std::printf("{\"sizes\": {");
+  else
+    std::printf("{\"recommended\": \"%s\", \"all_tight\": %s, \"sizes\": {", r.recommended.c_str(),
+                r.allTight ? "true" : "false");
   for (size_t s = 0; s < r.sizes.size(); ++s) {
     const figment::SizeFit& fit = r.sizes[s];
     std::printf("%s\"%s\": {\"text\": \"%s\", \"steps\": %d, \"warm\": %s, \"at_rest\": %s, \"regions\": {",
@@ -62,8 +66,9 @@ void printJson(const figment::Recommendation& r) {
 }
 
 void printText(const figment::Recommendation& r, const std::string& style) {
-  std::printf("%s: recommended size %s%s\n", style.c_str(), r.recommended.c_str(),
-              r.allTight ? " (every candidate is tight somewhere: the largest)" : "");
+  if (!r.recommended.empty())
+    std::printf("%s: recommended size %s%s\n", style.c_str(), r.recommended.c_str(),
+                r.allTight ? " (every candidate is tight somewhere: the largest)" : "");
   for (const figment::SizeFit& fit : r.sizes) {
     std::printf("\n%s: %s (%d steps%s, %.2f s)\n", fit.size.c_str(), fit.text.c_str(), fit.drape.run.iterations,
                 fit.drape.warm ? ", warm start" : "", fit.drape.run.wallSeconds);
@@ -108,7 +113,14 @@ int recommend(const Request& request, figment::HumanModel& model, const figment:
   const figment::GarmentStyle& style = *figment::findStyle(request.style);
   figment::SizeFitter fitter(model, chart, style);
   const figment::Sex sex = request.sex == "male" ? figment::Sex::Male : figment::Sex::Female;
-  const figment::Recommendation r = fitter.recommend(body, sex, !request.cold);
+  figment::Recommendation r;
+  if (request.size.empty()) {
+    r = fitter.recommend(body, sex, !request.cold);
+  } else {
+    const int size = chart.find(sex, request.size);
+    if (size < 0) return kTool.fail("--size " + request.size + ": no " + figment::sexName(sex) + " size of that name");
+    r.sizes.push_back(fitter.tryOn(body, sex, size));
+  }
   if (!request.fitMap.empty()) writeFitMaps(request, fitter, chart, sex, body, r);
   request.json ? printJson(r) : printText(r, request.style);
   return 0;
@@ -155,6 +167,7 @@ int main(int argc, char** argv) {
         ->excludes(body);
   }
   app.add_option("--chart", request.chart, "size chart file")->capture_default_str();
+  app.add_option("--size", request.size, "try this size on only (letter code or number): no recommendation");
   app.add_flag("--json", request.json, "one JSON object on stdout");
   app.add_flag("--cold", request.cold, "drape every size from its cut shape (no warm starts)");
   app.add_option("--fit-map", request.fitMap,

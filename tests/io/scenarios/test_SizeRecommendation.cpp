@@ -135,6 +135,19 @@ TEST_F(SizeRecommendation, FigmentSizePrintsTheIssuesJson) {
     EXPECT_NE(run.out.find(key), std::string::npos) << key << " in " << run.out;
 }
 
+TEST_F(SizeRecommendation, FigmentSizeTriesOneSizeOn) {
+  const test::TempDir dir;
+  const test::ProgramResult run =
+      test::runProgram(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size",
+                       "--style pencil --sex female --stature 1.68 --bust-girth 0.84 --waist-girth 0.68 "
+                       "--hip-girth 0.92 --size XL --json",
+                       dir.path(), dir.path());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.out.rfind("{\"sizes\": {\"XL\": {", 0), 0u) << run.out;
+  EXPECT_EQ(run.out.find("recommended"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("\"verdict\": \"loose\""), std::string::npos) << run.out;
+}
+
 TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
   const test::TempDir dir;
   const std::string tool = std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size";
@@ -151,6 +164,11 @@ TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
       tool, "--style dress --sex female --stature 1.68 --bust-girth 0.88 --waist-girth 0.9 --hip-girth 0.5", dir.path(),
       dir.path());
   EXPECT_EQ(far.status, 1);
+  const test::ProgramResult size = test::runProgram(
+      tool, "--style pencil --sex male --stature 1.74 --bust-girth 0.96 --waist-girth 0.84 --hip-girth 1.0 --size XXS",
+      dir.path(), dir.path());
+  EXPECT_EQ(size.status, 1);
+  EXPECT_EQ(size.err, "figment-size: --size XXS: no male size of that name\n");
   EXPECT_EQ(std::count(far.err.begin(), far.err.end(), '\n'), 1) << far.err;
   EXPECT_TRUE(far.out.empty());
 }
