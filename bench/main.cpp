@@ -4,6 +4,7 @@
 #include "BodyStudy.h"
 #include "CollisionStudy.h"
 #include "DrapeStudy.h"
+#include "FitStudy.h"
 #include "MethodStudy.h"
 #include "ProgressiveStudy.h"
 #include "RenderStudy.h"
@@ -210,6 +211,24 @@ CLI::App* addBodyCommand(CLI::App& app, BodyStudyOptions& bodies) {
   return command;
 }
 
+CLI::App* addFitCommand(CLI::App& app, FitStudyOptions& fit) {
+  CLI::App* command = app.add_subcommand(
+      "recommend", "size recommendation over the chart's bodies: own size, time, steps saved by warm starts");
+  command->add_option("--style", fit.styles, "styles (repeat the option)")->capture_default_str();
+  command->add_option("--sex", fit.sexes, "female, male (repeat the option)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"female", "male"}));
+  command->add_option("--repeat", fit.repeat, "warm recommendations timed per body (median)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command->add_option("--grid", fit.grid, "bodies along the chart per style and sex: the monotony check")
+      ->capture_default_str();
+  command->add_option("--grid-beyond", fit.gridBeyond, "sizes the grid reaches beyond each end of the chart")
+      ->capture_default_str();
+  command->add_option("--out", fit.outDir, "folder for fit.csv and fit-grid.csv")->capture_default_str();
+  return command;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -238,6 +257,8 @@ int main(int argc, char** argv) {
   CLI::App* tradeoffCommand = addTradeoffCommand(app, tradeoff);
   BodyStudyOptions bodies;
   CLI::App* bodyCommand = addBodyCommand(app, bodies);
+  FitStudyOptions fit;
+  CLI::App* fitCommand = addFitCommand(app, fit);
 
   CLI11_PARSE(app, argc, argv);
   if (drapeCommand->parsed()) return runDrapeStudy(drape);
@@ -248,6 +269,7 @@ int main(int argc, char** argv) {
   if (progressiveCommand->parsed()) return runProgressiveStudy(progressive);
   if (sizeCommand->parsed()) return runSizeStudy(sizes);
   if (bodyCommand->parsed()) return runBodyStudy(bodies);
+  if (fitCommand->parsed()) return runFitStudy(fit);
   if (tradeoffCommand->parsed()) return runTradeoffStudy(tradeoff.quick ? quickTradeoff(tradeoff) : tradeoff);
   return 1;
 }

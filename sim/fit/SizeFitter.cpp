@@ -1,0 +1,193 @@
+#include "sim/fit/SizeFitter.h"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+#include "sim/body/BodyFit.h"
+#include "sim/body/BodyMeasurements.h"
+#include "sim/cloth/MaterialPresets.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/collision/TriangleBvh.h"
+
+namespace figment {
+
+namespace {
+
+constexpr double kPushOutSearch = 0.10;  // m a warm start's node is looked for inside the body
+
+// The order the candidates are draped in: the nearest size (the middle one when there are
+// three) first, cold; then outward, each from the drape next to it.
+std::vector<int> drapeOrder(int count, int nearest) {
+  std::vector<int> order = {nearest};
+  for (int step = 1; step < count; ++step)
+    for (const int i : {nearest + step, nearest - step})
+      if (i >= 0 && i < count) order.push_back(i);
+  return order;
+}
+
+// The body's regions the style's fit is told for, in the body's order.
+std::vector<FitRegion> styleRegions(const TriangleMesh& body, const BodyMeasurements& measured, Sex sex,
+                                    const GarmentStyle& style) {
+  std::vector<FitRegion> regions;
+  for (FitRegion& region : bodyRegions(body, measured, sex == Sex::Female))
+    if (std::find(style.regions.begin(), style.regions.end(), region.name) != style.regions.end())
+      regions.push_back(std::move(region));
+  return regions;
+}
+
+// The barycentric weights of `p` (on the triangle) in triangle (a, b, c).
+Vec3 barycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 e1 = b - a, e2 = c - a, d = p - a;
+  const double d11 = e1.dot(e1), d12 = e1.dot(e2), d22 = e2.dot(e2), dp1 = d.dot(e1), dp2 = d.dot(e2);
+  const double denominator = d11 * d22 - d12 * d12;
+  if (denominator <= 0) return Vec3(1, 0, 0);  // a degenerate section: its first corner
+  const double v = (d22 * dp1 - d12 * dp2) / denominator, w = (d11 * dp2 - d12 * dp1) / denominator;
+  return Vec3(1 - v - w, v, w);
+}
+
+// Where the point of `earlier`'s rest surface nearest `p` went in its drape.
+Vec3 interpolated(const TriangleBvh& earlierRest, const TriangleMesh& earlier, const std::vector<Vec3>& earlierDrape,
+                  const Vec3& p) {
+  const ClosestPoint nearest = earlierRest.closest(p);
+  const Triangle& t = earlier.triangles[nearest.triangle];
+  const Vec3 w = barycentric(nearest.point, earlier.vertices[t[0]], earlier.vertices[t[1]], earlier.vertices[t[2]]);
+  return w[0] * earlierDrape[t[0]] + w[1] * earlierDrape[t[1]] + w[2] * earlierDrape[t[2]];
+}
+
+HumanParameters sexStart(Sex sex) {
+  HumanParameters start;
+  start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
+  return start;
+}
+
+}  // namespace
+
+ClothParameters sizeDrapeParameters(const GarmentStyle& style) {
+  ClothParameters p;
+  p.material = materialPreset(style.fabric).value_or(Material{});
+  p.integrator = Integrator::Implicit;
+  p.timeStep = 0.05;
+  p.maxTime = 5.0;
+  p.rest = {0.01, 0.25};
+  p.friction = 0.5;
+  p.clearance = 0.003;
+  return p;
+}
+
+std::vector<Vec3> warmStart(const TriangleMesh& garment, const TriangleMesh& earlier,
+                            const std::vector<Vec3>& earlierDrape, const Collider& body, double clearance) {
+  // Graded from one pattern (the same triangles): each point starts where its own went.
+  const bool samePattern = garment.triangles == earlier.triangles;
+  const TriangleBvh earlierRest = samePattern ? TriangleBvh() : TriangleBvh(earlier);
+  std::vector<Vec3> start(garment.vertices.size());
+  for (size_t i = 0; i < garment.vertices.size(); ++i) {
+    start[i] = samePattern ? earlierDrape[i] : interpolated(earlierRest, earlier, earlierDrape, garment.vertices[i]);
+    Contact contact;
+    if (body.contact(start[i], clearance, kPushOutSearch, contact) && contact.distance < clearance)
+      start[i] = contact.surfacePoint + 1.5 * clearance * contact.normal;
+  }
+  return start;
+}
+
+SizeFitter::SizeFitter(const HumanModel& model, const SizeChart& chart, const GarmentStyle& style)
+    : model_(model), chart_(chart), style_(style), parameters_(sizeDrapeParameters(style)) {}
+
+VerdictRule SizeFitter::rule() const {
+  return VerdictRule{fabricLimits(style_.fabric)};
+}
+
+const SizeFitter::Graded& SizeFitter::graded(Sex sex, int size) {
+  return grade(sex, size);
+}
+
+const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
+  const auto key = std::make_pair(static_cast<int>(sex), size);
+  if (const auto found = graded_.find(key); found != graded_.end()) return found->second;
+  const ChartSize& chartSize = chart_.sizes(sex).at(size);
+  const std::vector<MeasurementGoal> goals = {{"stature", chartSize.stature},
+                                              {"bust_girth", chartSize.bust},
+                                              {"waist_girth", chartSize.waist},
+                                              {"hip_girth", chartSize.hip}};
+  Graded made;
+  made.body = fitBody(model_, sexStart(sex), goals).body;
+  made.garment = cutGarment(style_, made.body);
+  const auto collider = std::make_shared<const MeshCollider>(made.body);
+  const SizeDrape own = drape(made.garment, collider);
+  made.ownFit =
+      fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, style_), made.garment, own.positions);
+  return graded_.emplace(key, std::move(made)).first->second;
+}
+
+SizeDrape SizeFitter::drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
+                            const std::vector<Vec3>* start) const {
+  ClothSolver solver(garment, parameters_, body);
+  if (start) solver.resume(*start, std::vector<Vec3>(start->size(), Vec3::Zero()), 0.0, 0);
+  SizeDrape out;
+  out.run = solver.run();
+  out.positions = solver.positions();
+  out.warm = start != nullptr;
+  return out;
+}
+
+std::vector<RegionFit> SizeFitter::fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
+                                         const TriangleMesh& garment, const std::vector<Vec3>& positions) const {
+  FitInput input;
+  input.rest = &garment;
+  input.positions = &positions;
+  input.body = &collider;
+  input.parameters = parameters_;
+  return measureFit(input, regions);
+}
+
+SizeFit SizeFitter::fitSize(const Graded& graded, const std::string& name, const MeshCollider& collider,
+                            const std::vector<FitRegion>& regions, SizeDrape drape) const {
+  SizeFit fit;
+  fit.size = name;
+  fit.regions = fitOn(collider, regions, graded.garment, drape.positions);
+  for (size_t r = 0; r < fit.regions.size(); ++r)
+    fit.verdicts.push_back(judge(fit.regions[r], graded.ownFit[r], rule()));
+  fit.text = shopperText(fit.regions, graded.ownFit, fit.verdicts, rule());
+  fit.drape = std::move(drape);
+  return fit;
+}
+
+SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
+  const Graded& graded = grade(sex, size);
+  const auto collider = std::make_shared<const MeshCollider>(body);
+  const std::vector<FitRegion> regions = styleRegions(body, measureBody(body), sex, style_);
+  return fitSize(graded, chart_.sizes(sex).at(size).name, *collider, regions, drape(graded.garment, collider));
+}
+
+Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool warm) {
+  const BodyMeasurements measured = measureBody(body);
+  const std::vector<int> candidates =
+      chart_.candidates(sex, measured.bustGirth, measured.waistGirth, measured.hipGirth);
+  if (candidates.empty()) throw std::invalid_argument(std::string("size chart: no ") + sexName(sex) + " sizes");
+  const int nearest = chart_.nearest(sex, measured.bustGirth, measured.waistGirth, measured.hipGirth);
+  const int centre = static_cast<int>(std::find(candidates.begin(), candidates.end(), nearest) - candidates.begin());
+  const int count = static_cast<int>(candidates.size());
+  const auto collider = std::make_shared<const MeshCollider>(body);
+  const std::vector<FitRegion> regions = styleRegions(body, measured, sex, style_);
+  Recommendation out;
+  out.sizes.resize(candidates.size());
+  for (const int k : drapeOrder(count, centre)) {
+    const Graded& graded = grade(sex, candidates[k]);
+    std::vector<Vec3> start;
+    if (const int from = k > centre ? k - 1 : k + 1; warm && style_.warmStarts && k != centre)
+      start = warmStart(graded.garment, grade(sex, candidates[from]).garment, out.sizes[from].drape.positions,
+                        *collider, parameters_.clearance);
+    out.sizes[k] = fitSize(graded, chart_.sizes(sex)[candidates[k]].name, *collider, regions,
+                           drape(graded.garment, collider, start.empty() ? nullptr : &start));
+  }
+  out.allTight = true;
+  for (const SizeFit& fit : out.sizes)
+    if (std::find(fit.verdicts.begin(), fit.verdicts.end(), Verdict::Tight) == fit.verdicts.end()) {
+      out.recommended = fit.size, out.allTight = false;
+      break;
+    }
+  if (out.allTight) out.recommended = out.sizes.back().size;
+  return out;
+}
+
+}  // namespace figment

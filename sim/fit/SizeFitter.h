@@ -1,0 +1,97 @@
+#pragma once
+// A size recommendation by simulation: the candidate sizes of a style (the chart's nearest
+// to the body and its neighbours) are draped on the body, their fit measured per region
+// (sim/fit/GarmentFit.h) and judged (sim/fit/FitVerdict.h) against the same size on its
+// own chart body; the recommendation is the smallest candidate with no region tight (the
+// largest when every one is). The sizes share the body's collider, and each later drape
+// starts from the nearest earlier one moved onto the new size (a warm start).
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/body/HumanModel.h"
+#include "sim/cloth/ClothSolver.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/fit/FitVerdict.h"
+#include "sim/garment/GarmentStyle.h"
+#include "sim/garment/SizeChart.h"
+
+namespace figment {
+
+// The drape every size gets: implicit steps of 1/20 s, at rest at 1 cm/s held 1/4 s.
+ClothParameters sizeDrapeParameters(const GarmentStyle& style);
+
+// A drape of one garment on one body, and what it cost.
+struct SizeDrape {
+  std::vector<Vec3> positions;
+  DrapeResult run;
+  bool warm = false;  // started from an earlier size's drape
+};
+
+struct SizeFit {
+  std::string size;
+  std::vector<RegionFit> regions;  // of the body's regions, as measureFit gives them
+  std::vector<Verdict> verdicts;   // one per region
+  std::string text;                // shopperText
+  SizeDrape drape;
+};
+
+struct Recommendation {
+  std::string recommended;
+  bool allTight = false;       // every candidate was tight somewhere: the largest is recommended
+  std::vector<SizeFit> sizes;  // the candidates, smallest first
+};
+
+// Starts another size from an earlier drape, in its draped shape: graded from the same
+// pattern (the same triangles), each point of `garment` starts where the earlier size's
+// own point went; else where the nearest point of `earlier`'s rest surface went (its
+// triangle's corners' drape by the point's barycentric weights). Then out of `body` by
+// its clearance. The new size starts stretched or slack by one size step and springs to
+// its own shape (docs/sizes.md: what this saves, and what moving the earlier drape by the
+// sizes' offset instead did).
+std::vector<Vec3> warmStart(const TriangleMesh& garment, const TriangleMesh& earlier,
+                            const std::vector<Vec3>& earlierDrape, const Collider& body, double clearance);
+
+class SizeFitter {
+ public:
+  // The model, chart and style must outlive the fitter.
+  SizeFitter(const HumanModel& model, const SizeChart& chart, const GarmentStyle& style);
+
+  // A size's chart body (made to its four dimensions) and its garment, made once.
+  struct Graded {
+    TriangleMesh body, garment;
+    std::vector<RegionFit> ownFit;  // the garment draped on its own chart body: the intended fit
+  };
+  const Graded& graded(Sex sex, int size);
+
+  // Drapes `garment` on `body` (its collider), cold or from `start`.
+  SizeDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
+                  const std::vector<Vec3>* start = nullptr) const;
+
+  // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
+  // without warm starts) drapes every size cold.
+  Recommendation recommend(const TriangleMesh& body, Sex sex, bool warm = true);
+
+  // Drapes one size (cold) on `body` and judges it: what a shopper sees trying it on.
+  SizeFit tryOn(const TriangleMesh& body, Sex sex, int size);
+
+  const ClothParameters& parameters() const { return parameters_; }
+  VerdictRule rule() const;
+
+ private:
+  const Graded& grade(Sex sex, int size);
+  std::vector<RegionFit> fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
+                               const TriangleMesh& garment, const std::vector<Vec3>& positions) const;
+  SizeFit fitSize(const Graded& graded, const std::string& name, const MeshCollider& collider,
+                  const std::vector<FitRegion>& regions, SizeDrape drape) const;
+
+  const HumanModel& model_;
+  const SizeChart& chart_;
+  const GarmentStyle& style_;
+  ClothParameters parameters_;
+  std::map<std::pair<int, int>, Graded> graded_;  // (sex, size index) -> made
+};
+
+}  // namespace figment

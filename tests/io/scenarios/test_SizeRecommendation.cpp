@@ -1,0 +1,174 @@
+// The size recommendation by simulation (issue 31) on MakeHuman's bodies made to the size
+// chart (scenes/sizes/chart.txt): each chart body is recommended its own size of the fitted
+// pencil skirt (women) and of the T-shirt (men); the recommendation never gets smaller as a
+// body grows along the chart; S on the XL body is tight where it should be and XL on the S
+// body loose; figment-size prints the JSON the issue gives and refuses bad input in one line.
+// Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "io/MakeHumanFiles.h"
+#include "io/SizeChartFile.h"
+#include "io/TargetLibrary.h"
+#include "sim/body/BodyFit.h"
+#include "sim/fit/SizeFitter.h"
+#include "support/ProgramRun.h"
+#include "support/TempDir.h"
+
+using namespace figment;
+
+namespace {
+
+class SizeRecommendation : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    const std::string dir = findMakeHumanData();
+    if (dir.empty()) return;
+    library_ = std::make_unique<TargetLibrary>(dir);
+    model_ = std::make_unique<HumanModel>(loadHumanModel(dir, *library_));
+    chart_ = std::make_unique<SizeChart>(readSizeChart(defaultSizeChartPath()));
+    pencil_ = std::make_unique<SizeFitter>(*model_, *chart_, *findStyle("pencil"));
+  }
+  static void TearDownTestSuite() {
+    pencil_.reset();
+    chart_.reset();
+    model_.reset();
+    library_.reset();
+  }
+  void SetUp() override {
+    if (!model_) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
+  }
+  static int index(Sex sex, const std::string& name) { return chart_->find(sex, name); }
+  static const Verdict* verdictAt(const SizeFit& fit, const std::string& region) {
+    for (size_t r = 0; r < fit.regions.size(); ++r)
+      if (fit.regions[r].name == region) return &fit.verdicts[r];
+    return nullptr;
+  }
+
+  static inline std::unique_ptr<TargetLibrary> library_;
+  static inline std::unique_ptr<HumanModel> model_;
+  static inline std::unique_ptr<SizeChart> chart_;
+  static inline std::unique_ptr<SizeFitter> pencil_;
+};
+
+}  // namespace
+
+TEST_F(SizeRecommendation, EachWomensChartBodyGetsItsOwnPencilSkirt) {
+  const std::vector<ChartSize>& sizes = chart_->sizes(Sex::Female);
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    const Recommendation r = pencil_->recommend(pencil_->graded(Sex::Female, int(i)).body, Sex::Female);
+    EXPECT_EQ(r.recommended, sizes[i].name);
+    EXPECT_FALSE(r.allTight) << sizes[i].name;
+    // The candidates: the chart's nearest (the body's own) and its neighbours.
+    EXPECT_EQ(r.sizes.size(), i == 0 || i + 1 == sizes.size() ? 2u : 3u) << sizes[i].name;
+  }
+}
+
+TEST_F(SizeRecommendation, EachMensChartBodyGetsItsOwnTShirt) {
+  SizeFitter tshirt(*model_, *chart_, *findStyle("tshirt"));
+  const std::vector<ChartSize>& sizes = chart_->sizes(Sex::Male);
+  for (size_t i = 0; i < sizes.size(); ++i)
+    EXPECT_EQ(tshirt.recommend(tshirt.graded(Sex::Male, int(i)).body, Sex::Male).recommended, sizes[i].name);
+}
+
+// Bodies along the chart between its sizes, from half a size under XS to half a size over
+// L (a small grid: figment-bench recommend --grid 30 runs the issue's 30 bodies).
+TEST_F(SizeRecommendation, NeverSmallerAsTheBodyGrows) {
+  const std::vector<ChartSize>& sizes = chart_->sizes(Sex::Female);
+  int previous = -1;
+  HumanParameters female;
+  female.macro.gender = 0.0;
+  for (double position = 0.5; position <= 4.51; position += 0.5) {
+    const int i = std::min(static_cast<int>(position), static_cast<int>(sizes.size()) - 2);
+    const double t = position - i;
+    const auto at = [&](double ChartSize::*field) {
+      return sizes[i].*field + t * (sizes[i + 1].*field - sizes[i].*field);
+    };
+    const TriangleMesh body = fitBody(*model_, female,
+                                      {{"stature", at(&ChartSize::stature)},
+                                       {"bust_girth", at(&ChartSize::bust)},
+                                       {"waist_girth", at(&ChartSize::waist)},
+                                       {"hip_girth", at(&ChartSize::hip)}})
+                                  .body;
+    const int recommended = index(Sex::Female, pencil_->recommend(body, Sex::Female).recommended);
+    EXPECT_GE(recommended, previous) << "at " << position;
+    previous = recommended;
+  }
+}
+
+TEST_F(SizeRecommendation, SmallOnTheXlBodyIsTightAndXlOnTheSmallBodyLoose) {
+  const TriangleMesh& xl = pencil_->graded(Sex::Female, index(Sex::Female, "XL")).body;
+  const SizeFit tight = pencil_->tryOn(xl, Sex::Female, index(Sex::Female, "S"));
+  for (const char* region : {"waist", "hips"}) {
+    ASSERT_NE(verdictAt(tight, region), nullptr) << region;
+    EXPECT_EQ(*verdictAt(tight, region), Verdict::Tight) << region << ": " << tight.text;
+  }
+  EXPECT_NE(tight.text.find("tight at the hips"), std::string::npos) << tight.text;
+  const TriangleMesh& s = pencil_->graded(Sex::Female, index(Sex::Female, "S")).body;
+  const SizeFit loose = pencil_->tryOn(s, Sex::Female, index(Sex::Female, "XL"));
+  for (const char* region : {"waist", "hips", "thighs"}) {
+    ASSERT_NE(verdictAt(loose, region), nullptr) << region;
+    EXPECT_EQ(*verdictAt(loose, region), Verdict::Loose) << region << ": " << loose.text;
+  }
+  // The tight one stretches and presses more than the loose one, which stands off further.
+  EXPECT_GT(tight.regions[1].meanStrain, loose.regions[1].meanStrain);
+  EXPECT_GT(tight.regions[1].pressure, loose.regions[1].pressure);
+  EXPECT_LT(tight.regions[1].ease, loose.regions[1].ease);
+}
+
+TEST_F(SizeRecommendation, FigmentSizePrintsTheIssuesJson) {
+  const test::TempDir dir;
+  const test::ProgramResult run =
+      test::runProgram(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size",
+                       "--style pencil --sex female --stature 1.68 --bust-girth 0.88 --waist-girth 0.72 "
+                       "--hip-girth 0.96 --json",
+                       dir.path(), dir.path());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.out.rfind("{\"recommended\": \"M\"", 0), 0u) << run.out;
+  for (const char* key : {"\"sizes\": {\"S\": {", "\"L\": {", "\"regions\": {\"waist\": {\"stretch_pct\": ",
+                          "\"ease_mm\": ", "\"pressure_kpa\": ", "\"verdict\": \"tight\"", "\"verdict\": \"fits\""})
+    EXPECT_NE(run.out.find(key), std::string::npos) << key << " in " << run.out;
+}
+
+TEST_F(SizeRecommendation, FigmentSizeTriesOneSizeOn) {
+  const test::TempDir dir;
+  const test::ProgramResult run =
+      test::runProgram(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size",
+                       "--style pencil --sex female --stature 1.68 --bust-girth 0.84 --waist-girth 0.68 "
+                       "--hip-girth 0.92 --size XL --json",
+                       dir.path(), dir.path());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.out.rfind("{\"sizes\": {\"XL\": {", 0), 0u) << run.out;
+  EXPECT_EQ(run.out.find("recommended"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("\"verdict\": \"loose\""), std::string::npos) << run.out;
+}
+
+TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
+  const test::TempDir dir;
+  const std::string tool = std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size";
+  const test::ProgramResult style =
+      test::runProgram(tool, "--style gown --sex female --body x.obj", dir.path(), dir.path());
+  EXPECT_EQ(style.status, 1);
+  EXPECT_EQ(style.err, "figment-size: --style gown: not one of dress, skirt, tshirt, pencil\n");
+  const test::ProgramResult some =
+      test::runProgram(tool, "--style dress --sex female --stature 1.68", dir.path(), dir.path());
+  EXPECT_EQ(some.status, 1);
+  EXPECT_EQ(some.err,
+            "figment-size: give --body FILE, or all of --stature, --bust-girth, --waist-girth and --hip-girth\n");
+  const test::ProgramResult far = test::runProgram(
+      tool, "--style dress --sex female --stature 1.68 --bust-girth 0.88 --waist-girth 0.9 --hip-girth 0.5", dir.path(),
+      dir.path());
+  EXPECT_EQ(far.status, 1);
+  const test::ProgramResult size = test::runProgram(
+      tool, "--style pencil --sex male --stature 1.74 --bust-girth 0.96 --waist-girth 0.84 --hip-girth 1.0 --size XXS",
+      dir.path(), dir.path());
+  EXPECT_EQ(size.status, 1);
+  EXPECT_EQ(size.err, "figment-size: --size XXS: no male size of that name\n");
+  EXPECT_EQ(std::count(far.err.begin(), far.err.end(), '\n'), 1) << far.err;
+  EXPECT_TRUE(far.out.empty());
+}

@@ -1,0 +1,89 @@
+// The verdict rule: a region is tight past its fabric's limits or half a size step short of
+// the intended girth ease, loose half a step beyond it, else it fits; the shopper's line
+// names each tight and loose region with its reason.
+#include <gtest/gtest.h>
+
+#include "sim/fit/FitVerdict.h"
+
+using namespace figment;
+
+namespace {
+
+RegionFit region(const char* name, double girthEase, double strain = 0.0, double ease = 0.01) {
+  RegionFit fit;
+  fit.name = name;
+  fit.nodes = 10;
+  fit.girthEase = girthEase;
+  fit.meanStrain = strain;
+  fit.ease = ease;
+  return fit;
+}
+
+}  // namespace
+
+TEST(FitVerdict, GirthEaseWithinHalfAStepFits) {
+  const VerdictRule rule{fabricLimits("cotton")};
+  const RegionFit intended = region("hips", 0.04);
+  EXPECT_EQ(judge(region("hips", 0.04), intended, rule), Verdict::Fits);
+  EXPECT_EQ(judge(region("hips", 0.025), intended, rule), Verdict::Fits);
+  EXPECT_EQ(judge(region("hips", 0.055), intended, rule), Verdict::Fits);
+  EXPECT_EQ(judge(region("hips", 0.00), intended, rule), Verdict::Tight);  // a size too small
+  EXPECT_EQ(judge(region("hips", 0.08), intended, rule), Verdict::Loose);  // a size too large
+}
+
+TEST(FitVerdict, StretchPastTheFabricsLimitIsTight) {
+  const RegionFit intended = region("hips", 0.04);
+  EXPECT_EQ(judge(region("hips", 0.04, 0.05), intended, VerdictRule{fabricLimits("cotton")}), Verdict::Tight);
+  // A knit takes the same stretch.
+  EXPECT_EQ(judge(region("hips", 0.04, 0.05), intended, VerdictRule{fabricLimits("jersey")}), Verdict::Fits);
+  EXPECT_LT(fabricLimits("denim").stretch, fabricLimits("jersey").stretch);
+}
+
+TEST(FitVerdict, PressurePastTheFabricsLimitIsTight) {
+  RegionFit fit = region("waist", 0.02);
+  fit.pressure = 2500;
+  EXPECT_EQ(judge(fit, region("waist", 0.02), VerdictRule{fabricLimits("jersey")}), Verdict::Tight);
+}
+
+// Shoulders and upper arms have no girth: the distance from the skin decides loose.
+TEST(FitVerdict, WithoutAGirthTheDistanceDecides) {
+  const VerdictRule rule{fabricLimits("jersey")};
+  const RegionFit intended = region("shoulders", NAN, 0.0, 0.010);
+  EXPECT_EQ(judge(region("shoulders", NAN, 0.0, 0.012), intended, rule), Verdict::Fits);
+  EXPECT_EQ(judge(region("shoulders", NAN, 0.0, 0.020), intended, rule), Verdict::Loose);
+}
+
+// A region whose garment hangs more than 2 cm lower than intended is loose (a size too large
+// slides down), one that rides more than 2 cm higher is tight (a waistband too small climbs
+// to where the body is narrower).
+TEST(FitVerdict, HangingLowIsLooseRidingHighTight) {
+  const VerdictRule rule{fabricLimits("cotton")};
+  RegionFit intended = region("waist", 0.02);
+  intended.drop = 0.08;
+  RegionFit low = region("waist", 0.02), high = region("waist", 0.02), near = region("waist", 0.02);
+  low.drop = 0.11, high.drop = 0.05, near.drop = 0.09;
+  EXPECT_EQ(judge(low, intended, rule), Verdict::Loose);
+  EXPECT_EQ(judge(high, intended, rule), Verdict::Tight);
+  EXPECT_EQ(judge(near, intended, rule), Verdict::Fits);
+  EXPECT_EQ(shopperText({low, high}, {intended, intended}, {Verdict::Loose, Verdict::Tight}, rule),
+            "tight at the waist: 3 cm too high; loose at the waist: hangs 3 cm low");
+}
+
+TEST(FitVerdict, UncoveredRegionsFit) {
+  RegionFit none = region("bust", 0.0);
+  none.nodes = 0;
+  EXPECT_EQ(judge(none, region("bust", 0.06), VerdictRule{}), Verdict::Fits);
+}
+
+TEST(FitVerdict, TheShoppersLineNamesTightAndLooseRegions) {
+  const std::vector<RegionFit> intended = {region("waist", 0.02), region("hips", 0.04)};
+  const std::vector<RegionFit> fits = {region("waist", 0.07), region("hips", 0.04, 0.07)};
+  const std::vector<Verdict> verdicts = {Verdict::Loose, Verdict::Tight};
+  const VerdictRule rule{fabricLimits("cotton")};
+  EXPECT_EQ(shopperText(fits, intended, verdicts, rule),
+            "tight at the hips: 7 % stretch; loose at the waist: 5 cm too much ease");
+  EXPECT_EQ(shopperText(fits, intended, {Verdict::Fits, Verdict::Fits}, rule), "fits everywhere");
+  const std::vector<RegionFit> short_ = {region("waist", -0.01), region("hips", 0.04)};
+  EXPECT_EQ(shopperText(short_, intended, {Verdict::Tight, Verdict::Fits}, rule),
+            "tight at the waist: 3 cm too little ease");
+}

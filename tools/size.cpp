@@ -1,0 +1,184 @@
+// figment-size: a size recommendation by simulation (docs/sizes.md).
+//   figment-size --style STYLE --sex female|male (--body FILE | --stature M --bust-girth M
+//                --waist-girth M --hip-girth M) [--chart FILE] [--json] [--cold]
+// Drapes the chart's nearest size of the style and its neighbours on the body, measures
+// each one's fit per region and recommends the smallest with no region tight. Prints each
+// size's regions and verdicts (or one JSON object with --json) on stdout. Bad input is one
+// line on stderr and exit status 1.
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ToolMain.h"
+#include "io/FitMapScene.h"
+#include "io/MakeHumanFiles.h"
+#include "io/MeshExport.h"
+#include "io/SizeChartFile.h"
+#include "io/TargetLibrary.h"
+#include "sim/body/BodyFit.h"
+#include "sim/fit/FitMap.h"
+#include "sim/fit/SizeFitter.h"
+
+namespace {
+
+const figment::tools::ToolMain kTool{"figment-size"};
+
+struct Request {
+  std::string style, sex, body, chart;
+  std::map<std::string, double> typed;  // fitBody's keys -> m
+  bool json = false, cold = false;
+  std::string fitMap, fitMapDir;  // kind; folder for body.obj and <size>.iv
+  std::string size;               // set: try this size on only, no recommendation
+};
+
+double inUnit(double value, double scale) {
+  return std::isfinite(value) ? value * scale : -1.0;
+}
+
+void printJson(const figment::Recommendation& r) {
+  if (r.recommended.empty())
+    std::printf("{\"sizes\": {");
+  else
+    std::printf("{\"recommended\": \"%s\", \"all_tight\": %s, \"sizes\": {", r.recommended.c_str(),
+                r.allTight ? "true" : "false");
+  for (size_t s = 0; s < r.sizes.size(); ++s) {
+    const figment::SizeFit& fit = r.sizes[s];
+    std::printf("%s\"%s\": {\"text\": \"%s\", \"steps\": %d, \"warm\": %s, \"at_rest\": %s, \"regions\": {",
+                s ? ", " : "", fit.size.c_str(), fit.text.c_str(), fit.drape.run.iterations,
+                fit.drape.warm ? "true" : "false", fit.drape.run.atRest ? "true" : "false");
+    bool first = true;
+    for (size_t i = 0; i < fit.regions.size(); ++i) {
+      const figment::RegionFit& g = fit.regions[i];
+      if (!g.covered()) continue;
+      std::printf(
+          "%s\"%s\": {\"stretch_pct\": %.2f, \"max_stretch_pct\": %.2f, \"ease_mm\": %.1f, "
+          "\"girth_ease_cm\": %.1f, \"pressure_kpa\": %.3f, \"verdict\": \"%s\"}",
+          first ? "" : ", ", g.name.c_str(), 100 * g.meanStrain, 100 * g.maxStrain, 1000 * g.ease,
+          inUnit(g.girthEase, 100), g.pressure / 1000, figment::verdictName(fit.verdicts[i]));
+      first = false;
+    }
+    std::printf("}}");
+  }
+  std::printf("}}\n");
+}
+
+void printText(const figment::Recommendation& r, const std::string& style) {
+  if (!r.recommended.empty())
+    std::printf("%s: recommended size %s%s\n", style.c_str(), r.recommended.c_str(),
+                r.allTight ? " (every candidate is tight somewhere: the largest)" : "");
+  for (const figment::SizeFit& fit : r.sizes) {
+    std::printf("\n%s: %s (%d steps%s, %.2f s)\n", fit.size.c_str(), fit.text.c_str(), fit.drape.run.iterations,
+                fit.drape.warm ? ", warm start" : "", fit.drape.run.wallSeconds);
+    std::printf("  %-11s %9s %8s %8s %10s %9s  %s\n", "region", "stretch%", "max%", "ease mm", "girth ease", "kPa",
+                "verdict");
+    for (size_t i = 0; i < fit.regions.size(); ++i) {
+      const figment::RegionFit& g = fit.regions[i];
+      if (!g.covered()) continue;
+      char girth[32] = "-";
+      if (std::isfinite(g.girthEase)) std::snprintf(girth, sizeof girth, "%.1f cm", 100 * g.girthEase);
+      std::printf("  %-11s %9.1f %8.1f %8.1f %10s %9.3f  %s\n", g.name.c_str(), 100 * g.meanStrain, 100 * g.maxStrain,
+                  1000 * g.ease, girth, g.pressure / 1000, figment::verdictName(fit.verdicts[i]));
+    }
+  }
+}
+
+// Each candidate's fit map: DIR/body.obj and DIR/<size>.iv, for figment-view.
+void writeFitMaps(const Request& request, figment::SizeFitter& fitter, const figment::SizeChart& chart,
+                  figment::Sex sex, const figment::TriangleMesh& body, const figment::Recommendation& r) {
+  const std::string dir = request.fitMapDir.empty() ? "." : request.fitMapDir;
+  figment::exportObj(figment::numberedByFirstUse(body), dir + "/body.obj");
+  const figment::MeshCollider collider(body);
+  const figment::FitMapKind kind = figment::fitMapKind(request.fitMap);
+  for (const figment::SizeFit& fit : r.sizes) {
+    const figment::TriangleMesh& garment = fitter.graded(sex, chart.find(sex, fit.size)).garment;
+    figment::FitInput input;
+    input.rest = &garment;
+    input.positions = &fit.drape.positions;
+    input.body = &collider;
+    input.parameters = fitter.parameters();
+    std::vector<int> bands;
+    for (const double value : figment::fitMapValues(input, kind))
+      bands.push_back(figment::fitMapBand(figment::fitMapShare(value, kind, fitter.rule().limits)));
+    figment::writeFitMapScene(dir + "/" + fit.size + ".iv", {fit.drape.positions, garment.triangles}, bands,
+                              "body.obj");
+  }
+}
+
+// The recommendation for `body`; the exit status.
+int recommend(const Request& request, figment::HumanModel& model, const figment::TriangleMesh& body) {
+  const figment::SizeChart chart = figment::readSizeChart(request.chart);
+  const figment::GarmentStyle& style = *figment::findStyle(request.style);
+  figment::SizeFitter fitter(model, chart, style);
+  const figment::Sex sex = request.sex == "male" ? figment::Sex::Male : figment::Sex::Female;
+  figment::Recommendation r;
+  if (request.size.empty()) {
+    r = fitter.recommend(body, sex, !request.cold);
+  } else {
+    const int size = chart.find(sex, request.size);
+    if (size < 0) return kTool.fail("--size " + request.size + ": no " + figment::sexName(sex) + " size of that name");
+    r.sizes.push_back(fitter.tryOn(body, sex, size));
+  }
+  if (!request.fitMap.empty()) writeFitMaps(request, fitter, chart, sex, body, r);
+  request.json ? printJson(r) : printText(r, request.style);
+  return 0;
+}
+
+int run(const Request& request) {
+  const std::string dir = figment::findMakeHumanData();
+  if (dir.empty()) return kTool.fail("MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR");
+  try {
+    figment::TargetLibrary library(dir);
+    figment::HumanModel model = figment::loadHumanModel(dir, library);
+    if (!request.body.empty()) {
+      figment::tools::BodyInput input;
+      input.name = request.body;
+      return kTool.withBody(input, [&](const figment::TriangleMesh& body, const std::string&) {
+        return recommend(request, model, body);
+      });
+    }
+    figment::HumanParameters start;
+    start.macro.gender = request.sex == "male" ? 1.0 : 0.0;
+    std::vector<figment::MeasurementGoal> goals;
+    for (const auto& [key, value] : request.typed) goals.push_back({key, value});
+    return recommend(request, model, figment::fitBody(model, start, goals).body);
+  } catch (const std::exception& error) {
+    return kTool.fail(error.what());
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Recommends a garment size by draping the size chart's candidates on a body.", kTool.program()};
+  Request request;
+  request.chart = figment::defaultSizeChartPath();
+  app.add_option("--style", request.style, figment::styleNames())->required();
+  app.add_option("--sex", request.sex, "female or male")->required()->check(CLI::IsMember({"female", "male"}));
+  auto* body = app.add_option("--body", request.body, "a body mesh file (metres, y up) instead of measurements");
+  for (const char* key : {"stature", "bust_girth", "waist_girth", "hip_girth"}) {
+    std::string name = std::string("--") + key;
+    for (char& c : name)
+      if (c == '_') c = '-';
+    app.add_option_function<double>(
+           name, [&request, key](double v) { request.typed[key] = v; }, std::string(key) + ", m")
+        ->excludes(body);
+  }
+  app.add_option("--chart", request.chart, "size chart file")->capture_default_str();
+  app.add_option("--size", request.size, "try this size on only (letter code or number): no recommendation");
+  app.add_flag("--json", request.json, "one JSON object on stdout");
+  app.add_flag("--cold", request.cold, "drape every size from its cut shape (no warm starts)");
+  app.add_option("--fit-map", request.fitMap,
+                 "write each size's fit map, a scene for figment-view: stretch, ease or pressure")
+      ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
+  app.add_option("--fit-map-dir", request.fitMapDir, "folder for the fit maps (<size>.iv and body.obj)")
+      ->capture_default_str();
+  if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+  if (!figment::findStyle(request.style))
+    return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames());
+  if (request.body.empty() && request.typed.size() < 4)
+    return kTool.fail("give --body FILE, or all of --stature, --bust-girth, --waist-girth and --hip-girth");
+  return run(request);
+}
