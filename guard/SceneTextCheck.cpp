@@ -148,7 +148,7 @@ class Checker {
                   file + " is include " + std::to_string(includes_) + ", more than " + std::to_string(kMaxIncludes) +
                       " in all");
     const fs::path found = resolve(name);
-    if (found.empty()) return fail(from, line, file + " not found");
+    if (found.empty()) return fail(from, line, file + " not found: " + whereLooked(name));
     std::error_code ec;
     if (!fs::is_regular_file(found, ec)) return fail(from, line, file + " is not a regular file");
     const fs::path canonical = fs::weakly_canonical(found, ec);
@@ -179,6 +179,27 @@ class Checker {
       if (fs::exists(status) && !fs::is_directory(status)) return candidate;
     }
     return {};
+  }
+
+  // Where resolve() looked for `name`, in its order, for the line that says it is nowhere:
+  // "looked beside scene.iv (/a/scene/folder) and in the working directory (/a/run)".
+  std::string whereLooked(const std::string& name) const {
+    const fs::path given(name);
+    std::error_code ec;
+    if (given.is_absolute()) return "no such file";
+    std::vector<std::string> places;
+    for (auto open = chain_.rbegin(); open != chain_.rend(); ++open) {
+      const fs::path folder = fs::absolute(open->asFound, ec).parent_path();
+      places.push_back("beside " + open->asFound.filename().string() + " (" + folder.string() + ")");
+    }
+    places.push_back("in the working directory (" + fs::current_path(ec).string() + ")");
+    const SbStringList& dirs = SoInput::getDirectories();
+    for (int i = 0; i < dirs.getLength(); ++i)
+      if (std::string dir = dirs[i]->getString(); !dir.empty() && dir != ".") places.push_back("in " + dir);
+    std::string text = "looked ";
+    for (size_t i = 0; i < places.size(); ++i)
+      text += (i == 0 ? "" : i + 1 == places.size() ? " and " : ", ") + places[i];
+    return text;
   }
 
   // "a.iv -> b.iv -> a.iv": the files being read, then `next`.

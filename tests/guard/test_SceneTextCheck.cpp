@@ -141,8 +141,9 @@ TEST_F(SceneTextCheckTest, TakesAnInlinesUrlForAnInclude) {
   EXPECT_EQ(checkSceneText(
                 write("zero.iv", kHeader + "VRMLInline {\n  bboxSize 1 1 1\n  url [ \"/dev/zero\", \"a.iv\" ]\n}\n")),
             "line 4: VRMLInline { url \"/dev/zero\" } is not a regular file");
-  EXPECT_EQ(checkSceneText(write("vrml.wrl", "#VRML V2.0 utf8\nTransform { children Inline { url \"gone.wrl\" } }\n")),
-            "line 2: Inline { url \"gone.wrl\" } not found");
+  EXPECT_EQ(checkSceneText(write("vrml.wrl", "#VRML V2.0 utf8\nTransform { children Inline { url \"gone.wrl\" } }\n"))
+                .rfind("line 2: Inline { url \"gone.wrl\" } not found: looked beside vrml.wrl", 0),
+            0u);
   write("cube.wrl", "#VRML V2.0 utf8\nShape { geometry Box { } }\n");
   EXPECT_EQ(checkSceneText(write("ok.iv", kHeader + "Separator { VRMLInline { url [ \"cube.wrl\" ] } }\n")), "");
   EXPECT_EQ(checkSceneText(write("empty.iv", kHeader + "Separator { VRMLInline { url [ ] } Cube { } }\n")), "");
@@ -169,11 +170,18 @@ TEST_F(SceneTextCheckTest, TakesAnExternProtosFirstUrlForAnInclude) {
 TEST_F(SceneTextCheckTest, RefusesWhatIsNotARegularFileOrNotThere) {
   EXPECT_EQ(checkSceneText(write("zero.iv", including("/dev/zero"))),
             "line 3: File { name \"/dev/zero\" } is not a regular file");
+  // A file that is nowhere: the line says where it was looked for, in the order Coin looks.
+  const std::string here = " (" + fs::absolute(dir_.path()).string() + ")";
+  const std::string cwd = " (" + fs::current_path().string() + ")";
   EXPECT_EQ(checkSceneText(write("missing.iv", including("nothere.iv"))),
-            "line 3: File { name \"nothere.iv\" } not found");
+            "line 3: File { name \"nothere.iv\" } not found: looked beside missing.iv" + here +
+                " and in the working directory" + cwd);
   fs::create_directory(dir_.path() / "folder.iv");  // SoInput passes folders over
   EXPECT_EQ(checkSceneText(write("folder.txt", including("folder.iv"))),
-            "line 3: File { name \"folder.iv\" } not found");
+            "line 3: File { name \"folder.iv\" } not found: looked beside folder.txt" + here +
+                " and in the working directory" + cwd);
+  EXPECT_EQ(checkSceneText(write("absolute.iv", including("/nothere/x.iv"))),
+            "line 3: File { name \"/nothere/x.iv\" } not found: no such file");
 }
 
 // What is not ASCII Inventor or VRML text cannot be checked, and Coin reads some of it without

@@ -379,7 +379,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"IncludesAMissingFile",
                  "#Inventor V2.1 ascii\nSeparator { File { name \"nothere.iv\" } }\n",
                  "",
-                 {"scene.iv", "line 2", "\"nothere.iv\"", "not found"}},
+                 {"scene.iv", "line 2", "\"nothere.iv\"", "not found: looked beside scene.iv (", "in the working directory ("}},
         BadInput{"HundredThousandNestedSeparators",
                  nestedScene("Separator", 100000),
                  "",
