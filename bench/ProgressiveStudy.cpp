@@ -24,7 +24,7 @@ int countLevels(SceneGarment& garment, const std::string& script, std::string& e
   const double maxTime = engine.maxTime.getValue();
   engine.progressiveScript = script.c_str();
   engine.endLevel = 0;
-  engine.maxTime = engine.timeStep.getValue();
+  engine.maxTime = engine.timeStepSeconds();
   const RepeatedDrape probe = garment.drapeRepeatedly(1);
   engine.maxTime = maxTime;
   error = probe.error;

@@ -29,7 +29,7 @@ DrapeMethod methodOf(ClothEngine& engine, const ClothEngine::RunStats& run) {
     return {run.integrator,        run.timeStep,     run.strainLimit, run.accelerationLimiter,
             run.accelerationLimit, run.contactModel, run.maxTime};
   return {fieldText(engine.integrator),
-          engine.timeStep.getValue(),
+          engine.timeStepSeconds(),
           engine.strainLimit.getValue(),
           fieldText(engine.accelerationLimiter),
           engine.accelerationLimit.getValue(),

@@ -153,7 +153,7 @@ void showVolumes(SoNode* scene) {
 // progressive drape's growth, say).
 void stopAt(SoNode* scene, int steps) {
   for (ClothEngine* engine : figment::findClothEngines(scene))
-    engine->maxTime = std::min(engine->maxTime.getValue(), steps * engine->timeStep.getValue());
+    engine->maxTime = std::min(engine->maxTime.getValue(), steps * engine->timeStepSeconds());
 }
 
 // --frames: every drape runs at least to the last frame's time (a cloth at rest before

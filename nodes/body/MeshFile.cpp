@@ -177,6 +177,7 @@ MeshFile::MeshFile() : impl_(std::make_unique<Impl>(this)) {
   SO_NODE_ADD_EMPTY_MFIELD(collisionExclude);
   SO_NODE_ADD_FIELD(cropMin, (0.0f, 0.0f, 0.0f));
   SO_NODE_ADD_FIELD(cropMax, (0.0f, 0.0f, 0.0f));
+  SO_NODE_ADD_FIELD(reverseFaces, (FALSE));
   SO_NODE_ADD_EMPTY_MFIELD(point);
   SO_NODE_ADD_EMPTY_MFIELD(coordIndex);
   SO_NODE_DEFINE_ENUM_VALUE(UpAxis, X);
@@ -224,7 +225,7 @@ figment::CollisionBody::Description MeshFile::describeBody() const {
 
 bool MeshFile::isLoadOption(const SoField* field) const {
   return field == &fileName || field == &metresPerUnit || field == &upAxis || field == &exclude ||
-         field == &collisionExclude || field == &cropMin || field == &cropMax;
+         field == &collisionExclude || field == &cropMin || field == &cropMax || field == &reverseFaces;
 }
 
 SbBool MeshFile::readInstance(SoInput* in, unsigned short flags) {
@@ -249,7 +250,10 @@ bool MeshFile::load(SoInput* in) {
       clearMesh();
       return true;
     }
-    const auto [drawn, collision] = importMeshes(*this, impl_->sceneDirectories);
+    auto [drawn, collision] = importMeshes(*this, impl_->sceneDirectories);
+    if (reverseFaces.getValue())
+      for (figment::TriangleMesh* mesh : {&drawn, &collision})
+        for (figment::Triangle& t : mesh->triangles) std::swap(t[1], t[2]);
     setMesh(drawn, collision);
     return true;
   } catch (const std::exception& e) {

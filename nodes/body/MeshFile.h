@@ -5,6 +5,7 @@
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFString.h>
 #include <Inventor/fields/SoMFVec3f.h>
+#include <Inventor/fields/SoSFBool.h>
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/fields/SoSFString.h>
@@ -58,6 +59,7 @@ class MeshCollider;
         collisionExclude [ ]
         cropMin 0 0 0
         cropMax 0 0 0
+        reverseFaces FALSE
     }
   \endcode
 
@@ -101,6 +103,10 @@ class MeshFile : public SoNode, public figment::CollisionBody {
   // otherwise cropMin must be below cropMax on every axis.
   SoSFVec3f cropMin;
   SoSFVec3f cropMax;
+  // The file's faces wind clockwise seen from outside: reverse each one's corners, so they
+  // wind counterclockwise as FIGMENT's nodes and renderers take a face's front (a garment
+  // wound clockwise says so before it drapes, naming this field). Default FALSE.
+  SoSFBool reverseFaces;
 
   // Read-only outputs: the drawn mesh, merged by position, in metres, y up.
   // Vertices (m). Set by the node; not written to files.

@@ -81,7 +81,7 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
   // The double fields hold what the scene wrote (see FieldValues.h); gravity is float.
   ClothParameters p;
   p.material = materialFromFields(engine);
-  p.timeStep = engine.timeStep.getValue();
+  p.timeStep = engine.timeStepSeconds();
   p.maxTime = engine.maxTime.getValue();
   p.rest.speedThreshold = engine.restSpeed.getValue();
   p.rest.window = engine.restWindow.getValue();

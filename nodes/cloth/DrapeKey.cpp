@@ -157,6 +157,9 @@ std::string drapeKey(const ClothEngine& engine, const std::string& scriptPath) {
     key.file("library", library);
   std::set<const SoNode*> seen;
   addFields(key, "engine", engine, seen);
+  // The step that runs, where the fields' value is not it (an explicit integrator's
+  // unwritten timeStep): a written 0.05 and the unwritten default differ.
+  key.value("step that runs", engine.timeStepSeconds());
   if (!scriptPath.empty()) key.file("script", scriptPath);
   if (engine.tolerance.getValue() > 0.0) key.file("tradeoff table", tradeoffTablePath());
   return key.text;

@@ -28,7 +28,7 @@ bool eachField(Io& io, Stats& s) {
          io.template number<double>(s.maxTime) && io.template number<double>(s.maxSpeed) &&
          io.template number<double>(s.maxStretch) && io.template number<double>(s.clampedSectionShareAtEnd) &&
          io.template number<double>(s.limitedNodeShareAtEnd) && io.template number<std::int64_t>(s.halvedSteps) &&
-         io.template number<std::int64_t>(s.failedSteps);
+         io.template number<std::int64_t>(s.failedSteps) && io.text(s.garmentWarning);
 }
 
 struct FieldWriter {

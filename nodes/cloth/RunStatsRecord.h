@@ -17,7 +17,7 @@ namespace figment {
 
 // Raised whenever a field is added, removed or changes its type or order. 1 was the
 // struct's bytes as they lay in memory, before records had a version.
-constexpr std::uint32_t kRunStatsRecordVersion = 3;
+constexpr std::uint32_t kRunStatsRecordVersion = 4;
 
 std::vector<unsigned char> writeRunStats(const ClothEngine::RunStats& stats);
 

@@ -5,12 +5,15 @@
 // a falling square stopped at maxTime, the T-shirt on a mannequin with shoulderL raised
 // 0.5 rad (the sleeve tears off the arm), the default dress at 0.2 s and 0.5 s implicit
 // steps (the step control recovers them, or the line says what is left), a skirt whose
-// waistband starts inside the body.
+// waistband starts inside the body; and the checks of a garment before it drapes: one in
+// centimetres, one lying on its side, one wound clockwise.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <Eigen/Core>
 #include <cstdlib>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -190,4 +193,122 @@ TEST_F(FigmentViewVerdict, AWaistbandStartingInsideTheBodyIsSaid) {
   replace(scene, "      body USE Body\n", "      body USE Body\n      waist 1.35\n      hips 1.35\n");
   replace(scene, "timeStep 1.5e-4", "integrator IMPLICIT\n        timeStep 0.05");
   expectSaidAndStrictRefuses(scene, "SkirtDrape", "");
+}
+
+namespace {
+
+using Vec3f = Eigen::Vector3f;
+
+// dress.obj with each vertex line's position through `move`, or each face's corners
+// reversed: the shipped dress as a file in another unit, frame or winding would bring it.
+std::string dressObj(const std::function<Vec3f(const Vec3f&)>& move, bool reverseFaces) {
+  std::istringstream in(readText(kScenes / "dress.obj"));
+  std::string out;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream words(line);
+    std::string kind;
+    words >> kind;
+    if (kind == "v") {
+      Vec3f p;
+      words >> p[0] >> p[1] >> p[2];
+      p = move(p);
+      line = "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]);
+    } else if (kind == "f" && reverseFaces) {
+      std::vector<std::string> corners;
+      for (std::string c; words >> c;) corners.push_back(c);
+      line = "f";
+      for (auto c = corners.rbegin(); c != corners.rend(); ++c) line += " " + *c;
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+Vec3f same(const Vec3f& p) {
+  return p;
+}
+
+}  // namespace
+
+// The checks of a garment against its body before it drapes (nodes/cloth/GarmentStartCheck.h),
+// each on the default dress as a file in another unit, frame or winding would bring it.
+class FigmentViewGarmentStart : public FigmentViewVerdict {
+ protected:
+  // The default scene with its dress read from `obj` (written here) with `fields` in its MeshFile.
+  std::string dressFrom(const std::string& obj, const std::string& fields = "") const {
+    std::string scene = shipped("dress.iv");
+    replace(scene, "MeshFile { fileName \"dress.obj\" }",
+            "MeshFile { fileName \"" + dir_.file("garment.obj", obj) + "\" " + fields + " }");
+    return scene;
+  }
+  // An error: exit 1, one line naming the scene, the engine and `words`, no image.
+  void expectRefused(const std::string& scene, const std::vector<std::string>& words) const {
+    const ViewRun run = view(scene);
+    EXPECT_EQ(run.status, 1);
+    EXPECT_FALSE(run.image);
+    ASSERT_EQ(run.lines.size(), 1u) << ::testing::PrintToString(run.lines);
+    EXPECT_EQ(run.lines[0].rfind("figment-view: " + scenePath() + ": ClothEngine 'DressDrape': the garment (", 0), 0u)
+        << run.lines[0];
+    for (const std::string& w : words) EXPECT_NE(run.lines[0].find(w), std::string::npos) << w << " in " << run.lines[0];
+  }
+};
+
+// A dress in centimetres, read as metres: 93 m tall, it fell past the body for 10 s.
+TEST_F(FigmentViewGarmentStart, AGarmentInCentimetresIsAnErrorNamingTheUnitToTry) {
+  if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
+  const std::string obj = dressObj([](const Vec3f& p) { return Vec3f(100.0f * p); }, false);
+  expectRefused(dressFrom(obj), {"MeshFile 'DressPattern', metresPerUnit 1)", "in another unit", "try metresPerUnit 0.01"});
+  // The fix it names drapes the dress, clean.
+  const ViewRun fixed = view(dressFrom(obj, "metresPerUnit 0.01"), "--strict");
+  EXPECT_EQ(fixed.status, 0) << ::testing::PrintToString(fixed.lines);
+  EXPECT_TRUE(fixed.lines.empty()) << ::testing::PrintToString(fixed.lines);
+}
+
+// A dress from a z-up file read as y-up lay on its side in front of the body and fell past the feet.
+TEST_F(FigmentViewGarmentStart, AGarmentLyingOnItsSideIsAnErrorNamingTheUpAxisToTry) {
+  if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
+  // The file's (x, -z, y): io/UpAxis.h's toYUp for Z brings it back.
+  const std::string obj = dressObj([](const Vec3f& p) { return Vec3f(p[0], -p[2], p[1]); }, false);
+  expectRefused(dressFrom(obj), {"upAxis Y)", "lies on its side", "try upAxis Z"});
+  const ViewRun fixed = view(dressFrom(obj, "upAxis Z"), "--strict");
+  EXPECT_EQ(fixed.status, 0) << ::testing::PrintToString(fixed.lines);
+  EXPECT_TRUE(fixed.lines.empty()) << ::testing::PrintToString(fixed.lines);
+}
+
+// Both at once: one line, both fixes.
+TEST_F(FigmentViewGarmentStart, AGarmentInCentimetresOnItsSideNamesBothFixes) {
+  if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
+  const std::string obj = dressObj([](const Vec3f& p) { return Vec3f(100.0f * Vec3f(p[0], -p[2], p[1])); }, false);
+  expectRefused(dressFrom(obj), {"in another unit, and lies on its side", "try metresPerUnit 0.01 upAxis Z"});
+}
+
+// Faces wound clockwise seen from outside drape the same, but a renderer that takes a face's
+// front from its winding draws the dress inside out: a warning, which --strict refuses.
+TEST_F(FigmentViewGarmentStart, FacesWoundClockwiseAreSaidAndStrictRefusesThem) {
+  if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
+  const std::string obj = dressObj(same, true);
+  expectSaidAndStrictRefuses(dressFrom(obj), "DressDrape",
+                             "the garment's faces (MeshFile 'DressPattern') wind clockwise seen from outside");
+  const ViewRun fixed = view(dressFrom(obj, "reverseFaces TRUE"), "--strict");
+  EXPECT_EQ(fixed.status, 0) << ::testing::PrintToString(fixed.lines);
+  EXPECT_TRUE(fixed.lines.empty()) << ::testing::PrintToString(fixed.lines);
+}
+
+// The shipped dress with every ClothEngine field but its garment and body at the default:
+// the defaults drape it to rest, clean (backward Euler at 1/20 s), where they used to run
+// the paper's explicit path to maxTime, never at rest.
+TEST_F(FigmentViewVerdict, TheDressWithEveryFieldAtItsDefaultRestsClean) {
+  if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
+  std::string scene = shipped("dress.iv");
+  const size_t from = scene.find("        body USE Model\n"), to = scene.find("      } . positions");
+  ASSERT_NE(from, std::string::npos);
+  ASSERT_NE(to, std::string::npos);
+  scene = scene.substr(0, from) + "        body USE Model\n" + scene.substr(to);
+  const ViewRun run = view(scene, "--strict");
+  EXPECT_EQ(run.status, 0) << ::testing::PrintToString(run.lines);
+  EXPECT_TRUE(run.lines.empty()) << ::testing::PrintToString(run.lines);
+  const nlohmann::json& dress = run.stats["garments"][0];
+  EXPECT_EQ(dress["at_rest"], true);
+  EXPECT_EQ(dress["method"]["integrator"], "IMPLICIT");
+  EXPECT_EQ(dress["method"]["time_step_s"], 0.05);
 }
