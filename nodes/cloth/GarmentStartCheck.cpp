@@ -60,7 +60,7 @@ const MeshFile* patternOf(const ClothEngine& engine) {
   if (!engine.restPoints.getConnectedField(master) || !master) return nullptr;
   SoFieldContainer* container = master->getContainer();
   return container && container->isOfType(MeshFile::getClassTypeId()) ? static_cast<const MeshFile*>(container)
-                                                                       : nullptr;
+                                                                      : nullptr;
 }
 
 // "(MeshFile 'Pattern', metresPerUnit 1, upAxis Y)" or "(restPoints)".
@@ -95,7 +95,9 @@ std::string frameFix(const MeshFile* pattern, const GarmentStart& start) {
   if (start.up) {
     const UpAxis applied = pattern ? parseUpAxis(fieldText(pattern->upAxis)).value_or(UpAxis::Y) : UpAxis::Y;
     const std::string axis = upAxisName(fileUpAxis(*start.up, applied).value_or(UpAxis::Y));
-    fix += std::string(fix.empty() ? "" : pattern ? " " : ", ") +
+    fix += std::string(fix.empty() ? ""
+                       : pattern   ? " "
+                                   : ", ") +
            (pattern ? "upAxis " + axis : "restPoints turned so their file's " + axis + " axis is up");
   }
   return fix;
@@ -112,8 +114,7 @@ std::string frameProblem(const MeshFile* pattern, const GarmentStart& start, boo
                ": in another unit";
   if (start.up)
     problem += std::string(start.tooLarge() ? ", and " : "") +
-               "lies on its side: it stands round the body only with its " + directionName(*start.up) +
-               " direction up";
+               "lies on its side: it stands round the body only with its " + directionName(*start.up) + " direction up";
   return problem + ": try " + frameFix(pattern, start);
 }
 
@@ -132,9 +133,9 @@ std::string garmentStartWarning(const ClothEngine& engine, const TriangleMesh& g
   std::string warning;
   if (start.insideShare >= GarmentStart::kInsideWarningShare) warning = inside;
   if (start.clockwise())
-    warning += std::string(warning.empty() ? "" : "; ") + "the garment's faces " + garmentSource(pattern, false, false) +
-               " wind clockwise seen from outside (" + percent(*start.inwardShare) +
-               " of its area near the body faces into it): try " +
+    warning += std::string(warning.empty() ? "" : "; ") + "the garment's faces " +
+               garmentSource(pattern, false, false) + " wind clockwise seen from outside (" +
+               percent(*start.inwardShare) + " of its area near the body faces into it): try " +
                (pattern ? "reverseFaces TRUE" : "each face's indices in coordIndex reversed");
   return warning;
 }

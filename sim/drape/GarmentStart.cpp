@@ -55,7 +55,8 @@ void nodeAreas(const TriangleMesh& garment, std::vector<double>& area, std::vect
   area.assign(garment.vertices.size(), 0.0);
   normal.assign(garment.vertices.size(), Vec3::Zero());
   for (const Triangle& t : garment.triangles) {
-    const Vec3 n = (garment.vertices[t[1]] - garment.vertices[t[0]]).cross(garment.vertices[t[2]] - garment.vertices[t[0]]);
+    const Vec3 n =
+        (garment.vertices[t[1]] - garment.vertices[t[0]]).cross(garment.vertices[t[2]] - garment.vertices[t[0]]);
     for (int k = 0; k < 3; ++k) area[t[k]] += n.norm() / 6.0, normal[t[k]] += n;
   }
 }
@@ -90,8 +91,8 @@ bool wearsBody(const std::vector<Vec3>& vertices, const Bounds& bodyBox) {
   if (vertices.empty() || bodyBox.empty()) return false;
   const Bounds box = boundsOf(vertices);
   const Vec3 centre = 0.5 * (bodyBox.min + bodyBox.max);
-  const bool round = box.min.x() <= centre.x() && centre.x() <= box.max.x() && box.min.z() <= centre.z() &&
-                     centre.z() <= box.max.z();
+  const bool round =
+      box.min.x() <= centre.x() && centre.x() <= box.max.x() && box.min.z() <= centre.z() && centre.z() <= box.max.z();
   const double overlap = std::min(box.max.y(), bodyBox.max.y()) - std::max(box.min.y(), bodyBox.min.y());
   return round && overlap >= 0.5 * box.size().y();
 }

@@ -58,8 +58,7 @@ struct GarmentStart {
 // The checks of `garment` against a body of bounds `bodyBox` (none: no body) whose
 // surface `body` answers (null: no body). Inside and winding are measured only on a
 // garment of the body's size, standing upright.
-GarmentStart checkGarmentStart(const TriangleMesh& garment, const std::optional<Bounds>& bodyBox,
-                               const Collider* body);
+GarmentStart checkGarmentStart(const TriangleMesh& garment, const std::optional<Bounds>& bodyBox, const Collider* body);
 
 // True when `vertices` stand round the body of `bodyBox` as worn: the body's vertical axis
 // (the vertical line through the box's centre) passes through their horizontal extent, and

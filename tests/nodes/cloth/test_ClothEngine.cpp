@@ -43,7 +43,8 @@ std::string clothScene(const std::string& fields, const std::string& restPoints 
          (coordIndex.empty() ? "= USE Faces.coordIndex" : coordIndex) +
          "\n"
          "      maxTime 0.02\n" +
-         fields +
+         // Written for the paper's explicit path, once the default: named unless a test names its own.
+         (fields.find("integrator") == std::string::npos ? "      integrator HEUN\n" : "") + fields +
          "    } . positions\n"
          "  }\n"
          "  ClothingLayer { coordIndex = USE Faces.coordIndex }\n"
@@ -57,7 +58,10 @@ class ClothEngineTest : public ::testing::Test {
 
 }  // namespace
 
-TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaults) {
+// The fields' defaults are the simulation's, but the method: backward Euler at 1/20 s, where
+// the simulation's defaults are the paper's explicit path, which `integrator HEUN` alone
+// gives back (the unwritten timeStep is then the simulation's).
+TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaultsButTheMethod) {
   ClothEngine* engine = new ClothEngine;
   engine->ref();
   const figment::ClothParameters sim;
@@ -65,7 +69,16 @@ TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaults) {
   EXPECT_EQ(engine->density.getValue(), sim.material.density);
   EXPECT_EQ(engine->youngsModulus.getValue(), sim.material.youngsModulus);
   EXPECT_EQ(engine->poissonRatio.getValue(), sim.material.poissonRatio);
-  EXPECT_EQ(engine->timeStep.getValue(), sim.timeStep);
+  EXPECT_EQ(engine->integrator.getValue(), ClothEngine::IMPLICIT);
+  EXPECT_EQ(engine->timeStep.getValue(), 0.05);
+  EXPECT_EQ(engine->timeStepSeconds(), 0.05);
+  EXPECT_EQ(sim.integrator, figment::Integrator::Heun);
+  for (int explicitOne : {ClothEngine::HEUN, ClothEngine::EULER, ClothEngine::SYMPLECTIC}) {
+    engine->integrator = explicitOne;
+    EXPECT_EQ(engine->timeStepSeconds(), sim.timeStep);
+  }
+  engine->timeStep = 0.05;  // written, it is the step whatever the integrator
+  EXPECT_EQ(engine->timeStepSeconds(), 0.05);
   EXPECT_EQ(engine->maxTime.getValue(), sim.maxTime);
   EXPECT_EQ(engine->restSpeed.getValue(), sim.rest.speedThreshold);
   EXPECT_EQ(engine->restWindow.getValue(), sim.rest.window);
@@ -240,7 +253,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadField{"windFrequency -1", "ClothEngine 'Drape': windFrequency = -1 must be >= 0"},
         BadField{"windPhaseInterval -0.5", "ClothEngine 'Drape': windPhaseInterval = -0.5 must be >= 0"},
         BadField{"windSeed -3", "ClothEngine 'Drape': windSeed = -3 must be >= 0"},
-        BadField{"contactModel PENALTY", "ClothEngine 'Drape': contactModel PENALTY needs integrator IMPLICIT"},
+        BadField{"integrator HEUN contactModel PENALTY",
+                 "ClothEngine 'Drape': contactModel PENALTY needs integrator IMPLICIT"},
         BadField{"", "ClothEngine 'Drape': coordIndex[2] = 100 is not a vertex: restPoints has 100 points", "",
                  "[ 0 1 100 -1 ]"},
         BadField{"", "ClothEngine 'Drape': coordIndex: the face at [0] has 2 corners, fewer than 3", "", "[ 0 1 -1 ]"},

@@ -1,12 +1,12 @@
 // A garment's start checked against its body: a tube round a column, as worn, in another
 // unit, on its side, inside the column, and wound the other way.
-#include "sim/drape/GarmentStart.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
 #include <numbers>
+
+#include "sim/drape/GarmentStart.h"
 
 namespace {
 
@@ -71,7 +71,8 @@ TEST(GarmentStart, ATubeWornRoundTheBodyPasses) {
   const TriangleMesh garment = tube(0.2);
   // Control: the first face's normal points away from the column.
   const auto& t = garment.triangles[0];
-  const Vec3 n = (garment.vertices[t[1]] - garment.vertices[t[0]]).cross(garment.vertices[t[2]] - garment.vertices[t[0]]);
+  const Vec3 n =
+      (garment.vertices[t[1]] - garment.vertices[t[0]]).cross(garment.vertices[t[2]] - garment.vertices[t[0]]);
   ASSERT_GT(n.dot(Vec3(garment.vertices[t[0]].x(), 0, garment.vertices[t[0]].z())), 0.0);
   const GarmentStart start = check(garment);
   EXPECT_FALSE(start.tooLarge());
@@ -118,8 +119,8 @@ TEST(GarmentStart, AGarmentOnItsSideIsFoundWithTheDirectionThatIsUp) {
 TEST(GarmentStart, NodesStartingInsideTheBodyAreCounted) {
   EXPECT_EQ(check(tube(0.1)).insideShare, 1.0);
   // The lower two of five rings inside: 2/5 of the nodes.
-  const GarmentStart start =
-      check(transformed(tube(0.2), [](const Vec3& v) { return v.y() < 0.95 ? Vec3(0.5 * v.x(), v.y(), 0.5 * v.z()) : v; }));
+  const GarmentStart start = check(
+      transformed(tube(0.2), [](const Vec3& v) { return v.y() < 0.95 ? Vec3(0.5 * v.x(), v.y(), 0.5 * v.z()) : v; }));
   EXPECT_DOUBLE_EQ(start.insideShare, 0.4);
 }
 
@@ -136,6 +137,8 @@ TEST(GarmentStart, WearingNeedsTheBodysAxisThroughTheGarmentAndHalfItsHeightBesi
   const Bounds body = Column::box();
   EXPECT_TRUE(figment::wearsBody(tube(0.2).vertices, body));
   // Beside the body (its axis misses the garment), or above its head.
-  EXPECT_FALSE(figment::wearsBody(transformed(tube(0.2), [](const Vec3& v) { return Vec3(v + Vec3(1, 0, 0)); }).vertices, body));
-  EXPECT_FALSE(figment::wearsBody(transformed(tube(0.2), [](const Vec3& v) { return Vec3(v + Vec3(0, 1, 0)); }).vertices, body));
+  EXPECT_FALSE(
+      figment::wearsBody(transformed(tube(0.2), [](const Vec3& v) { return Vec3(v + Vec3(1, 0, 0)); }).vertices, body));
+  EXPECT_FALSE(
+      figment::wearsBody(transformed(tube(0.2), [](const Vec3& v) { return Vec3(v + Vec3(0, 1, 0)); }).vertices, body));
 }

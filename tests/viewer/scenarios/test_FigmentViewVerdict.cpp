@@ -13,8 +13,8 @@
 #include <Eigen/Core>
 #include <cstdlib>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -109,7 +109,7 @@ std::string fallingSquare(const std::string& fields) {
   return "#Inventor V2.1 ascii\nSeparator {\n"
          "  Coordinate3 { point = DEF Drape ClothEngine {\n"
          "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-         "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  " +
+         "    coordIndex [ 0 3 2 1 -1 ]  integrator HEUN  timeStep 0.001  " +
          fields +
          "\n"
          "  } . positions }\n"
@@ -249,7 +249,8 @@ class FigmentViewGarmentStart : public FigmentViewVerdict {
     ASSERT_EQ(run.lines.size(), 1u) << ::testing::PrintToString(run.lines);
     EXPECT_EQ(run.lines[0].rfind("figment-view: " + scenePath() + ": ClothEngine 'DressDrape': the garment (", 0), 0u)
         << run.lines[0];
-    for (const std::string& w : words) EXPECT_NE(run.lines[0].find(w), std::string::npos) << w << " in " << run.lines[0];
+    for (const std::string& w : words)
+      EXPECT_NE(run.lines[0].find(w), std::string::npos) << w << " in " << run.lines[0];
   }
 };
 
@@ -257,7 +258,8 @@ class FigmentViewGarmentStart : public FigmentViewVerdict {
 TEST_F(FigmentViewGarmentStart, AGarmentInCentimetresIsAnErrorNamingTheUnitToTry) {
   if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
   const std::string obj = dressObj([](const Vec3f& p) { return Vec3f(100.0f * p); }, false);
-  expectRefused(dressFrom(obj), {"MeshFile 'DressPattern', metresPerUnit 1)", "in another unit", "try metresPerUnit 0.01"});
+  expectRefused(dressFrom(obj),
+                {"MeshFile 'DressPattern', metresPerUnit 1)", "in another unit", "try metresPerUnit 0.01"});
   // The fix it names drapes the dress, clean.
   const ViewRun fixed = view(dressFrom(obj, "metresPerUnit 0.01"), "--strict");
   EXPECT_EQ(fixed.status, 0) << ::testing::PrintToString(fixed.lines);
