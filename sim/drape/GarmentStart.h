@@ -22,9 +22,9 @@ namespace figment {
 
 struct GarmentStart {
   // A garment more than this many times the body's largest extent is in another unit (the
-  // shipped garments are 0.5 to 0.6 times it, a gown or a cape within 2; in centimetres
-  // they are 50 to 60 times, in inches 20).
-  static constexpr double kMaxSizeRatio = 5.0;
+  // shipped garments are 0.5 to 0.6 times it, a gown or a cape within 2, a sheet over a
+  // small ball a few times; in centimetres they are 50 to 60 times, in inches 20).
+  static constexpr double kMaxSizeRatio = 10.0;
   // m: the body's extent when there is no body.
   static constexpr double kTypicalStature = 1.7;
   // Shares of the nodes starting inside the body: from the first the drape may be wrong
