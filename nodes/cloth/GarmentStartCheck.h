@@ -14,7 +14,7 @@ class ClothEngine;
 namespace figment {
 
 // Throws std::invalid_argument with one line where the drape cannot be right: a garment
-// in another unit ("... is 93.4 m across, 55 times the body's 1.69 m: try metresPerUnit
+// in another unit ("... is 92 m across, 55 times the body's 1.66 m: ...: try metresPerUnit
 // 0.01"), lying on its side ("try upAxis Z"), or more than half inside the body. Returns
 // the warning where it may be wrong ("" when none): some of its nodes start inside the
 // body, or its faces wind clockwise seen from outside. `body` may be null.
