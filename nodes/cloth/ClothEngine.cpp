@@ -3,6 +3,7 @@
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/lists/SoFieldList.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -171,8 +172,11 @@ int ClothEngine::evaluationCount() const {
 }
 
 double ClothEngine::timeStepSeconds() const {
-  if (timeStep.isDefault() && integrator.getValue() != IMPLICIT) return figment::ClothParameters{}.timeStep;
-  return timeStep.getValue();
+  if (!timeStep.isDefault()) return timeStep.getValue();
+  if (integrator.getValue() != IMPLICIT) return figment::ClothParameters{}.timeStep;
+  // A run shorter than the default step is one step (a written timeStep must not exceed maxTime).
+  const double run = maxTime.getValue();
+  return run > 0.0 ? std::min(kImplicitTimeStep, run) : kImplicitTimeStep;
 }
 
 std::string ClothEngine::label() const {

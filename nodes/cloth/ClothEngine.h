@@ -121,9 +121,10 @@ class ClothEngine : public SoEngine {
   SoSFDouble youngsModulus;
   // Poisson's ratio nu, dimensionless. Default 0.3. Must lie in (-1, 0.5).
   SoSFDouble poissonRatio;
-  // Integration time step dt, s. Default 0.05 (IMPLICIT's); left unwritten with an explicit
-  // integrator (HEUN, EULER, SYMPLECTIC) it is the paper's 1.5e-4 instead, stable for ~1.5 cm
-  // sections of 1 MPa cloth (timeStepSeconds()). Must be > 0, and maxTime / timeStep at
+  // Integration time step dt, s. Default 0.05 (IMPLICIT's; maxTime when that is shorter);
+  // left unwritten with an explicit integrator (HEUN, EULER, SYMPLECTIC) it is the paper's
+  // 1.5e-4 instead, stable for ~1.5 cm sections of 1 MPa cloth (timeStepSeconds()). Must be
+  // > 0, at most maxTime, and maxTime / timeStep at
   // most 1e7 steps.
   SoSFDouble timeStep;
   // Upper bound of simulated time, s. Default 5.
@@ -304,8 +305,9 @@ class ClothEngine : public SoEngine {
   const RunStats& lastRun() const;
   // How many times this engine has evaluated (each evaluation is one simulation).
   int evaluationCount() const;
-  // The step the fields give, s: timeStep, or, with an explicit integrator and timeStep
-  // left unwritten, the paper's 1.5e-4 (figment::ClothParameters' default).
+  // The step the fields give, s: timeStep as written; left unwritten, IMPLICIT's 0.05 (or
+  // maxTime, when shorter) and an explicit integrator's 1.5e-4, the paper's
+  // (figment::ClothParameters' default).
   double timeStepSeconds() const;
   // "ClothEngine 'Name'", or "ClothEngine" when it has no name: how messages name it.
   std::string label() const;

@@ -77,7 +77,12 @@ TEST_F(ClothEngineTest, DefaultsAreTheSimulationsDefaultsButTheMethod) {
     engine->integrator = explicitOne;
     EXPECT_EQ(engine->timeStepSeconds(), sim.timeStep);
   }
+  engine->integrator = ClothEngine::IMPLICIT;
+  engine->maxTime = 0.01;  // a run shorter than the default step is one step
+  EXPECT_EQ(engine->timeStepSeconds(), 0.01);
+  engine->maxTime = sim.maxTime;
   engine->timeStep = 0.05;  // written, it is the step whatever the integrator
+  engine->integrator = ClothEngine::HEUN;
   EXPECT_EQ(engine->timeStepSeconds(), 0.05);
   EXPECT_EQ(engine->maxTime.getValue(), sim.maxTime);
   EXPECT_EQ(engine->restSpeed.getValue(), sim.rest.speedThreshold);
