@@ -129,7 +129,6 @@ std::string garmentStartWarning(const ClothEngine& engine, const TriangleMesh& g
   const std::string bodyName = bodyNode ? named(*bodyNode) : "";
   const std::string inside = percent(start.insideShare) + " of the garment's nodes start inside the body (" + bodyName +
                              "): try a garment made for this body, or move it out of the body";
-  if (start.insideShare >= GarmentStart::kInsideErrorShare) throw std::invalid_argument(inside);
   std::string warning;
   if (start.insideShare >= GarmentStart::kInsideWarningShare) warning = inside;
   if (start.clockwise())

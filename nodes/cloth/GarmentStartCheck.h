@@ -15,7 +15,7 @@ namespace figment {
 
 // Throws std::invalid_argument with one line where the drape cannot be right: a garment
 // in another unit ("... is 92 m across, 55 times the body's 1.66 m: ...: try metresPerUnit
-// 0.01"), lying on its side ("try upAxis Z"), or more than half inside the body. Returns
+// 0.01") or lying on its side ("try upAxis Z"). Returns
 // the warning where it may be wrong ("" when none): some of its nodes start inside the
 // body, or its faces wind clockwise seen from outside. `body` may be null.
 std::string garmentStartWarning(const ClothEngine& engine, const TriangleMesh& garment, const Collider* body);

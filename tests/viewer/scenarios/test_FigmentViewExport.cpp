@@ -29,7 +29,7 @@ constexpr const char* kCloth =
     "  Material { diffuseColor 0.1 0.3 0.8 }\n"
     "  Coordinate3 { point = DEF Drape ClothEngine {\n"
     "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-    "    coordIndex [ 0 3 2 1 -1 ]  maxTime 0.01  gravity 0 0 0  restWindow 0.005 } . positions }\n"
+    "    coordIndex [ 0 3 2 1 -1 ]  integrator HEUN  maxTime 0.01  gravity 0 0 0  restWindow 0.005 } . positions }\n"
     "  DEF Layer ClothingLayer { coordIndex [ 0 3 2 1 -1 ] }\n"
     "}\n";
 
