@@ -95,10 +95,8 @@ std::string frameFix(const MeshFile* pattern, const GarmentStart& start) {
   if (start.up) {
     const UpAxis applied = pattern ? parseUpAxis(fieldText(pattern->upAxis)).value_or(UpAxis::Y) : UpAxis::Y;
     const std::string axis = upAxisName(fileUpAxis(*start.up, applied).value_or(UpAxis::Y));
-    fix += std::string(fix.empty() ? ""
-                       : pattern   ? " "
-                                   : ", ") +
-           (pattern ? "upAxis " + axis : "restPoints turned so their file's " + axis + " axis is up");
+    const std::string between = fix.empty() ? "" : pattern ? " " : ", ";  // fields after fields; words after words
+    fix += between + (pattern ? "upAxis " + axis : "restPoints turned so their file's " + axis + " axis is up");
   }
   return fix;
 }
