@@ -11,7 +11,9 @@
 //  - inside: a node that starts inside the body is pushed out at the first step to the
 //    nearest surface, which for a waistband inside the hips may be any side;
 //  - winding: faces clockwise seen from outside (their normals into the body) drape the
-//    same, but renderers that take a face's front from its winding draw the inside out.
+//    same, and the hybrid renderer's ClothingLayer judges the outside from the shape, but
+//    what takes a face's front from its winding does not: the export's normals (--export,
+//    for Blender or a web viewer) point into the body, a plain face set lights the inside.
 
 #include <optional>
 

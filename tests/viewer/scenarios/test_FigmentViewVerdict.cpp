@@ -284,8 +284,9 @@ TEST_F(FigmentViewGarmentStart, AGarmentInCentimetresOnItsSideNamesBothFixes) {
   expectRefused(dressFrom(obj), {"in another unit, and lies on its side", "try metresPerUnit 0.01 upAxis Z"});
 }
 
-// Faces wound clockwise seen from outside drape the same, but a renderer that takes a face's
-// front from its winding draws the dress inside out: a warning, which --strict refuses.
+// Faces wound clockwise seen from outside drape the same, and the hybrid renderer judges the
+// outside from the shape, but the export's normals point into the body: a warning, which
+// --strict refuses.
 TEST_F(FigmentViewGarmentStart, FacesWoundClockwiseAreSaidAndStrictRefusesThem) {
   if (!haveTheDefaultBody()) GTEST_SKIP() << "the default body (human.zae) is not installed";
   const std::string obj = dressObj(same, true);
