@@ -314,7 +314,9 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   }
   recordMethod(parameters);
   // Before any step: a garment in another unit or on its side is an error, one partly
-  // inside the body or wound clockwise a warning in the verdict's line.
+  // inside the body or wound clockwise a warning in the verdict's line. A body that moves
+  // into its pose is checked as the drape starts on it: at its first keyframe.
+  if (auto moving = std::dynamic_pointer_cast<const figment::MovingMeshCollider>(collider)) moving->advanceTo(0.0);
   stats.garmentWarning = figment::garmentStartWarning(engine, garment, collider.get());
   if (!script.empty()) {
     const std::string path = figment::resolveSceneFile(script, sceneDirectories);
