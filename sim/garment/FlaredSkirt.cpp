@@ -8,6 +8,7 @@
 
 #include "sim/body/BodySlices.h"
 #include "sim/core/ParameterChecks.h"
+#include "sim/garment/RingTube.h"
 
 namespace figment {
 
@@ -61,14 +62,7 @@ void addCone(const TriangleMesh& body, const TorsoSlice& waist, const FlaredSkir
       mesh.vertices.emplace_back(p.x(), height, p.y());
     }
   }
-  const int c = options.columns;
-  for (int row = 0; row < options.rows; ++row)
-    for (int column = 0; column < c; ++column) {
-      const int a = row * c + column, b = row * c + (column + 1) % c;
-      const int below = a + c, belowNext = b + c;
-      mesh.triangles.push_back({a, b, below});
-      mesh.triangles.push_back({b, belowNext, below});
-    }
+  addRingTubeTriangles(mesh, options.rows + 1, options.columns);
 }
 
 }  // namespace

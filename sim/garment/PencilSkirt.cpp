@@ -22,6 +22,7 @@
 #include "sim/body/BodyMeasurements.h"
 #include "sim/body/BodySlices.h"
 #include "sim/core/ParameterChecks.h"
+#include "sim/garment/RingTube.h"
 
 namespace figment {
 
@@ -75,14 +76,7 @@ void addTube(const std::vector<TorsoSlice>& sections, const PencilSkirtOptions& 
       mesh.vertices.emplace_back(p.x(), height, p.y());
     }
   }
-  for (int row = 0; row < options.rows; ++row)
-    for (int column = 0; column < options.columns; ++column) {
-      const int next = (column + 1) % options.columns;
-      const int a = row * options.columns + column, b = row * options.columns + next;
-      const int c = a + options.columns, d = b + options.columns;
-      mesh.triangles.push_back({a, b, c});
-      mesh.triangles.push_back({b, d, c});
-    }
+  addRingTubeTriangles(mesh, options.rows + 1, options.columns);
 }
 
 }  // namespace
