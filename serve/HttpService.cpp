@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "io/SizeChartFile.h"
 #include "serve/Catalogue.h"
 #include "serve/Digest.h"
+#include "serve/FitRequest.h"
 #include "serve/RedisStore.h"
 #include "serve/RenderRequest.h"
 #include "serve/WebAssets.h"
@@ -90,6 +92,11 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
     redis_ = std::make_shared<RedisConnection>(options_.redisUrl, redis);
     sharedImages_ = std::make_unique<SharedImages>(std::make_shared<RedisStore>(redis_, options_.redisTtl));
   }
+  try {
+    chart_ = std::make_unique<SizeChart>(readSizeChart(FitRequest::chartPath(options_.scenesFolder)));
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "figment-serve: size advice off: %s\n", error.what());
+  }
   pool_ = std::make_unique<WorkerPool>(workerPoolOptions(options_, program));
   server_->new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
   server_->set_keep_alive_max_count(1000);
@@ -101,7 +108,7 @@ HttpService::~HttpService() = default;
 
 const std::vector<std::string>& HttpService::routes() {
   static const std::vector<std::string> paths = {
-      "/", "/app.js", "/style.css", "/healthz", "/openapi.json", "/api/catalogue", "/api/render"};
+      "/", "/app.js", "/style.css", "/healthz", "/openapi.json", "/api/catalogue", "/api/render", "/api/fit"};
   return paths;
 }
 
@@ -113,14 +120,17 @@ void HttpService::addRoutes() {
       response.set_content(std::string(asset.content), type.rfind("text/", 0) == 0 ? type + "; charset=utf-8" : type);
     });
   server_->Get("/healthz", [this](const httplib::Request&, httplib::Response& response) { health(response); });
-  server_->Get("/api/catalogue", [](const httplib::Request&, httplib::Response& response) {
+  server_->Get("/api/catalogue", [this](const httplib::Request&, httplib::Response& response) {
     nlohmann::json catalogue = Catalogue::toJson();
     catalogue["limits"] = limitsJson();
+    if (chart_) catalogue["fit"] = FitRequest::catalogueJson(*chart_);
     response.set_header("Cache-Control", "public, max-age=300");
     response.set_content(catalogue.dump(), kJson);
   });
   server_->Get("/api/render",
                [this](const httplib::Request& request, httplib::Response& response) { render(request, response); });
+  server_->Get("/api/fit",
+               [this](const httplib::Request& request, httplib::Response& response) { fit(request, response); });
   // Every refusal as JSON, httplib's own (404, 414, ...) included; a handler's JSON stays.
   server_->set_error_handler([](const httplib::Request&, httplib::Response& response) {
     if (response.body.empty()) sendJson(response, response.status, {{"error", errorText(response.status)}});
@@ -144,46 +154,84 @@ void HttpService::health(httplib::Response& response) const {
                                         : "down"}});
 }
 
+namespace {
+
+void sendRefusal(httplib::Response& response, const ParameterError& error) {
+  sendJson(
+      response, 400,
+      {{"error", error.error}, {"parameter", error.parameter}, {"value", error.value}, {"accepted", error.accepted}});
+}
+
+// The quoted strong ETag of `canonical` under build `build`.
+std::string tagOf(const std::string& canonical, const std::string& build) {
+  return '"' + Digest().add(canonical).add(build).hex() + '"';
+}
+
+// 304 when the client holds `tag` already.
+bool notModified(const httplib::Request& request, httplib::Response& response, const std::string& tag) {
+  if (!matches(request.get_header_value("If-None-Match"), tag)) return false;
+  response.status = 304;  // the tag names the answer: the client has it
+  response.set_header("ETag", tag);
+  response.set_header("Cache-Control", "public, max-age=86400");
+  return true;
+}
+
+void answer(httplib::Response& response, const std::string& tag, const std::string& bytes, const char* type, bool hit) {
+  response.set_header("ETag", tag);
+  response.set_header("Cache-Control", "public, max-age=86400");
+  response.set_header("X-Figment-Cache", hit ? "hit" : "miss");
+  response.set_content(bytes, type);
+}
+
+}  // namespace
+
+bool HttpService::made(const std::string& canonical, const std::string& tag, const httplib::Request& request,
+                       httplib::Response& response, std::shared_ptr<const RenderResult>& result) {
+  if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
+    response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
+    sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
+    return false;
+  }
+  result = pool_->render(canonical);
+  if (!result) {
+    response.set_header("Retry-After", "2");
+    sendJson(response, 503, {{"error", "too many renders waiting; try again"}});
+    return false;
+  }
+  if (result->status != 200) {
+    sendJson(response, result->status, nlohmann::json::parse(result->body, nullptr, false));
+    return false;
+  }
+  images_.store(tag, std::make_shared<const std::string>(result->body));
+  if (sharedImages_) sharedImages_->store(tag.substr(1, tag.size() - 2), result->body);
+  return true;
+}
+
 void HttpService::render(const httplib::Request& request, httplib::Response& response) {
   const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
   auto parsed = RenderRequest::parse(parameters);
-  if (auto* error = std::get_if<ParameterError>(&parsed))
-    return sendJson(response, 400,
-                    {{"error", error->error},
-                     {"parameter", error->parameter},
-                     {"value", error->value},
-                     {"accepted", error->accepted}});
+  if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
   const std::string canonical = std::get<RenderRequest>(parsed).canonical();
   const char* type = std::get<RenderRequest>(parsed).format == "glb" ? "model/gltf-binary" : "image/png";
-  std::string tag = Digest().add(canonical).add(build_).hex();
-  tag = '"' + tag + '"';  // a strong ETag: quoted, no W/
-  const auto answer = [&](const std::string& bytes, bool hit) {
-    response.set_header("ETag", tag);
-    response.set_header("Cache-Control", "public, max-age=86400");
-    response.set_header("X-Figment-Cache", hit ? "hit" : "miss");
-    response.set_content(bytes, type);
-  };
-  if (matches(request.get_header_value("If-None-Match"), tag)) {
-    response.status = 304;  // the tag names the picture: the client has it
-    response.set_header("ETag", tag);
-    response.set_header("Cache-Control", "public, max-age=86400");
-    return;
-  }
-  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(*kept, true);
-  if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
-    response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
-    return sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
-  }
-  std::shared_ptr<const RenderResult> result = pool_->render(canonical);
-  if (!result) {
-    response.set_header("Retry-After", "2");
-    return sendJson(response, 503, {{"error", "too many renders waiting; try again"}});
-  }
-  if (result->status != 200)
-    return sendJson(response, result->status, nlohmann::json::parse(result->body, nullptr, false));
-  images_.store(tag, std::make_shared<const std::string>(result->body));
-  if (sharedImages_) sharedImages_->store(tag.substr(1, tag.size() - 2), result->body);
-  answer(result->body, result->drapeFromCache);
+  const std::string tag = tagOf(canonical, build_);
+  if (notModified(request, response, tag)) return;
+  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, type, true);
+  std::shared_ptr<const RenderResult> result;
+  if (made(canonical, tag, request, response, result))
+    answer(response, tag, result->body, type, result->drapeFromCache);
+}
+
+void HttpService::fit(const httplib::Request& request, httplib::Response& response) {
+  if (!chart_) return sendJson(response, 503, {{"error", "no size chart: size advice is off"}});
+  const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
+  auto parsed = FitRequest::parse(parameters, *chart_);
+  if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
+  const std::string canonical = std::get<FitRequest>(parsed).canonical();
+  const std::string tag = tagOf(canonical, build_);
+  if (notModified(request, response, tag)) return;
+  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, kJson, true);
+  std::shared_ptr<const RenderResult> result;
+  if (made(canonical, tag, request, response, result)) answer(response, tag, result->body, kJson, false);
 }
 
 std::shared_ptr<const std::string> HttpService::keptImage(const std::string& tag) {

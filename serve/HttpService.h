@@ -14,6 +14,7 @@
 #include "serve/ServeOptions.h"
 #include "serve/SharedImages.h"
 #include "serve/WorkerPool.h"
+#include "sim/garment/SizeChart.h"
 
 namespace httplib {
 class Server;
@@ -41,12 +42,18 @@ class HttpService {
  private:
   void addRoutes();
   void render(const httplib::Request& request, httplib::Response& response);
+  void fit(const httplib::Request& request, httplib::Response& response);
+  // A worker's answer for `canonical` (a render or a fit), kept by its ETag `tag` in memory
+  // and Redis; false when the response was made already (a refusal or an error).
+  bool made(const std::string& canonical, const std::string& tag, const httplib::Request& request,
+            httplib::Response& response, std::shared_ptr<const RenderResult>& result);
   void health(httplib::Response& response) const;
   // The image for the quoted ETag `tag` from memory, else from Redis (then kept in memory).
   std::shared_ptr<const std::string> keptImage(const std::string& tag);
 
   ServeOptions options_;
-  std::string build_;  // Digest::buildDigest()
+  std::string build_;                 // Digest::buildDigest()
+  std::unique_ptr<SizeChart> chart_;  // null when the scenes' size chart did not read: no fit
   std::unique_ptr<WorkerPool> pool_;
   ImageCache images_;
   std::shared_ptr<RedisConnection> redis_;      // null without --redis

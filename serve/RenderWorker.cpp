@@ -6,6 +6,8 @@
 
 #include "io/DrapeCache.h"
 #include "io/PngFile.h"
+#include "io/SizeChartFile.h"
+#include "serve/FitRequest.h"
 #include "serve/FrameChannel.h"
 #include "serve/OutfitScene.h"
 #include "serve/RedisStore.h"
@@ -27,6 +29,11 @@ RenderWorker::Answer failure(int status, const std::string& error) {
 RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder, const std::string& redisUrl,
                            long redisTtl) {
   startError_ = wardrobe_.read(scenesFolder);
+  try {
+    fit_ = std::make_unique<FitWorker>(readSizeChart(FitRequest::chartPath(scenesFolder)));
+  } catch (const std::exception&) {
+    // The server read the same file and refuses fit requests when it cannot: none come.
+  }
   if (cacheFolder.empty()) return;
   std::shared_ptr<RedisStore> shared;
   if (!redisUrl.empty()) {
@@ -53,7 +60,16 @@ void RenderWorker::serve(const FrameChannel& channel) {
   }
 }
 
+RenderWorker::Answer RenderWorker::advise(const std::string& canonical) {
+  if (!fit_) return failure(503, "no size chart: size advice is off");
+  auto parsed = FitRequest::parseCanonical(canonical, fit_->chart());
+  if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
+  FitWorker::Answer answer = fit_->advise(std::get<FitRequest>(parsed));
+  return {answer.status, std::move(answer.body), false};
+}
+
 RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
+  if (FitRequest::isFit(canonical)) return advise(canonical);
   auto parsed = RenderRequest::parseCanonical(canonical);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
   const RenderRequest& request = std::get<RenderRequest>(parsed);

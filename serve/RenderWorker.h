@@ -3,11 +3,13 @@
 // scene (OutfitScene), drapes it with the worker's own SceneSession and DrapeContext
 // (the drape cache on disk, shared with the other workers), renders the view and sends
 // back a JSON header and the PNG. The scene of the last request is kept: another view
-// or size of it renders without building or draping again.
+// or size of it renders without building or draping again. A fit request (serve/FitRequest.h)
+// goes to the worker's FitWorker instead and answers JSON.
 
 #include <memory>
 #include <string>
 
+#include "serve/FitWorker.h"
 #include "serve/Wardrobe.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
@@ -38,6 +40,7 @@ class RenderWorker {
   Answer render(const std::string& canonical);
 
  private:
+  Answer advise(const std::string& canonical);
   // The request's image (or GLB) of the scene the session holds, draped.
   Answer drawView(const RenderRequest& request);
 
@@ -47,6 +50,7 @@ class RenderWorker {
   std::string sceneKey_;  // the request whose scene the session holds; "" for none
   bool sceneFromCache_ = false;
   std::unique_ptr<session::SceneRenderer> renderer_;
+  std::unique_ptr<FitWorker> fit_;  // null when the size chart did not read
 };
 
 }  // namespace figment::serve

@@ -16,6 +16,7 @@
 #include "io/FitMapScene.h"
 #include "io/MakeHumanFiles.h"
 #include "io/MeshExport.h"
+#include "io/RecommendationJson.h"
 #include "io/SizeChartFile.h"
 #include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
@@ -33,37 +34,6 @@ struct Request {
   std::string fitMap, fitMapDir;  // kind; folder for body.obj and <size>.iv
   std::string size;               // set: try this size on only, no recommendation
 };
-
-double inUnit(double value, double scale) {
-  return std::isfinite(value) ? value * scale : -1.0;
-}
-
-void printJson(const figment::Recommendation& r) {
-  if (r.recommended.empty())
-    std::printf("{\"sizes\": {");
-  else
-    std::printf("{\"recommended\": \"%s\", \"all_tight\": %s, \"sizes\": {", r.recommended.c_str(),
-                r.allTight ? "true" : "false");
-  for (size_t s = 0; s < r.sizes.size(); ++s) {
-    const figment::SizeFit& fit = r.sizes[s];
-    std::printf("%s\"%s\": {\"text\": \"%s\", \"steps\": %d, \"warm\": %s, \"at_rest\": %s, \"regions\": {",
-                s ? ", " : "", fit.size.c_str(), fit.text.c_str(), fit.drape.run.iterations,
-                fit.drape.warm ? "true" : "false", fit.drape.run.atRest ? "true" : "false");
-    bool first = true;
-    for (size_t i = 0; i < fit.regions.size(); ++i) {
-      const figment::RegionFit& g = fit.regions[i];
-      if (!g.covered()) continue;
-      std::printf(
-          "%s\"%s\": {\"stretch_pct\": %.2f, \"max_stretch_pct\": %.2f, \"ease_mm\": %.1f, "
-          "\"girth_ease_cm\": %.1f, \"pressure_kpa\": %.3f, \"verdict\": \"%s\"}",
-          first ? "" : ", ", g.name.c_str(), 100 * g.meanStrain, 100 * g.maxStrain, 1000 * g.ease,
-          inUnit(g.girthEase, 100), g.pressure / 1000, figment::verdictName(fit.verdicts[i]));
-      first = false;
-    }
-    std::printf("}}");
-  }
-  std::printf("}}\n");
-}
 
 void printText(const figment::Recommendation& r, const std::string& style) {
   if (!r.recommended.empty())
@@ -122,7 +92,10 @@ int recommend(const Request& request, figment::HumanModel& model, const figment:
     r.sizes.push_back(fitter.tryOn(body, sex, size));
   }
   if (!request.fitMap.empty()) writeFitMaps(request, fitter, chart, sex, body, r);
-  request.json ? printJson(r) : printText(r, request.style);
+  if (request.json)
+    std::printf("%s\n", figment::recommendationJson(r).c_str());
+  else
+    printText(r, request.style);
   return 0;
 }
 

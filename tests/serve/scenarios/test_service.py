@@ -48,8 +48,12 @@ class Endpoints(unittest.TestCase):
         status, document = self.server.json("/openapi.json")
         self.assertEqual(status, 200)
         self.assertTrue(document["openapi"].startswith("3."))
+        queries = {"/api/render": SMALL,  # the women's M chart body's size advice
+                   "/api/fit": "sex=female&style=pencil&stature=1.68&bust=0.88&waist=0.72&hips=0.96"}
         for path in document["paths"]:
-            code, headers, _ = self.server.request(path + ("?" + SMALL if path == "/api/render" else ""))
+            code, headers, body = self.server.request(path + ("?" + queries[path] if path in queries else ""))
+            if path == "/api/fit" and code == 500 and b"MakeHuman" in body:
+                continue  # no MakeHuman data here (scripts/setup.sh): tests/serve/scenarios/test_fit.py skips
             self.assertEqual(code, 200, path)
 
     def test_catalogue(self):

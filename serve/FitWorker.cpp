@@ -1,0 +1,56 @@
+#include "serve/FitWorker.h"
+
+#include <nlohmann/json.hpp>
+
+#include "io/MakeHumanFiles.h"
+#include "io/RecommendationJson.h"
+#include "io/TargetLibrary.h"
+#include "serve/FitRequest.h"
+#include "sim/body/BodyFit.h"
+#include "sim/fit/SizeFitter.h"
+
+namespace figment::serve {
+
+namespace {
+
+FitWorker::Answer failure(int status, const std::string& error) {
+  return {status, nlohmann::json{{"error", error}}.dump()};
+}
+
+}  // namespace
+
+FitWorker::FitWorker(SizeChart chart) : chart_(std::move(chart)) {}
+
+FitWorker::~FitWorker() = default;
+
+std::string FitWorker::loadModel() {
+  if (model_) return "";
+  const std::string dir = findMakeHumanData();
+  if (dir.empty()) return "MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR";
+  library_ = std::make_unique<TargetLibrary>(dir);
+  model_ = std::make_unique<HumanModel>(loadHumanModel(dir, *library_));
+  return "";
+}
+
+FitWorker::Answer FitWorker::advise(const FitRequest& request) {
+  if (const std::string error = loadModel(); !error.empty()) return failure(500, error);
+  std::unique_ptr<SizeFitter>& fitter = fitters_[request.style];
+  if (!fitter) fitter = std::make_unique<SizeFitter>(*model_, chart_, *findStyle(request.style));
+  HumanParameters start;
+  start.macro.gender = request.sex == Sex::Male ? 1.0 : 0.0;
+  // In figment-size's order (its keys sorted): the fit's least squares see the goals in
+  // order, and the same body must get the same answer from the program and the service.
+  const std::vector<MeasurementGoal> goals = {{"bust_girth", request.body.bust},
+                                              {"hip_girth", request.body.hips},
+                                              {"stature", request.body.stature},
+                                              {"waist_girth", request.body.waist}};
+  TriangleMesh body;
+  try {
+    body = fitBody(*model_, start, goals).body;
+  } catch (const UnreachableMeasurement& error) {
+    return failure(422, std::string("no body of these measurements can be made: ") + error.what());
+  }
+  return {200, recommendationJson(fitter->recommend(body, request.sex))};
+}
+
+}  // namespace figment::serve

@@ -1,0 +1,49 @@
+#pragma once
+// A worker's size advice (GET /api/fit): figment-size's recommendation made in the worker
+// process, with what it needs kept between requests. MakeHuman's model is read on the first
+// fit request (a render-only worker never pays for it), and one SizeFitter per style keeps
+// its graded sizes (each size's chart body, garment and fit-model drape, about 1 s each),
+// so a later request for another body in that style only drapes its candidates.
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "sim/garment/SizeChart.h"
+
+namespace figment {
+class HumanModel;
+class SizeFitter;
+class TargetLibrary;
+}  // namespace figment
+
+namespace figment::serve {
+
+class FitRequest;
+
+class FitWorker {
+ public:
+  // `chart` is the size chart the server checked the request against.
+  explicit FitWorker(SizeChart chart);
+  ~FitWorker();
+  FitWorker(const FitWorker&) = delete;
+  FitWorker& operator=(const FitWorker&) = delete;
+
+  struct Answer {
+    int status = 500;  // 200; 422 for a body MakeHuman cannot make; 500
+    std::string body;  // the recommendation's JSON (io/RecommendationJson.h), or {"error": ...}
+  };
+  Answer advise(const FitRequest& request);
+  const SizeChart& chart() const { return chart_; }
+
+ private:
+  // "" once the model is read, else why not.
+  std::string loadModel();
+
+  SizeChart chart_;
+  std::unique_ptr<TargetLibrary> library_;
+  std::unique_ptr<HumanModel> model_;
+  std::map<std::string, std::unique_ptr<SizeFitter>> fitters_;  // by style
+};
+
+}  // namespace figment::serve

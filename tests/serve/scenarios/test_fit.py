@@ -1,0 +1,109 @@
+#!/usr/bin/env python3
+"""GET /api/fit end to end on a server this test starts on a loopback port: a chart body's
+advice recommends its own size, with every candidate's regions, verdicts and shopper's text;
+the answer is kept (a repeat is a cache hit, If-None-Match is 304); every class of bad
+parameter is 400 naming it and its accepted range; the catalogue lists the chart's sizes
+per style. Skipped where MakeHuman's data is not found (scripts/setup.sh). No timings asserted.
+
+    test_fit.py FIGMENT-SERVE [unittest options]
+"""
+import json
+import sys
+import unittest
+import urllib.parse
+
+from ServeSupport import Server
+
+EXECUTABLE = None
+
+# The women's M and men's L chart bodies (scenes/sizes/chart.txt).
+WOMANS_M = dict(sex="female", style="pencil", stature="1.68", bust="0.88", waist="0.72", hips="0.96")
+MANS_L = dict(sex="male", style="tshirt", stature="1.77", bust="1.00", waist="0.88", hips="1.04")
+
+
+def fit_path(**parameters):
+    return "/api/fit?" + urllib.parse.urlencode(parameters)
+
+
+class Fit(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.server = Server(EXECUTABLE, "--workers", "1")
+
+    @classmethod
+    def tearDownClass(cls):
+        status = cls.server.stop()
+        if status != 0:
+            raise AssertionError("figment-serve exited with %d" % status)
+
+    def advice(self, body):
+        status, headers, answer = self.server.request(fit_path(**body))
+        if status == 500 and b"MakeHuman" in answer:
+            self.skipTest("MakeHuman's data not found (scripts/setup.sh fetches it)")
+        self.assertEqual(status, 200, answer)
+        self.assertTrue(headers["content-type"].startswith("application/json"))
+        return headers, json.loads(answer)
+
+    def test_a_chart_body_gets_its_own_size(self):
+        for body, own, sizes in ((WOMANS_M, "M", ["S", "M", "L"]), (MANS_L, "L", ["M", "L", "XL"])):
+            _, advice = self.advice(body)
+            self.assertEqual(advice["recommended"], own, body)
+            self.assertFalse(advice["all_tight"])
+            self.assertEqual(list(advice["sizes"]), sizes)
+            for name, size in advice["sizes"].items():
+                self.assertTrue(size["text"], name)
+                self.assertTrue(size["regions"], name)
+                for region in size["regions"].values():
+                    self.assertIn(region["verdict"], ("tight", "fits", "loose"))
+            own_size = advice["sizes"][own]
+            self.assertNotIn("tight", [r["verdict"] for r in own_size["regions"].values()])
+
+    def test_a_repeat_is_kept_and_if_none_match_is_304(self):
+        headers, first = self.advice(WOMANS_M)
+        tag = headers["etag"]
+        self.assertTrue(tag.startswith('"') and tag.endswith('"'))
+        status, again, body = self.server.request(fit_path(**WOMANS_M))
+        self.assertEqual(status, 200)
+        self.assertEqual(again["x-figment-cache"], "hit")
+        self.assertEqual(again["etag"], tag)
+        self.assertEqual(json.loads(body), first)
+        status, headers, body = self.server.request(fit_path(**WOMANS_M), {"If-None-Match": tag})
+        self.assertEqual(status, 304)
+        self.assertEqual(body, b"")
+        # The same body written otherwise (another order, trailing zeros) is the same answer.
+        same = dict(reversed(list(WOMANS_M.items())), bust="0.8800")
+        self.assertEqual(self.server.request(fit_path(**same), {"If-None-Match": tag})[0], 304)
+
+    def test_bad_parameters_are_400_naming_them(self):
+        cases = [("style", "cape", "pencil"), ("sex", "other", "female, male"),
+                 ("bust", "0.5", "0.68 to 1.04 (metres)"), ("waist", "abc", "0.52 to 0.88 (metres)"),
+                 ("stature", "3", "1.45 to 1.95 (metres)")]
+        for name, value, accepted in cases:
+            status, error = self.server.json(fit_path(**dict(WOMANS_M, **{name: value})))
+            self.assertEqual(status, 400, name)
+            self.assertEqual(error["parameter"], name)
+            self.assertEqual(error["value"], value)
+            self.assertIn(accepted, error["accepted"])
+        missing = dict(WOMANS_M)
+        del missing["hips"]
+        status, error = self.server.json(fit_path(**missing))
+        self.assertEqual((status, error["parameter"], error["error"]), (400, "hips", "missing"))
+        status, error = self.server.json(fit_path(**dict(WOMANS_M, colour="red")))
+        self.assertEqual((status, error["parameter"]), (400, "colour"))
+
+    def test_the_catalogue_lists_the_charts_sizes_per_style(self):
+        status, catalogue = self.server.json("/api/catalogue")
+        self.assertEqual(status, 200)
+        styles = {style["name"]: style for style in catalogue["fit"]["styles"]}
+        self.assertIn("pencil", styles)
+        for style in styles.values():
+            self.assertEqual([s["name"] for s in style["sizes"]["female"]], ["XXS", "XS", "S", "M", "L", "XL"])
+            self.assertEqual([s["name"] for s in style["sizes"]["male"]], ["XS", "S", "M", "L", "XL", "XXL"])
+        womens = catalogue["fit"]["measurements"]["female"]
+        self.assertLess(womens["bust"]["min"], 0.76)
+        self.assertGreater(womens["bust"]["max"], 0.96)
+
+
+if __name__ == "__main__":
+    EXECUTABLE = sys.argv.pop(1)
+    unittest.main()
