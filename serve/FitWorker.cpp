@@ -1,6 +1,7 @@
 #include "serve/FitWorker.h"
 
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "io/MakeHumanFiles.h"
 #include "io/RecommendationJson.h"
@@ -34,8 +35,6 @@ std::string FitWorker::loadModel() {
 
 FitWorker::Answer FitWorker::advise(const FitRequest& request) {
   if (const std::string error = loadModel(); !error.empty()) return failure(500, error);
-  std::unique_ptr<SizeFitter>& fitter = fitters_[request.style];
-  if (!fitter) fitter = std::make_unique<SizeFitter>(*model_, chart_, *findStyle(request.style));
   HumanParameters start;
   start.macro.gender = request.sex == Sex::Male ? 1.0 : 0.0;
   // In figment-size's order (its keys sorted): the fit's least squares see the goals in
@@ -50,7 +49,20 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
   } catch (const UnreachableMeasurement& error) {
     return failure(422, std::string("no body of these measurements can be made: ") + error.what());
   }
-  return {200, recommendationJson(fitter->recommend(body, request.sex))};
+  return {200, recommendationJson(fitter(request.style).recommend(body, request.sex))};
+}
+
+SizeFitter& FitWorker::fitter(const std::string& style) {
+  std::unique_ptr<SizeFitter>& fitter = fitters_[style];
+  if (!fitter) fitter = std::make_unique<SizeFitter>(*model_, chart_, *findStyle(style));
+  return *fitter;
+}
+
+const TriangleMesh& FitWorker::garment(const std::string& style, Sex sex, const std::string& size) {
+  if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
+  const int index = chart_.find(sex, size);
+  if (!findStyle(style) || index < 0) throw std::invalid_argument("no graded garment " + style + ":" + size);
+  return fitter(style).graded(sex, index).garment;
 }
 
 }  // namespace figment::serve

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "sim/core/TriangleMesh.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment {
@@ -34,11 +35,16 @@ class FitWorker {
     std::string body;  // the recommendation's JSON (io/RecommendationJson.h), or {"error": ...}
   };
   Answer advise(const FitRequest& request);
+  // `style`'s garment graded to the chart's `size` of `sex` (a render's measured outfit):
+  // the same garment the advice drapes. Throws when MakeHuman's data is missing or the
+  // style or size is unknown.
+  const TriangleMesh& garment(const std::string& style, Sex sex, const std::string& size);
   const SizeChart& chart() const { return chart_; }
 
  private:
   // "" once the model is read, else why not.
   std::string loadModel();
+  SizeFitter& fitter(const std::string& style);
 
   SizeChart chart_;
   std::unique_ptr<TargetLibrary> library_;

@@ -209,7 +209,7 @@ bool HttpService::made(const std::string& canonical, const std::string& tag, con
 
 void HttpService::render(const httplib::Request& request, httplib::Response& response) {
   const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
-  auto parsed = RenderRequest::parse(parameters);
+  auto parsed = RenderRequest::parse(parameters, chart_.get());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
   const std::string canonical = std::get<RenderRequest>(parsed).canonical();
   const char* type = std::get<RenderRequest>(parsed).format == "glb" ? "model/gltf-binary" : "image/png";

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "nodes/body/CollisionGroup.h"
+#include "nodes/body/HumanBody.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MannequinSkin.h"
 #include "nodes/body/MeshFile.h"
@@ -18,6 +19,8 @@
 #include "nodes/cloth/GarmentSurface.h"
 #include "nodes/render/ClothingLayer.h"
 #include "serve/Wardrobe.h"
+#include "sim/fit/SizeFitter.h"
+#include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
 
@@ -114,25 +117,25 @@ ClothEngine* engineFor(const GarmentStyle& style, bool layered, SoNode* body) {
 
 struct Draped {
   ClothEngine* engine;
-  const MeshFile* pattern;
+  const SoMFInt32* coordIndex;  // the garment's triangles
 };
 
 // What the next garment out collides with: the mannequin and every garment beneath.
-SoNode* bodyUnder(Mannequin* model, const std::vector<Draped>& beneath) {
+SoNode* bodyUnder(SoNode* model, const std::vector<Draped>& beneath) {
   if (beneath.empty()) return model;
   auto* group = new CollisionGroup;
   group->body = model;
   for (size_t i = 0; i < beneath.size(); ++i) {
     auto* surface = new GarmentSurface;
     surface->point.connectFrom(&beneath[i].engine->positions);
-    surface->coordIndex.connectFrom(const_cast<SoMFInt32*>(&beneath[i].pattern->coordIndex));
+    surface->coordIndex.connectFrom(const_cast<SoMFInt32*>(beneath[i].coordIndex));
     surface->thickness = 0.002f;
     group->layers.set1Value(int(i), surface);
   }
   return group;
 }
 
-SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const MeshFile* pattern) {
+SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt32* coordIndex) {
   auto* separator = new SoSeparator;
   separator->addChild(material(colourOf(item.colour), 0.15f, 0.3f));
   separator->addChild(hints(false));  // cloth is seen from both sides
@@ -140,19 +143,75 @@ SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const MeshFile
   coordinates->point.connectFrom(&engine->positions);
   separator->addChild(coordinates);
   auto* layer = new ClothingLayer;
-  layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
+  layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
   separator->addChild(layer);
   return separator;
 }
 
+// The size advice's drape (sim/fit/SizeFitter.h: sizeDrapeParameters) as a ClothEngine's.
+ClothEngine* gradedEngine(const figment::GarmentStyle& style, bool layered, SoNode* body) {
+  const ClothParameters p = sizeDrapeParameters(style);
+  auto* engine = new ClothEngine;
+  engine->body = body;
+  engine->material = style.fabric;
+  engine->integrator.set("IMPLICIT");
+  if (layered) engine->contactModel.set("PENALTY");
+  engine->timeStep = p.timeStep;
+  engine->maxTime = p.maxTime;
+  engine->restSpeed = p.rest.speedThreshold;
+  engine->restWindow = p.rest.window;
+  engine->friction = p.friction;
+  engine->clearance = p.clearance;
+  return engine;
+}
+
+void setMesh(ClothEngine* engine, const TriangleMesh& mesh) {
+  std::vector<SbVec3f> points;
+  for (const Vec3& v : mesh.vertices) points.emplace_back(float(v.x()), float(v.y()), float(v.z()));
+  std::vector<int32_t> index;
+  for (const auto& t : mesh.triangles) index.insert(index.end(), {int32_t(t[0]), int32_t(t[1]), int32_t(t[2]), -1});
+  engine->restPoints.setValues(0, int(points.size()), points.data());
+  engine->coordIndex.setValues(0, int(index.size()), index.data());
+}
+
+HumanBody* measuredBody(const RenderRequest& request) {
+  auto* body = new HumanBody;
+  body->gender = request.sex == "male" ? 1.f : 0.f;
+  body->stature = float(request.body.stature);
+  body->bustGirth = float(request.body.bust);
+  body->waistGirth = float(request.body.waist);
+  body->hipGirth = float(request.body.hips);
+  return body;
+}
+
+// A measured body and its graded garments (the class comment).
+void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request,
+                   const OutfitScene::GradedGarment& graded) {
+  HumanBody* body = measuredBody(request);
+  skin->addChild(body);
+  const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
+  std::vector<Draped> beneath;
+  for (const OutfitItem& item : request.outfit) {
+    ClothEngine* engine = gradedEngine(*findStyle(item.style), !beneath.empty(), bodyUnder(body, beneath));
+    setMesh(engine, graded(item, sex));
+    root->addChild(garment(item, engine, &engine->coordIndex));
+    beneath.push_back({engine, &engine->coordIndex});
+  }
+}
+
 }  // namespace
 
-SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe) {
+SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const GradedGarment& graded) {
   auto* root = new SoSeparator;
   addLights(root, *Catalogue::light(request.light));
   auto* body = new SoSeparator;
   body->addChild(material(colourOf(request.skin), 0.1f, 0.2f));
   body->addChild(hints(true));
+  if (!request.sex.empty()) {
+    root->addChild(body);
+    dressMeasured(root, body, request, graded);
+    return root;
+  }
   Mannequin* model = mannequin(request, wardrobe);
   body->addChild(model);
   auto* skin = new MannequinSkin;
@@ -167,8 +226,8 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     restShape(engine, pattern, wardrobe.heightOrigin(), Catalogue::bodyFactors(request.body).height,
               Catalogue::size(item.size)->girth);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
-    root->addChild(garment(item, engine, pattern));
-    beneath.push_back({engine, pattern});
+    root->addChild(garment(item, engine, &pattern->coordIndex));
+    beneath.push_back({engine, &pattern->coordIndex});
   }
   return root;
 }

@@ -6,8 +6,15 @@
 // surfaces of the garments under it, as scenes/outfit-layers.iv drapes its two. The
 // same nodes and settings as the shipped scenes, so the same request drapes as a scene
 // file would.
+//
+// A request with a sex has MakeHuman's body instead (a HumanBody made to its measurements,
+// in its rest pose), and each garment is its style's graded garment of the chart's size
+// (what GET /api/fit drapes for that size), draped with the size advice's settings.
+
+#include <functional>
 
 #include "serve/RenderRequest.h"
+#include "sim/core/TriangleMesh.h"
 
 class SoSeparator;
 
@@ -17,8 +24,14 @@ class Wardrobe;
 
 class OutfitScene {
  public:
-  // The scene's root, not referenced (SceneSession::adopt takes it).
-  static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe);
+  // A style's garment graded to a size of the chart, for a measured body; throws when it
+  // cannot be made.
+  using GradedGarment = std::function<const TriangleMesh&(const OutfitItem& item, Sex sex)>;
+
+  // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
+  // only for a request with a sex.
+  static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
+                            const GradedGarment& graded = nullptr);
 };
 
 }  // namespace figment::serve

@@ -7,12 +7,14 @@
 #include <map>
 #include <set>
 
+#include "sim/garment/GarmentStyle.h"
+
 namespace figment::serve {
 
 namespace {
 
-const char* const kNames[] = {"stature", "bust",   "chest", "waist", "hips", "skin",
-                              "pose",    "outfit", "light", "view",  "size", "format"};
+const char* const kNames[] = {"stature", "bust",  "chest", "waist", "hips",   "skin", "pose",
+                              "outfit",  "light", "view",  "size",  "format", "sex"};
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
@@ -74,22 +76,44 @@ std::optional<ParameterError> skinTone(const std::string& value, std::string& ou
   return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(Catalogue::skinTones()));
 }
 
-std::optional<ParameterError> outfitItem(const std::string& value, const std::string& item, OutfitItem& out) {
-  const std::string accepted =
-      "style:size[:rrggbb], styles " + namesOf(Catalogue::styles()) + "; sizes " + namesOf(Catalogue::sizes());
+// The sizes an outfit item may name: the Mannequin's catalogue, or with a sex the chart's.
+struct SizeNames {
+  const SizeChart* chart = nullptr;  // null: the Mannequin's catalogue
+  Sex sex = Sex::Female;
+};
+
+std::string acceptedItems(const SizeNames& names) {
+  if (!names.chart)
+    return "style:size[:rrggbb], styles " + namesOf(Catalogue::styles()) + "; sizes " + namesOf(Catalogue::sizes());
+  std::vector<std::string> sizes;
+  for (const ChartSize& size : names.chart->sizes(names.sex)) sizes.push_back(size.name);
+  return "style:size[:rrggbb], styles " + styleNames() + "; " + sexName(names.sex) + " sizes " + namesOf(sizes);
+}
+
+// A graded style's colour when it has none: the Mannequin catalogue's for its name, else grey.
+std::string defaultColour(const std::string& style) {
+  const GarmentStyle* known = Catalogue::style(style);
+  return known ? known->defaultColour : "8c8c8c";
+}
+
+std::optional<ParameterError> outfitItem(const std::string& value, const std::string& item, const SizeNames& names,
+                                         OutfitItem& out) {
+  const std::string accepted = acceptedItems(names);
   const size_t a = item.find(':'), b = a == std::string::npos ? a : item.find(':', a + 1);
   if (a == std::string::npos) return bad("outfit", value, "a garment without a size: " + item.substr(0, 32), accepted);
   out.style = item.substr(0, a);
   out.size = item.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
-  const GarmentStyle* style = Catalogue::style(out.style);
-  if (!style) return bad("outfit", value, "no style named " + out.style.substr(0, 32), accepted);
-  if (!Catalogue::size(out.size)) return bad("outfit", value, "no size named " + out.size.substr(0, 32), accepted);
-  out.colour = b == std::string::npos ? style->defaultColour : lower(item.substr(b + 1));
+  if (names.chart ? !findStyle(out.style) : !Catalogue::style(out.style))
+    return bad("outfit", value, "no style named " + out.style.substr(0, 32), accepted);
+  if (names.chart ? names.chart->find(names.sex, out.size) < 0 : !Catalogue::size(out.size))
+    return bad("outfit", value, "no size named " + out.size.substr(0, 32), accepted);
+  if (names.chart) out.size = names.chart->sizes(names.sex)[size_t(names.chart->find(names.sex, out.size))].name;
+  out.colour = b == std::string::npos ? defaultColour(out.style) : lower(item.substr(b + 1));
   if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + out.colour.substr(0, 32), accepted);
   return std::nullopt;
 }
 
-std::optional<ParameterError> outfit(const std::string& value, std::vector<OutfitItem>& out) {
+std::optional<ParameterError> outfit(const std::string& value, const SizeNames& names, std::vector<OutfitItem>& out) {
   out.clear();
   if (value.empty() || value == "none") return std::nullopt;  // the body alone
   std::set<std::string> styles;
@@ -99,7 +123,7 @@ std::optional<ParameterError> outfit(const std::string& value, std::vector<Outfi
     if (int(out.size()) == RequestLimits::kMaxGarments)
       return bad("outfit", value, "too many garments", "at most 3, innermost first");
     OutfitItem item;
-    if (auto error = outfitItem(value, value.substr(start, comma - start), item)) return error;
+    if (auto error = outfitItem(value, value.substr(start, comma - start), names, item)) return error;
     if (!styles.insert(item.style).second)
       return bad("outfit", value, "a style worn twice: " + item.style, "each style once");
     out.push_back(item);
@@ -158,7 +182,8 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Re
   return values;
 }
 
-std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::string, std::string>& values) {
+std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::string, std::string>& values,
+                                   const SizeNames& names) {
   std::optional<ParameterError> error;
   for (const auto& [name, value] : values) {
     if (name == "stature")
@@ -178,7 +203,7 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
       error = Catalogue::light(value) ? (request.light = value, std::nullopt)
                                       : std::optional(bad(name, value, "no such light", namesOf(Catalogue::lights())));
     else if (name == "outfit")
-      error = outfit(value, request.outfit);
+      error = outfit(value, names, request.outfit);
     else if (name == "view")
       error = view(value, request.azimuth, request.elevation);
     else if (name == "size")
@@ -204,13 +229,32 @@ RenderRequest defaults() {
   return request;
 }
 
+// With a sex: the measured body's checks (a chart to size by, the rest pose) and its sex.
+std::optional<ParameterError> measuredBody(RenderRequest& request, const std::map<std::string, std::string>& values,
+                                           SizeNames& names) {
+  const auto sex = values.find("sex");
+  if (sex == values.end()) return std::nullopt;
+  if (sex->second != "female" && sex->second != "male")
+    return bad("sex", sex->second, "no such sex", "female, male (or none: the Mannequin)");
+  if (!names.chart) return bad("sex", sex->second, "no size chart: measured bodies are off", "none");
+  if (values.count("pose") && values.at("pose") != "rest")
+    return bad("pose", values.at("pose"), "a measured body (sex) stands in its rest pose", "rest");
+  request.sex = sex->second;
+  names.sex = request.sex == "male" ? Sex::Male : Sex::Female;
+  return std::nullopt;
+}
+
 }  // namespace
 
-std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameters& parameters) {
+std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameters& parameters, const SizeChart* chart) {
   auto values = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&values)) return *error;
+  const auto& named = std::get<std::map<std::string, std::string>>(values);
   RenderRequest request = defaults();
-  if (auto error = fill(request, std::get<std::map<std::string, std::string>>(values))) return *error;
+  SizeNames names;
+  names.chart = named.count("sex") ? chart : nullptr;
+  if (auto error = measuredBody(request, named, names)) return *error;
+  if (auto error = fill(request, named, names)) return *error;
   if (request.format == "glb") {
     // A GLB holds meshes and colours: light, view and size leave it as it is, so they are
     // reset and every such request shares one canonical text (and ETag).
@@ -222,7 +266,8 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
   return request;
 }
 
-std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text) {
+std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,
+                                                                          const SizeChart* chart) {
   Parameters parameters;
   size_t start = 0;
   while (start < text.size()) {
@@ -232,20 +277,21 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const 
     parameters.emplace_back(pair.substr(0, eq), eq == std::string::npos ? "" : pair.substr(eq + 1));
     start = amp + 1;
   }
-  return parse(parameters);
+  return parse(parameters, chart);
 }
 
 std::string RenderRequest::drapeKey() const {
   std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
-                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&pose=" + pose + "&outfit=";
+                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + sexText() + "&pose=" + pose +
+                     "&outfit=";
   for (size_t i = 0; i < outfit.size(); ++i) text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size;
   return text;
 }
 
 std::string RenderRequest::sceneKey() const {
   std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
-                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + "&skin=" + skin + "&pose=" + pose +
-                     "&outfit=";
+                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + sexText() + "&skin=" + skin +
+                     "&pose=" + pose + "&outfit=";
   for (size_t i = 0; i < outfit.size(); ++i)
     text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size + ":" + outfit[i].colour;
   if (outfit.empty()) text += "none";

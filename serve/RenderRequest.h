@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "serve/Catalogue.h"
+#include "sim/garment/SizeChart.h"
 
 namespace figment::serve {
 
@@ -44,8 +45,11 @@ class RenderRequest {
   using Parameters = std::vector<std::pair<std::string, std::string>>;
 
   // The request from decoded query parameters; absent ones take the defaults (the default
-  // body, in the dress, studio light, from the front, 800x600).
-  static std::variant<RenderRequest, ParameterError> parse(const Parameters& parameters);
+  // body, in the dress, studio light, from the front, 800x600). With `sex` the body is
+  // MakeHuman's made to the measurements and the outfit's sizes are `chart`'s (graded
+  // garments of sim/garment/GarmentStyle.h's styles); without a chart `sex` is refused.
+  static std::variant<RenderRequest, ParameterError> parse(const Parameters& parameters,
+                                                           const SizeChart* chart = nullptr);
 
   // name=value&... in a fixed order, numbers rounded to what changes the picture (mm,
   // tenths of a degree): parse(canonical()) gives the same request.
@@ -56,9 +60,14 @@ class RenderRequest {
   // The part that shapes the scene (all but view and size).
   std::string sceneKey() const;
   // Parses canonical text back (the worker's side of the pipe).
-  static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text);
+  static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text,
+                                                                    const SizeChart* chart = nullptr);
+
+  // "&sex=..." when the body is measured, else "": a Mannequin's texts are as they were.
+  std::string sexText() const { return sex.empty() ? "" : "&sex=" + sex; }
 
   BodyMeasures body;  // m
+  std::string sex;    // "" for the scaled Mannequin; female or male for a measured HumanBody
   std::string skin;   // rrggbb
   std::string pose;   // a Catalogue pose
   std::vector<OutfitItem> outfit;

@@ -70,12 +70,15 @@ RenderWorker::Answer RenderWorker::advise(const std::string& canonical) {
 
 RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
   if (FitRequest::isFit(canonical)) return advise(canonical);
-  auto parsed = RenderRequest::parseCanonical(canonical);
+  auto parsed = RenderRequest::parseCanonical(canonical, fit_ ? &fit_->chart() : nullptr);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
   const RenderRequest& request = std::get<RenderRequest>(parsed);
   if (request.sceneKey() != sceneKey_) {
     sceneKey_.clear();
-    session_.adopt(OutfitScene::build(request, wardrobe_));
+    session_.adopt(
+        OutfitScene::build(request, wardrobe_, [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
+          return fit_->garment(item.style, sex, item.size);
+        }));
     const std::vector<session::EngineDrape>& drapes = session_.drape();
     const std::string error = session_.firstError();
     if (!error.empty()) {

@@ -5,6 +5,7 @@
 
 #include "serve/RenderRequest.h"
 
+using namespace figment;
 using namespace figment::serve;
 
 namespace {
@@ -103,4 +104,46 @@ TEST(RenderRequest, AGlbIgnoresLightViewAndSize) {
   EXPECT_EQ(a.canonical(), b.canonical());
   EXPECT_NE(a.canonical(), ok({}).canonical());  // the control: a PNG is another thing
   EXPECT_EQ(refused({{"format", "obj"}}).parameter, "format");
+}
+
+namespace {
+
+SizeChart womensChart() {
+  return SizeChart(
+      {{Sex::Female, "S", "36", 1.68, 0.84, 0.68, 0.92}, {Sex::Female, "M", "38", 1.68, 0.88, 0.72, 0.96}});
+}
+
+}  // namespace
+
+TEST(RenderRequest, ASexMakesTheBodyMeasuredAndTheSizesTheCharts) {
+  const SizeChart chart = womensChart();
+  auto parsed = RenderRequest::parse({{"sex", "female"}, {"outfit", "pencil:38:FF0000"}}, &chart);
+  ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed));
+  const RenderRequest& request = std::get<RenderRequest>(parsed);
+  EXPECT_EQ(request.sex, "female");
+  ASSERT_EQ(request.outfit.size(), 1u);
+  EXPECT_EQ(request.outfit[0].size, "M");  // the chart's number, named by its letter code
+  EXPECT_EQ(request.canonical(),
+            "stature=1.659&bust=0.891&waist=0.696&hips=0.939&sex=female&skin=cc9473&pose=rest&outfit=pencil:M:ff0000"
+            "&light=studio&view=0.0,0.0&size=800x600");
+  auto again = RenderRequest::parseCanonical(request.canonical(), &chart);
+  ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
+  EXPECT_EQ(std::get<RenderRequest>(again).canonical(), request.canonical());
+  EXPECT_NE(request.drapeKey().find("sex=female"), std::string::npos);
+}
+
+TEST(RenderRequest, AMeasuredBodyRefusesWhatItCannotWear) {
+  const SizeChart chart = womensChart();
+  const auto refusedWith = [&chart](const RenderRequest::Parameters& parameters, const SizeChart* given) {
+    auto parsed = RenderRequest::parse(parameters, given);
+    EXPECT_TRUE(std::holds_alternative<ParameterError>(parsed));
+    return std::holds_alternative<ParameterError>(parsed) ? std::get<ParameterError>(parsed) : ParameterError{};
+  };
+  EXPECT_EQ(refusedWith({{"sex", "female"}}, nullptr).error, "no size chart: measured bodies are off");
+  EXPECT_EQ(refusedWith({{"sex", "x"}}, &chart).parameter, "sex");
+  EXPECT_EQ(refusedWith({{"sex", "female"}, {"pose", "relaxed"}}, &chart).parameter, "pose");
+  EXPECT_EQ(refusedWith({{"sex", "female"}, {"outfit", "pencil:XL"}}, &chart).error, "no size named XL");
+  EXPECT_EQ(refusedWith({{"sex", "female"}, {"outfit", "cape:M"}}, &chart).error, "no style named cape");
+  // Without a sex the chart changes nothing: the Mannequin's styles and sizes.
+  EXPECT_EQ(refusedWith({{"outfit", "pencil:M"}}, &chart).error, "no style named pencil");
 }

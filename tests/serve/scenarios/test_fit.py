@@ -3,7 +3,9 @@
 advice recommends its own size, with every candidate's regions, verdicts and shopper's text;
 the answer is kept (a repeat is a cache hit, If-None-Match is 304); every class of bad
 parameter is 400 naming it and its accepted range; the catalogue lists the chart's sizes
-per style. Skipped where MakeHuman's data is not found (scripts/setup.sh). No timings asserted.
+per style. And GET /api/render with a sex: MakeHuman's body made to the measurements in
+the graded garment of a chart size, drawn in its colour and wider on a larger body.
+Skipped where MakeHuman's data is not found (scripts/setup.sh). No timings asserted.
 
     test_fit.py FIGMENT-SERVE [unittest options]
 """
@@ -12,11 +14,13 @@ import sys
 import unittest
 import urllib.parse
 
-from ServeSupport import Server
+from ServeSupport import Server, count_near, png_pixels
 
 EXECUTABLE = None
 
 # The women's M and men's L chart bodies (scenes/sizes/chart.txt).
+WOMANS_XS = dict(sex="female", stature="1.68", bust="0.80", waist="0.64", hips="0.88")
+WOMANS_XL = dict(sex="female", stature="1.68", bust="0.96", waist="0.80", hips="1.04")
 WOMANS_M = dict(sex="female", style="pencil", stature="1.68", bust="0.88", waist="0.72", hips="0.96")
 MANS_L = dict(sex="male", style="tshirt", stature="1.77", bust="1.00", waist="0.88", hips="1.04")
 
@@ -102,6 +106,37 @@ class Fit(unittest.TestCase):
         womens = catalogue["fit"]["measurements"]["female"]
         self.assertLess(womens["bust"]["min"], 0.76)
         self.assertGreater(womens["bust"]["max"], 0.96)
+
+    def render(self, body, outfit):
+        query = dict(body, outfit=outfit, size="160x200")
+        status, headers, answer = self.server.request("/api/render?" + urllib.parse.urlencode(query))
+        if status == 500 and b"MakeHuman" in answer:
+            self.skipTest("MakeHuman's data not found (scripts/setup.sh fetches it)")
+        self.assertEqual(status, 200, answer)
+        self.assertEqual(headers["content-type"], "image/png")
+        return png_pixels(answer)[2]
+
+    def test_a_measured_body_wears_its_graded_size_in_its_colour(self):
+        small = count_near(self.render(WOMANS_XS, "pencil:XS:ff0000"), (255, 0, 0), 0.12)
+        large = count_near(self.render(WOMANS_XL, "pencil:XL:ff0000"), (255, 0, 0), 0.12)
+        self.assertGreater(small, 60)  # of 32000 pixels: the skirt is there, in its colour
+        # The XL body's hips are 16 cm rounder: its XL skirt covers more of the picture.
+        self.assertGreater(large, small * 1.05, (small, large))
+
+    def test_a_measured_body_refuses_what_it_cannot_wear(self):
+        cases = [(dict(WOMANS_M, outfit="pencil:XXL"), "outfit", "female sizes XXS, XS, S, M, L, XL"),
+                 (dict(WOMANS_M, outfit="cape:M"), "outfit", "styles dress, skirt, tshirt, pencil"),
+                 (dict(WOMANS_M, pose="relaxed"), "pose", "rest"),
+                 (dict(WOMANS_M, sex="other"), "sex", "female, male")]
+        for query, name, accepted in cases:
+            del query["style"]
+            status, error = self.server.json("/api/render?" + urllib.parse.urlencode(query))
+            self.assertEqual(status, 400, query)
+            self.assertEqual(error["parameter"], name)
+            self.assertIn(accepted, error["accepted"])
+        # Without a sex the Mannequin's catalogue sizes still hold: the chart's XXS is not one.
+        status, error = self.server.json("/api/render?outfit=dress:XXS")
+        self.assertEqual((status, error["parameter"]), (400, "outfit"))
 
 
 if __name__ == "__main__":
