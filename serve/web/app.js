@@ -1,5 +1,7 @@
 // The shopper's page: choices -> GET /api/render's parameters -> the picture. Measurements
 // are typed in cm and sent in metres; the catalogue (GET /api/catalogue) fills the lists.
+// "Advise my size" asks GET /api/fit for the same measurements (only when pressed: a fit
+// drapes three sizes, seconds) and lists the recommendation and each size's text.
 "use strict";
 
 const state = { azimuth: 0, catalogue: null, timer: null };
@@ -80,6 +82,29 @@ async function show() {
   byId("status").textContent = "Shown (" + (response.headers.get("X-Figment-Cache") || "") + ")";
 }
 
+function adviceLine(text) {
+  const p = document.createElement("p");
+  p.textContent = text;
+  byId("advice").appendChild(p);
+}
+
+async function advise() {
+  const p = new URLSearchParams();
+  p.set("sex", byId("fit-sex").value);
+  p.set("style", byId("fit-style").value);
+  for (const m of measures) p.set(m, (Number(byId(m).value) / 100).toFixed(3));
+  byId("advice").textContent = "Trying the sizes on…";
+  const response = await fetch("/api/fit?" + p.toString());
+  const body = await response.json().catch(() => ({ error: response.statusText }));
+  byId("advice").textContent = "";
+  if (!response.ok) {
+    adviceLine(body.parameter ? body.parameter + ": " + body.error + " (accepted: " + body.accepted + ")" : body.error);
+    return;
+  }
+  adviceLine("Recommended: " + body.recommended + (body.all_tight ? " (every size is tight somewhere)" : ""));
+  for (const [size, fit] of Object.entries(body.sizes)) adviceLine(size + ": " + fit.text);
+}
+
 function schedule() {
   clearTimeout(state.timer);
   state.timer = setTimeout(show, 250);
@@ -111,6 +136,9 @@ async function start() {
   for (let i = 0; i < catalogue.limits.garments; i++) byId("garments").appendChild(garmentRow(i, catalogue));
   byId("style-0").value = "dress";
   byId("colour-0").value = "#" + catalogue.styles.find((s) => s.name === "dress").defaultColour;
+  if (catalogue.fit) catalogue.fit.styles.forEach((s) => option(byId("fit-style"), s.name));
+  else byId("fit").hidden = true;
+  byId("advise").addEventListener("click", advise);
   byId("turn-left").addEventListener("click", () => turn(-30));
   byId("turn-right").addEventListener("click", () => turn(30));
   show();

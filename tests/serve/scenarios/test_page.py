@@ -2,7 +2,8 @@
 """The shopper's page in a real browser: headless Chromium (Debian's chromium and
 chromium-driver, driven by python3-selenium) loads / from a figment-serve this test
 starts, sees the picture, changes a measurement and a garment and sees the picture
-change each time, on a phone-sized window; screenshots go to SCREENSHOT-FOLDER.
+change each time, on a phone-sized window, and asks for size advice (GET /api/fit) for
+the women's M chart body; screenshots go to SCREENSHOT-FOLDER.
 
     test_page.py FIGMENT-SERVE SCREENSHOT-FOLDER
 """
@@ -109,6 +110,28 @@ class Page(unittest.TestCase):
         self.assertPictureChanged(pixels)
         self.assertEqual(browser.find_element(By.ID, "error").text, "")
         self.shot("serve-page-turned.png")
+
+    def test_size_advice_names_the_chart_bodys_own_size(self):
+        browser = self.browser
+        browser.get(self.server.url)
+        self.wait_for_new_picture("")
+        for name, cm in (("stature", "168"), ("bust", "88"), ("waist", "72"), ("hips", "96")):
+            field = browser.find_element(By.ID, name)
+            field.clear()
+            field.send_keys(cm)
+        Select(browser.find_element(By.ID, "fit-sex")).select_by_value("female")
+        Select(browser.find_element(By.ID, "fit-style")).select_by_value("pencil")
+        browser.find_element(By.ID, "advise").click()
+        advice = browser.find_element(By.ID, "advice")
+        WebDriverWait(browser, WAIT).until(lambda b: "Recommended" in advice.text or "error" in advice.text
+                                           or "MakeHuman" in advice.text)
+        if "MakeHuman" in advice.text:
+            self.skipTest("MakeHuman's data not found (scripts/setup.sh fetches it)")
+        self.assertIn("Recommended: M", advice.text)
+        self.assertIn("M: fits everywhere", advice.text)
+        self.assertLessEqual(browser.execute_script("return document.documentElement.scrollWidth"), 390)
+        browser.execute_script("arguments[0].scrollIntoView()", advice)
+        browser.save_screenshot(os.path.join(SCREENSHOTS, "serve-page-advice.png"))
 
 
 if __name__ == "__main__":
