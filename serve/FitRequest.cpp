@@ -103,16 +103,7 @@ bool FitRequest::isFit(const std::string& canonical) {
 
 std::variant<FitRequest, ParameterError> FitRequest::parseCanonical(const std::string& text, const SizeChart& chart) {
   if (!isFit(text)) return bad("", text, "not a fit request", kPrefix);
-  RenderRequest::Parameters parameters;
-  size_t start = std::string(kPrefix).size();
-  while (start < text.size()) {
-    const size_t amp = std::min(text.find('&', start), text.size());
-    const std::string pair = text.substr(start, amp - start);
-    const size_t eq = pair.find('=');
-    parameters.emplace_back(pair.substr(0, eq), eq == std::string::npos ? "" : pair.substr(eq + 1));
-    start = amp + 1;
-  }
-  return parse(parameters, chart);
+  return parse(RenderRequest::splitCanonical(text, std::string(kPrefix).size()), chart);
 }
 
 nlohmann::json FitRequest::catalogueJson(const SizeChart& chart) {

@@ -268,8 +268,11 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
 
 std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,
                                                                           const SizeChart* chart) {
+  return parse(splitCanonical(text), chart);
+}
+
+RenderRequest::Parameters RenderRequest::splitCanonical(const std::string& text, size_t start) {
   Parameters parameters;
-  size_t start = 0;
   while (start < text.size()) {
     const size_t amp = std::min(text.find('&', start), text.size());
     const std::string pair = text.substr(start, amp - start);
@@ -277,7 +280,7 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const 
     parameters.emplace_back(pair.substr(0, eq), eq == std::string::npos ? "" : pair.substr(eq + 1));
     start = amp + 1;
   }
-  return parse(parameters, chart);
+  return parameters;
 }
 
 std::string RenderRequest::drapeKey() const {

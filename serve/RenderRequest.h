@@ -59,6 +59,9 @@ class RenderRequest {
   std::string drapeKey() const;
   // The part that shapes the scene (all but view and size).
   std::string sceneKey() const;
+  // Splits canonical text ("a=1&b=2", as canonical() writes it: nothing to decode) into its
+  // pairs; the fit request's parser shares it.
+  static Parameters splitCanonical(const std::string& text, size_t start = 0);
   // Parses canonical text back (the worker's side of the pipe).
   static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text,
                                                                     const SizeChart* chart = nullptr);
