@@ -100,15 +100,24 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
   pool_ = std::make_unique<WorkerPool>(workerPoolOptions(options_, program));
   server_->new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
   server_->set_keep_alive_max_count(1000);
-  server_->set_payload_max_length(0);  // GET only: no request carries a body
+  server_->set_payload_max_length(8192);  // only POST /api/render's form of parameters has a body
+  const PoolOptions poolOptions = workerPoolOptions(options_, program);
+  jobs_ = std::make_unique<RenderJobs>(
+      RenderJobs::Options{poolOptions.workers, poolOptions.queue, 1024},
+      [this](const std::string& canonical) { return pool_->render(canonical); },
+      [this](const std::string& id, const RenderResult& result) {
+        images_.store('"' + id + '"', std::make_shared<const std::string>(result.body));
+        if (sharedImages_) sharedImages_->store(id, result.body);
+      });
   addRoutes();
 }
 
 HttpService::~HttpService() = default;
 
 const std::vector<std::string>& HttpService::routes() {
-  static const std::vector<std::string> paths = {
-      "/", "/app.js", "/style.css", "/healthz", "/openapi.json", "/api/catalogue", "/api/render", "/api/fit"};
+  static const std::vector<std::string> paths = {"/",           "/app.js",       "/style.css",
+                                                 "/healthz",    "/openapi.json", "/api/catalogue",
+                                                 "/api/render", "/api/fit",      "/api/jobs/{id}"};
   return paths;
 }
 
@@ -129,6 +138,11 @@ void HttpService::addRoutes() {
   });
   server_->Get("/api/render",
                [this](const httplib::Request& request, httplib::Response& response) { render(request, response); });
+  server_->Post("/api/render",
+                [this](const httplib::Request& request, httplib::Response& response) { submitJob(request, response); });
+  server_->Get("/api/jobs/([^/]+)", [this](const httplib::Request& request, httplib::Response& response) {
+    jobStatus(request.matches[1], response);
+  });
   server_->Get("/api/fit",
                [this](const httplib::Request& request, httplib::Response& response) { fit(request, response); });
   // Every refusal as JSON, httplib's own (404, 414, ...) included; a handler's JSON stays.
@@ -232,6 +246,37 @@ void HttpService::fit(const httplib::Request& request, httplib::Response& respon
   if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, kJson, true);
   std::shared_ptr<const RenderResult> result;
   if (made(canonical, tag, request, response, result)) answer(response, tag, result->body, kJson, false);
+}
+
+void HttpService::submitJob(const httplib::Request& request, httplib::Response& response) {
+  const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
+  auto parsed = RenderRequest::parse(parameters, chart_.get());
+  if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
+  const std::string canonical = std::get<RenderRequest>(parsed).canonical();
+  const std::string tag = tagOf(canonical, build_);
+  const std::string id = tag.substr(1, tag.size() - 2);  // unquoted: a path segment
+  const bool kept = keptImage(tag) != nullptr;
+  if (!kept && !jobs_->find(id)) {  // a new job costs a render: the client's rate applies
+    if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
+      response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
+      return sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
+    }
+  }
+  if (!jobs_->submit(id, canonical, kept)) {
+    response.set_header("Retry-After", "2");
+    return sendJson(response, 503, {{"error", "too many renders waiting; try again"}});
+  }
+  response.set_header("Location", "/api/jobs/" + id);
+  jobStatus(id, response);
+  response.status = 202;
+}
+
+void HttpService::jobStatus(const std::string& id, httplib::Response& response) const {
+  const std::optional<RenderJobs::Status> job = jobs_->find(id);
+  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", id.substr(0, 64)}});
+  nlohmann::json body = {{"status", job->state}, {"result", "/api/render?" + job->canonical}};
+  if (!job->error.empty()) body["error"] = job->error;
+  sendJson(response, 200, body);
 }
 
 std::shared_ptr<const std::string> HttpService::keptImage(const std::string& tag) {

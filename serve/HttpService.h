@@ -11,6 +11,7 @@
 #include "serve/ClientRateLimit.h"
 #include "serve/ImageCache.h"
 #include "serve/RedisConnection.h"
+#include "serve/RenderJobs.h"
 #include "serve/ServeOptions.h"
 #include "serve/SharedImages.h"
 #include "serve/WorkerPool.h"
@@ -43,6 +44,9 @@ class HttpService {
   void addRoutes();
   void render(const httplib::Request& request, httplib::Response& response);
   void fit(const httplib::Request& request, httplib::Response& response);
+  // POST /api/render: the render as a background job (202 and its status URL).
+  void submitJob(const httplib::Request& request, httplib::Response& response);
+  void jobStatus(const std::string& id, httplib::Response& response) const;
   // A worker's answer for `canonical` (a render or a fit), kept by its ETag `tag` in memory
   // and Redis; false when the response was made already (a refusal or an error).
   bool made(const std::string& canonical, const std::string& tag, const httplib::Request& request,
@@ -60,6 +64,7 @@ class HttpService {
   std::unique_ptr<SharedImages> sharedImages_;  // images in Redis, below images_
   ClientRateLimit rateLimit_;
   std::unique_ptr<httplib::Server> server_;
+  std::unique_ptr<RenderJobs> jobs_;  // last: its threads stop before the pool and caches they use go
 };
 
 }  // namespace figment::serve

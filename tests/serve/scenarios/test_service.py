@@ -51,6 +51,8 @@ class Endpoints(unittest.TestCase):
         queries = {"/api/render": SMALL,  # the women's M chart body's size advice
                    "/api/fit": "sex=female&style=pencil&stature=1.68&bust=0.88&waist=0.72&hips=0.96"}
         for path in document["paths"]:
+            if "{" in path:
+                continue  # a template (/api/jobs/{id}): tests/serve/scenarios/test_render_jobs.py
             code, headers, body = self.server.request(path + ("?" + queries[path] if path in queries else ""))
             if path == "/api/fit" and code == 500 and b"MakeHuman" in body:
                 continue  # no MakeHuman data here (scripts/setup.sh): tests/serve/scenarios/test_fit.py skips
