@@ -31,6 +31,7 @@
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/VolumeSetCollider.h"
 #include "support/Pixels.h"
+#include "support/RenderedImage.h"
 #include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
@@ -146,10 +147,7 @@ class DefaultScene : public ::testing::Test {
     }
     SoSeparator* root = stageScene(scene_, size, ViewDirection{azimuth, 10.0});
     root->ref();
-    SceneRenderer renderer(size);
-    EXPECT_EQ(renderer.render(root), "");
-    figment::test::Image image{size.width, size.height, {}};
-    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * size.width * size.height);
+    figment::test::Image image = figment::test::renderedImage(root, size);
     root->unref();
     for (auto it = undo.rbegin(); it != undo.rend(); ++it) (*it)();
     return image;

@@ -14,6 +14,7 @@
 #include "session/SceneRenderer.h"
 #include "session/SceneStaging.h"
 #include "support/Pixels.h"
+#include "support/RenderedImage.h"
 #include "support/TempDir.h"
 #include "viewer/OffscreenContext.h"
 
@@ -53,10 +54,7 @@ class HumanBodySkinTone : public ::testing::Test {
   Image render() const {
     SoSeparator* root = stageScene(scene_, kSize, ViewDirection{0.0, 0.0});
     root->ref();
-    SceneRenderer renderer(kSize);
-    EXPECT_EQ(renderer.render(root), "");
-    Image image{kSize.width, kSize.height, {}};
-    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kSize.width * kSize.height);
+    Image image = figment::test::renderedImage(root, kSize);
     root->unref();
     return image;
   }

@@ -31,6 +31,7 @@
 #include "session/SceneSession.h"
 #include "session/SceneStaging.h"
 #include "support/Pixels.h"
+#include "support/RenderedImage.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 
@@ -67,13 +68,7 @@ void paintGarmentsBlue(SoSeparator* scene) {
 // Framed on `box` either way: a stand-in's bounding box may differ by a hair, which
 // moves the silhouette by a pixel.
 Image render(SceneSession& session, double azimuth, const SbBox3f& box) {
-  SoSeparator* root = session.stage(kFullSize, ViewDirection{azimuth, 10.0}, box);
-  SceneRenderer renderer(kFullSize);
-  EXPECT_EQ(renderer.render(root), "");
-  Image image{kFullSize.width, kFullSize.height, {}};
-  if (renderer.pixels())
-    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kFullSize.width * kFullSize.height);
-  return image;
+  return figment::test::renderedImage(session.stage(kFullSize, ViewDirection{azimuth, 10.0}, box), kFullSize);
 }
 
 // Every shipped scene that draws a garment (its text names a ClothingLayer), under

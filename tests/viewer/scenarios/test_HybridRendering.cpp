@@ -21,6 +21,7 @@
 #include "session/SceneRenderer.h"
 #include "session/SceneStaging.h"
 #include "support/Pixels.h"
+#include "support/RenderedImage.h"
 #include "support/TempDir.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
@@ -72,10 +73,7 @@ class View {
       part->insertChild(invisible, 0);
       parts.push_back(part);
     }
-    SceneRenderer renderer(kSize);
-    EXPECT_EQ(renderer.render(root_, keepStencilFields), "");
-    Image image{kSize.width, kSize.height, {}};
-    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kSize.width * kSize.height);
+    Image image = figment::test::renderedImage(root_, kSize, keepStencilFields);
     for (SoGroup* part : parts) part->removeChild(0);
     return image;
   }

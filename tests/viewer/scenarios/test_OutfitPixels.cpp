@@ -30,6 +30,7 @@
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
 #include "support/Pixels.h"
+#include "support/RenderedImage.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/OffscreenContext.h"
 
@@ -103,11 +104,7 @@ class Outfit {
       // After the part's own ShapeHints, before its shape.
       separator->insertChild(node, separator->getNumChildren() - 1);
     }
-    SoSeparator* root = session_.stage(kSize, ViewDirection{azimuth, 10.0});
-    SceneRenderer renderer(kSize);
-    EXPECT_EQ(renderer.render(root), "");
-    Image image{kSize.width, kSize.height, {}};
-    image.rgb.assign(renderer.pixels(), renderer.pixels() + 3 * kSize.width * kSize.height);
+    Image image = figment::test::renderedImage(session_.stage(kSize, ViewDirection{azimuth, 10.0}), kSize);
     for (auto& [separator, node] : added) separator->removeChild(node);
     return image;
   }
