@@ -52,6 +52,21 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
   return {200, recommendationJson(fitter(request.style).recommend(body, request.sex))};
 }
 
+std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {
+  if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
+  HumanParameters start;
+  start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
+  // HumanBody's order (nodes/body/HumanBody.cpp: goalsOf), so the answer is the node's.
+  const std::vector<MeasurementGoal> goals = {
+      {"stature", body.stature}, {"bust_girth", body.bust}, {"waist_girth", body.waist}, {"hip_girth", body.hips}};
+  try {
+    fitBody(*model_, start, goals);
+  } catch (const UnreachableMeasurement& error) {
+    return error.what();
+  }
+  return "";
+}
+
 SizeFitter& FitWorker::fitter(const std::string& style) {
   std::unique_ptr<SizeFitter>& fitter = fitters_[style];
   if (!fitter) fitter = std::make_unique<SizeFitter>(*model_, chart_, *findStyle(style));

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "serve/Catalogue.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/garment/SizeChart.h"
 
@@ -40,6 +41,10 @@ class FitWorker {
   // style or size is unknown.
   const TriangleMesh& garment(const std::string& style, Sex sex, const std::string& size);
   const SizeChart& chart() const { return chart_; }
+  // Why MakeHuman cannot make a body of `body`'s measurements (the fit's one line, naming the
+  // measurement and the nearest it reaches), as HumanBody fits them; "" when it can. Throws
+  // when MakeHuman's data is missing.
+  std::string unreachable(const BodyMeasures& body, Sex sex);
 
  private:
   // "" once the model is read, else why not.

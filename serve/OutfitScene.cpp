@@ -174,13 +174,26 @@ void setMesh(ClothEngine* engine, const TriangleMesh& mesh) {
   engine->coordIndex.setValues(0, int(index.size()), index.data());
 }
 
+// The body made once, with every field set: a HumanBody makes itself again on each field
+// changed, so setting five fields one by one made it five times (a second and more).
 HumanBody* measuredBody(const RenderRequest& request) {
   auto* body = new HumanBody;
-  body->gender = request.sex == "male" ? 1.f : 0.f;
-  body->stature = float(request.body.stature);
-  body->bustGirth = float(request.body.bust);
-  body->waistGirth = float(request.body.waist);
-  body->hipGirth = float(request.body.hips);
+  body->ref();
+  const std::pair<SoSFFloat*, double> quiet[] = {{&body->gender, request.sex == "male" ? 1.0 : 0.0},
+                                                 {&body->stature, request.body.stature},
+                                                 {&body->bustGirth, request.body.bust},
+                                                 {&body->waistGirth, request.body.waist}};
+  for (const auto& [field, value] : quiet) {
+    field->enableNotify(false);
+    field->setValue(float(value));
+    field->enableNotify(true);
+  }
+  body->hipGirth = float(request.body.hips);  // the one change that makes it
+  if (body->point.getNum() == 0) {
+    body->unref();
+    throw OutfitScene::BodyNotMade("the measured body could not be made");
+  }
+  body->unrefNoDelete();
   return body;
 }
 

@@ -12,6 +12,7 @@
 // (what GET /api/fit drapes for that size), draped with the size advice's settings.
 
 #include <functional>
+#include <stdexcept>
 
 #include "serve/RenderRequest.h"
 #include "sim/core/TriangleMesh.h"
@@ -28,8 +29,15 @@ class OutfitScene {
   // cannot be made.
   using GradedGarment = std::function<const TriangleMesh&(const OutfitItem& item, Sex sex)>;
 
+  // A measured body MakeHuman did not make (measurements out of its reach, or its data
+  // missing): the worker asks why (FitWorker::unreachable).
+  class BodyNotMade : public std::runtime_error {
+   public:
+    using std::runtime_error::runtime_error;
+  };
+
   // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
-  // only for a request with a sex.
+  // only for a request with a sex. Throws BodyNotMade.
   static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
                             const GradedGarment& graded = nullptr);
 };

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "serve/FitRequest.h"
 #include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
@@ -58,8 +59,12 @@ std::string namesOf(const std::vector<T>& items) {
   return namesOf(names);
 }
 
-std::optional<ParameterError> measurement(const std::string& name, const std::string& value, double& out) {
-  const MeasureRange& range = Catalogue::measure(name == "chest" ? "bust" : name);
+// `ranges`: a measured body's (its sex's, FitRequest::ranges); empty: the Mannequin's catalogue.
+std::optional<ParameterError> measurement(const std::string& name, const std::string& value,
+                                          const std::vector<MeasureRange>& ranges, double& out) {
+  const std::string key = name == "chest" ? "bust" : name;
+  const auto own = std::find_if(ranges.begin(), ranges.end(), [&](const MeasureRange& r) { return r.name == key; });
+  const MeasureRange& range = own != ranges.end() ? *own : Catalogue::measure(key);
   const std::string accepted = formatted("%.2f to %.2f (metres)", range.minimum, range.maximum);
   double v = 0;
   if (!number(value, v)) return bad(name, value, "not a number", accepted);
@@ -76,10 +81,12 @@ std::optional<ParameterError> skinTone(const std::string& value, std::string& ou
   return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(Catalogue::skinTones()));
 }
 
-// The sizes an outfit item may name: the Mannequin's catalogue, or with a sex the chart's.
+// The sizes an outfit item may name and the measurements' ranges: the Mannequin's
+// catalogue, or with a sex the chart's.
 struct SizeNames {
   const SizeChart* chart = nullptr;  // null: the Mannequin's catalogue
   Sex sex = Sex::Female;
+  std::vector<MeasureRange> ranges;  // with a chart: the sex's (what /api/fit accepts)
 };
 
 std::string acceptedItems(const SizeNames& names) {
@@ -187,13 +194,13 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
   std::optional<ParameterError> error;
   for (const auto& [name, value] : values) {
     if (name == "stature")
-      error = measurement(name, value, request.body.stature);
+      error = measurement(name, value, names.ranges, request.body.stature);
     else if (name == "bust" || name == "chest")
-      error = measurement(name, value, request.body.bust);
+      error = measurement(name, value, names.ranges, request.body.bust);
     else if (name == "waist")
-      error = measurement(name, value, request.body.waist);
+      error = measurement(name, value, names.ranges, request.body.waist);
     else if (name == "hips")
-      error = measurement(name, value, request.body.hips);
+      error = measurement(name, value, names.ranges, request.body.hips);
     else if (name == "skin")
       error = skinTone(value, request.skin);
     else if (name == "pose")
@@ -241,6 +248,10 @@ std::optional<ParameterError> measuredBody(RenderRequest& request, const std::ma
     return bad("pose", values.at("pose"), "a measured body (sex) stands in its rest pose", "rest");
   request.sex = sex->second;
   names.sex = request.sex == "male" ? Sex::Male : Sex::Female;
+  if (names.chart->sizes(names.sex).empty())
+    return bad("sex", sex->second, "the size chart has no sizes for it", "female, male");
+  // The measured body's ranges are the size advice's: MakeHuman's reach, not the Mannequin's.
+  names.ranges = FitRequest::ranges(*names.chart, names.sex);
   return std::nullopt;
 }
 

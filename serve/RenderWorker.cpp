@@ -2,6 +2,7 @@
 
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "io/DrapeCache.h"
@@ -22,6 +23,40 @@ constexpr std::uintmax_t kCacheBytes = 1024u << 20;  // the drape cache's bound 
 
 RenderWorker::Answer failure(int status, const std::string& error) {
   return {status, nlohmann::json{{"error", error}}.dump(), false};
+}
+
+// The request parameter of a fit goal's key (sim/body/BodyMeasurements.h), or "".
+std::string parameterOf(const std::string& key) {
+  if (key == "stature") return key;
+  if (key == "bust_girth") return "bust";
+  if (key == "waist_girth") return "waist";
+  if (key == "hip_girth") return "hips";
+  return "";
+}
+
+// 422 for a measured body out of MakeHuman's reach, naming the measurement the fit gave up
+// on, what was asked and the nearest it reaches with the others ("waist_girth 0.880 m is out
+// of reach with the other measurements: the nearest is 0.790 m").
+RenderWorker::Answer unreachableBody(const RenderRequest& request, const std::string& why) {
+  const std::string parameter = parameterOf(why.substr(0, why.find(' ')));
+  const double values[] = {request.body.stature, request.body.bust, request.body.waist, request.body.hips};
+  const char* const names[] = {"stature", "bust", "waist", "hips"};
+  std::string value;
+  for (size_t i = 0; i < 4; ++i)
+    if (parameter == names[i]) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3f", values[i]);
+      value = text;
+    }
+  const size_t nearest = why.find("the nearest is ");
+  const std::string accepted = nearest == std::string::npos
+                                   ? "a body MakeHuman can make"
+                                   : why.substr(nearest + 15) + " (the nearest with the other measurements as given)";
+  const nlohmann::json body = {{"error", "no body of these measurements can be made: " + why},
+                               {"parameter", parameter},
+                               {"value", value},
+                               {"accepted", accepted}};
+  return {422, body.dump(), false};
 }
 
 }  // namespace
@@ -75,10 +110,16 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
   const RenderRequest& request = std::get<RenderRequest>(parsed);
   if (request.sceneKey() != sceneKey_) {
     sceneKey_.clear();
-    session_.adopt(
-        OutfitScene::build(request, wardrobe_, [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
-          return fit_->garment(item.style, sex, item.size);
-        }));
+    try {
+      session_.adopt(
+          OutfitScene::build(request, wardrobe_, [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
+            return fit_->garment(item.style, sex, item.size);
+          }));
+    } catch (const OutfitScene::BodyNotMade& error) {
+      session_.clear();
+      const std::string why = fit_->unreachable(request.body, request.sex == "male" ? Sex::Male : Sex::Female);
+      return why.empty() ? failure(500, error.what()) : unreachableBody(request, why);
+    }
     const std::vector<session::EngineDrape>& drapes = session_.drape();
     const std::string error = session_.firstError();
     if (!error.empty()) {

@@ -147,3 +147,23 @@ TEST(RenderRequest, AMeasuredBodyRefusesWhatItCannotWear) {
   // Without a sex the chart changes nothing: the Mannequin's styles and sizes.
   EXPECT_EQ(refusedWith({{"outfit", "pencil:M"}}, &chart).error, "no style named pencil");
 }
+
+TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
+  // MakeHuman's reach, as GET /api/fit accepts it: the chart's bodies widened by 8 cm each
+  // side (here bust 0.76 to 0.96) and stature 1.45 to 1.95; not the Mannequin's ranges.
+  const SizeChart chart = womensChart();
+  const auto parsed = [&chart](const RenderRequest::Parameters& parameters) {
+    return RenderRequest::parse(parameters, &chart);
+  };
+  auto bust = parsed({{"sex", "female"}, {"bust", "1.00"}});
+  ASSERT_TRUE(std::holds_alternative<ParameterError>(bust));
+  EXPECT_EQ(std::get<ParameterError>(bust).parameter, "bust");
+  EXPECT_EQ(std::get<ParameterError>(bust).value, "1.00");
+  EXPECT_EQ(std::get<ParameterError>(bust).accepted, "0.76 to 0.96 (metres)");
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"bust", "1.00"}})));  // the Mannequin's range
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"sex", "female"}, {"stature", "1.93"}})));
+  auto chest = parsed({{"sex", "female"}, {"chest", "0.70"}});
+  ASSERT_TRUE(std::holds_alternative<ParameterError>(chest));
+  EXPECT_EQ(std::get<ParameterError>(chest).parameter, "chest");
+  EXPECT_EQ(refused({{"stature", "1.93"}}).parameter, "stature");
+}
