@@ -7,6 +7,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "serve/MeasuredPoses.h"
 #include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
@@ -126,7 +127,9 @@ nlohmann::json FitRequest::catalogueJson(const SizeChart& chart) {
   nlohmann::json styles = nlohmann::json::array();
   for (const figment::GarmentStyle& style : garmentStyles())
     styles.push_back({{"name", style.name}, {"about", style.about}, {"sizes", sizes}});
-  return {{"styles", styles}, {"measurements", measures}};
+  nlohmann::json poses = nlohmann::json::array();  // a measured body's (GET /api/render with sex)
+  for (const MeasuredPose& pose : MeasuredPoses::all()) poses.push_back(pose.name);
+  return {{"styles", styles}, {"measurements", measures}, {"poses", poses}};
 }
 
 }  // namespace figment::serve

@@ -18,6 +18,7 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/GarmentSurface.h"
 #include "nodes/render/ClothingLayer.h"
+#include "serve/MeasuredPoses.h"
 #include "serve/Wardrobe.h"
 #include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
@@ -188,6 +189,10 @@ HumanBody* measuredBody(const RenderRequest& request) {
     field->setValue(float(value));
     field->enableNotify(true);
   }
+  // HumanBody's Pose lists the presets in PosePreset's order.
+  body->pose.enableNotify(false);
+  body->pose = int(MeasuredPoses::find(request.pose)->preset);
+  body->pose.enableNotify(true);
   body->hipGirth = float(request.body.hips);  // the one change that makes it
   if (body->point.getNum() == 0) {
     body->unref();

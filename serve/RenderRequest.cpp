@@ -8,6 +8,7 @@
 #include <set>
 
 #include "serve/FitRequest.h"
+#include "serve/MeasuredPoses.h"
 #include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
@@ -139,6 +140,16 @@ std::optional<ParameterError> outfit(const std::string& value, const SizeNames& 
   return std::nullopt;
 }
 
+// A Mannequin's pose is the catalogue's; a measured body's one of MakeHuman's rig presets.
+std::optional<ParameterError> pose(const std::string& value, const SizeNames& names, std::string& out) {
+  if (names.chart ? MeasuredPoses::find(value) != nullptr : Catalogue::pose(value) != nullptr)
+    return out = value, std::nullopt;
+  if (names.chart && Catalogue::pose(value))
+    return bad("pose", value, "a measured body (sex) has MakeHuman's rig, not the Mannequin's joints",
+               MeasuredPoses::names());
+  return bad("pose", value, "no such pose", names.chart ? MeasuredPoses::names() : namesOf(Catalogue::poses()));
+}
+
 std::optional<ParameterError> view(const std::string& value, double& azimuth, double& elevation) {
   const std::string accepted = "AZ,EL in degrees (AZ -360 to 360, EL -60 to 80), or front, back, left, right";
   const std::map<std::string, double> named = {{"front", 0}, {"right", 90}, {"back", 180}, {"left", 270}};
@@ -204,8 +215,7 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
     else if (name == "skin")
       error = skinTone(value, request.skin);
     else if (name == "pose")
-      error = Catalogue::pose(value) ? (request.pose = value, std::nullopt)
-                                     : std::optional(bad(name, value, "no such pose", namesOf(Catalogue::poses())));
+      error = pose(value, names, request.pose);
     else if (name == "light")
       error = Catalogue::light(value) ? (request.light = value, std::nullopt)
                                       : std::optional(bad(name, value, "no such light", namesOf(Catalogue::lights())));
@@ -244,14 +254,26 @@ std::optional<ParameterError> measuredBody(RenderRequest& request, const std::ma
   if (sex->second != "female" && sex->second != "male")
     return bad("sex", sex->second, "no such sex", "female, male (or none: the Mannequin)");
   if (!names.chart) return bad("sex", sex->second, "no size chart: measured bodies are off", "none");
-  if (values.count("pose") && values.at("pose") != "rest")
-    return bad("pose", values.at("pose"), "a measured body (sex) stands in its rest pose", "rest");
   request.sex = sex->second;
   names.sex = request.sex == "male" ? Sex::Male : Sex::Female;
   if (names.chart->sizes(names.sex).empty())
     return bad("sex", sex->second, "the size chart has no sizes for it", "female, male");
   // The measured body's ranges are the size advice's: MakeHuman's reach, not the Mannequin's.
   names.ranges = FitRequest::ranges(*names.chart, names.sex);
+  return std::nullopt;
+}
+
+// What a posed measured body cannot wear. Only a garment's own drape moves the body from
+// rest into its pose (nodes/body/HumanBody.h): an outer layer meets it posed from the start,
+// inside it, and bunches; a skirt or dress put on standing is passed through by the
+// thighs of a sitting body.
+std::optional<ParameterError> posedOutfit(const RenderRequest& request) {
+  if (request.sex.empty() || request.pose == "rest") return std::nullopt;
+  const std::string accepted =
+      "rest with up to 3 garments; arms-down, arm-raised, walking with one; sitting with a tshirt or nothing";
+  if (request.outfit.size() > 1) return bad("pose", request.pose, "a posed measured body wears one garment", accepted);
+  if (request.pose == "sitting" && !request.outfit.empty() && request.outfit[0].style != "tshirt")
+    return bad("pose", request.pose, "a sitting body's thighs pass through a " + request.outfit[0].style, accepted);
   return std::nullopt;
 }
 
@@ -266,6 +288,7 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
   names.chart = named.count("sex") ? chart : nullptr;
   if (auto error = measuredBody(request, named, names)) return *error;
   if (auto error = fill(request, named, names)) return *error;
+  if (auto error = posedOutfit(request)) return *error;
   if (request.format == "glb") {
     // A GLB holds meshes and colours: light, view and size leave it as it is, so they are
     // reset and every such request shares one canonical text (and ETag).

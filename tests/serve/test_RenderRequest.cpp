@@ -141,7 +141,11 @@ TEST(RenderRequest, AMeasuredBodyRefusesWhatItCannotWear) {
   };
   EXPECT_EQ(refusedWith({{"sex", "female"}}, nullptr).error, "no size chart: measured bodies are off");
   EXPECT_EQ(refusedWith({{"sex", "x"}}, &chart).parameter, "sex");
-  EXPECT_EQ(refusedWith({{"sex", "female"}, {"pose", "relaxed"}}, &chart).parameter, "pose");
+  // The Mannequin's joints are not MakeHuman's rig: its poses are refused, naming the rig's.
+  const ParameterError relaxed = refusedWith({{"sex", "female"}, {"pose", "relaxed"}}, &chart);
+  EXPECT_EQ(relaxed.parameter, "pose");
+  EXPECT_EQ(relaxed.accepted, "rest, arms-down, arm-raised, walking, sitting");
+  EXPECT_EQ(refusedWith({{"pose", "sitting"}}, &chart).parameter, "pose");  // and the rig's for the Mannequin
   EXPECT_EQ(refusedWith({{"sex", "female"}, {"outfit", "pencil:XL"}}, &chart).error, "no size named XL");
   EXPECT_EQ(refusedWith({{"sex", "female"}, {"outfit", "cape:M"}}, &chart).error, "no style named cape");
   // Without a sex the chart changes nothing: the Mannequin's styles and sizes.
@@ -166,4 +170,27 @@ TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
   ASSERT_TRUE(std::holds_alternative<ParameterError>(chest));
   EXPECT_EQ(std::get<ParameterError>(chest).parameter, "chest");
   EXPECT_EQ(refused({{"stature", "1.93"}}).parameter, "stature");
+}
+
+TEST(RenderRequest, APosedMeasuredBodyWearsOneGarmentAndSitsOnlyInATshirt) {
+  const SizeChart chart = womensChart();
+  const auto parsed = [&chart](const RenderRequest::Parameters& parameters) {
+    return RenderRequest::parse(parameters, &chart);
+  };
+  for (const char* pose : {"rest", "arms-down", "arm-raised", "walking", "sitting"}) {
+    auto one = parsed({{"sex", "female"}, {"pose", pose}, {"outfit", "tshirt:M"}});
+    ASSERT_TRUE(std::holds_alternative<RenderRequest>(one)) << pose;
+    EXPECT_EQ(std::get<RenderRequest>(one).pose, pose);
+    EXPECT_NE(std::get<RenderRequest>(one).drapeKey().find(std::string("pose=") + pose), std::string::npos);
+  }
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"sex", "female"}, {"outfit", "tshirt:M,pencil:M"}})));
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"sex", "female"}, {"pose", "sitting"}, {"outfit", ""}})));
+  for (const auto& [pose, outfit] : std::vector<std::pair<std::string, std::string>>{
+           {"walking", "tshirt:M,pencil:M"}, {"arms-down", "pencil:S,tshirt:M"}, {"sitting", "pencil:M"}}) {
+    auto refusal = parsed({{"sex", "female"}, {"pose", pose}, {"outfit", outfit}});
+    ASSERT_TRUE(std::holds_alternative<ParameterError>(refusal)) << pose << " " << outfit;
+    EXPECT_EQ(std::get<ParameterError>(refusal).parameter, "pose");
+    EXPECT_EQ(std::get<ParameterError>(refusal).value, pose);
+    EXPECT_NE(std::get<ParameterError>(refusal).accepted.find("sitting with a tshirt"), std::string::npos);
+  }
 }

@@ -103,6 +103,7 @@ class Fit(unittest.TestCase):
         for style in styles.values():
             self.assertEqual([s["name"] for s in style["sizes"]["female"]], ["XXS", "XS", "S", "M", "L", "XL"])
             self.assertEqual([s["name"] for s in style["sizes"]["male"]], ["XS", "S", "M", "L", "XL", "XXL"])
+        self.assertEqual(catalogue["fit"]["poses"], ["rest", "arms-down", "arm-raised", "walking", "sitting"])
         womens = catalogue["fit"]["measurements"]["female"]
         self.assertLess(womens["bust"]["min"], 0.76)
         self.assertGreater(womens["bust"]["max"], 0.96)
@@ -162,6 +163,23 @@ class Fit(unittest.TestCase):
             self.assertEqual(headers["cache-control"], "no-store")
         # The same worker then draws a body it can make.
         self.render(WOMANS_XS, "pencil:XS:ff0000")
+
+    def test_a_measured_body_takes_each_rig_pose_in_a_garment(self):
+        # MakeHuman's presets: the body moves from rest into the pose as the T-shirt drapes
+        # on it. Each picture shows the red shirt and another silhouette than the rest pose's.
+        body = dict(WOMANS_M)
+        del body["style"]
+
+        def silhouette(pose):
+            rows = self.render(dict(body, pose=pose), "tshirt:M:ff0000")
+            self.assertGreater(count_near(rows, (255, 0, 0), 0.12), 60, pose)
+            background = rows[0][0]
+            return {(x, y) for y, row in enumerate(rows) for x, p in enumerate(row) if p != background}
+
+        rest = silhouette("rest")
+        for pose in ("arms-down", "arm-raised", "walking", "sitting"):
+            posed = silhouette(pose)
+            self.assertGreater(len(rest ^ posed), 0.05 * len(rest), pose)  # the body moved
 
 
 if __name__ == "__main__":
