@@ -2,7 +2,9 @@
 
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoMaterialBinding.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 
@@ -20,6 +22,7 @@
 #include "nodes/render/ClothingLayer.h"
 #include "serve/MeasuredPoses.h"
 #include "serve/Wardrobe.h"
+#include "sim/fit/FitMap.h"
 #include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
 
@@ -136,13 +139,37 @@ SoNode* bodyUnder(SoNode* model, const std::vector<Draped>& beneath) {
   return group;
 }
 
-SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt32* coordIndex) {
+// Where a garment's fit map goes (null: none) and the fabric whose limits colour it.
+struct FitMapTarget {
+  std::vector<OutfitScene::FitMapGarment>* garments = nullptr;
+  std::string fabric;
+};
+
+// The garment in its colour, drawn by a ClothingLayer; or with a fit map an IndexedFaceSet
+// coloured per vertex once draped (a ClothingLayer draws one material).
+SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt32* coordIndex,
+                     const FitMapTarget& fitMap) {
   auto* separator = new SoSeparator;
-  separator->addChild(material(colourOf(item.colour), 0.15f, 0.3f));
+  SoMaterial* colour = material(colourOf(item.colour), 0.15f, 0.3f);
+  separator->addChild(colour);
   separator->addChild(hints(false));  // cloth is seen from both sides
   auto* coordinates = new SoCoordinate3;
   coordinates->point.connectFrom(&engine->positions);
   separator->addChild(coordinates);
+  if (fitMap.garments) {
+    // One colour a point from the start (the session checks the shapes before they are
+    // painted): the garment's own until paintFitMaps.
+    const std::vector<SbColor> plain(size_t(engine->restPoints.getNum()), colourOf(item.colour));
+    colour->diffuseColor.setValues(0, int(plain.size()), plain.data());
+    auto* binding = new SoMaterialBinding;
+    binding->value = SoMaterialBinding::PER_VERTEX_INDEXED;
+    separator->addChild(binding);
+    auto* faces = new SoIndexedFaceSet;
+    faces->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
+    separator->addChild(faces);
+    fitMap.garments->push_back({engine, coordinates, colour, fitMap.fabric});
+    return separator;
+  }
   auto* layer = new ClothingLayer;
   layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
   separator->addChild(layer);
@@ -204,22 +231,25 @@ HumanBody* measuredBody(const RenderRequest& request) {
 
 // A measured body and its graded garments (the class comment).
 void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request,
-                   const OutfitScene::GradedGarment& graded) {
+                   const OutfitScene::GradedGarment& graded, std::vector<OutfitScene::FitMapGarment>* fitMaps) {
   HumanBody* body = measuredBody(request);
   skin->addChild(body);
   const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {
-    ClothEngine* engine = gradedEngine(*findStyle(item.style), !beneath.empty(), bodyUnder(body, beneath));
+    const figment::GarmentStyle& style = *findStyle(item.style);
+    ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
     setMesh(engine, graded(item, sex));
-    root->addChild(garment(item, engine, &engine->coordIndex));
+    root->addChild(garment(item, engine, &engine->coordIndex, {fitMaps, style.fabric}));
     beneath.push_back({engine, &engine->coordIndex});
   }
 }
 
 }  // namespace
 
-SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const GradedGarment& graded) {
+SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const GradedGarment& graded,
+                                std::vector<FitMapGarment>* fitMaps) {
+  if (request.fitMap.empty()) fitMaps = nullptr;
   auto* root = new SoSeparator;
   addLights(root, *Catalogue::light(request.light));
   auto* body = new SoSeparator;
@@ -227,7 +257,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
   body->addChild(hints(true));
   if (!request.sex.empty()) {
     root->addChild(body);
-    dressMeasured(root, body, request, graded);
+    dressMeasured(root, body, request, graded, fitMaps);
     return root;
   }
   Mannequin* model = mannequin(request, wardrobe);
@@ -244,10 +274,58 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     restShape(engine, pattern, wardrobe.heightOrigin(), Catalogue::bodyFactors(request.body).height,
               Catalogue::size(item.size)->girth);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
-    root->addChild(garment(item, engine, &pattern->coordIndex));
+    root->addChild(garment(item, engine, &pattern->coordIndex, {fitMaps, "jersey"}));  // cotton jersey
     beneath.push_back({engine, &pattern->coordIndex});
   }
   return root;
+}
+
+namespace {
+
+// A garment as cut: the engine's rest points and its faces fan-triangulated.
+TriangleMesh restMesh(const ClothEngine& engine) {
+  TriangleMesh rest;
+  for (int i = 0; i < engine.restPoints.getNum(); ++i) {
+    const SbVec3f& p = engine.restPoints[i];
+    rest.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<int> face;
+  for (int i = 0; i <= engine.coordIndex.getNum(); ++i) {
+    const int v = i < engine.coordIndex.getNum() ? engine.coordIndex[i] : -1;
+    if (v >= 0) {
+      face.push_back(v);
+      continue;
+    }
+    for (size_t k = 2; k < face.size(); ++k) rest.triangles.push_back({face[0], face[k - 1], face[k]});
+    face.clear();
+  }
+  return rest;
+}
+
+}  // namespace
+
+void OutfitScene::paintFitMaps(const std::vector<FitMapGarment>& fitMaps) {
+  for (const FitMapGarment& garment : fitMaps) {
+    const TriangleMesh rest = restMesh(*garment.engine);
+    std::vector<Vec3> positions;
+    for (int i = 0; i < garment.coordinates->point.getNum(); ++i) {
+      const SbVec3f& p = garment.coordinates->point[i];
+      positions.emplace_back(p[0], p[1], p[2]);
+    }
+    if (positions.size() != rest.vertices.size())
+      throw std::runtime_error("fit map: the drape has " + std::to_string(positions.size()) + " points, the garment " +
+                               std::to_string(rest.vertices.size()));
+    FitInput input;
+    input.rest = &rest;
+    input.positions = &positions;
+    const FabricLimits limits = fabricLimits(garment.fabric);
+    std::vector<SbColor> colours;
+    for (const double value : fitMapValues(input, FitMapKind::Stretch)) {
+      const Vec3 c = fitMapColour(fitMapBand(fitMapShare(value, FitMapKind::Stretch, limits)));
+      colours.emplace_back(float(c.x()), float(c.y()), float(c.z()));
+    }
+    garment.material->diffuseColor.setValues(0, int(colours.size()), colours.data());
+  }
 }
 
 }  // namespace figment::serve

@@ -13,10 +13,14 @@
 
 #include <functional>
 #include <stdexcept>
+#include <vector>
 
 #include "serve/RenderRequest.h"
 #include "sim/core/TriangleMesh.h"
 
+class ClothEngine;
+class SoCoordinate3;
+class SoMaterial;
 class SoSeparator;
 
 namespace figment::serve {
@@ -36,10 +40,22 @@ class OutfitScene {
     using std::runtime_error::runtime_error;
   };
 
+  // A garment drawn as its fit map (RenderRequest::fitMap): an IndexedFaceSet coloured per
+  // vertex by `material`, painted once the drape is done. Nodes of the built scene.
+  struct FitMapGarment {
+    ClothEngine* engine;         // its restPoints and coordIndex: the garment as cut
+    SoCoordinate3* coordinates;  // the drape's positions
+    SoMaterial* material;        // one colour per vertex
+    std::string fabric;          // a material preset (sim/cloth/MaterialPresets.h): its limits
+  };
+
   // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
-  // only for a request with a sex. Throws BodyNotMade.
+  // only for a request with a sex. With a fit map, its garments go to `fitMaps`. Throws
+  // BodyNotMade.
   static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
-                            const GradedGarment& graded = nullptr);
+                            const GradedGarment& graded = nullptr, std::vector<FitMapGarment>* fitMaps = nullptr);
+  // Colours each garment by the bands of its stretch (sim/fit/FitMap.h) after the drape.
+  static void paintFitMaps(const std::vector<FitMapGarment>& fitMaps);
 };
 
 }  // namespace figment::serve

@@ -16,7 +16,7 @@ namespace figment::serve {
 namespace {
 
 const char* const kNames[] = {"stature", "bust",  "chest", "waist", "hips",   "skin", "pose",
-                              "outfit",  "light", "view",  "size",  "format", "sex"};
+                              "outfit",  "light", "view",  "size",  "format", "sex",  "fitmap"};
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
@@ -225,6 +225,10 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
       error = view(value, request.azimuth, request.elevation);
     else if (name == "size")
       error = imageSize(value, request.width, request.height);
+    else if (name == "fitmap")
+      error = value == "stretch" || value == "none"
+                  ? (request.fitMap = value == "none" ? "" : value, std::nullopt)
+                  : std::optional(bad(name, value, "no such fit map", "stretch, none"));
     else if (name == "format")
       error = value == "png" || value == "glb" ? (request.format = value, std::nullopt)
                                                : std::optional(bad(name, value, "no such format", "png, glb"));
@@ -296,6 +300,7 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
     request.light = plain.light;
     request.azimuth = plain.azimuth, request.elevation = plain.elevation;
     request.width = plain.width, request.height = plain.height;
+    request.fitMap.clear();  // the garments in their own colours
   }
   return request;
 }
@@ -332,7 +337,7 @@ std::string RenderRequest::sceneKey() const {
   for (size_t i = 0; i < outfit.size(); ++i)
     text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size + ":" + outfit[i].colour;
   if (outfit.empty()) text += "none";
-  return text + "&light=" + light;
+  return text + "&light=" + light + (fitMap.empty() ? "" : "&fitmap=" + fitMap);
 }
 
 std::string RenderRequest::canonical() const {

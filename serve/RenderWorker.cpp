@@ -110,11 +110,14 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
   const RenderRequest& request = std::get<RenderRequest>(parsed);
   if (request.sceneKey() != sceneKey_) {
     sceneKey_.clear();
+    fitMaps_.clear();
     try {
-      session_.adopt(
-          OutfitScene::build(request, wardrobe_, [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
+      session_.adopt(OutfitScene::build(
+          request, wardrobe_,
+          [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
             return fit_->garment(item.style, sex, item.size);
-          }));
+          },
+          &fitMaps_));
     } catch (const OutfitScene::BodyNotMade& error) {
       session_.clear();
       const std::string why = fit_->unreachable(request.body, request.sex == "male" ? Sex::Male : Sex::Female);
@@ -126,6 +129,7 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
       session_.clear();
       return failure(500, "the outfit did not drape: " + error);
     }
+    OutfitScene::paintFitMaps(fitMaps_);
     sceneFromCache_ = true;
     for (const session::EngineDrape& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.run.fromCache;
     sceneKey_ = request.sceneKey();

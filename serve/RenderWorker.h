@@ -8,8 +8,10 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "serve/FitWorker.h"
+#include "serve/OutfitScene.h"
 #include "serve/Wardrobe.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
@@ -50,7 +52,8 @@ class RenderWorker {
   std::string sceneKey_;  // the request whose scene the session holds; "" for none
   bool sceneFromCache_ = false;
   std::unique_ptr<session::SceneRenderer> renderer_;
-  std::unique_ptr<FitWorker> fit_;  // null when the size chart did not read
+  std::unique_ptr<FitWorker> fit_;                   // null when the size chart did not read
+  std::vector<OutfitScene::FitMapGarment> fitMaps_;  // the held scene's garments drawn as fit maps
 };
 
 }  // namespace figment::serve

@@ -1,5 +1,6 @@
 // The shopper's page: choices -> GET /api/render's parameters -> the picture. Measurements
 // are typed in cm and sent in metres; the catalogue (GET /api/catalogue) fills the lists.
+// "Fit map" draws the garments coloured by their stretch (fitmap=stretch: same drape).
 // "Advise my size" asks GET /api/fit for the same measurements (only when pressed: a fit
 // drapes three sizes, seconds) and lists the recommendation and each size's text.
 "use strict";
@@ -54,6 +55,7 @@ function query() {
   for (const m of measures) p.set(m, (Number(byId(m).value) / 100).toFixed(3));
   for (const k of ["skin", "pose", "light"]) p.set(k, byId(k).value);
   p.set("outfit", outfit());
+  if (byId("fitmap").checked) p.set("fitmap", "stretch");
   p.set("view", state.azimuth + ",5");
   p.set("size", "480x640");
   return p.toString();
@@ -139,6 +141,10 @@ async function start() {
   if (catalogue.fit) catalogue.fit.styles.forEach((s) => option(byId("fit-style"), s.name));
   else byId("fit").hidden = true;
   byId("advise").addEventListener("click", advise);
+  byId("fitmap").addEventListener("change", () => {
+    byId("fitmap-legend").hidden = !byId("fitmap").checked;
+    show();
+  });
   byId("turn-left").addEventListener("click", () => turn(-30));
   byId("turn-right").addEventListener("click", () => turn(30));
   show();

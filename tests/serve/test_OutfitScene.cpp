@@ -1,12 +1,19 @@
 // A request's scene, built in code: the lights of its preset, the mannequin at the
 // request's size factors and pose, one engine per garment innermost first, an outer one
-// colliding with the garments beneath; a pattern follows the stature and its size widens it.
+// colliding with the garments beneath; a pattern follows the stature and its size widens it;
+// a fit map colours each garment point by its stretch.
 
 #include <Inventor/SbBox3f.h>
 #include <Inventor/SoDB.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoMaterialBinding.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include "nodes/Init.h"
 #include "nodes/SceneSearch.h"
@@ -15,6 +22,7 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "serve/OutfitScene.h"
 #include "serve/Wardrobe.h"
+#include "sim/fit/FitMap.h"
 
 using namespace figment::serve;
 
@@ -91,4 +99,56 @@ TEST_F(OutfitSceneTest, APatternFollowsTheStatureAndItsSizeWidensIt) {
   a->unref();
   b->unref();
   c->unref();
+}
+
+TEST_F(OutfitSceneTest, AFitMapColoursEachPointByItsStretchBand) {
+  auto parsed = RenderRequest::parse({{"outfit", "tshirt:M,skirt:L"}, {"fitmap", "stretch"}});
+  ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed));
+  std::vector<OutfitScene::FitMapGarment> fitMaps;
+  SoSeparator* root = OutfitScene::build(std::get<RenderRequest>(parsed), *wardrobe_, nullptr, &fitMaps);
+  root->ref();
+  ASSERT_EQ(fitMaps.size(), 2u);  // each garment, innermost first
+  EXPECT_EQ(fitMaps[0].fabric, "jersey");
+  // Drawn per vertex (a ClothingLayer draws one material): a binding per garment.
+  SoSearchAction search;
+  search.setType(SoMaterialBinding::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.apply(root);
+  EXPECT_EQ(search.getPaths().getLength(), 2);
+  // The drape's positions given by hand: the T-shirt as cut is at rest (blue), 20 % larger
+  // every way it is past jersey's 10 % limit (red).
+  // (Coordinates of the test's own: the scene's would drape when read.)
+  const OutfitScene::FitMapGarment& shirt = fitMaps[0];
+  const int n = shirt.engine->restPoints.getNum();
+  ASSERT_GT(n, 100);
+  auto* drape = new SoCoordinate3;
+  drape->ref();
+  const auto paintedAt = [&](float scale) {
+    std::vector<SbVec3f> points;
+    for (int i = 0; i < n; ++i) points.push_back(shirt.engine->restPoints[i] * scale);
+    drape->point.setValues(0, n, points.data());
+    OutfitScene::FitMapGarment byHand = shirt;
+    byHand.coordinates = drape;
+    OutfitScene::paintFitMaps({byHand});
+    const SoMFColor& colours = shirt.material->diffuseColor;
+    return std::vector<SbColor>(colours.getValues(0), colours.getValues(0) + colours.getNum());
+  };
+  const auto share = [n](const std::vector<SbColor>& colours, int band) {
+    const figment::Vec3 c = figment::fitMapColour(band);
+    return double(std::count(colours.begin(), colours.end(), SbColor(float(c.x()), float(c.y()), float(c.z())))) / n;
+  };
+  EXPECT_EQ(paintedAt(1.0f).size(), size_t(n));
+  EXPECT_GT(share(paintedAt(1.0f), 0), 0.99);
+  EXPECT_GT(share(paintedAt(1.2f), figment::kFitMapBands - 1), 0.99);
+  drape->unref();
+  root->unref();
+}
+
+TEST_F(OutfitSceneTest, WithoutAFitMapTheGarmentsKeepTheirColours) {
+  std::vector<OutfitScene::FitMapGarment> fitMaps;
+  SoSeparator* root =
+      OutfitScene::build(std::get<RenderRequest>(RenderRequest::parse({})), *wardrobe_, nullptr, &fitMaps);
+  root->ref();
+  EXPECT_TRUE(fitMaps.empty());
+  root->unref();
 }

@@ -194,3 +194,21 @@ TEST(RenderRequest, APosedMeasuredBodyWearsOneGarmentAndSitsOnlyInATshirt) {
     EXPECT_NE(std::get<ParameterError>(refusal).accepted.find("sitting with a tshirt"), std::string::npos);
   }
 }
+
+TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
+  const RenderRequest plain = ok({{"outfit", "tshirt:S"}});
+  const RenderRequest mapped = ok({{"outfit", "tshirt:S"}, {"fitmap", "stretch"}});
+  EXPECT_EQ(mapped.fitMap, "stretch");
+  EXPECT_EQ(mapped.drapeKey(), plain.drapeKey());  // the same drape, coloured otherwise
+  EXPECT_NE(mapped.sceneKey(), plain.sceneKey());
+  EXPECT_NE(mapped.canonical().find("&fitmap=stretch"), std::string::npos);  // so another ETag
+  EXPECT_EQ(ok({{"outfit", "tshirt:S"}, {"fitmap", "none"}}).canonical(), plain.canonical());
+  EXPECT_EQ(plain.canonical().find("fitmap"), std::string::npos);  // earlier requests' tags unchanged
+  auto again = RenderRequest::parseCanonical(mapped.canonical());
+  ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
+  EXPECT_EQ(std::get<RenderRequest>(again).canonical(), mapped.canonical());
+  EXPECT_EQ(ok({{"fitmap", "stretch"}, {"format", "glb"}}).canonical(), ok({{"format", "glb"}}).canonical());
+  const ParameterError bad = refused({{"fitmap", "ease"}});
+  EXPECT_EQ(bad.parameter, "fitmap");
+  EXPECT_EQ(bad.accepted, "stretch, none");
+}

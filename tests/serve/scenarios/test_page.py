@@ -2,7 +2,8 @@
 """The shopper's page in a real browser: headless Chromium (Debian's chromium and
 chromium-driver, driven by python3-selenium) loads / from a figment-serve this test
 starts, sees the picture, changes a measurement and a garment and sees the picture
-change each time, on a phone-sized window, and asks for size advice (GET /api/fit) for
+change each time, on a phone-sized window, switches the fit map on and sees the garments in
+its bands, and asks for size advice (GET /api/fit) for
 the women's M chart body; screenshots go to SCREENSHOT-FOLDER.
 
     test_page.py FIGMENT-SERVE SCREENSHOT-FOLDER
@@ -110,6 +111,41 @@ class Page(unittest.TestCase):
         self.assertPictureChanged(pixels)
         self.assertEqual(browser.find_element(By.ID, "error").text, "")
         self.shot("serve-page-turned.png")
+
+    def band_pixels(self):
+        """(warm, blue): the shown picture's pixels in the fit map's red to yellow bands (no
+        blue in them) and in its blue band (blue alone), at the picture's own size. Neither
+        the skin, the grey T-shirt nor the dark red skirt is either."""
+        return self.browser.execute_script(
+            "const i = document.getElementById('picture'); const c = document.createElement('canvas');"
+            "c.width = i.naturalWidth; c.height = i.naturalHeight; const g = c.getContext('2d');"
+            "g.drawImage(i, 0, 0); const d = g.getImageData(0, 0, c.width, c.height).data;"
+            "let warm = 0, blue = 0;"
+            "for (let k = 0; k < d.length; k += 4) { const s = d[k] + d[k + 1] + d[k + 2]; if (s <= 60) continue;"
+            "  if (d[k + 2] < 0.08 * s && d[k] > 0.45 * s) warm++; if (d[k + 2] > 0.8 * s) blue++; }"
+            "return [warm, blue];")
+
+    def test_the_fit_map_colours_the_garments_by_their_stretch(self):
+        browser = self.browser
+        browser.get(self.server.url)
+        first = self.wait_for_new_picture("")
+        Select(browser.find_element(By.ID, "style-0")).select_by_value("tshirt")
+        Select(browser.find_element(By.ID, "size-0")).select_by_value("S")
+        Select(browser.find_element(By.ID, "style-1")).select_by_value("skirt")
+        dressed = self.wait_for_new_picture(first)
+        self.assertNotIn("fitmap", dressed)
+        self.assertEqual(self.band_pixels(), [0, 0])
+        self.assertTrue(browser.find_element(By.ID, "fitmap-legend").get_attribute("hidden"))
+        browser.find_element(By.ID, "fitmap").click()
+        mapped = self.wait_for_new_picture(dressed)
+        self.assertIn("fitmap=stretch", mapped)
+        warm, blue = self.band_pixels()
+        # Most of the cloth hangs at rest (blue); the skirt's waistband holds it up, stretched.
+        self.assertGreater(blue, 2000, (warm, blue))
+        self.assertGreater(warm, 20, (warm, blue))
+        self.assertFalse(browser.find_element(By.ID, "fitmap-legend").get_attribute("hidden"))
+        self.assertEqual(browser.find_element(By.ID, "error").text, "")
+        self.shot("serve-page-fitmap.png")
 
     def test_size_advice_names_the_chart_bodys_own_size(self):
         browser = self.browser
