@@ -340,6 +340,13 @@ std::string RenderRequest::sceneKey() const {
   return text + "&light=" + light + (fitMap.empty() ? "" : "&fitmap=" + fitMap);
 }
 
+int RenderRequest::supersample() const {
+  constexpr long kMostSamples = 4L * RequestLimits::kMaxPixels;
+  int k = 3;
+  while (k > 1 && long(k) * k * width * height > kMostSamples) --k;
+  return k;
+}
+
 std::string RenderRequest::canonical() const {
   if (format == "glb") return sceneKey() + "&format=glb";
   return sceneKey() + formatted("&view=%.1f,%.1f", azimuth, elevation) + "&size=" + std::to_string(width) + "x" +

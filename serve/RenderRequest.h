@@ -66,6 +66,12 @@ class RenderRequest {
   static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text,
                                                                     const SizeChart* chart = nullptr);
 
+  // The picture's anti-aliasing (session/SceneRenderer.h's k x k samples a pixel):
+  // figment-view's 3, fewer where the drawn image would pass four times the largest
+  // picture's pixels (1600 x 1200 takes 2), so a worker's off-screen buffers stay within
+  // about 8 Mpixels. Of the size alone: the canonical text still names the picture.
+  int supersample() const;
+
   // "&sex=..." when the body is measured, else "": a Mannequin's texts are as they were.
   std::string sexText() const { return sex.empty() ? "" : "&sex=" + sex; }
 

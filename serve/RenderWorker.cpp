@@ -152,7 +152,7 @@ RenderWorker::Answer RenderWorker::drawView(const RenderRequest& request) {
   if (!session_.stage(size, session::ViewDirection{request.azimuth, request.elevation}))
     return failure(500, "the outfit cannot be drawn: " + session_.shapeError());
   if (!renderer_ || renderer_->size().width != size.width || renderer_->size().height != size.height)
-    renderer_ = std::make_unique<session::SceneRenderer>(size);
+    renderer_ = std::make_unique<session::SceneRenderer>(size, request.supersample());
   if (std::string error = renderer_->render(session_.stagedRoot()); !error.empty()) return failure(500, error);
   Answer answer{200, "", sceneFromCache_};
   if (std::string error = encodePng({size.width, size.height, renderer_->pixels()}, answer.body); !error.empty())

@@ -212,3 +212,16 @@ TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
   EXPECT_EQ(bad.parameter, "fitmap");
   EXPECT_EQ(bad.accepted, "stretch, none");
 }
+
+TEST(RenderRequest, PicturesAreSupersampledWithinABoundOnTheDrawnPixels) {
+  EXPECT_EQ(ok({}).supersample(), 3);  // the default picture: figment-view's
+  EXPECT_EQ(ok({{"size", "64x64"}}).supersample(), 3);
+  EXPECT_EQ(ok({{"size", "1600x1200"}}).supersample(), 2);  // the largest
+  for (const char* size : {"1600x1000", "1200x1600", "1100x1100", "64x1600"}) {
+    const RenderRequest request = ok({{"size", size}});
+    const long k = request.supersample(), pixels = long(request.width) * request.height;
+    EXPECT_GE(k, 1) << size;
+    EXPECT_LE(k * k * pixels, 4L * RequestLimits::kMaxPixels) << size;
+    if (k < 3) EXPECT_GT((k + 1) * (k + 1) * pixels, 4L * RequestLimits::kMaxPixels) << size;
+  }
+}
