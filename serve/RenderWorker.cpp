@@ -120,6 +120,7 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
           &fitMaps_));
     } catch (const OutfitScene::BodyNotMade& error) {
       session_.clear();
+      if (!fit_) return failure(500, error.what());
       const std::string why = fit_->unreachable(request.body, request.sex == "male" ? Sex::Male : Sex::Female);
       return why.empty() ? failure(500, error.what()) : unreachableBody(request, why);
     }
