@@ -256,8 +256,15 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
   body->addChild(material(colourOf(request.skin), 0.1f, 0.2f));
   body->addChild(hints(true));
   if (!request.sex.empty()) {
+    root->ref();
     root->addChild(body);
-    dressMeasured(root, body, request, graded, fitMaps);
+    try {
+      dressMeasured(root, body, request, graded, fitMaps);
+    } catch (...) {
+      root->unref();  // the half-made scene goes
+      throw;
+    }
+    root->unrefNoDelete();
     return root;
   }
   Mannequin* model = mannequin(request, wardrobe);
