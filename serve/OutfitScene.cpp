@@ -22,6 +22,7 @@
 #include "nodes/render/ClothingLayer.h"
 #include "serve/MeasuredPoses.h"
 #include "serve/Wardrobe.h"
+#include "sim/collision/MeshCollider.h"
 #include "sim/fit/FitMap.h"
 #include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
@@ -139,10 +140,13 @@ SoNode* bodyUnder(SoNode* model, const std::vector<Draped>& beneath) {
   return group;
 }
 
-// Where a garment's fit map goes (null: none) and the fabric whose limits colour it.
+// Where a garment's fit map goes (null: none) and what it is measured against.
 struct FitMapTarget {
   std::vector<OutfitScene::FitMapGarment>* garments = nullptr;
-  std::string fabric;
+  std::string fabric;  // whose limits colour it
+  std::string kind;
+  const MeshFile* skin = nullptr;  // a measured body
+  ClothParameters parameters;
 };
 
 // The garment in its colour, drawn by a ClothingLayer; or with a fit map an IndexedFaceSet
@@ -167,7 +171,8 @@ SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt3
     auto* faces = new SoIndexedFaceSet;
     faces->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
     separator->addChild(faces);
-    fitMap.garments->push_back({engine, coordinates, colour, fitMap.fabric});
+    fitMap.garments->push_back(
+        {engine, coordinates, colour, fitMap.fabric, fitMap.kind, fitMap.skin, fitMap.parameters});
     return separator;
   }
   auto* layer = new ClothingLayer;
@@ -240,7 +245,8 @@ void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& re
     const figment::GarmentStyle& style = *findStyle(item.style);
     ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
     setMesh(engine, graded(item, sex));
-    root->addChild(garment(item, engine, &engine->coordIndex, {fitMaps, style.fabric}));
+    const FitMapTarget fitMap{fitMaps, style.fabric, request.fitMap, body, sizeDrapeParameters(style)};
+    root->addChild(garment(item, engine, &engine->coordIndex, fitMap));
     beneath.push_back({engine, &engine->coordIndex});
   }
 }
@@ -281,7 +287,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     restShape(engine, pattern, wardrobe.heightOrigin(), Catalogue::bodyFactors(request.body).height,
               Catalogue::size(item.size)->girth);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
-    root->addChild(garment(item, engine, &pattern->coordIndex, {fitMaps, "jersey"}));  // cotton jersey
+    root->addChild(garment(item, engine, &pattern->coordIndex, {fitMaps, "jersey", request.fitMap}));  // cotton jersey
     beneath.push_back({engine, &pattern->coordIndex});
   }
   return root;
@@ -325,10 +331,18 @@ void OutfitScene::paintFitMaps(const std::vector<FitMapGarment>& fitMaps) {
     FitInput input;
     input.rest = &rest;
     input.positions = &positions;
+    const FitMapKind kind = fitMapKind(garment.kind);
+    std::shared_ptr<const MeshCollider> skin;
+    if (kind != FitMapKind::Stretch) {
+      skin = garment.skin ? garment.skin->collider() : nullptr;
+      if (!skin) throw std::runtime_error("fit map " + garment.kind + ": no skin to measure from");
+      input.body = skin.get();
+      input.parameters = garment.parameters;
+    }
     const FabricLimits limits = fabricLimits(garment.fabric);
     std::vector<SbColor> colours;
-    for (const double value : fitMapValues(input, FitMapKind::Stretch)) {
-      const Vec3 c = fitMapColour(fitMapBand(fitMapShare(value, FitMapKind::Stretch, limits)));
+    for (const double value : fitMapValues(input, kind)) {
+      const Vec3 c = fitMapColour(fitMapBand(fitMapShare(value, kind, limits)));
       colours.emplace_back(float(c.x()), float(c.y()), float(c.z()));
     }
     garment.material->diffuseColor.setValues(0, int(colours.size()), colours.data());

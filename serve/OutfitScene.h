@@ -16,9 +16,11 @@
 #include <vector>
 
 #include "serve/RenderRequest.h"
+#include "sim/cloth/ClothParameters.h"
 #include "sim/core/TriangleMesh.h"
 
 class ClothEngine;
+class MeshFile;
 class SoCoordinate3;
 class SoMaterial;
 class SoSeparator;
@@ -47,6 +49,9 @@ class OutfitScene {
     SoCoordinate3* coordinates;  // the drape's positions
     SoMaterial* material;        // one colour per vertex
     std::string fabric;          // a material preset (sim/cloth/MaterialPresets.h): its limits
+    std::string kind;            // stretch, ease or pressure (RenderRequest::fitMap)
+    const MeshFile* skin;        // for ease and pressure: the measured body; else null
+    ClothParameters parameters;  // for ease and pressure: the drape's (clearance, material)
   };
 
   // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
@@ -54,7 +59,7 @@ class OutfitScene {
   // BodyNotMade.
   static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
                             const GradedGarment& graded = nullptr, std::vector<FitMapGarment>* fitMaps = nullptr);
-  // Colours each garment by the bands of its stretch (sim/fit/FitMap.h) after the drape.
+  // Colours each garment by the bands of its fit map (sim/fit/FitMap.h) after the drape.
   static void paintFitMaps(const std::vector<FitMapGarment>& fitMaps);
 };
 

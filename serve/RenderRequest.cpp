@@ -150,6 +150,16 @@ std::optional<ParameterError> pose(const std::string& value, const SizeNames& na
   return bad("pose", value, "no such pose", names.chart ? MeasuredPoses::names() : namesOf(Catalogue::poses()));
 }
 
+// Stretch needs the drape alone; ease and pressure the skin as a mesh, which a measured
+// body has and the Mannequin (its skin drawn over collision volumes) has not.
+std::optional<ParameterError> fitMap(const std::string& value, const SizeNames& names, std::string& out) {
+  const std::string accepted = "stretch, none; with sex also ease, pressure";
+  if (value == "stretch" || value == "none") return out = value == "none" ? "" : value, std::nullopt;
+  if (value != "ease" && value != "pressure") return bad("fitmap", value, "no such fit map", accepted);
+  if (!names.chart) return bad("fitmap", value, "ease and pressure need a measured body (sex)", accepted);
+  return out = value, std::nullopt;
+}
+
 std::optional<ParameterError> view(const std::string& value, double& azimuth, double& elevation) {
   const std::string accepted = "AZ,EL in degrees (AZ -360 to 360, EL -60 to 80), or front, back, left, right";
   const std::map<std::string, double> named = {{"front", 0}, {"right", 90}, {"back", 180}, {"left", 270}};
@@ -226,9 +236,7 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
     else if (name == "size")
       error = imageSize(value, request.width, request.height);
     else if (name == "fitmap")
-      error = value == "stretch" || value == "none"
-                  ? (request.fitMap = value == "none" ? "" : value, std::nullopt)
-                  : std::optional(bad(name, value, "no such fit map", "stretch, none"));
+      error = fitMap(value, names, request.fitMap);
     else if (name == "format")
       error = value == "png" || value == "glb" ? (request.format = value, std::nullopt)
                                                : std::optional(bad(name, value, "no such format", "png, glb"));

@@ -84,8 +84,9 @@ class RenderRequest {
   double azimuth = 0, elevation = 0;  // degrees
   int width = 800, height = 600;      // pixels
   std::string format = "png";         // png, or glb: the dressed body as glTF binary
-  // "" (the garments in their colours) or "stretch": each garment coloured by its fit map's
-  // bands (sim/fit/FitMap.h), blue at rest to red at the fabric's limit. Same drape.
+  // "" (the garments in their colours), "stretch", or with a sex also "ease", "pressure":
+  // each garment coloured by that fit map's bands (sim/fit/FitMap.h), blue at rest (far
+  // from the skin) to red at the fabric's limit (on the skin). Same drape.
   std::string fitMap;
 };
 

@@ -195,6 +195,19 @@ TEST(RenderRequest, APosedMeasuredBodyWearsOneGarmentAndSitsOnlyInATshirt) {
   }
 }
 
+TEST(RenderRequest, PicturesAreSupersampledWithinABoundOnTheDrawnPixels) {
+  EXPECT_EQ(ok({}).supersample(), 3);  // the default picture: figment-view's
+  EXPECT_EQ(ok({{"size", "64x64"}}).supersample(), 3);
+  EXPECT_EQ(ok({{"size", "1600x1200"}}).supersample(), 2);  // the largest
+  for (const char* size : {"1600x1000", "1200x1600", "1100x1100", "64x1600"}) {
+    const RenderRequest request = ok({{"size", size}});
+    const long k = request.supersample(), pixels = long(request.width) * request.height;
+    EXPECT_GE(k, 1) << size;
+    EXPECT_LE(k * k * pixels, 4L * RequestLimits::kMaxPixels) << size;
+    if (k < 3) EXPECT_GT((k + 1) * (k + 1) * pixels, 4L * RequestLimits::kMaxPixels) << size;
+  }
+}
+
 TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
   const RenderRequest plain = ok({{"outfit", "tshirt:S"}});
   const RenderRequest mapped = ok({{"outfit", "tshirt:S"}, {"fitmap", "stretch"}});
@@ -208,20 +221,15 @@ TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
   ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
   EXPECT_EQ(std::get<RenderRequest>(again).canonical(), mapped.canonical());
   EXPECT_EQ(ok({{"fitmap", "stretch"}, {"format", "glb"}}).canonical(), ok({{"format", "glb"}}).canonical());
-  const ParameterError bad = refused({{"fitmap", "ease"}});
+  const ParameterError bad = refused({{"fitmap", "heat"}});
   EXPECT_EQ(bad.parameter, "fitmap");
-  EXPECT_EQ(bad.accepted, "stretch, none");
-}
-
-TEST(RenderRequest, PicturesAreSupersampledWithinABoundOnTheDrawnPixels) {
-  EXPECT_EQ(ok({}).supersample(), 3);  // the default picture: figment-view's
-  EXPECT_EQ(ok({{"size", "64x64"}}).supersample(), 3);
-  EXPECT_EQ(ok({{"size", "1600x1200"}}).supersample(), 2);  // the largest
-  for (const char* size : {"1600x1000", "1200x1600", "1100x1100", "64x1600"}) {
-    const RenderRequest request = ok({{"size", size}});
-    const long k = request.supersample(), pixels = long(request.width) * request.height;
-    EXPECT_GE(k, 1) << size;
-    EXPECT_LE(k * k * pixels, 4L * RequestLimits::kMaxPixels) << size;
-    if (k < 3) EXPECT_GT((k + 1) * (k + 1) * pixels, 4L * RequestLimits::kMaxPixels) << size;
+  EXPECT_EQ(bad.accepted, "stretch, none; with sex also ease, pressure");
+  // Ease and pressure measure from the skin as a mesh: a measured body's, not the Mannequin's.
+  EXPECT_EQ(refused({{"fitmap", "ease"}}).error, "ease and pressure need a measured body (sex)");
+  const SizeChart chart = womensChart();
+  for (const char* kind : {"ease", "pressure"}) {
+    auto parsed = RenderRequest::parse({{"sex", "female"}, {"fitmap", kind}}, &chart);
+    ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed)) << kind;
+    EXPECT_EQ(std::get<RenderRequest>(parsed).fitMap, kind);
   }
 }

@@ -181,6 +181,31 @@ class Fit(unittest.TestCase):
             posed = silhouette(pose)
             self.assertGreater(len(rest ^ posed), 0.05 * len(rest), pose)  # the body moved
 
+    def test_a_measured_body_shows_its_fit_maps(self):
+        # The pencil skirt of its own size on the women's M body: its ease map is red where
+        # the skirt lies on the skin (the waist, the hips) and blue where it hangs away
+        # (between the legs); stretch and pressure draw too, from the same drape.
+        body = dict(WOMANS_M)
+        del body["style"]
+
+        def bands(kind):
+            rows = self.render(dict(body, fitmap=kind), "pencil:M")
+            red = blue = 0
+            for row in rows:
+                for p in row:
+                    total = sum(p)
+                    red += total > 60 and p[0] > 0.8 * total
+                    blue += total > 60 and p[2] > 0.8 * total
+            return red, blue
+
+        red, blue = bands("ease")
+        self.assertGreater(red, 50, (red, blue))
+        self.assertGreater(blue, 50, (red, blue))
+        for kind in ("stretch", "pressure"):
+            self.assertGreater(sum(bands(kind)), 200, kind)  # the skirt in the map's colours
+        status, error = self.server.json("/api/render?fitmap=ease")  # the Mannequin: no skin mesh
+        self.assertEqual((status, error["parameter"]), (400, "fitmap"))
+
 
 if __name__ == "__main__":
     EXECUTABLE = sys.argv.pop(1)
