@@ -33,6 +33,7 @@
 #include "io/MakeHumanFiles.h"
 #include "io/MeshImport.h"
 #include "sim/core/BoundaryLoops.h"
+#include "sim/core/DisplaySubdivision.h"
 #include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
@@ -72,6 +73,16 @@ std::vector<figment::Triangle> triangles(const SoMFInt32& coordIndex) {
   return out;
 }
 
+// The median boundary turning of the display mesh that `levels` splits make of `faces` at
+// `positions`.
+double displayTurning(const std::vector<figment::Vec3>& positions, const std::vector<figment::Triangle>& faces,
+                      int levels) {
+  const figment::DisplaySubdivision layout(faces, positions, levels);
+  std::vector<figment::Vec3> fine, normals;
+  layout.apply(positions, fine, normals);
+  return figment::medianBoundaryTurning(fine, layout.triangles());
+}
+
 class GarmentEdges : public ::testing::TestWithParam<ShippedGarment> {};
 
 TEST_P(GarmentEdges, TurnLittleAtRestAndDraped) {
@@ -93,6 +104,15 @@ TEST_P(GarmentEdges, TurnLittleAtRestAndDraped) {
   EXPECT_LE(draped, GetParam().drapedDegrees) << "at rest " << rest;
   RecordProperty("restDegrees", std::to_string(rest));
   RecordProperty("drapedDegrees", std::to_string(draped));
+  // What the picture shows with a display mesh (ClothingLayer.displaySubdivision).
+  for (int levels : {1, 2}) {
+    const double displayRest = displayTurning(points(engine.restPoints), faces, levels);
+    const double displayDraped = displayTurning(points(positions), faces, levels);
+    EXPECT_LT(displayRest, rest) << levels << " levels";
+    EXPECT_LT(displayDraped, draped) << levels << " levels";
+    RecordProperty("displayRestDegrees" + std::to_string(levels), std::to_string(displayRest));
+    RecordProperty("displayDrapedDegrees" + std::to_string(levels), std::to_string(displayDraped));
+  }
 }
 
 void asShipped(ClothEngine&) {}
