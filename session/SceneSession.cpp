@@ -1,5 +1,6 @@
 #include "session/SceneSession.h"
 
+#include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "guard/Guard.h"

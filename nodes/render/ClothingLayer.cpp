@@ -158,12 +158,12 @@ struct ClothingLayer::DrawCache {
           drawnTriangles(layer.coordIndex.getValues(0), layer.coordIndex.getNum(), pointCount), coarse, levels);
       layoutLayerId = layer.getNodeId();
     }
-    std::vector<figment::Vec3> fine, normals;
-    layout->apply(coarse, fine, normals);
+    std::vector<figment::Vec3> fine, fineNormals;
+    layout->apply(coarse, fine, fineNormals);
     points.resize(fine.size()), smooth.resize(fine.size());
     for (size_t i = 0; i < fine.size(); ++i) {
       points[i].setValue(float(fine[i].x()), float(fine[i].y()), float(fine[i].z()));
-      smooth[i].setValue(float(normals[i].x()), float(normals[i].y()), float(normals[i].z()));
+      smooth[i].setValue(float(fineNormals[i].x()), float(fineNormals[i].y()), float(fineNormals[i].z()));
     }
     index.clear();
     for (const figment::Triangle& t : layout->triangles()) index.insert(index.end(), {t[0], t[1], t[2], -1});

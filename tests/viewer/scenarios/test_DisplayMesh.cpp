@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "nodes/render/ClothingLayer.h"
@@ -96,5 +97,7 @@ TEST_F(DisplayMesh, AnOutlineTurnsInSmallerKinks) {
   }
   EXPECT_GT(turns[0], 20.0) << "the 12-gon's corners";
   EXPECT_LT(turns[1], 0.5 * turns[0]);
+  RecordProperty("coarseDegrees", std::to_string(turns[0]));
+  RecordProperty("displayDegrees", std::to_string(turns[1]));
 }
 
