@@ -55,8 +55,8 @@
   (across a seam). The simulation stays as coarse as the drape needs; the picture shows it
   smooth. Every pass of the hybrid drawing (the sort, the facing test, the stencil) uses
   the display mesh, and so does the depth buffer alone (GLRenderPlain: figment-view
-  --depth-buffer-only). Picking, bounds, counts, writing and --export keep the faces. Because the order depends on the view, a ClothingLayer keeps
-  any separator above it from caching its rendering.
+  --depth-buffer-only). Picking, bounds, counts, writing and --export keep the faces. Because the order depends on the
+  view, a ClothingLayer keeps any separator above it from caching its rendering.
 
   The garment's coordinates come from the Coordinate3 before it, usually connected to
   a ClothEngine's output:

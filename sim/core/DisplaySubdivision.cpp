@@ -18,8 +18,8 @@ std::vector<int> weldByPosition(const std::vector<Vec3>& positions) {
   std::map<std::tuple<double, double, double>, int> first;
   std::vector<int> weld(positions.size());
   for (size_t i = 0; i < positions.size(); ++i)
-    weld[i] = first.try_emplace({positions[i].x(), positions[i].y(), positions[i].z()}, static_cast<int>(i))
-                  .first->second;
+    weld[i] =
+        first.try_emplace({positions[i].x(), positions[i].y(), positions[i].z()}, static_cast<int>(i)).first->second;
   return weld;
 }
 
@@ -47,8 +47,10 @@ void extrapolateBoundaryNormals(std::vector<Vec3>& normals, const std::vector<Tr
   std::vector<Vec3> inside(normals.size(), Vec3::Zero());
   for (const Triangle& t : triangles)
     for (int e = 0; e < 3; ++e)
-      if (onBoundary[t[e]] && !onBoundary[t[(e + 1) % 3]]) inside[t[e]] += normals[t[(e + 1) % 3]];
-      else if (onBoundary[t[(e + 1) % 3]] && !onBoundary[t[e]]) inside[t[(e + 1) % 3]] += normals[t[e]];
+      if (onBoundary[t[e]] && !onBoundary[t[(e + 1) % 3]])
+        inside[t[e]] += normals[t[(e + 1) % 3]];
+      else if (onBoundary[t[(e + 1) % 3]] && !onBoundary[t[e]])
+        inside[t[(e + 1) % 3]] += normals[t[e]];
   std::vector<Vec3> original = normals;
   for (size_t v = 0; v < normals.size(); ++v) {
     if (!onBoundary[v] || inside[v].squaredNorm() == 0.0) continue;
@@ -98,8 +100,10 @@ DisplaySubdivision::DisplaySubdivision(const std::vector<Triangle>& triangles, c
     std::vector<Edge> edges;
     auto split = [&](int a, int b) {
       const auto [it, added] = index.try_emplace(std::minmax(a, b), static_cast<int>(edges.size()));
-      if (added) edges.push_back({a, b, true});
-      else edges[it->second].boundary = false;  // a second triangle uses it
+      if (added)
+        edges.push_back({a, b, true});
+      else
+        edges[it->second].boundary = false;  // a second triangle uses it
       return counts_.back() + it->second;
     };
     std::vector<Triangle> fine;

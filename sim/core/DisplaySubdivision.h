@@ -55,11 +55,11 @@ class DisplaySubdivision {
     int a, b;
     bool boundary;
   };
-  std::vector<int> weld_;                       // each simulation vertex to its representative
-  std::vector<std::vector<Triangle>> triangles_;  // per level, level 0 welded
-  std::vector<std::vector<Edge>> edges_;        // per split: the edges in new-vertex order
+  std::vector<int> weld_;                             // each simulation vertex to its representative
+  std::vector<std::vector<Triangle>> triangles_;      // per level, level 0 welded
+  std::vector<std::vector<Edge>> edges_;              // per split: the edges in new-vertex order
   std::vector<std::vector<std::vector<int>>> loops_;  // per split: the boundary loops
-  std::vector<int> counts_;                     // vertices per level
+  std::vector<int> counts_;                           // vertices per level
 };
 
 }  // namespace figment

@@ -100,4 +100,3 @@ TEST_F(DisplayMesh, AnOutlineTurnsInSmallerKinks) {
   RecordProperty("coarseDegrees", std::to_string(turns[0]));
   RecordProperty("displayDegrees", std::to_string(turns[1]));
 }
-
