@@ -1,10 +1,12 @@
 #include "session/SceneSession.h"
 
+#include <Inventor/SoPath.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "guard/Guard.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
+#include "nodes/render/ClothingLayer.h"
 #include "session/SceneStaging.h"
 
 namespace figment::session {
@@ -121,6 +123,10 @@ void SceneSession::checkShapes() {
   // Draped, the coordinates are known: every shape's indices and counts must lie within its
   // data before anything is drawn or bounded (Coin allocates by the largest index).
   shapeError_ = guard::checkShapes(scene_);
+  // And the fields that say how a layer is drawn (its display mesh's levels).
+  const SoPathList layers = findAll(scene_, ClothingLayer::getClassTypeId());
+  for (int i = 0; i < layers.getLength() && shapeError_.empty(); ++i)
+    shapeError_ = static_cast<ClothingLayer*>(layers[i]->getTail())->fieldProblem();
   shapesChecked_ = true;
 }
 

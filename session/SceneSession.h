@@ -83,7 +83,8 @@ class SceneSession {
   const std::vector<EngineDrape>& drape();
   const std::vector<EngineDrape>& drapes() const { return drapes_; }
   // The guard's check of the shapes after the last drape: "" when every shape indexes and
-  // counts only the data it has, else one line ("ClothingLayer 'Layer': coordIndex[3] = ...").
+  // counts only the data it has, and every ClothingLayer's drawing fields are in range
+  // (ClothingLayer::fieldProblem), else one line ("ClothingLayer 'Layer': coordIndex[3] = ...").
   const std::string& shapeError() const { return shapeError_; }
   // The drapes of the last drape() that succeeded but are not clean (not at rest, torn,
   // limited at the end, failed implicit steps: ClothEngine::RunStats::verdict), one line

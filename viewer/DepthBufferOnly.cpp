@@ -1,6 +1,9 @@
 #include "viewer/DepthBufferOnly.h"
 
 #include <Inventor/SoPath.h>
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -26,6 +29,28 @@ SoGroup* regroup(SoNode* node, SoGroup* into) {
   return into;
 }
 
+// A layer with a display mesh, drawn by the depth buffer alone: the layer's own plain
+// drawing of its display mesh (the triangles the hybrid passes draw), bounded as the layer.
+void drawPlainly(void* data, SoAction* action) {
+  auto* layer = static_cast<ClothingLayer*>(data);
+  if (action->isOfType(SoGLRenderAction::getClassTypeId()))
+    layer->GLRenderPlain(static_cast<SoGLRenderAction*>(action));
+  else if (action->isOfType(SoGetBoundingBoxAction::getClassTypeId()))
+    layer->getBoundingBox(static_cast<SoGetBoundingBoxAction*>(action));
+}
+
+SoNode* plainLayer(ClothingLayer* layer) {
+  if (layer->displaySubdivision.getValue() != 0) {
+    auto* callback = new SoCallback;
+    callback->setCallback(drawPlainly, layer);
+    return callback;
+  }
+  auto* faces = new SoIndexedFaceSet;
+  faces->coordIndex = layer->coordIndex;
+  faces->vertexProperty = layer->vertexProperty.getValue();
+  return faces;
+}
+
 }  // namespace
 
 DepthBufferOnly::DepthBufferOnly(SoNode* root) {
@@ -36,11 +61,7 @@ DepthBufferOnly::DepthBufferOnly(SoNode* root) {
   };
   const SoPathList layers = findAll(root, ClothingLayer::getClassTypeId());
   for (int i = 0; i < layers.getLength(); ++i) {
-    auto* layer = static_cast<ClothingLayer*>(layers[i]->getTail());
-    auto* faces = new SoIndexedFaceSet;
-    faces->coordIndex = layer->coordIndex;
-    faces->vertexProperty = layer->vertexProperty.getValue();
-    add(layers[i], faces);
+    add(layers[i], plainLayer(static_cast<ClothingLayer*>(layers[i]->getTail())));
   }
   const SoPathList groups = findAll(root, DepthSortedGroup::getClassTypeId());
   for (int i = 0; i < groups.getLength(); ++i) add(groups[i], regroup(groups[i]->getTail(), new SoGroup));

@@ -10,7 +10,9 @@ namespace figment::viewer {
 
 // Finds every ClothingLayer, DepthSortedGroup and StencilSeparator under `root` and
 // pairs it with a plain stand-in (IndexedFaceSet with the same coordIndex and
-// vertexProperty, Group and Separator with the same children). use(true) puts the
+// vertexProperty, Group and Separator with the same children; for a layer with a display
+// mesh, displaySubdivision > 0, a Callback through which the layer draws that mesh with the
+// depth buffer alone, ClothingLayer::GLRenderPlain). use(true) puts the
 // stand-ins in the scene, use(false) the hybrid nodes again. Pieces of a
 // DepthSortedGroup are expected to be Separators (a ClothingLayer directly inside a
 // swapped group is not swapped in the stand-in).

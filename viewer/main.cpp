@@ -3,7 +3,7 @@
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]...
 //                [--turntable N] [--frames T0:T1:N] [--wind-force OUT.csv]
 //                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
-//                [--show-volumes] [--stop-at N] [--no-cache] [--strict]
+//                [--show-volumes] [--display-subdivision N] [--stop-at N] [--no-cache] [--strict]
 //                [--export OUT.glb|.gltf|.obj [--export-body]]
 //   figment-view --list-nodes
 //
@@ -36,6 +36,7 @@
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
 #include "session/DrapeRecorder.h"
 #include "session/FrameDisplay.h"
 #include "session/SceneExport.h"
@@ -82,7 +83,8 @@ struct Options {
   bool noCache = false;
   bool listNodes = false;
   bool strict = false;
-  int stopAt = 0;  // steps; 0: no bound
+  int stopAt = 0;               // steps; 0: no bound
+  int displaySubdivision = -1;  // every ClothingLayer's; -1: as the scene says
   int supersample = kDefaultSupersample;
 };
 
@@ -147,6 +149,13 @@ void showVolumes(SoNode* scene) {
   const SoPathList mannequins = figment::findAll(scene, Mannequin::getClassTypeId());
   for (int i = 0; i < mannequins.getLength(); ++i)
     static_cast<Mannequin*>(mannequins[i]->getTail())->showVolumes = TRUE;
+}
+
+// --display-subdivision: every ClothingLayer draws `levels` of display mesh.
+void useDisplaySubdivision(SoNode* scene, int levels) {
+  const SoPathList layers = figment::findAll(scene, ClothingLayer::getClassTypeId());
+  for (int i = 0; i < layers.getLength(); ++i)
+    static_cast<ClothingLayer*>(layers[i]->getTail())->displaySubdivision = levels;
 }
 
 // --stop-at: every drape stops after `steps` steps, if not at rest before (to show a
@@ -287,6 +296,7 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
   SceneSession session;
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
   if (options.showVolumes) showVolumes(session.scene());
+  if (options.displaySubdivision >= 0) useDisplaySubdivision(session.scene(), options.displaySubdivision);
   if (!plan.frameTimes.empty()) simulateUntil(session.engines(), plan.frameTimes.back());
   if (options.stopAt > 0) stopAt(session.scene(), options.stopAt);
   useDrapeCache(session, !options.noCache);
@@ -391,6 +401,10 @@ void describeOptions(CLI::App& app, Options& options) {
                  "the largest image the off-screen context draws")
       ->check(CLI::Range(1, 8))
       ->capture_default_str();
+  app.add_option("--display-subdivision", options.displaySubdivision,
+                 "Draw every ClothingLayer with N levels of display mesh (its displaySubdivision: each triangle "
+                 "split in four N times, smooth; 0: the simulation's faces)")
+      ->check(CLI::Range(0, ClothingLayer::kMostDisplaySubdivision));
   app.add_option("--stop-at", options.stopAt, "Stop every drape after this many steps (if not at rest before)")
       ->check(CLI::PositiveNumber);
   app.add_flag("--strict", options.strict,

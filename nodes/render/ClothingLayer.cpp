@@ -14,6 +14,7 @@
 #include <Inventor/misc/SoState.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "guard/CoordIndexFaces.h"
@@ -22,6 +23,7 @@
 #include "nodes/render/StencilDecisionElement.h"
 #include "nodes/render/StencilRule.h"
 #include "nodes/render/StencilRuleElement.h"
+#include "sim/core/DisplaySubdivision.h"
 
 SO_NODE_SOURCE(ClothingLayer);
 
@@ -37,6 +39,7 @@ ClothingLayer::ClothingLayer() {
   SO_NODE_CONSTRUCTOR(ClothingLayer);
   SO_NODE_ADD_FIELD(masked, (FALSE));
   SO_NODE_ADD_FIELD(stencilRule, (TRUE));
+  SO_NODE_ADD_FIELD(displaySubdivision, (0));
 }
 
 ClothingLayer::~ClothingLayer() = default;
@@ -74,12 +77,34 @@ std::vector<SbVec3f> vertexNormals(const SbVec3f* points, int count, const int32
   return normals;
 }
 
+// The triangles GL draws for the faces of `index`: a quad split along its second diagonal
+// (see DrawCache::addTriangles), any other face fanned from its first corner.
+std::vector<figment::Triangle> drawnTriangles(const int32_t* index, int indexCount, int pointCount) {
+  std::vector<figment::Triangle> triangles;
+  for (const figment::guard::CoordIndexFace& face : figment::guard::coordIndexFaces(index, indexCount)) {
+    if (face.corners() < 3 || !figment::guard::cornersBelow(face, index, pointCount)) continue;
+    const int32_t* c = index + face.first;
+    if (face.corners() == 4) {
+      triangles.push_back({c[0], c[1], c[3]});
+      triangles.push_back({c[1], c[2], c[3]});
+      continue;
+    }
+    for (int k = 1; k + 1 < face.corners(); ++k) triangles.push_back({c[0], c[k], c[k + 1]});
+  }
+  return triangles;
+}
+
 }  // namespace
 
 struct ClothingLayer::DrawCache {
   // The geometry, kept while the coordinates and the layer's fields stay the same.
   SbUniqueId coordinatesId = 0, layerId = 0;
-  std::vector<SbVec3f> points, smooth;  // coordinates and smooth normals
+  // The display mesh: its points, smooth normals and faces (the layer's coordIndex itself
+  // without subdivision), and the layout that makes it, kept while the faces stay.
+  std::vector<SbVec3f> points, smooth;
+  std::vector<int32_t> index;
+  std::unique_ptr<figment::DisplaySubdivision> layout;
+  SbUniqueId layoutLayerId = 0;
   std::vector<figment::FacetGeometry> facets;
   figment::Winding winding = figment::Winding::UNDECIDED;  // which side is the outside
   // The view the arrays were built for.
@@ -97,32 +122,63 @@ struct ClothingLayer::DrawCache {
            view.perspective == perspective && view.clockwise == clockwise;
   }
 
-  // Takes the coordinates, smooth normals and facets, when they changed.
+  // Takes the coordinates, makes the display mesh and its facets, when they changed.
   void takeGeometry(const SoCoordinateElement* coordinates, const ClothingLayer& layer) {
     if (coordinates->getNodeId() == coordinatesId && layer.getNodeId() == layerId) return;
-    const int32_t* index = layer.coordIndex.getValues(0);
+    const int32_t* faces = layer.coordIndex.getValues(0);
     const int indexCount = layer.coordIndex.getNum();
     const int pointCount = coordinates->getNum();
     points.resize(pointCount);
     for (int i = 0; i < pointCount; ++i) points[i] = coordinates->get3(i);
-    smooth = vertexNormals(points.data(), pointCount, index, indexCount);
-    facets = figment::describeFacets(points.data(), pointCount, index, indexCount);
+    const int levels = std::clamp(layer.displaySubdivision.getValue(), 0, kMostDisplaySubdivision);
+    if (levels == 0) {
+      layout.reset();
+      index.assign(faces, faces + indexCount);
+      smooth = vertexNormals(points.data(), pointCount, faces, indexCount);
+    } else {
+      subdivide(layer, levels);
+    }
+    facets = figment::describeFacets(points.data(), static_cast<int>(points.size()), index.data(),
+                                     static_cast<int>(index.size()));
     winding = figment::outsideWinding(facets);
     coordinatesId = coordinates->getNodeId();
     layerId = layer.getNodeId();
     built = false;
   }
 
+  // Replaces `points` (the coordinates) with the display mesh's `levels` splits of the
+  // faces GL draws, and fills `smooth` and `index` with its normals and triangles.
+  void subdivide(const ClothingLayer& layer, int levels) {
+    std::vector<figment::Vec3> coarse(points.size());
+    for (size_t i = 0; i < points.size(); ++i) coarse[i] = figment::Vec3(points[i][0], points[i][1], points[i][2]);
+    if (!layout || layoutLayerId != layer.getNodeId() || layout->levels() != levels ||
+        layout->vertexCount() != static_cast<int>(coarse.size())) {
+      const int pointCount = static_cast<int>(coarse.size());
+      layout = std::make_unique<figment::DisplaySubdivision>(
+          drawnTriangles(layer.coordIndex.getValues(0), layer.coordIndex.getNum(), pointCount), coarse, levels);
+      layoutLayerId = layer.getNodeId();
+    }
+    std::vector<figment::Vec3> fine, fineNormals;
+    layout->apply(coarse, fine, fineNormals);
+    points.resize(fine.size()), smooth.resize(fine.size());
+    for (size_t i = 0; i < fine.size(); ++i) {
+      points[i].setValue(float(fine[i].x()), float(fine[i].y()), float(fine[i].z()));
+      smooth[i].setValue(float(fineNormals[i].x()), float(fineNormals[i].y()), float(fineNormals[i].z()));
+    }
+    index.clear();
+    for (const figment::Triangle& t : layout->triangles()) index.insert(index.end(), {t[0], t[1], t[2], -1});
+  }
+
   // Classifies each facet as facing the viewer or away and sorts them far to near
   // (figment::orderFacets), then lays out the arrays: away, then facing.
-  void arrangeForView(const figment::ViewPoint& view, const int32_t* index) {
+  void arrangeForView(const figment::ViewPoint& view) {
     if (sameView(view)) return;
     positions.clear(), normals.clear();
     const std::vector<figment::OrderedFacet> ordered = figment::orderFacets(facets, view);
     for (bool facing : {false, true}) {
       const size_t before = positions.size();
       for (const figment::OrderedFacet& facet : ordered)
-        if (facet.facesViewer == facing) addTriangles(facet, index);
+        if (facet.facesViewer == facing) addTriangles(facet);
       (facing ? facingCorners : awayCorners) = static_cast<int>((positions.size() - before) / 3);
     }
     toCamera = view.toCamera, eye = view.eye, direction = view.direction;
@@ -134,8 +190,8 @@ struct ClothingLayer::DrawCache {
   // split along its second diagonal (corners 0 1 3 and 1 2 3), as OpenGL splits the
   // GL_QUADS Coin draws an IndexedFaceSet's quads with (Mesa, last provoking vertex):
   // a bent quad then covers the very pixels it covers in the depth buffer's picture.
-  void addTriangles(const figment::OrderedFacet& facet, const int32_t* index) {
-    const int32_t* corners = index + facet.firstIndex;
+  void addTriangles(const figment::OrderedFacet& facet) {
+    const int32_t* corners = index.data() + facet.firstIndex;
     if (facet.corners == 4) {
       for (int corner : {corners[0], corners[1], corners[3], corners[1], corners[2], corners[3]}) addCorner(corner);
       return;
@@ -163,6 +219,33 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   GLStencilElement::clearEachFrame(action);
   const bool maskedByParts = maskedNow(action);
   state->push();
+  arrange(action);
+  SoMaterialBundle material(action);
+  material.sendFirst();
+  drawArranged(state, maskedByParts);
+  state->pop();
+}
+
+void ClothingLayer::GLRenderPlain(SoGLRenderAction* action) {
+  if (!shouldGLRender(action)) return;
+  SoState* state = action->getState();
+  SoCacheElement::invalidate(state);
+  state->push();
+  arrange(action);
+  SoMaterialBundle material(action);
+  material.sendFirst();
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, 0, cache_->positions.data());
+  glNormalPointer(GL_FLOAT, 0, cache_->normals.data());
+  glDrawArrays(GL_TRIANGLES, 0, cache_->awayCorners + cache_->facingCorners);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  state->pop();
+}
+
+void ClothingLayer::arrange(SoGLRenderAction* action) {
+  SoState* state = action->getState();
   if (auto* properties = static_cast<SoVertexProperty*>(vertexProperty.getValue())) properties->GLRender(action);
   if (!cache_) cache_ = std::make_unique<DrawCache>();
   cache_->takeGeometry(SoCoordinateElement::getInstance(state), *this);
@@ -170,11 +253,15 @@ void ClothingLayer::GLRender(SoGLRenderAction* action) {
   // The garment's own shape says which side is its outside, whatever the ShapeHints
   // say; the hints decide for a sheet whose shape cannot tell.
   if (cache_->winding != figment::Winding::UNDECIDED) view.clockwise = cache_->winding == figment::Winding::CLOCKWISE;
-  cache_->arrangeForView(view, coordIndex.getValues(0));
-  SoMaterialBundle material(action);
-  material.sendFirst();
-  drawArranged(state, maskedByParts);
-  state->pop();
+  cache_->arrangeForView(view);
+}
+
+std::string ClothingLayer::fieldProblem() const {
+  const int levels = displaySubdivision.getValue();
+  if (levels >= 0 && levels <= kMostDisplaySubdivision) return "";
+  const SbName name = getName();
+  return std::string("ClothingLayer") + (name.getLength() > 0 ? std::string(" '") + name.getString() + "'" : "") +
+         ": displaySubdivision = " + std::to_string(levels) + " is not 0 to " + std::to_string(kMostDisplaySubdivision);
 }
 
 // Three or four draws, each one state change, not one per change of facing along the depth

@@ -2,9 +2,11 @@
 // ClothingLayer: one layer of clothing, an indexed face set (paper §5).
 
 #include <Inventor/fields/SoSFBool.h>
+#include <Inventor/fields/SoSFInt32.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 
 #include <memory>
+#include <string>
 
 /*!
   \class ClothingLayer nodes/render/ClothingLayer.h
@@ -42,8 +44,19 @@
   What the drawing uses: the coordinates (Coordinate3 or vertexProperty), coordIndex
   (polygons fan-triangulated), the first material (overall binding) and smooth normals
   computed from the facets; explicit normals, per-face materials and textures are
-  ignored when drawing. Because the order depends on the view, a ClothingLayer keeps
-  any separator above it from caching its rendering.
+  ignored when drawing.
+
+  The display mesh: with `displaySubdivision` N > 0 the layer draws, in place of its
+  faces, a finer mesh made from them at each change of the coordinates
+  (figment::DisplaySubdivision, sim/core/DisplaySubdivision.h): each face triangulated as
+  GL draws it, each triangle split in four N times, the new vertices on a smooth surface
+  through the old (which stay where the drape put them), hems, sleeve ends and necklines
+  smoothed along their curves, and normals averaged over vertices at the same position
+  (across a seam). The simulation stays as coarse as the drape needs; the picture shows it
+  smooth. Every pass of the hybrid drawing (the sort, the facing test, the stencil) uses
+  the display mesh, and so does the depth buffer alone (GLRenderPlain: figment-view
+  --depth-buffer-only). Picking, bounds, counts, writing and --export keep the faces. Because the order depends on the
+  view, a ClothingLayer keeps any separator above it from caching its rendering.
 
   The garment's coordinates come from the Coordinate3 before it, usually connected to
   a ClothEngine's output:
@@ -62,6 +75,7 @@
         textureCoordIndex -1
         masked FALSE
         stencilRule TRUE
+        displaySubdivision 0
     }
   \endcode
 */
@@ -79,8 +93,21 @@ class ClothingLayer : public SoIndexedFaceSet {
   SoSFBool masked;
   // Whether the stencil rule decides, per view, in place of `masked`. Default TRUE.
   SoSFBool stencilRule;
+  // How many times the display mesh splits each triangle in four (see above), 0 to
+  // kMostDisplaySubdivision. Default 0: the faces as the simulation made them, as the
+  // paper draws them (its figures, and the -plain twins of the hybrid scenes, stay pixel
+  // for pixel what they were); 1 draws four triangles for each, 2 sixteen.
+  SoSFInt32 displaySubdivision;
+  static constexpr int kMostDisplaySubdivision = 3;
 
   void GLRender(SoGLRenderAction* action) override;
+  // The display mesh as the depth buffer alone draws it: the scene's depth test, no
+  // sorting, no stencil (the stand-in of figment-view --depth-buffer-only for a layer with
+  // a display mesh, which a plain IndexedFaceSet could not draw).
+  void GLRenderPlain(SoGLRenderAction* action);
+  // "" when the fields may be drawn, else one line naming the layer, the field and the
+  // value ("ClothingLayer 'Dress': displaySubdivision = 7 is not 0 to 3").
+  std::string fieldProblem() const;
 
  protected:
   ~ClothingLayer() override;
@@ -93,6 +120,8 @@ class ClothingLayer : public SoIndexedFaceSet {
 
   // Whether this render masks the layer: the rule's answer or `masked`.
   bool maskedNow(SoGLRenderAction* action);
+  // Takes the coordinates and the view, and arranges the display mesh's facets for it.
+  void arrange(SoGLRenderAction* action);
   // The three draws of the arranged facets (see the class comment).
   void drawArranged(SoState* state, bool maskedByParts);
 };

@@ -126,7 +126,9 @@ TEST_F(MakeHumanRigTest, EveryPoseKeepsTheSkinVolumeWithinThreePercent) {
       // The body skins by dual quaternions (HumanBody's default): within 3 % in every pose,
       // where the linear blend loses 5 % sitting (hips bent 90 deg collapse).
       EXPECT_NEAR(dual / restVolume, 1.0, 0.03) << name;
-      if (name == "sitting") EXPECT_LT(std::abs(dual / restVolume - 1.0), std::abs(linear / restVolume - 1.0));
+      if (name == "sitting") {
+        EXPECT_LT(std::abs(dual / restVolume - 1.0), std::abs(linear / restVolume - 1.0));
+      }
     }
   }
 }

@@ -232,6 +232,22 @@ TEST_F(SceneExportTest, GarmentsAreInTheWorldFrameFacingTheirFront) {
   EXPECT_FALSE(square.twoSided) << "ShapeHints says SOLID";
 }
 
+// A layer drawn with a display mesh exports the simulation's faces: the drape itself, which
+// another program can subdivide as it likes (ClothingLayer.displaySubdivision).
+TEST_F(SceneExportTest, ALayersDisplayMeshIsNotExported) {
+  const std::string scene = dir_.file("smooth.iv",
+                                      "#Inventor V2.1 ascii\nSeparator {\n"
+                                      "  Coordinate3 { point [ 0 0 0, 1 0 0, 1 1 0.2, 0 1 0 ] }\n"
+                                      "  DEF Square ClothingLayer { coordIndex [ 0 1 2 3 -1 ] displaySubdivision 2 }\n"
+                                      "}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(scene)) << session.loadError();
+  const std::vector<figment::ColouredMesh> meshes = sceneMeshes(session.scene(), {});
+  ASSERT_EQ(meshes.size(), 1u);
+  EXPECT_EQ(meshes[0].mesh.vertices.size(), 4u);
+  EXPECT_EQ(meshes[0].mesh.triangles.size(), 2u);
+}
+
 // A drape drawn by a plain IndexedFaceSet is a garment; an IndexedFaceSet of fixed points
 // and a Cube are not, and come only with the body (the Cube's 6 faces: 24 corners, shared
 // only where position and normal agree). The drape's edges drawn as lines are neither.

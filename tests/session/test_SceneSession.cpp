@@ -148,6 +148,18 @@ TEST_F(SceneSessionTest, ChecksTheDrapedShapesAndStagesNothingPastTheirData) {
   EXPECT_EQ(session.stagedRoot(), nullptr);
 }
 
+// A ClothingLayer asking for a display mesh it cannot have is refused as a bad shape is.
+TEST_F(SceneSessionTest, RefusesADisplaySubdivisionOutOfRange) {
+  const std::string bad =
+      dir_.file("layer.iv",
+                "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                "  DEF Dress ClothingLayer { coordIndex [ 0 1 2 -1 ] displaySubdivision 9 }\n}\n");
+  SceneSession session;
+  ASSERT_TRUE(session.load(bad)) << session.loadError();
+  EXPECT_EQ(session.stage({64, 48}, std::nullopt), nullptr);
+  EXPECT_EQ(session.shapeError(), "ClothingLayer 'Dress': displaySubdivision = 9 is not 0 to 3");
+}
+
 TEST_F(SceneSessionTest, StagingAnUndrapedSceneChecksItsShapesFirst) {
   const std::string bad =
       dir_.file("faces.iv",

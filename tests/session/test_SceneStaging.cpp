@@ -38,7 +38,9 @@ void expectInView(SoPerspectiveCamera* camera, const SbBox3f& box, float aspect,
   EXPECT_GE(minY, 0.0f);
   EXPECT_LE(maxY, 1.0f);
   // ...and one corner reaches the 5% margin: the camera is no farther than needed.
-  if (tight) EXPECT_NEAR(farthest, 0.5f / 1.05f, 1e-3f);
+  if (tight) {
+    EXPECT_NEAR(farthest, 0.5f / 1.05f, 1e-3f);
+  }
 }
 
 }  // namespace

@@ -116,7 +116,9 @@ TEST_F(TShirtOnBody, OpeningsReadAsCurvesWithoutSlivers) {
     Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
     for (int v : loop) scatter += (mesh.vertices[v] - centre) * (mesh.vertices[v] - centre).transpose();
     const double smallest = std::max(0.0, Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(scatter).eigenvalues()(0));
-    if (meanHeight(mesh, loop) < 1.3) EXPECT_LT(std::sqrt(smallest / loop.size()), 1e-4) << "a hem or sleeve";
+    if (meanHeight(mesh, loop) < 1.3) {
+      EXPECT_LT(std::sqrt(smallest / loop.size()), 1e-4) << "a hem or sleeve";
+    }
   }
 }
 

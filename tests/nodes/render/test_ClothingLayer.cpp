@@ -1,4 +1,4 @@
-// ClothingLayer: an IndexedFaceSet in every respect, plus `masked`.
+// ClothingLayer: an IndexedFaceSet in every respect, plus `masked` and its display mesh.
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPickedPoint.h>
@@ -49,6 +49,23 @@ TEST_F(ClothingLayerTest, IsAnIndexedFaceSetWithAMaskedField) {
   EXPECT_FALSE(layer->masked.getValue());
   EXPECT_TRUE(layer->stencilRule.getValue()) << "default TRUE: the rule decides";
   EXPECT_EQ(SoType::fromName("ClothingLayer"), ClothingLayer::getClassTypeId());
+  layer->unref();
+}
+
+// displaySubdivision: 0 (the simulation's faces, as the paper draws them) unless a scene
+// asks; a level outside 0 to 3 is one line naming the layer, the field and the value.
+TEST_F(ClothingLayerTest, DisplaySubdivisionIsZeroUnlessAskedAndRefusedOutOfRange) {
+  ClothingLayer* layer = new ClothingLayer;
+  layer->ref();
+  layer->setName("Dress");
+  EXPECT_EQ(layer->displaySubdivision.getValue(), 0);
+  EXPECT_EQ(layer->fieldProblem(), "");
+  layer->displaySubdivision = ClothingLayer::kMostDisplaySubdivision;
+  EXPECT_EQ(layer->fieldProblem(), "");
+  layer->displaySubdivision = 7;
+  EXPECT_EQ(layer->fieldProblem(), "ClothingLayer 'Dress': displaySubdivision = 7 is not 0 to 3");
+  layer->displaySubdivision = -1;
+  EXPECT_NE(layer->fieldProblem(), "");
   layer->unref();
 }
 

@@ -13,6 +13,13 @@
 // converged drape of ToleranceChoiceCommittedTable) cycled at 0.0115 m/s and never rested
 // in 10 s. Its bound is the measured median with half a degree to spare.
 //
+// What the picture shows meets 12 degrees on every garment, rest and draped, the default
+// dress's included: with one level of display mesh (ClothingLayer.displaySubdivision) the
+// medians are 4.3 to 5.5 at rest and 4.9 to 7.2 draped, with two 2.2 to 2.9 and 2.4 to 3.5.
+// "No worse draped than at rest" does not hold on the display mesh either (the skirt's 4.3
+// rest, 6.1 draped at one level): a fold is in the drape's shape, which the display mesh
+// follows; it smooths the corners between the folds' edges, not the folds.
+//
 // A drape folds a hem, which adds turning the rest shape has not got: a draped hem turns
 // more than its rest shape wherever it folds, so "no worse than at rest" holds only up to
 // the folds. Three garments' drapes fold their openings by more than 12 degrees a vertex:
@@ -33,6 +40,7 @@
 #include "io/MakeHumanFiles.h"
 #include "io/MeshImport.h"
 #include "sim/core/BoundaryLoops.h"
+#include "sim/core/DisplaySubdivision.h"
 #include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
@@ -72,6 +80,16 @@ std::vector<figment::Triangle> triangles(const SoMFInt32& coordIndex) {
   return out;
 }
 
+// The median boundary turning of the display mesh that `levels` splits make of `faces` at
+// `positions`.
+double displayTurning(const std::vector<figment::Vec3>& positions, const std::vector<figment::Triangle>& faces,
+                      int levels) {
+  const figment::DisplaySubdivision layout(faces, positions, levels);
+  std::vector<figment::Vec3> fine, normals;
+  layout.apply(positions, fine, normals);
+  return figment::medianBoundaryTurning(fine, layout.triangles());
+}
+
 class GarmentEdges : public ::testing::TestWithParam<ShippedGarment> {};
 
 TEST_P(GarmentEdges, TurnLittleAtRestAndDraped) {
@@ -93,6 +111,17 @@ TEST_P(GarmentEdges, TurnLittleAtRestAndDraped) {
   EXPECT_LE(draped, GetParam().drapedDegrees) << "at rest " << rest;
   RecordProperty("restDegrees", std::to_string(rest));
   RecordProperty("drapedDegrees", std::to_string(draped));
+  // What the picture shows with a display mesh (ClothingLayer.displaySubdivision).
+  for (int levels : {1, 2}) {
+    const double displayRest = displayTurning(points(engine.restPoints), faces, levels);
+    const double displayDraped = displayTurning(points(positions), faces, levels);
+    EXPECT_LT(displayRest, rest) << levels << " levels";
+    EXPECT_LT(displayDraped, draped) << levels << " levels";
+    EXPECT_LE(displayRest, kSmoothDegrees) << levels << " levels";
+    EXPECT_LE(displayDraped, kSmoothDegrees) << levels << " levels";
+    RecordProperty("displayRestDegrees" + std::to_string(levels), std::to_string(displayRest));
+    RecordProperty("displayDrapedDegrees" + std::to_string(levels), std::to_string(displayDraped));
+  }
 }
 
 void asShipped(ClothEngine&) {}

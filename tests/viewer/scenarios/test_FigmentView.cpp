@@ -268,6 +268,15 @@ INSTANTIATE_TEST_SUITE_P(
                  clothScene("", "", "0 3 -2 1 -1"),
                  "",
                  {"ClothingLayer 'Layer'", "coordIndex[2] = -2"}},
+        BadInput{"DisplaySubdivisionOutOfRange",
+                 "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
+                 "  DEF Layer ClothingLayer { coordIndex [ 0 1 2 -1 ]  displaySubdivision 9 }\n}\n",
+                 "",
+                 {"scene.iv", "ClothingLayer 'Layer'", "displaySubdivision = 9 is not 0 to 3"}},
+        BadInput{"DisplaySubdivisionFlagOutOfRange",
+                 clothScene(""),
+                 "--display-subdivision 4",
+                 {"--display-subdivision", "4"}},
         BadInput{"FaceSetIndexOutOfRange",
                  "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
                  "  DEF Faces IndexedFaceSet { coordIndex [ 0 1 2147483647 -1 ] }\n}\n",
@@ -540,6 +549,29 @@ TEST_F(FigmentView, DepthBufferOnlyDrawsTheSkinThatTheHybridNodesHide) {
   EXPECT_GT(hybrid.count(figment::test::kBlue), 5000) << "the cloth is drawn whole";
   EXPECT_LT(hybrid.count(figment::test::kRed), 100) << "only the rim past the cloth's edge";
   EXPECT_GT(plain.count(figment::test::kRed), 1000) << "the depth buffer alone lets the ball through";
+}
+
+TEST_F(FigmentView, DisplaySubdivisionDrawsEveryLayerWithItsDisplayMesh) {
+  // The same poke-through scene with two levels of display mesh: the cloth is drawn whole
+  // and still hides the ball but for the rim, and its outline moves (the wrap rounds out
+  // between its vertices); the depth buffer alone draws it too, and lets the ball through.
+  const std::string scene = FIGMENT_SOURCE_DIR "/scenes/hybrid/poke-through.iv";
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("coarse.png")) + " --size 120x120").status, 0);
+  const ProcessResult r =
+      run(quote(scene) + " -o " + quote(path("smooth.png")) + " --size 120x120 --display-subdivision 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  ASSERT_EQ(run(quote(scene) + " -o " + quote(path("plain.png")) +
+                " --size 120x120 --display-subdivision 2 --depth-buffer-only")
+                .status,
+            0);
+  const figment::test::Image coarse = figment::test::readPng(path("coarse.png"));
+  const figment::test::Image smooth = figment::test::readPng(path("smooth.png"));
+  const figment::test::Image plain = figment::test::readPng(path("plain.png"));
+  EXPECT_GT(smooth.count(figment::test::kBlue), 5000);
+  EXPECT_LT(smooth.count(figment::test::kRed), 100);
+  EXPECT_NE(smooth.count(figment::test::kBlue), coarse.count(figment::test::kBlue));
+  EXPECT_GT(plain.count(figment::test::kBlue), 2000);
+  EXPECT_GT(plain.count(figment::test::kRed), 1000) << "plainly drawn, the ball pokes through";
 }
 
 TEST_F(FigmentView, TwoRendersOfASceneWithTheSameOptionsAreTheSameBytes) {

@@ -178,6 +178,71 @@ TEST(HybridWinding, AClockwiseSkirtIsDrawnAsItsCounterClockwiseSelf) {
   }
 }
 
+// Every ClothingLayer under `scene` drawing `levels` of display mesh.
+void useDisplayMesh(SoNode* scene, int levels) {
+  SoSearchAction search;
+  search.setType(ClothingLayer::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.apply(scene);
+  for (int i = 0; i < search.getPaths().getLength(); ++i)
+    static_cast<ClothingLayer*>(search.getPaths()[i]->getTail())->displaySubdivision = levels;
+}
+
+// Cloth pixels of `image` with cloth `margin` pixels round them each way: away from the
+// garment's outline, which a display mesh may move by a pixel.
+std::vector<bool> clothInside(const Image& image, int margin) {
+  const std::vector<bool> cloth = image.where(figment::test::kBlue);
+  std::vector<bool> inside(cloth.size(), false);
+  for (int y = margin; y < image.height - margin; ++y)
+    for (int x = margin; x < image.width - margin; ++x) {
+      bool all = true;
+      for (int dy = -margin; dy <= margin && all; ++dy)
+        for (int dx = -margin; dx <= margin && all; ++dx) all = cloth[(y + dy) * image.width + x + dx];
+      inside[y * image.width + x] = all;
+    }
+  return inside;
+}
+
+// The default dress with two levels of display mesh (16 triangles for each of the drape's):
+// the depth buffer alone draws the same display mesh as the hybrid passes (a stand-in that
+// is the layer's own plain drawing), so the invariant holds on it too; and the smoothing
+// does not push the cloth into the body: drawn by the depth buffer alone, where the
+// simulation's mesh showed cloth (away from its outline) the display mesh shows no skin.
+TEST(HybridDisplayMesh, KeepsEveryClothPixelAndShowsNoSkinThroughTheDress) {
+  initHeadless();
+  SceneSession session;
+  ASSERT_TRUE(session.load(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv")) << session.loadError();
+  session.drape();
+  ASSERT_EQ(session.firstError(), "");
+  paintGarmentsBlue(session.scene());
+  const SbBox3f box = sceneBox(session.scene(), kFullSize);
+  for (double azimuth = 0.0; azimuth < 360.0; azimuth += 45.0) {
+    useDisplayMesh(session.scene(), 0);
+    DepthBufferOnly coarseSwap(session.scene());
+    coarseSwap.use(true);
+    const Image coarsePlain = render(session, azimuth, box);
+    coarseSwap.use(false);
+    useDisplayMesh(session.scene(), 2);
+    const Image hybrid = render(session, azimuth, box);
+    DepthBufferOnly swap(session.scene());
+    swap.use(true);
+    const Image plain = render(session, azimuth, box);
+    swap.use(false);
+    const std::vector<bool> plainCloth = plain.where(figment::test::kBlue), coarseInside = clothInside(coarsePlain, 3);
+    int removed = 0, skinThrough = 0, coarseClothPixels = 0, moved = 0;
+    for (int i = 0; i < kFullSize.width * kFullSize.height; ++i) {
+      moved += plainCloth[i] != coarsePlain.is(i, figment::test::kBlue, 0);
+      removed += plainCloth[i] && !hybrid.is(i, figment::test::kBlue, 0);
+      skinThrough += coarseInside[i] && !plainCloth[i];
+      coarseClothPixels += coarseInside[i];
+    }
+    ASSERT_GT(coarseClothPixels, 500) << "azimuth " << azimuth;
+    EXPECT_GT(moved, 0) << "azimuth " << azimuth << ": the display mesh is drawn";
+    EXPECT_EQ(removed, 0) << "azimuth " << azimuth;
+    EXPECT_EQ(skinThrough, 0) << "azimuth " << azimuth << ", of " << coarseClothPixels;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(ShippedScenes, HybridNeverHidesCloth, ::testing::ValuesIn(garmentScenes()),
                          [](const auto& scene) {
                            std::string name;
