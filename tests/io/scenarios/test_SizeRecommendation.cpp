@@ -182,6 +182,14 @@ TEST_F(SizeRecommendation, FigmentSizeTriesOneSizeOn) {
   EXPECT_EQ(run.out.rfind("{\"sizes\": {\"XL\": {", 0), 0u) << run.out;
   EXPECT_EQ(run.out.find("recommended"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("\"verdict\": \"loose\""), std::string::npos) << run.out;
+  // The catalogue's name for that garment tries the same size on.
+  const test::ProgramResult named =
+      test::runProgram(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size",
+                       "--style pencil:XL --sex female --stature 1.68 --bust-girth 0.84 --waist-girth 0.68 "
+                       "--hip-girth 0.92 --json",
+                       dir.path(), dir.path());
+  ASSERT_EQ(named.status, 0) << named.err;
+  EXPECT_EQ(named.out.rfind("{\"sizes\": {\"XL\": {", 0), 0u) << named.out;
 }
 
 TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
@@ -190,7 +198,14 @@ TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
   const test::ProgramResult style =
       test::runProgram(tool, "--style gown --sex female --body x.obj", dir.path(), dir.path());
   EXPECT_EQ(style.status, 1);
-  EXPECT_EQ(style.err, "figment-size: --style gown: not one of dress, skirt, tshirt, pencil\n");
+  EXPECT_EQ(style.err,
+            "figment-size: --style gown: not one of dress, skirt, tshirt, pencil (or a catalogue garment, "
+            "style:size)\n");
+  // A catalogue garment's name (scenes/catalogue/) that names no size it is sold in.
+  const test::ProgramResult garment =
+      test::runProgram(tool, "--style dress:Q --sex female --body x.obj", dir.path(), dir.path());
+  EXPECT_EQ(garment.status, 1);
+  EXPECT_EQ(garment.err, "figment-size: --style \"dress:Q\": no size Q of dress (female XXS, XS, S, M, L, XL)\n");
   const test::ProgramResult some =
       test::runProgram(tool, "--style dress --sex female --stature 1.68", dir.path(), dir.path());
   EXPECT_EQ(some.status, 1);
