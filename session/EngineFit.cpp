@@ -49,10 +49,20 @@ SoCoordinate3* drawnCoordinates(SoGroup* group, int index) {
   return nullptr;
 }
 
-// The mesh an engine's body is: a MeshFile, or a Mannequin's body MeshFile; else null.
+// Whether a Mannequin stands as its body mesh does: no joint turned, every size factor 1.
+bool atRest(const Mannequin& mannequin) {
+  for (const SoSFFloat* factor :
+       {&mannequin.height, &mannequin.chest, &mannequin.waist, &mannequin.hips, &mannequin.armLength})
+    if (factor->getValue() != 1.0f) return false;
+  return mannequin.rotatedJoints.getNum() == 0;
+}
+
+// The mesh an engine's body is: a MeshFile, or the body MeshFile of a Mannequin at rest
+// (a posed or sized one's volumes have left its mesh); else null.
 const MeshFile* meshBody(const ClothEngine& engine) {
   SoNode* node = engine.body.getValue();
-  if (node && node->isOfType(Mannequin::getClassTypeId())) node = static_cast<Mannequin*>(node)->body.getValue();
+  if (node && node->isOfType(Mannequin::getClassTypeId()))
+    node = atRest(*static_cast<Mannequin*>(node)) ? static_cast<Mannequin*>(node)->body.getValue() : nullptr;
   return node && node->isOfType(MeshFile::getClassTypeId()) ? static_cast<const MeshFile*>(node) : nullptr;
 }
 
