@@ -11,6 +11,7 @@
 #include "nodes/body/MeshFile.h"
 #include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
+#include "nodes/cloth/CatalogueGarment.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/GarmentSurface.h"
 #include "nodes/render/ClothingLayer.h"
@@ -25,6 +26,7 @@ void init() {
   // second init(), or a class Coin loaded on its own through libX.so, is harmless.
   MeshFile::initClass();
   HumanBody::initClass();
+  CatalogueGarment::initClass();
   ClothingLayer::initClass();
   ClothEngine::initClass();
   DepthSortedGroup::initClass();

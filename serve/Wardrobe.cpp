@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "io/GarmentCatalogue.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/body/SkeletonJoints.h"
 #include "serve/Catalogue.h"
@@ -38,6 +39,8 @@ const SkeletonJoints* findJoints(SoNode* node) {
 
 }  // namespace
 
+Wardrobe::Wardrobe() = default;
+
 Wardrobe::~Wardrobe() {
   if (root_) root_->unref();
 }
@@ -67,7 +70,24 @@ std::string Wardrobe::read(const std::string& scenesFolder) {
   if (!body_ || body_->point.getNum() == 0) return "the body did not read from " + scenesFolder;
   for (const auto& [style, pattern] : patterns_)
     if (!pattern || pattern->point.getNum() == 0) return "the " + style + "'s pattern did not read";
-  return findHeightOrigin() ? "" : "the body's skeleton did not read from " + scenesFolder;
+  if (!findHeightOrigin()) return "the body's skeleton did not read from " + scenesFolder;
+  return readCatalogue(scenesFolder);
+}
+
+std::string Wardrobe::readCatalogue(const std::string& scenesFolder) {
+  try {
+    catalogue_ = std::make_unique<GarmentCatalogue>(scenesFolder + "/catalogue/index.txt");
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  // The service's styles and their default colours are the catalogue's.
+  for (const GarmentStyle& style : Catalogue::styles()) {
+    const CatalogueStyle* sold = catalogue_->style(style.name);
+    if (!sold) return scenesFolder + "/catalogue/index.txt: no style " + style.name;
+    if (sold->colours.front() != style.defaultColour)
+      return scenesFolder + "/catalogue/index.txt: " + style.name + "'s first colour is not " + style.defaultColour;
+  }
+  return "";
 }
 
 bool Wardrobe::findHeightOrigin() {

@@ -1,22 +1,28 @@
 #pragma once
 // What every scene a worker builds shares, read once when the worker starts: the default
-// body's mesh and fitted collision volumes, and each catalogue style's pattern. The files
-// are the catalogue's (Catalogue.h), found in the scenes folder; nothing here is named
-// by a request.
+// body's mesh and fitted collision volumes, each catalogue style's pattern, and the garment
+// catalogue's files (catalogue/index.txt, io/GarmentCatalogue.h), which must sell every
+// style of Catalogue.h with its default colour first. The files are the catalogue's
+// (Catalogue.h), found in the scenes folder; nothing here is named by a request.
 
 #include <Inventor/SbVec3f.h>
 #include <Inventor/nodes/SoNode.h>
 
 #include <map>
+#include <memory>
 #include <string>
 
 class MeshFile;
+
+namespace figment {
+class GarmentCatalogue;
+}
 
 namespace figment::serve {
 
 class Wardrobe {
  public:
-  Wardrobe() = default;
+  Wardrobe();
   ~Wardrobe();
   Wardrobe(const Wardrobe&) = delete;
   Wardrobe& operator=(const Wardrobe&) = delete;
@@ -33,15 +39,19 @@ class Wardrobe {
   // The point the Mannequin's `height` scales the body about (sim/body/Posing.h): below
   // the root joint, at the lowest joint's height. m.
   const SbVec3f& heightOrigin() const { return heightOrigin_; }
+  // The scenes folder's garment catalogue (its styles, sizes and colours), once read.
+  const GarmentCatalogue* catalogue() const { return catalogue_.get(); }
 
  private:
   bool findHeightOrigin();
+  std::string readCatalogue(const std::string& scenesFolder);
 
   SoNode* root_ = nullptr;  // referenced: holds everything below
   MeshFile* body_ = nullptr;
   SoNode* volumes_ = nullptr;
   std::map<std::string, MeshFile*> patterns_;
   SbVec3f heightOrigin_{0, 0, 0};
+  std::unique_ptr<GarmentCatalogue> catalogue_;
 };
 
 }  // namespace figment::serve

@@ -14,6 +14,7 @@
 
 #include "ToolMain.h"
 #include "io/FitMapScene.h"
+#include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
 #include "io/MeshExport.h"
 #include "io/RecommendationJson.h"
@@ -128,7 +129,11 @@ int main(int argc, char** argv) {
   CLI::App app{"Recommends a garment size by draping the size chart's candidates on a body.", kTool.program()};
   Request request;
   request.chart = figment::defaultSizeChartPath();
-  app.add_option("--style", request.style, figment::styleNames())->required();
+  app.add_option("--style", request.style,
+                 figment::styleNames() +
+                     "; or a catalogue garment, style:size[:rrggbb] (scenes/catalogue/): that "
+                     "size tried on, as --size")
+      ->required();
   app.add_option("--sex", request.sex, "female or male")->required()->check(CLI::IsMember({"female", "male"}));
   auto* body = app.add_option("--body", request.body, "a body mesh file (metres, y up) instead of measurements");
   for (const char* key : {"stature", "bust_girth", "waist_girth", "hip_girth"}) {
@@ -149,8 +154,23 @@ int main(int argc, char** argv) {
   app.add_option("--fit-map-dir", request.fitMapDir, "folder for the fit maps (<size>.iv and body.obj)")
       ->capture_default_str();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+  if (request.style.find(':') != std::string::npos) {
+    // A catalogue garment, "pencil:M": its style, and its size tried on.
+    try {
+      const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
+      const figment::CatalogueItem item =
+          catalogue.resolve(request.style, request.sex == "male" ? figment::Sex::Male : figment::Sex::Female);
+      if (!request.size.empty())
+        return kTool.fail("--size " + request.size + ": --style " + request.style + " names the size");
+      request.style = item.style->name;
+      request.size = item.sizeName;
+    } catch (const std::exception& error) {
+      return kTool.fail("--style " + std::string(error.what()));
+    }
+  }
   if (!figment::findStyle(request.style))
-    return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames());
+    return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames() +
+                      " (or a catalogue garment, style:size)");
   if (request.body.empty() && request.typed.size() < 4)
     return kTool.fail("give --body FILE, or all of --stature, --bust-girth, --waist-girth and --hip-girth");
   return run(request);

@@ -1,6 +1,7 @@
 #include "viewer/StatsJson.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -43,11 +44,27 @@ nlohmann::json body(const CollisionBody::Description& description) {
   for (const auto& [name, count] : description.counts) out[name] = count;
   return out;
 }
+// A garment's fit per region (figment-size's units; girth ease -1 where not taped).
+nlohmann::json fitJson(const session::EngineFit& fit) {
+  nlohmann::json regions = nlohmann::json::object();
+  for (size_t i = 0; i < fit.regions.size(); ++i) {
+    const RegionFit& g = fit.regions[i];
+    if (!g.covered()) continue;
+    nlohmann::json region = {{"stretch_pct", 100 * g.meanStrain},
+                             {"max_stretch_pct", 100 * g.maxStrain},
+                             {"ease_mm", 1000 * g.ease},
+                             {"girth_ease_cm", std::isfinite(g.girthEase) ? 100 * g.girthEase : -1.0},
+                             {"pressure_kpa", g.pressure / 1000}};
+    if (i < fit.verdicts.size()) region["verdict"] = verdictName(fit.verdicts[i]);
+    regions[g.name] = std::move(region);
+  }
+  return {{"catalogue", fit.garment}, {"text", fit.text}, {"regions", regions}};
+}
 }  // namespace
 
 std::string writeStatsJson(const std::string& path, const std::string& scene,
-                           const std::vector<session::EngineDrape>& drapes, double renderWallSeconds,
-                           const ImageSize& size) {
+                           const std::vector<session::EngineDrape>& drapes, const std::vector<session::EngineFit>& fits,
+                           double renderWallSeconds, const ImageSize& size) {
   nlohmann::json garments = nlohmann::json::array();
   for (const session::EngineDrape& drape : drapes) {
     const ClothEngine::RunStats& run = drape.run;
@@ -70,6 +87,8 @@ std::string writeStatsJson(const std::string& path, const std::string& scene,
                                 {"end_level_s", run.endLevelSeconds},
                                 {"moved_after_end_level_mean_m", run.meanMoveAfterEndLevel},
                                 {"moved_after_end_level_max_m", run.maxMoveAfterEndLevel}};
+    for (const session::EngineFit& fit : fits)
+      if (fit.engine == drape.engine && !fit.regions.empty()) garment["fit"] = fitJson(fit);
     garments.push_back(std::move(garment));
   }
   const nlohmann::json stats = {{"scene", scene},

@@ -2,7 +2,8 @@
 //
 //   figment-view SCENE.iv -o OUT.png [--size WxH] [--view front|back|left|right|AZ,EL]...
 //                [--turntable N] [--frames T0:T1:N] [--wind-force OUT.csv]
-//                [--stats OUT.json] [--depth-buffer-only] [--keep-stencil-fields]
+//                [--stats OUT.json] [--fit-map stretch|ease|pressure]
+//                [--depth-buffer-only] [--keep-stencil-fields]
 //                [--show-volumes] [--display-subdivision N] [--stop-at N] [--no-cache] [--strict]
 //                [--export OUT.glb|.gltf|.obj [--export-body]]
 //   figment-view --list-nodes
@@ -38,6 +39,8 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/DrapeRecorder.h"
+#include "session/EngineFit.h"
+#include "session/FitMapDrawing.h"
 #include "session/FrameDisplay.h"
 #include "session/SceneExport.h"
 #include "session/SceneRenderer.h"
@@ -75,6 +78,7 @@ struct Options {
   std::string frames;
   std::string windForce;
   std::string stats;
+  std::string fitMap;      // --fit-map: stretch, ease or pressure; "" = the scene's colours
   std::string exportPath;  // --export; "" = none
   bool exportBody = false;
   bool keepStencilFields = false;
@@ -313,11 +317,22 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
   // --strict: a drape that is not clean (its line said above) is an error; nothing is written.
   if (options.strict && !session.verdicts().empty()) return 1;
 
+  // The garments' fit on their bodies: for the fit map's colours and the statistics.
+  std::vector<figment::session::EngineFit> fits;
+  if (!options.fitMap.empty() || !options.stats.empty())
+    fits = measureEngineFits(session.scene(), !options.stats.empty(), !options.stats.empty());
+  if (!options.fitMap.empty() && fits.empty())
+    return fail("--fit-map " + options.fitMap,
+                "no garment drawn by a ClothingLayer on a mesh body (a HumanBody or MeshFile) to colour");
+
   WrittenImages outputs;
   if (!options.exportPath.empty()) {
     error = exportDrape(session, options, outputs);
     if (!error.empty()) return fail("--export " + options.exportPath, error);
   }
+  // After the export: it keeps the garments' own colours.
+  for (const EngineFit& fit : fits)
+    if (!options.fitMap.empty()) drawFitMap(fit, fitMapBands(fit, figment::fitMapKind(options.fitMap)));
   double renderWall = 0.0;
   std::string where;
   if (images)
@@ -329,7 +344,7 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
     if (!error.empty()) return fail(options.windForce, error);
   }
   if (!options.stats.empty()) {
-    error = writeStatsJson(options.stats, options.scene, session.drapes(), renderWall, plan.size);
+    error = writeStatsJson(options.stats, options.scene, session.drapes(), fits, renderWall, plan.size);
     if (!error.empty()) return fail(options.stats, error);
   }
   outputs.keep();
@@ -377,7 +392,15 @@ void describeOutputOptions(CLI::App& app, Options& options) {
                  "Write the wind's total force on each garment over simulated time here (CSV: engine, time_s, "
                  "pressure_Pa, phase_rad, force_x_N, force_y_N, force_z_N, force_N; every 5 ms simulated). Drapes are "
                  "simulated, neither read from nor kept in the drape cache");
-  app.add_option("--stats", options.stats, "Write simulation and render statistics (JSON) here");
+  app.add_option("--stats", options.stats,
+                 "Write simulation and render statistics (JSON) here; each garment on a measurable body (a "
+                 "HumanBody, a human body read from a file) with its fit per region (docs/sizes.md), and a "
+                 "catalogue garment's verdicts against its size on its own chart body");
+  app.add_option("--fit-map", options.fitMap,
+                 "Draw the draped garments on mesh bodies in their fit map's colours (docs/sizes.md): stretch "
+                 "(blue at rest to red at the fabric's limit), ease (red on the skin to blue 5 cm off) or pressure "
+                 "(blue at 0 to red at 2 kPa), eight bands")
+      ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
   app.add_option("--export", options.exportPath,
                  "After draping, write the draped garments here, one mesh each with its Material's diffuse colour "
                  "and smooth normals, in metres, y up: .glb or .gltf (glTF 2.0; a .gltf gets its .bin beside it) or "

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
+#include "io/GarmentCatalogue.h"
 #include "serve/Catalogue.h"
 
 using namespace figment::serve;
@@ -34,5 +36,20 @@ TEST(Catalogue, TheDefaultBodysMeasurementsAreFactorsOfOne) {
   for (const MeasureRange& range : Catalogue::measures()) {
     EXPECT_GT(range.minimum / range.reference, 0.5) << range.name;
     EXPECT_LT(range.maximum / range.reference, 2.0) << range.name;
+  }
+}
+
+// The service's styles are the garment catalogue's (scenes/catalogue/, io/GarmentCatalogue.h):
+// each is sold there, its default colour is the catalogue's first for it, and each of the
+// catalogue's colours for it is one the service offers.
+TEST(Catalogue, ItsStylesAndColoursAreTheGarmentCataloguesFiles) {
+  const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
+  const std::vector<std::string>& offered = Catalogue::colours();
+  for (const GarmentStyle& style : Catalogue::styles()) {
+    const figment::CatalogueStyle* sold = catalogue.style(style.name);
+    ASSERT_NE(sold, nullptr) << style.name;
+    EXPECT_EQ(style.defaultColour, sold->colours.front()) << style.name;
+    for (const std::string& colour : sold->colours)
+      EXPECT_NE(std::find(offered.begin(), offered.end(), colour), offered.end()) << style.name << " " << colour;
   }
 }

@@ -58,7 +58,7 @@ class ExampleScene : public ::testing::TestWithParam<std::string> {};
 // Drapes for real (--no-cache): each example drapes in about 1 s or less on one core
 // (speed is figment-bench's to measure, not a test's).
 TEST_P(ExampleScene, RendersNonEmptyPixels) {
-  if (GetParam() == "HumanBody" && figment::findMakeHumanData().empty())
+  if ((GetParam() == "HumanBody" || GetParam() == "CatalogueGarment") && figment::findMakeHumanData().empty())
     GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
   const figment::test::TempDir dir;
   const std::string scene = (kExamples / (GetParam() + ".iv")).string();

@@ -1,0 +1,187 @@
+#include "io/GarmentCatalogue.h"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/SizeChartFile.h"
+
+namespace figment {
+
+namespace {
+
+// A file's lines without comments or blanks, each with "<path>:<line>" for messages.
+struct Line {
+  std::string where;
+  std::vector<std::string> words;
+};
+
+std::vector<Line> readLines(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot be opened");
+  std::vector<Line> lines;
+  std::string text;
+  for (int number = 1; std::getline(in, text); ++number) {
+    std::istringstream fields(text.substr(0, text.find('#')));
+    Line line{path + ":" + std::to_string(number), {}};
+    for (std::string word; fields >> word;) line.words.push_back(word);
+    if (!line.words.empty()) lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+std::string besides(const std::string& indexPath, const std::string& name) {
+  return (std::filesystem::path(indexPath).parent_path() / name).string();
+}
+
+// The chart the index names: its "chart FILE" line.
+std::string chartPathOf(const std::string& indexPath) {
+  for (const Line& line : readLines(indexPath))
+    if (line.words[0] == "chart" && line.words.size() == 2) return besides(indexPath, line.words[1]);
+  throw std::runtime_error(indexPath + ": no \"chart FILE\" line");
+}
+
+bool isColour(const std::string& text) {
+  return text.size() == 6 && std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isxdigit(c); });
+}
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& word : words) out += (out.empty() ? "" : ", ") + word;
+  return out;
+}
+
+// One "female|male SIZES..." line into `style`, each size checked against the chart.
+void readSizes(const Line& line, const SizeChart& chart, CatalogueStyle& style) {
+  const Sex sex = line.words[0] == "male" ? Sex::Male : Sex::Female;
+  if (std::find(style.sexes.begin(), style.sexes.end(), sex) != style.sexes.end())
+    throw std::runtime_error(line.where + ": " + line.words[0] + " sizes given twice");
+  style.sexes.push_back(sex);
+  std::vector<std::string>& sizes = sex == Sex::Male ? style.male : style.female;
+  for (size_t i = 1; i < line.words.size(); ++i) {
+    const int index = chart.find(sex, line.words[i]);
+    if (index < 0)
+      throw std::runtime_error(line.where + ": the size chart has no " + line.words[0] + " size " + line.words[i]);
+    sizes.push_back(chart.sizes(sex)[index].name);
+  }
+  if (sizes.empty()) throw std::runtime_error(line.where + ": no sizes");
+}
+
+CatalogueStyle readStyle(const std::string& path, const SizeChart& chart) {
+  CatalogueStyle style;
+  for (const Line& line : readLines(path)) {
+    const std::string& key = line.words[0];
+    if (key == "style" && line.words.size() == 2) {
+      if (!findStyle(line.words[1]))
+        throw std::runtime_error(line.where + ": style " + line.words[1] + " is not one of " + styleNames());
+      style.name = line.words[1];
+    } else if (key == "female" || key == "male") {
+      readSizes(line, chart, style);
+    } else if (key == "colours") {
+      for (size_t i = 1; i < line.words.size(); ++i) {
+        if (!isColour(line.words[i]))
+          throw std::runtime_error(line.where + ": colour " + line.words[i] + " is not six hex digits (rrggbb)");
+        style.colours.push_back(lower(line.words[i]));
+      }
+    } else {
+      throw std::runtime_error(line.where + ": '" + key + "' is not style, female, male or colours");
+    }
+  }
+  if (style.name.empty()) throw std::runtime_error(path + ": no \"style NAME\" line");
+  if (style.sexes.empty()) throw std::runtime_error(path + ": no sizes (\"female SIZES...\" or \"male SIZES...\")");
+  if (style.colours.empty()) throw std::runtime_error(path + ": no \"colours RRGGBB...\" line");
+  return style;
+}
+
+std::vector<std::string> split(const std::string& name) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (std::istringstream in(name); std::getline(in, part, ':');) parts.push_back(part);
+  if (!name.empty() && name.back() == ':') parts.push_back("");
+  return parts;
+}
+
+}  // namespace
+
+std::string CatalogueItem::name() const {
+  return std::string(style ? style->name : "") + ":" + sizeName + ":" + colour;
+}
+
+GarmentCatalogue::GarmentCatalogue(const std::string& indexPath) : chart_(readSizeChart(chartPathOf(indexPath))) {
+  for (const Line& line : readLines(indexPath)) {
+    if (line.words[0] == "chart" && line.words.size() == 2) continue;
+    if (line.words[0] != "style" || line.words.size() != 2)
+      throw std::runtime_error(line.where + ": expected \"chart FILE\" or \"style FILE\"");
+    CatalogueStyle style = readStyle(besides(indexPath, line.words[1]), chart_);
+    if (this->style(style.name)) throw std::runtime_error(line.where + ": style " + style.name + " listed twice");
+    styles_.push_back(std::move(style));
+  }
+  if (styles_.empty()) throw std::runtime_error(indexPath + ": no \"style FILE\" line");
+}
+
+const CatalogueStyle* GarmentCatalogue::style(const std::string& name) const {
+  for (const CatalogueStyle& style : styles_)
+    if (style.name == name) return &style;
+  return nullptr;
+}
+
+std::string GarmentCatalogue::styleNames() const {
+  std::vector<std::string> names;
+  for (const CatalogueStyle& style : styles_) names.push_back(style.name);
+  return joined(names);
+}
+
+CatalogueItem GarmentCatalogue::resolve(const std::string& name) const {
+  return resolveIn(name, nullptr);
+}
+
+CatalogueItem GarmentCatalogue::resolve(const std::string& name, Sex sex) const {
+  return resolveIn(name, &sex);
+}
+
+CatalogueItem GarmentCatalogue::resolveIn(const std::string& name, const Sex* sex) const {
+  const std::vector<std::string> parts = split(name);
+  if (parts.size() < 2 || parts.size() > 3)
+    throw std::invalid_argument("\"" + name + "\" is not style:size[:rrggbb] (styles " + styleNames() + ")");
+  const CatalogueStyle* found = style(parts[0]);
+  if (!found) throw std::invalid_argument("\"" + name + "\": no style " + parts[0] + " (styles " + styleNames() + ")");
+  CatalogueItem item;
+  item.style = findStyle(found->name);
+  // A letter code in the given sex (else the style's first); a number in whichever sex has it.
+  const std::vector<Sex> order = sex ? std::vector<Sex>{*sex} : found->sexes;
+  item.size = -1;
+  for (const Sex candidate : order) {
+    const int index = chart_.find(candidate, parts[1]);
+    const bool sold = index >= 0 && std::find(found->sizes(candidate).begin(), found->sizes(candidate).end(),
+                                              chart_.sizes(candidate)[index].name) != found->sizes(candidate).end();
+    const bool byNumber = index >= 0 && chart_.sizes(candidate)[index].number == parts[1];
+    if (sold && (candidate == order.front() || byNumber)) {
+      item.sex = candidate, item.size = index, item.sizeName = chart_.sizes(candidate)[index].name;
+      break;
+    }
+  }
+  if (item.size < 0) {
+    std::string accepted;
+    for (const Sex s : found->sexes)
+      accepted += (accepted.empty() ? "" : "; ") + std::string(sexName(s)) + " " + joined(found->sizes(s));
+    throw std::invalid_argument("\"" + name + "\": no size " + parts[1] + " of " + found->name + " (" + accepted + ")");
+  }
+  item.colour = parts.size() == 3 ? lower(parts[2]) : found->colours.front();
+  if (!isColour(item.colour))
+    throw std::invalid_argument("\"" + name + "\": colour " + parts[2] + " is not six hex digits (rrggbb)");
+  return item;
+}
+
+std::string defaultCataloguePath() {
+  return FIGMENT_CATALOGUE_DEFAULT;
+}
+
+}  // namespace figment

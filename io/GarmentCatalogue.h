@@ -1,0 +1,67 @@
+#pragma once
+// The garment catalogue's files (scenes/catalogue/index.txt and one file per style): the
+// styles a shop sells, each in the chart's sizes per sex and in its colours, so a scene,
+// the tools and the service name one garment as "style:size[:rrggbb]" ("dress:M",
+// "pencil:38", "tshirt:XL:222222"). A size is the chart's letter code, in the sex the
+// style's file lists first, or its number (unique over both sexes: "tshirt:38" is the
+// women's M). The garment itself is the style cut around the size's chart body
+// (sim/garment/GarmentStyle.h, sim/garment/SizeChart.h). Format: docs/sizes.md.
+
+#include <string>
+#include <vector>
+
+#include "sim/garment/GarmentStyle.h"
+#include "sim/garment/SizeChart.h"
+
+namespace figment {
+
+struct CatalogueStyle {
+  std::string name;                       // a sim/garment style: "dress"
+  std::vector<Sex> sexes;                 // in the file's order: the first is the one a letter code names
+  std::vector<std::string> female, male;  // the chart's sizes it is cut in (letter codes), smallest first
+  std::vector<std::string> colours;       // rrggbb, lower case; the first is the default
+  const std::vector<std::string>& sizes(Sex sex) const { return sex == Sex::Female ? female : male; }
+};
+
+// One garment of the catalogue, resolved from its name.
+struct CatalogueItem {
+  const GarmentStyle* style = nullptr;  // its generator, ease and fabric
+  Sex sex = Sex::Female;
+  int size = 0;              // index into the chart's sizes(sex)
+  std::string sizeName;      // the letter code: "M"
+  std::string colour;        // rrggbb: the name's, else the style's default
+  std::string name() const;  // "dress:M:1f40b3"
+};
+
+class GarmentCatalogue {
+ public:
+  // Reads the index and the files it names (beside it) and the chart. Throws
+  // std::runtime_error("<file>:<line>: <reason>") for a file that cannot be read, a line it
+  // does not understand, a style sim/garment does not have, a size the chart lacks or a
+  // colour that is not six hex digits.
+  explicit GarmentCatalogue(const std::string& indexPath);
+
+  const std::vector<CatalogueStyle>& styles() const { return styles_; }
+  const SizeChart& chart() const { return chart_; }
+  const CatalogueStyle* style(const std::string& name) const;
+
+  // "style:size[:rrggbb]" -> the garment. Throws std::invalid_argument naming the value and
+  // what is accepted: "dress:Q: no size Q of dress (female XXS, XS, S, M, L, XL)".
+  CatalogueItem resolve(const std::string& name) const;
+  // As resolve, for a size letter code in `sex`'s sizes (a service's request names the sex).
+  CatalogueItem resolve(const std::string& name, Sex sex) const;
+
+  // "dress, skirt, pencil, tshirt": for messages.
+  std::string styleNames() const;
+
+ private:
+  CatalogueItem resolveIn(const std::string& name, const Sex* sex) const;
+
+  SizeChart chart_;
+  std::vector<CatalogueStyle> styles_;
+};
+
+// The catalogue shipped with the sources (scenes/catalogue/index.txt).
+std::string defaultCataloguePath();
+
+}  // namespace figment

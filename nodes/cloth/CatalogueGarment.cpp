@@ -1,0 +1,127 @@
+#include "nodes/cloth/CatalogueGarment.h"
+
+#include <Inventor/SoInput.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/errors/SoReadError.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "io/GarmentCatalogue.h"
+#include "io/MakeHumanFiles.h"
+#include "io/TargetLibrary.h"
+#include "nodes/SceneFiles.h"
+#include "sim/body/BodyFit.h"
+
+SO_NODE_SOURCE(CatalogueGarment);
+
+struct CatalogueGarment::Data {
+  std::vector<std::string> sceneDirectories;  // kept at read time for later loads
+  std::unique_ptr<figment::TargetLibrary> library;
+  std::optional<figment::HumanModel> model;
+};
+
+void CatalogueGarment::initClass() {
+  if (classTypeId != SoType::badType()) return;
+  MeshFile::initClass();
+  SO_NODE_INIT_CLASS(CatalogueGarment, MeshFile, "MeshFile");
+}
+
+CatalogueGarment::CatalogueGarment() : data_(std::make_unique<Data>()) {
+  SO_NODE_CONSTRUCTOR(CatalogueGarment);
+  SO_NODE_ADD_FIELD(garment, (""));
+  SO_NODE_ADD_FIELD(catalogue, (""));
+  SO_NODE_ADD_FIELD(colour, (0.8f, 0.8f, 0.8f));
+  SO_NODE_ADD_FIELD(fabric, (""));
+}
+
+CatalogueGarment::~CatalogueGarment() = default;
+
+bool CatalogueGarment::isLoadOption(const SoField* field) const {
+  return field == &garment || field == &catalogue || inherited::isLoadOption(field);
+}
+
+SbBool CatalogueGarment::readInstance(SoInput* in, unsigned short flags) {
+  // The folders the catalogue is looked up in, before MeshFile's read loads the mesh.
+  data_->sceneDirectories = figment::sceneSearchDirectories(in);
+  return inherited::readInstance(in, flags);
+}
+
+namespace {
+
+// The catalogue `node` names, read; throws naming the field.
+figment::GarmentCatalogue readCatalogue(const CatalogueGarment& node, const std::vector<std::string>& dirs) {
+  const std::string name = node.catalogue.getValue().getString();
+  if (name.empty()) return figment::GarmentCatalogue(figment::defaultCataloguePath());
+  const std::string path = figment::resolveSceneFile(name, dirs);
+  if (path.empty()) throw std::invalid_argument("catalogue \"" + name + "\": no such file");
+  try {
+    return figment::GarmentCatalogue(path);
+  } catch (const std::exception& error) {
+    throw std::invalid_argument("catalogue \"" + name + "\": " + error.what());
+  }
+}
+
+SbColor colourOf(const std::string& hex) {
+  const unsigned long rgb = std::stoul(hex, nullptr, 16);
+  return SbColor(float((rgb >> 16) & 0xff) / 255.0f, float((rgb >> 8) & 0xff) / 255.0f, float(rgb & 0xff) / 255.0f);
+}
+
+}  // namespace
+
+bool CatalogueGarment::load(SoInput* in) {
+  std::string error;
+  try {
+    if (fileName.getValue().getLength() != 0)
+      throw std::invalid_argument("fileName \"" + std::string(fileName.getValue().getString()) +
+                                  "\": a CatalogueGarment makes its mesh; leave fileName empty");
+    const std::string name = garment.getValue().getString();
+    if (name.empty()) {
+      clearMesh();
+      return true;
+    }
+    const figment::GarmentCatalogue shop = readCatalogue(*this, data_->sceneDirectories);
+    figment::CatalogueItem item;
+    try {
+      item = shop.resolve(name);
+    } catch (const std::invalid_argument& bad) {
+      throw std::invalid_argument(std::string("garment ") + bad.what());
+    }
+    if (!data_->model) {
+      const std::string dir = figment::findMakeHumanData();
+      if (dir.empty())
+        throw std::runtime_error("MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR");
+      data_->library = std::make_unique<figment::TargetLibrary>(dir);
+      data_->model.emplace(figment::loadHumanModel(dir, *data_->library));
+    }
+    const figment::ChartSize& size = shop.chart().sizes(item.sex)[item.size];
+    figment::HumanParameters start;
+    start.macro.gender = item.sex == figment::Sex::Male ? 1.0 : 0.0;
+    const figment::TriangleMesh body = figment::fitBody(*data_->model, start,
+                                                        {{"stature", size.stature},
+                                                         {"bust_girth", size.bust},
+                                                         {"waist_girth", size.waist},
+                                                         {"hip_girth", size.hip}})
+                                           .body;
+    const figment::TriangleMesh cut = figment::cutGarment(*item.style, body);
+    setMesh(cut, cut);
+    colour.setValue(colourOf(item.colour));
+    fabric.setValue(item.style->fabric);
+    colour.setDefault(TRUE);
+    fabric.setDefault(TRUE);
+    return true;
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  clearMesh();
+  const SbName name = getName();
+  const std::string message = std::string("CatalogueGarment") +
+                              (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": " + error;
+  if (in)
+    SoReadError::post(in, "%s", message.c_str());
+  else
+    SoDebugError::post("CatalogueGarment::load", "%s", message.c_str());
+  return false;
+}

@@ -1,0 +1,51 @@
+#include "session/FitMapDrawing.h"
+
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoMaterialBinding.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShapeHints.h>
+
+#include "nodes/render/ClothingLayer.h"
+
+namespace figment::session {
+
+std::vector<int> fitMapBands(const EngineFit& fit, FitMapKind kind) {
+  std::vector<int> bands;
+  for (const double value : fitMapValues(fit.input(), kind))
+    bands.push_back(fitMapBand(fitMapShare(value, kind, fit.limits)));
+  return bands;
+}
+
+void drawFitMap(const EngineFit& fit, const std::vector<int>& bands) {
+  for (const auto& [group, layer] : fit.layers) {
+    auto* map = new SoSeparator;
+    auto* material = new SoMaterial;
+    for (int band = 0; band < kFitMapBands; ++band) {
+      const Vec3 c = fitMapColour(band);
+      material->diffuseColor.set1Value(band, float(c.x()), float(c.y()), float(c.z()));
+    }
+    auto* binding = new SoMaterialBinding;
+    binding->value = SoMaterialBinding::PER_VERTEX_INDEXED;
+    // Cloth is seen from both sides, as the shipped scenes' ShapeHints say.
+    auto* hints = new SoShapeHints;
+    hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+    hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
+    hints->creaseAngle = 1.0f;
+    auto* faces = new SoIndexedFaceSet;
+    const int count = layer->coordIndex.getNum();
+    faces->coordIndex.setValues(0, count, layer->coordIndex.getValues(0));
+    for (int i = 0; i < count; ++i) {
+      const int corner = layer->coordIndex[i];
+      faces->materialIndex.set1Value(i, corner < 0 || corner >= int(bands.size()) ? -1 : bands[corner]);
+    }
+    map->addChild(material);
+    map->addChild(binding);
+    map->addChild(hints);
+    map->addChild(faces);
+    group->replaceChild(layer, map);
+  }
+}
+
+}  // namespace figment::session

@@ -1,0 +1,19 @@
+#pragma once
+// figment-view --fit-map: a draped garment drawn in its fit map's colours (sim/fit/FitMap.h:
+// blue at rest to red at the fabric's limit, eight bands), as figment-size's fit-map scenes
+// draw it (io/FitMapScene.h): an IndexedFaceSet coloured per vertex by band.
+
+#include "session/EngineFit.h"
+#include "sim/fit/FitMap.h"
+
+namespace figment::session {
+
+// Each vertex's band (0 to kFitMapBands - 1) of `kind` on `fit`'s drape.
+std::vector<int> fitMapBands(const EngineFit& fit, FitMapKind kind);
+
+// Replaces each ClothingLayer of `fit` in its group by a separator drawing the same faces
+// (the Coordinate3 before it holds the drape) coloured by `bands`, seen from both sides.
+// The layers are gone afterwards: `fit.layers` must not be used again.
+void drawFitMap(const EngineFit& fit, const std::vector<int>& bands);
+
+}  // namespace figment::session
