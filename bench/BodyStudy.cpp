@@ -8,8 +8,13 @@
 #include "CsvFile.h"
 #include "Statistics.h"
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanRig.h"
+#include "io/SizeChartFile.h"
 #include "io/TargetLibrary.h"
-#include "sim/body/BodyMeasurements.h"
+#include "sim/body/BodyFit.h"
+#include "sim/body/SkinParts.h"
+#include "sim/collision/SelfIntersections.h"
+#include "sim/garment/SizeGrading.h"
 
 namespace figment::bench {
 
@@ -19,19 +24,71 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Female and male, thin to heavy, short to tall: 2 x 3 x 3 bodies.
-std::vector<HumanParameters> studyBodies() {
-  std::vector<HumanParameters> bodies;
-  for (double gender : {0.0, 1.0})
-    for (double weight : {0.2, 0.5, 0.8})
-      for (double height : {0.2, 0.5, 0.8}) {
-        HumanParameters p;
-        p.macro.gender = gender;
-        p.macro.weight = weight;
-        p.macro.height = height;
-        bodies.push_back(p);
-      }
-  return bodies;
+struct Row {
+  ChartSize set;
+  double seconds = 0;  // fit + measure, median of the repeats
+  double worstError = 0;  // m, the largest |achieved - typed|
+  int iterations = 0;
+  size_t crossings = 0;   // triangle pairs, folds within a part included
+  std::string parts;      // the part pairs that cross and do not in the base mesh, "left thigh x right thigh; ..."
+  std::string refused;   // the fit's one line, when it refused
+};
+
+std::vector<MeasurementGoal> goalsOf(const ChartSize& set) {
+  return {{"stature", set.stature}, {"bust_girth", set.bust}, {"waist_girth", set.waist}, {"hip_girth", set.hip}};
+}
+
+// What the study checks each body against: the skin's parts and which of them cross in the base mesh.
+struct Reference {
+  std::vector<int> parts;
+  std::vector<std::pair<int, int>> crossing;
+};
+
+std::string newPartCrossings(const std::vector<TrianglePair>& pairs, const Reference& base) {
+  std::string out;
+  for (const auto& [a, b] : crossingLabels(pairs, base.parts))
+    if (std::find(base.crossing.begin(), base.crossing.end(), std::pair(a, b)) == base.crossing.end())
+      out += (out.empty() ? "" : "; ") + skinPartNames()[size_t(a)] + " x " + skinPartNames()[size_t(b)];
+  return out;
+}
+
+Row study(const HumanModel& model, const ChartSize& set, const Reference& base, int repeat) {
+  Row row;
+  row.set = set;
+  HumanParameters start;
+  start.macro.gender = set.sex == Sex::Male ? 1.0 : 0.0;
+  std::vector<double> times;
+  BodyFitResult fit;
+  try {
+    for (int r = 0; r < repeat; ++r) {
+      const auto t0 = std::chrono::steady_clock::now();
+      fit = fitBody(model, start, goalsOf(set));
+      times.push_back(secondsSince(t0));
+    }
+  } catch (const UnreachableMeasurement& e) {
+    row.refused = e.what();
+    return row;
+  }
+  row.seconds = median(times);
+  row.iterations = fit.iterations;
+  for (const MeasurementGoal& goal : goalsOf(set))
+    row.worstError = std::max(row.worstError, std::abs(fit.achieved.byName(goal.key) - goal.value));
+  const std::vector<TrianglePair> pairs = selfIntersections(fit.body);
+  row.crossings = pairs.size();
+  row.parts = newPartCrossings(pairs, base);
+  return row;
+}
+
+bool writeRows(const std::string& path, const std::vector<Row>& rows) {
+  return writeCsv(path, [&](std::ostream& csv) -> std::string {
+    csv << "sex,size,number,stature_m,bust_m,waist_m,hip_m,make_measure_s,iterations,worst_error_m,crossing_pairs,"
+           "new_part_crossings,refused\n";
+    for (const Row& r : rows)
+      csv << sexName(r.set.sex) << ',' << r.set.name << ',' << r.set.number << ',' << r.set.stature << ','
+          << r.set.bust << ',' << r.set.waist << ',' << r.set.hip << ',' << r.seconds << ',' << r.iterations << ','
+          << r.worstError << ',' << r.crossings << ",\"" << r.parts << "\",\"" << r.refused << "\"\n";
+    return "";
+  });
 }
 
 }  // namespace
@@ -46,43 +103,38 @@ int runBodyStudy(const BodyStudyOptions& options) {
   const auto loadStart = std::chrono::steady_clock::now();
   TargetLibrary library(dir);
   const HumanModel model = loadHumanModel(dir, library);
-  const std::vector<HumanParameters> bodies = studyBodies();
-  for (const HumanParameters& p : bodies) model.make(p);  // reads every target the study uses
-  const double load = secondsSince(loadStart);
-
-  struct Row {
-    HumanParameters p;
-    double make, measure, stature;
-  };
-  std::vector<Row> rows;
-  std::vector<double> makes, measures, totals;
-  for (const HumanParameters& p : bodies) {
-    std::vector<double> make, measure;
-    BodyMeasurements m;
-    for (int r = 0; r < options.repeat; ++r) {
-      const auto start = std::chrono::steady_clock::now();
-      const TriangleMesh body = model.make(p);
-      make.push_back(secondsSince(start));
-      const auto measureStart = std::chrono::steady_clock::now();
-      m = measureBody(body);
-      measure.push_back(secondsSince(measureStart));
+  const std::vector<ChartSize> sets = bodyCheckSets(readSizeChart(defaultSizeChartPath()));
+  for (const double gender : {0.0, 1.0})
+    for (const double s : {0.0, 0.5, 1.0}) {  // reads the targets the fits blend
+      HumanParameters p;
+      p.macro.gender = gender, p.macro.weight = s, p.macro.muscle = s, p.macro.height = s;
+      model.make(p);
     }
-    rows.push_back({p, median(make), median(measure), m.stature});
-    makes.push_back(rows.back().make);
-    measures.push_back(rows.back().measure);
-    totals.push_back(rows.back().make + rows.back().measure);
+  const double load = secondsSince(loadStart);
+  Reference base;
+  base.parts = skinTriangleParts(readHumanRig(dir, model.base().fileVertexCount), model.base());
+  const std::vector<TrianglePair> baseCrossings = selfIntersections(model.base().skin);
+  base.crossing = crossingLabels(baseCrossings, base.parts);
+
+  std::vector<Row> rows;
+  std::vector<double> times;
+  size_t refused = 0, crossing = 0;
+  for (const ChartSize& set : sets) {
+    rows.push_back(study(model, set, base, options.repeat));
+    const Row& r = rows.back();
+    if (!r.refused.empty()) std::printf("%s %s: %s\n", sexName(set.sex), set.name.c_str(), r.refused.c_str());
+    if (r.refused.empty()) times.push_back(r.seconds);
+    refused += !r.refused.empty();
+    crossing += !r.parts.empty();
+    if (!r.parts.empty()) std::printf("%s %s %.2f m: %s\n", sexName(set.sex), set.name.c_str(), set.stature, r.parts.c_str());
   }
   std::filesystem::create_directories(options.outDir);
-  const bool written = writeCsv(options.outDir + "/bodies.csv", [&](std::ostream& csv) -> std::string {
-    csv << "gender,weight,height,make_s,measure_s,stature_m\n";
-    for (const Row& r : rows)
-      csv << r.p.macro.gender << ',' << r.p.macro.weight << ',' << r.p.macro.height << ',' << r.make << ',' << r.measure
-          << ',' << r.stature << '\n';
-    return "";
-  });
-  if (!written) return 1;
-  std::printf("bodies: %zu, data load %.3f s; median make %.4f s, measure %.4f s, make + measure %.4f s\n",
-              bodies.size(), load, median(makes), median(measures), median(totals));
+  if (!writeRows(options.outDir + "/bodies.csv", rows)) return 1;
+  std::printf("bodies: %zu sets, %zu refused, %zu with parts crossing that do not in the base mesh (base mesh: %zu crossing "
+              "pairs); data load "
+              "%.3f s; make + measure median %.3f s, p90 %.3f s\n",
+              sets.size(), refused, crossing, baseCrossings.size(), load, times.empty() ? 0.0 : median(times),
+              times.empty() ? 0.0 : quantile(times, 0.9));
   return 0;
 }
 

@@ -209,26 +209,59 @@ void measureArm(const Tape& tape, BodyMeasurements& m) {
   m.armLength = toShoulder + track.arc[wrist];
 }
 
-void findLandmarks(const Tape& tape, BodyLandmarks& l) {
+// Which landmarks and parts a set of measurements needs (each landmark's own inputs
+// included: the waist's window is anchored on the crotch and the armpits, ...).
+struct Needs {
+  bool crotch = false, armpit = false, neck = false, bust = false, waist = false, underbust = false, hip = false;
+  bool arm = false;
+
+  static Needs all() { return {true, true, true, true, true, true, true, true}; }
+  static Needs of(const std::vector<std::string>& keys) {
+    Needs n;
+    for (const std::string& key : keys) {
+      BodyMeasurements{}.byName(key);  // throws for an unknown key
+      n.bust = n.bust || key == "bust_girth";
+      n.underbust = n.underbust || key == "underbust_girth";
+      n.waist = n.waist || key == "waist_girth";
+      n.hip = n.hip || key == "hip_girth";
+      n.neck = n.neck || key == "neck_girth" || key == "shoulder_width" || key == "arm_length";
+      n.arm = n.arm || key == "upper_arm_girth" || key == "arm_length";
+      n.crotch = n.crotch || key == "thigh_girth" || key == "inside_leg";
+    }
+    n.bust = n.bust || n.underbust;
+    n.waist = n.waist || n.underbust || n.hip;
+    n.neck = n.neck || n.arm;  // the arm's length starts at the shoulder level
+    n.armpit = n.bust || n.waist || n.neck;
+    n.crotch = n.crotch || n.armpit;
+    return n;
+  }
+};
+
+void findLandmarks(const Tape& tape, const Needs& needs, BodyLandmarks& l) {
   const double floor = tape.floor();
-  l.crotch = crotchHeight(tape) - floor;
-  l.armpit = armpitHeight(tape, floor + l.crotch) - floor;
+  if (needs.crotch) l.crotch = crotchHeight(tape) - floor;
+  if (needs.armpit) l.armpit = armpitHeight(tape, floor + l.crotch) - floor;
   const auto girth = [&](double y) { return tape.girth(y); };
-  l.neck =
-      tape.best(floor + l.armpit + tape.scaled(0.08), floor + tape.stature() - tape.scaled(0.12), -1, girth).height -
-      floor;
-  l.shoulder = 0.5 * (l.armpit + l.neck);
+  if (needs.neck) {
+    l.neck =
+        tape.best(floor + l.armpit + tape.scaled(0.08), floor + tape.stature() - tape.scaled(0.12), -1, girth).height -
+        floor;
+    l.shoulder = 0.5 * (l.armpit + l.neck);
+  }
   const auto front = [&](double y) { return tape.front(y); };
   // fullest and narrowest levels in windows anchored on the crotch and the armpits, which move
   // continuously with the body: the girths then do too, and a fit can meet them
-  l.bust =
-      tape.best(floor + l.armpit - tape.scaled(0.25), floor + l.armpit - tape.scaled(0.02), +1, girth).height - floor;
-  l.waist =
-      tape.best(floor + l.crotch + tape.scaled(0.1), floor + l.armpit - tape.scaled(0.15), -1, girth).height - floor;
-  l.underbust =
-      tape.best(floor + l.bust - 0.6 * (l.bust - l.waist), floor + l.bust - tape.scaled(0.02), -1, front).height -
-      floor;
-  l.hip = tape.best(floor + l.crotch + tape.scaled(0.01), floor + l.waist, +1, girth).height - floor;
+  if (needs.bust)
+    l.bust =
+        tape.best(floor + l.armpit - tape.scaled(0.25), floor + l.armpit - tape.scaled(0.02), +1, girth).height - floor;
+  if (needs.waist)
+    l.waist =
+        tape.best(floor + l.crotch + tape.scaled(0.1), floor + l.armpit - tape.scaled(0.15), -1, girth).height - floor;
+  if (needs.underbust)
+    l.underbust =
+        tape.best(floor + l.bust - 0.6 * (l.bust - l.waist), floor + l.bust - tape.scaled(0.02), -1, front).height -
+        floor;
+  if (needs.hip) l.hip = tape.best(floor + l.crotch + tape.scaled(0.01), floor + l.waist, +1, girth).height - floor;
 }
 
 double thighGirth(const Tape& tape, double crotch) {
@@ -261,24 +294,39 @@ double convexPerimeter(const std::vector<Vec3>& points, const Vec3& normal) {
   return perimeter;
 }
 
-BodyMeasurements measureBody(const TriangleMesh& body) {
+namespace {
+
+BodyMeasurements measure(const TriangleMesh& body, const Needs& needs) {
   if (body.vertices.empty() || body.triangles.empty()) throw std::invalid_argument("body: no triangles");
-  const Tape tape(body);
   BodyMeasurements m;
-  m.stature = tape.stature();
+  m.stature = boundsOf(body.vertices).size().y();
+  if (!needs.crotch) return m;  // the stature alone: no sections
+  const Tape tape(body);
   BodyLandmarks& l = m.landmarks;
-  findLandmarks(tape, l);
+  findLandmarks(tape, needs, l);
   const double floor = tape.floor();
-  m.bustGirth = tape.girth(floor + l.bust);
-  m.underbustGirth = tape.girth(floor + l.underbust);
-  m.waistGirth = tape.girth(floor + l.waist);
-  m.hipGirth = tape.girth(floor + l.hip);
-  m.neckGirth = tape.girth(floor + l.neck);
-  m.shoulderWidth = shoulderWidth(tape, l.shoulder);
-  m.thighGirth = thighGirth(tape, l.crotch);
-  m.insideLeg = l.crotch;
-  measureArm(tape, m);
+  if (needs.bust) m.bustGirth = tape.girth(floor + l.bust);
+  if (needs.underbust) m.underbustGirth = tape.girth(floor + l.underbust);
+  if (needs.waist) m.waistGirth = tape.girth(floor + l.waist);
+  if (needs.hip) m.hipGirth = tape.girth(floor + l.hip);
+  if (needs.neck) {
+    m.neckGirth = tape.girth(floor + l.neck);
+    m.shoulderWidth = shoulderWidth(tape, l.shoulder);
+  }
+  if (needs.crotch) {
+    m.thighGirth = thighGirth(tape, l.crotch);
+    m.insideLeg = l.crotch;
+  }
+  if (needs.arm) measureArm(tape, m);
   return m;
+}
+
+}  // namespace
+
+BodyMeasurements measureBody(const TriangleMesh& body) { return measure(body, Needs::all()); }
+
+BodyMeasurements measureBody(const TriangleMesh& body, const std::vector<std::string>& keys) {
+  return measure(body, Needs::of(keys));
 }
 
 std::vector<std::pair<std::string, double>> BodyMeasurements::named() const {

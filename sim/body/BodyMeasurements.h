@@ -43,6 +43,11 @@ struct BodyMeasurements {
 // apart, about symmetric about x = the middle of its bounds. Throws std::invalid_argument
 // ("body: no crotch found ...") when a landmark cannot be found.
 BodyMeasurements measureBody(const TriangleMesh& body);
+// The measurements `keys` (named() keys) name and the landmarks they need, each the same
+// as measureBody(body) gives it; the others 0 (or as measureBody gives them). What a fit measures at each step:
+// a fit to four girths need not follow the arms (a third of a full measurement's time).
+// Throws as measureBody, and std::invalid_argument for an unknown key.
+BodyMeasurements measureBody(const TriangleMesh& body, const std::vector<std::string>& keys);
 
 // The perimeter (m) of the convex hull of `points`, each taken in the plane with unit
 // normal `normal`: what a taut tape laid round them in that plane measures.

@@ -37,6 +37,10 @@ ClosestPoint closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b,
 namespace {
 constexpr int kLeafSize = 4;
 
+bool boxesMeet(const Bounds& a, const Bounds& b) {
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
 double squaredDistanceToBox(const Vec3& p, const Bounds& box) {
   const Vec3 below = (box.min - p).cwiseMax(0.0);
   const Vec3 above = (p - box.max).cwiseMax(0.0);
@@ -130,6 +134,30 @@ ClosestPoint TriangleBvh::closest(const Vec3& p, double maxDistance) const {
     }
   }
   return best;
+}
+
+void TriangleBvh::overlapping(const Bounds& box, std::vector<int>& out) const {
+  if (nodes_.empty()) return;
+  int stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    if (!boxesMeet(node.box, box)) continue;
+    if (node.left >= 0) {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+      continue;
+    }
+    for (int i = node.first; i < node.first + node.count; ++i) {
+      const int t = order_[i];
+      Bounds own;
+      own.extend(a_[t]);
+      own.extend(b_[t]);
+      own.extend(c_[t]);
+      if (boxesMeet(own, box)) out.push_back(t);
+    }
+  }
 }
 
 ClosestPoint TriangleBvh::closestBruteForce(const Vec3& p) const {

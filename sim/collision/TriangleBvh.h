@@ -31,6 +31,9 @@ class TriangleBvh {
   ClosestPoint closest(const Vec3& p, double maxDistance = std::numeric_limits<double>::infinity()) const;
   // Closest point by testing every triangle: the reference the tests compare against.
   ClosestPoint closestBruteForce(const Vec3& p) const;
+  // Appends to `out` every triangle (its index in the mesh) whose bounding box meets `box`
+  // (touching counts), in no particular order: the candidates of an overlap test.
+  void overlapping(const Bounds& box, std::vector<int>& out) const;
 
  private:
   struct Node {
