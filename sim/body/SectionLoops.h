@@ -23,17 +23,19 @@ struct SectionLoop {
 // on the plane counts as just above it, so no crossing is lost or doubled.
 std::vector<SectionLoop> sectionLoops(const TriangleMesh& mesh, const Vec3& point, const Vec3& normal);
 
-// The same for the horizontal plane y = height, faster: triangles sorted by height once.
+// The same for the horizontal plane y = height, faster: the triangles filed once by the
+// 5 mm bands of height they span, so a level looks only at its band's.
 class HorizontalSections {
  public:
   explicit HorizontalSections(const TriangleMesh& mesh);
   std::vector<SectionLoop> at(double height) const;
 
  private:
+  static constexpr double kBand = 0.005;  // m
   const TriangleMesh& mesh_;
-  std::vector<int> order_;    // triangles by their lowest vertex's height
-  std::vector<double> lowY_;  // m, in that order
-  double tallest_ = 0;        // m: the largest height span of one triangle
+  double bottom_ = 0;        // m: the lowest vertex's height, band 0's foot
+  std::vector<int> start_;   // band b's triangles: members_[start_[b] .. start_[b + 1])
+  std::vector<int> members_;
 };
 
 }  // namespace figment

@@ -1,6 +1,7 @@
 // The BVH's closest points match testing every triangle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "sim/collision/TriangleBvh.h"
@@ -44,4 +45,28 @@ TEST(TriangleBvh, BoundedQueryFindsNothingBeyondTheRadius) {
   const TriangleBvh bvh(meshes::sphere(0.3));
   EXPECT_LT(bvh.closest(Vec3(0, 1.0, 0), 0.5).triangle, 0);
   EXPECT_GE(bvh.closest(Vec3(0, 1.0, 0), 0.71).triangle, 0);
+}
+
+TEST(TriangleBvh, OverlappingFindsExactlyTheTrianglesWhoseBoxesMeetTheBox) {
+  const TriangleMesh mesh = meshes::sphere(0.3, 40, 20);
+  const TriangleBvh bvh(mesh);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-0.4, 0.4), size(0.0, 0.2);
+  for (int query = 0; query < 200; ++query) {
+    Bounds box;
+    const Vec3 corner(coordinate(random), coordinate(random), coordinate(random));
+    box.extend(corner);
+    box.extend(corner + Vec3(size(random), size(random), size(random)));
+    std::vector<int> found;
+    bvh.overlapping(box, found);
+    std::sort(found.begin(), found.end());
+    std::vector<int> expected;
+    for (int t = 0; t < int(mesh.triangles.size()); ++t) {
+      Bounds own;
+      for (int k = 0; k < 3; ++k) own.extend(mesh.vertices[mesh.triangles[t][k]]);
+      if ((own.min.array() <= box.max.array()).all() && (box.min.array() <= own.max.array()).all())
+        expected.push_back(t);
+    }
+    EXPECT_EQ(found, expected) << "query " << query;
+  }
 }
