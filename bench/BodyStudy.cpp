@@ -1,8 +1,8 @@
 #include "BodyStudy.h"
 
 #include <chrono>
-#include <ctime>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <vector>
 
@@ -39,9 +39,10 @@ struct Row {
   double cpuSeconds = 0;  // the same in this thread's CPU time
   double worstError = 0;  // m, the largest |achieved - typed|
   int iterations = 0;
-  size_t crossings = 0;   // triangle pairs, folds within a part included
-  std::string parts;      // the part pairs that cross and do not in the base mesh, "left thigh x right thigh; ..."
-  std::string refused;   // the fit's one line, when it refused
+  double checkSeconds = 0;  // CPU: the crossing check
+  size_t crossings = 0;     // triangle pairs, folds within a part included
+  std::string parts;        // the part pairs that cross and do not in the base mesh, "left thigh x right thigh; ..."
+  std::string refused;      // the fit's one line, when it refused
 };
 
 std::vector<MeasurementGoal> goalsOf(const ChartSize& set) {
@@ -86,7 +87,9 @@ Row study(const HumanModel& model, const ChartSize& set, const Reference& base, 
   row.iterations = fit.iterations;
   for (const MeasurementGoal& goal : goalsOf(set))
     row.worstError = std::max(row.worstError, std::abs(fit.achieved.byName(goal.key) - goal.value));
+  const double c0 = threadSeconds();
   const std::vector<TrianglePair> pairs = selfIntersections(fit.body);
+  row.checkSeconds = threadSeconds() - c0;
   row.crossings = pairs.size();
   row.parts = newPartCrossings(pairs, base);
   return row;
@@ -94,12 +97,14 @@ Row study(const HumanModel& model, const ChartSize& set, const Reference& base, 
 
 bool writeRows(const std::string& path, const std::vector<Row>& rows) {
   return writeCsv(path, [&](std::ostream& csv) -> std::string {
-    csv << "sex,size,number,stature_m,bust_m,waist_m,hip_m,make_measure_s,make_measure_cpu_s,iterations,worst_error_m,crossing_pairs,"
+    csv << "sex,size,number,stature_m,bust_m,waist_m,hip_m,make_measure_s,make_measure_cpu_s,iterations,worst_error_m,"
+           "check_cpu_s,crossing_pairs,"
            "new_part_crossings,refused\n";
     for (const Row& r : rows)
-      csv << sexName(r.set.sex) << ',' << r.set.name << ',' << r.set.number << ',' << r.set.stature << ','
-          << r.set.bust << ',' << r.set.waist << ',' << r.set.hip << ',' << r.seconds << ',' << r.cpuSeconds << ',' << r.iterations << ','
-          << r.worstError << ',' << r.crossings << ",\"" << r.parts << "\",\"" << r.refused << "\"\n";
+      csv << sexName(r.set.sex) << ',' << r.set.name << ',' << r.set.number << ',' << r.set.stature << ',' << r.set.bust
+          << ',' << r.set.waist << ',' << r.set.hip << ',' << r.seconds << ',' << r.cpuSeconds << ',' << r.iterations
+          << ',' << r.worstError << ',' << r.checkSeconds << ',' << r.crossings << ",\"" << r.parts << "\",\""
+          << r.refused << "\"\n";
     return "";
   });
 }
@@ -130,25 +135,28 @@ int runBodyStudy(const BodyStudyOptions& options) {
   base.crossing = crossingLabels(baseCrossings, base.parts);
 
   std::vector<Row> rows;
-  std::vector<double> times, cpu;
+  std::vector<double> times, cpu, checks;
   size_t refused = 0, crossing = 0;
   for (const ChartSize& set : sets) {
     rows.push_back(study(model, set, base, options.repeat));
     const Row& r = rows.back();
     if (!r.refused.empty()) std::printf("%s %s: %s\n", sexName(set.sex), set.name.c_str(), r.refused.c_str());
-    if (r.refused.empty()) times.push_back(r.seconds), cpu.push_back(r.cpuSeconds);
+    if (r.refused.empty()) times.push_back(r.seconds), cpu.push_back(r.cpuSeconds), checks.push_back(r.checkSeconds);
     refused += !r.refused.empty();
     crossing += !r.parts.empty();
-    if (!r.parts.empty()) std::printf("%s %s %.2f m: %s\n", sexName(set.sex), set.name.c_str(), set.stature, r.parts.c_str());
+    if (!r.parts.empty())
+      std::printf("%s %s %.2f m: %s\n", sexName(set.sex), set.name.c_str(), set.stature, r.parts.c_str());
   }
   std::filesystem::create_directories(options.outDir);
   if (!writeRows(options.outDir + "/bodies.csv", rows)) return 1;
-  std::printf("bodies: %zu sets, %zu refused, %zu with parts crossing that do not in the base mesh (base mesh: %zu crossing "
-              "pairs); data load "
-              "%.3f s; make + measure median %.3f s, p90 %.3f s (CPU: median %.3f s, p90 %.3f s)\n",
-              sets.size(), refused, crossing, baseCrossings.size(), load, times.empty() ? 0.0 : median(times),
-              times.empty() ? 0.0 : quantile(times, 0.9), cpu.empty() ? 0.0 : median(cpu),
-              cpu.empty() ? 0.0 : quantile(cpu, 0.9));
+  std::printf(
+      "bodies: %zu sets, %zu refused, %zu with parts crossing that do not in the base mesh (base mesh: %zu crossing "
+      "pairs); data load "
+      "%.3f s; make + measure median %.3f s, p90 %.3f s (CPU: median %.3f s, p90 %.3f s); crossing check median %.3f s "
+      "CPU\n",
+      sets.size(), refused, crossing, baseCrossings.size(), load, times.empty() ? 0.0 : median(times),
+      times.empty() ? 0.0 : quantile(times, 0.9), cpu.empty() ? 0.0 : median(cpu),
+      cpu.empty() ? 0.0 : quantile(cpu, 0.9), checks.empty() ? 0.0 : median(checks));
   return 0;
 }
 

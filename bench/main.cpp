@@ -203,7 +203,8 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
 }
 
 CLI::App* addBodyCommand(CLI::App& app, BodyStudyOptions& bodies) {
-  CLI::App* command = app.add_subcommand("bodies", "make and measure MakeHuman bodies to the 60 measurement sets: median, p90, skin crossings");
+  CLI::App* command = app.add_subcommand(
+      "bodies", "make and measure MakeHuman bodies to the 60 measurement sets: median, p90, skin crossings");
   command->add_option("--repeat", bodies.repeat, "timings per body (median)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

@@ -30,7 +30,9 @@ struct Unknown {
   double low, high;
 };
 
-bool cupExtends(const HumanParameters& start) { return start.macro.gender < 1.0 && start.macro.cupSize > 0.0; }
+bool cupExtends(const HumanParameters& start) {
+  return start.macro.gender < 1.0 && start.macro.cupSize > 0.0;
+}
 
 std::vector<Unknown> unknownsFor(const std::vector<MeasurementGoal>& goals, const HumanParameters& start) {
   std::vector<Unknown> unknowns;
@@ -126,8 +128,8 @@ Eigen::MatrixXd jacobian(const Problem& problem, double s, const Eigen::VectorXd
   const Eigen::Index n = x.size();
   Eigen::MatrixXd J(residual.size(), n);
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double step = x[j] + kDifferenceStep <= problem.unknowns()[size_t(j)].high ? kDifferenceStep
-                                                                                     : -kDifferenceStep;  // in range
+    const double step =
+        x[j] + kDifferenceStep <= problem.unknowns()[size_t(j)].high ? kDifferenceStep : -kDifferenceStep;  // in range
     Eigen::VectorXd moved = x;
     moved[j] += step;
     J.col(j) = (problem.evaluate(s, moved).residual - residual) / step;
@@ -192,7 +194,9 @@ double naturalMass(const Problem& problem, const Eigen::VectorXd& x) {
   throw UnreachableMeasurement(line);
 }
 
-double worst(const Evaluation& e) { return e.residual.size() ? e.residual.cwiseAbs().maxCoeff() : 0.0; }
+double worst(const Evaluation& e) {
+  return e.residual.size() ? e.residual.cwiseAbs().maxCoeff() : 0.0;
+}
 
 // Gauss-Newton from x, each step halved until the residual shrinks (a landmark moving to
 // another level makes the measurements only piecewise smooth); J by Broyden's update after

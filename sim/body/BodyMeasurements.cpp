@@ -323,7 +323,9 @@ BodyMeasurements measure(const TriangleMesh& body, const Needs& needs) {
 
 }  // namespace
 
-BodyMeasurements measureBody(const TriangleMesh& body) { return measure(body, Needs::all()); }
+BodyMeasurements measureBody(const TriangleMesh& body) {
+  return measure(body, Needs::all());
+}
 
 BodyMeasurements measureBody(const TriangleMesh& body, const std::vector<std::string>& keys) {
   return measure(body, Needs::of(keys));

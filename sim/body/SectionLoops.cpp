@@ -8,9 +8,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
-#include <limits>
 
 namespace figment {
 

@@ -33,8 +33,8 @@ class HorizontalSections {
  private:
   static constexpr double kBand = 0.005;  // m
   const TriangleMesh& mesh_;
-  double bottom_ = 0;        // m: the lowest vertex's height, band 0's foot
-  std::vector<int> start_;   // band b's triangles: members_[start_[b] .. start_[b + 1])
+  double bottom_ = 0;       // m: the lowest vertex's height, band 0's foot
+  std::vector<int> start_;  // band b's triangles: members_[start_[b] .. start_[b + 1])
   std::vector<int> members_;
 };
 

@@ -15,10 +15,10 @@ bool startsWithAny(const std::string& name, std::initializer_list<const char*> p
 }  // namespace
 
 const std::vector<std::string>& skinPartNames() {
-  static const std::vector<std::string> names = {
-      "trunk",          "head",          "left upper arm", "right upper arm", "left forearm", "right forearm",
-      "left hand",      "right hand",    "left thigh",     "right thigh",     "left lower leg", "right lower leg",
-      "left foot",      "right foot"};
+  static const std::vector<std::string> names = {"trunk",        "head",          "left upper arm", "right upper arm",
+                                                 "left forearm", "right forearm", "left hand",      "right hand",
+                                                 "left thigh",   "right thigh",   "left lower leg", "right lower leg",
+                                                 "left foot",    "right foot"};
   return names;
 }
 

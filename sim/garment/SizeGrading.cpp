@@ -24,9 +24,11 @@ ChartSize graded(const ChartSize& from, const ChartSize& towards, int k) {
   int a = 0, b = 0;
   const bool below = from.bust < towards.bust;
   size.name = from.name + (below ? "-" : "+") + std::to_string(k);
-  size.number = wholeNumber(from.number, a) && wholeNumber(towards.number, b) ? std::to_string(a + k * (a - b)) : size.name;
+  size.number =
+      wholeNumber(from.number, a) && wholeNumber(towards.number, b) ? std::to_string(a + k * (a - b)) : size.name;
   for (const double value : {size.stature, size.bust, size.waist, size.hip})
-    if (!(value > 0)) throw std::invalid_argument("size " + size.name + " graded beyond the chart has a dimension <= 0");
+    if (!(value > 0))
+      throw std::invalid_argument("size " + size.name + " graded beyond the chart has a dimension <= 0");
   return size;
 }
 
@@ -58,6 +60,8 @@ std::vector<ChartSize> measurementSets(const SizeChart& chart, int beyond, const
   return sets;
 }
 
-std::vector<ChartSize> bodyCheckSets(const SizeChart& chart) { return measurementSets(chart, 2, {-0.08, 0.0, 0.08}); }
+std::vector<ChartSize> bodyCheckSets(const SizeChart& chart) {
+  return measurementSets(chart, 2, {-0.08, 0.0, 0.08});
+}
 
 }  // namespace figment

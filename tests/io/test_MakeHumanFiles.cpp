@@ -52,7 +52,7 @@ struct ChartSize {
 };
 
 // German women's (DOB 32-42, stature 168 cm) and men's (44-54) body dimensions in EN 13402-3's
-// 4 cm steps (docs/bodies.md). Women's 44 and men's 56 lie beyond the model's reach.
+// 4 cm steps (docs/bodies.md); the sizes beyond: tests/io/scenarios/test_MeasuredBodies.cpp.
 const ChartSize kChart[] = {
     {"women 32", 0, 1.68, 0.76, 0.60, 0.84}, {"women 34", 0, 1.68, 0.80, 0.64, 0.88},
     {"women 36", 0, 1.68, 0.84, 0.68, 0.92}, {"women 38", 0, 1.68, 0.88, 0.72, 0.96},

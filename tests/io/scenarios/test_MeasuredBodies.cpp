@@ -76,7 +76,7 @@ TEST_F(MeasuredBodies, SixtySetsMeasureWithin5mmAndCrossNoNewParts) {
         {"stature", set.stature}, {"bust_girth", set.bust}, {"waist_girth", set.waist}, {"hip_girth", set.hip}};
     BodyFitResult fit;
     ASSERT_NO_THROW(fit = fitBody(*model, startFor(set.sex), goals)) << label(set);
-    exportObj(numberedByFirstUse(fit.body), path);  // as figment-body writes it
+    exportObj(numberedByFirstUse(fit.body), path);                  // as figment-body writes it
     const BodyMeasurements m = measureBody(importMesh(path).mesh);  // as figment-measure reads it
     for (const MeasurementGoal& goal : goals) EXPECT_NEAR(m.byName(goal.key), goal.value, 0.005) << label(set);
     const std::vector<std::string> crossing = newPartCrossings(fit.body);
@@ -123,9 +123,12 @@ TEST_F(MeasuredBodies, APartialMeasurementIsTheFullOnesPart) {
     p.macro.weight = weight;
     const TriangleMesh body = model->make(p);
     const BodyMeasurements full = measureBody(body);
-    for (const std::vector<std::string>& keys :
-         {std::vector<std::string>{"stature"}, {"bust_girth", "waist_girth", "hip_girth"}, {"underbust_girth"},
-          {"neck_girth", "arm_length"}, {"upper_arm_girth"}, {"thigh_girth", "inside_leg", "shoulder_width"}}) {
+    for (const std::vector<std::string>& keys : {std::vector<std::string>{"stature"},
+                                                 {"bust_girth", "waist_girth", "hip_girth"},
+                                                 {"underbust_girth"},
+                                                 {"neck_girth", "arm_length"},
+                                                 {"upper_arm_girth"},
+                                                 {"thigh_girth", "inside_leg", "shoulder_width"}}) {
       const BodyMeasurements part = measureBody(body, keys);
       for (const std::string& key : keys) EXPECT_EQ(part.byName(key), full.byName(key)) << key;
     }

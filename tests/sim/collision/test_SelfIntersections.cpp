@@ -69,7 +69,8 @@ TEST(SelfIntersections, TwoSpheresThroughEachOtherCrossAlongTheirCircle) {
     EXPECT_LT(s, firstOfSmall);
     EXPECT_GE(t, firstOfSmall);
     for (const int k : {s, t}) {
-      const Vec3 p = (m.vertices[m.triangles[k][0]] + m.vertices[m.triangles[k][1]] + m.vertices[m.triangles[k][2]]) / 3;
+      const Vec3 p =
+          (m.vertices[m.triangles[k][0]] + m.vertices[m.triangles[k][1]] + m.vertices[m.triangles[k][2]]) / 3;
       EXPECT_NEAR(p.norm(), 0.3, 0.05);
       EXPECT_NEAR((p - c).norm(), 0.2, 0.05);
     }

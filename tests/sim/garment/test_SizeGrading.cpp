@@ -60,14 +60,15 @@ TEST(SizeGrading, MeasurementSetsAreEachSizeAtEachStatureOffset) {
   for (int i = 0; i < 6; ++i) {
     twelve.push_back({Sex::Female, "F" + std::to_string(i), std::to_string(32 + 2 * i), 1.68, 0.76 + 0.04 * i,
                       0.60 + 0.04 * i, 0.84 + 0.04 * i});
-    twelve.push_back({Sex::Male, "M" + std::to_string(i), std::to_string(44 + 2 * i), 1.68 + 0.03 * i,
-                      0.88 + 0.04 * i, 0.76 + 0.04 * i, 0.92 + 0.04 * i});
+    twelve.push_back({Sex::Male, "M" + std::to_string(i), std::to_string(44 + 2 * i), 1.68 + 0.03 * i, 0.88 + 0.04 * i,
+                      0.76 + 0.04 * i, 0.92 + 0.04 * i});
   }
   EXPECT_EQ(bodyCheckSets(SizeChart(twelve)).size(), 60u);
 }
 
 TEST(SizeGrading, AChartTooShortOrGradedBelowZeroIsRefused) {
-  const SizeChart one({{Sex::Female, "M", "38", 1.68, 0.88, 0.72, 0.96}, {Sex::Male, "M", "48", 1.74, 0.96, 0.84, 1.0}});
+  const SizeChart one(
+      {{Sex::Female, "M", "38", 1.68, 0.88, 0.72, 0.96}, {Sex::Male, "M", "48", 1.74, 0.96, 0.84, 1.0}});
   EXPECT_THROW(gradedSizes(one, Sex::Female, 2), std::invalid_argument);
   EXPECT_THROW(gradedSizes(chart(), Sex::Female, -1), std::invalid_argument);
   EXPECT_THROW(gradedSizes(chart(), Sex::Female, 30), std::invalid_argument);  // a waist of 0.68 - 30 x 0.04 m
