@@ -32,9 +32,11 @@ void printJson(const figment::BodyFitResult& fit) {
   const auto named = fit.achieved.named();
   for (size_t i = 0; i < named.size(); ++i)
     std::printf("%s\"%s\": %.5f", i ? ", " : "", named[i].first.c_str(), named[i].second);
-  std::printf(", \"parameters\": {\"gender\": %g, \"age\": %g, \"muscle\": %g, \"weight\": %g, \"height\": %.4f",
-              fit.parameters.macro.gender, fit.parameters.macro.age, fit.parameters.macro.muscle,
-              fit.parameters.macro.weight, fit.parameters.macro.height);
+  std::printf(
+      ", \"parameters\": {\"gender\": %g, \"age\": %g, \"muscle\": %g, \"weight\": %g, \"height\": %.4f, "
+      "\"cupSize\": %g",
+      fit.parameters.macro.gender, fit.parameters.macro.age, fit.parameters.macro.muscle, fit.parameters.macro.weight,
+      fit.parameters.macro.height, fit.parameters.macro.cupSize);
   for (const auto& [key, value] : fit.parameters.measures) std::printf(", \"%s\": %.4f", key.c_str(), value);
   std::printf("}}\n");
 }

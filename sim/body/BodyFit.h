@@ -1,9 +1,12 @@
 #pragma once
-// A MakeHuman body made to typed measurements: each typed measurement moves one parameter
-// (stature the macro height; a girth or length its measure target), solved together by
-// Gauss-Newton on those parameters with a finite-difference Jacobian (the measurements are
-// near linear in them), within their ranges; the untyped measurements follow the macro
-// model. A set no parameters in range reach is refused, never met by a distorted body.
+// A MakeHuman body made to typed measurements: the stature first (the macro height), then the
+// body's mass along a path through the macro weight and muscle so that the typed girths'
+// errors sum to zero, then each typed measurement moves one parameter (stature the macro
+// height; a girth or length its measure target; a woman's bust below the target's range its
+// cup size), solved together by Gauss-Newton with Broyden's updates of a finite-difference
+// Jacobian (the measurements are near linear in them), within their ranges; the untyped
+// measurements follow the macro model. A set no parameters in range reach is refused, never
+// met by a distorted body. docs/bodies.md has the stages and the 60 sets it is checked on.
 
 #include <stdexcept>
 #include <string>
@@ -41,7 +44,8 @@ class UnreachableMeasurement : public std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// Starts from `start` (its macro parameters are kept but for height when stature is a goal).
+// Starts from `start` (its macro parameters are kept but for height when stature is a goal,
+// weight and muscle when a girth is, and cup size when the bust needs it).
 // Throws std::invalid_argument for an unknown or repeated key or a value <= 0, and
 // UnreachableMeasurement as above.
 BodyFitResult fitBody(const HumanModel& model, const HumanParameters& start, const std::vector<MeasurementGoal>& goals,

@@ -135,3 +135,27 @@ TEST_F(MeasuredBodies, APartialMeasurementIsTheFullOnesPart) {
   }
   EXPECT_THROW(measureBody(model->make(startFor(Sex::Male)), {"waist"}), std::invalid_argument);
 }
+
+TEST_F(MeasuredBodies, BeyondTheWeightsEndsTheMassGoesOnThroughMuscleAndCup) {
+  const auto fit = [&](double stature, double bust, double waist, double hip) {
+    return fitBody(*model, startFor(Sex::Female),
+                   {{"stature", stature}, {"bust_girth", bust}, {"waist_girth", waist}, {"hip_girth", hip}})
+        .parameters.macro;
+  };
+  // women's 38: within the weight's range, muscle and cup size as they were
+  const MacroParameters m38 = fit(1.68, 0.88, 0.72, 0.96);
+  EXPECT_GT(m38.weight, 0.0);
+  EXPECT_LT(m38.weight, 1.0);
+  EXPECT_EQ(m38.muscle, 0.5);
+  EXPECT_EQ(m38.cupSize, 0.5);
+  // women's 46 (graded above the chart): the heaviest weight, and less muscle
+  const MacroParameters m46 = fit(1.68, 1.04, 0.88, 1.12);
+  EXPECT_EQ(m46.weight, 1.0);
+  EXPECT_LT(m46.muscle, 0.5);
+  // women's 28 (graded below) at 176 cm: the lightest weight, no muscle, and a smaller cup
+  // once the bust target is at its end
+  const MacroParameters m28 = fit(1.76, 0.68, 0.52, 0.76);
+  EXPECT_EQ(m28.weight, 0.0);
+  EXPECT_EQ(m28.muscle, 0.0);
+  EXPECT_LT(m28.cupSize, 0.5);
+}
