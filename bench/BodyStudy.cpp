@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
 #include "CsvFile.h"
@@ -109,15 +110,7 @@ bool writeRows(const std::string& path, const std::vector<Row>& rows) {
   });
 }
 
-}  // namespace
-
-int runBodyStudy(const BodyStudyOptions& options) {
-  const std::string dir = findMakeHumanData();
-  if (dir.empty()) {
-    std::fprintf(stderr,
-                 "figment-bench: MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR\n");
-    return 1;
-  }
+int runSets(const std::string& dir, const BodyStudyOptions& options) {
   const auto loadStart = std::chrono::steady_clock::now();
   TargetLibrary library(dir);
   const HumanModel model = loadHumanModel(dir, library);
@@ -158,6 +151,23 @@ int runBodyStudy(const BodyStudyOptions& options) {
       times.empty() ? 0.0 : quantile(times, 0.9), cpu.empty() ? 0.0 : median(cpu),
       cpu.empty() ? 0.0 : quantile(cpu, 0.9), checks.empty() ? 0.0 : median(checks));
   return 0;
+}
+
+}  // namespace
+
+int runBodyStudy(const BodyStudyOptions& options) {
+  const std::string dir = findMakeHumanData();
+  if (dir.empty()) {
+    std::fprintf(stderr,
+                 "figment-bench: MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR\n");
+    return 1;
+  }
+  try {
+    return runSets(dir, options);
+  } catch (const std::exception& error) {  // a chart, a data file or a body it cannot read
+    std::fprintf(stderr, "figment-bench: %s\n", error.what());
+    return 1;
+  }
 }
 
 }  // namespace figment::bench
