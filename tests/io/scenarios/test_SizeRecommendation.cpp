@@ -92,7 +92,6 @@ const Exception kExceptions[] = {
     {"skirt", Sex::Female, "XS", "XXS",
      "the flared skirt's waist ease (3 cm) is under the chart's 4 cm step: a size down is 1 cm short at the waist, "
      "1 to 2 % stretch in cotton, within its 4 %, and grips as its own size does"},
-    {"skirt", Sex::Female, "S", "XS", "as XS"},
 };
 
 TEST_F(SizeRecommendation, EveryCatalogueStyleGivesEachChartBodyItsOwnSizeButTheListedExceptions) {
