@@ -4,11 +4,13 @@
 // dimensions and each garment cut for it with its style's ease (sim/garment/GarmentStyle.h:
 // the garment graded to that size), draped as ClothEngine drapes by default (IMPLICIT,
 // 1/20 s steps, contacts as constraints). Each rests, no edge ends stretched beyond what
-// the shipped drapes are, and no cloth node ends inside the body. One test per body, so
-// ctest spreads them over its jobs. (Pictures: scripts/six-bodies.sh, docs/bodies.md.)
+// the shipped drapes are, no cloth node ends inside the body, and each stays up on it.
+// One test per body, so ctest spreads them over its jobs.
+// (Pictures: scripts/six-bodies.sh, docs/bodies.md.)
 // Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <ostream>
@@ -19,6 +21,7 @@
 #include "io/SizeChartFile.h"
 #include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
+#include "sim/body/BodyMeasurements.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
@@ -99,6 +102,7 @@ TEST_P(SixBodyDrapes, DressSkirtAndTShirtRestWithNoNodeInside) {
   const std::string size = std::string(sexName(GetParam().sex)) + " " + chartSize(GetParam()).name;
   const TriangleMesh body = chartBody(GetParam());
   const auto collider = std::make_shared<const MeshCollider>(body);
+  const double crotch = measureBody(body).insideLeg;  // m above the floor
   for (const char* name : {"dress", "skirt", "tshirt"}) {
     SCOPED_TRACE(name);
     const GarmentStyle& style = *findStyle(name);
@@ -110,22 +114,26 @@ TEST_P(SixBodyDrapes, DressSkirtAndTShirtRestWithNoNodeInside) {
     ClothSolver solver(garment, parameters, collider);
     const DrapeResult run = solver.run();
     std::printf("%s %s: %s after %.2f s simulated (%d steps), fastest %.4f m/s, stretch %.3f, %.1f s wall\n",
-                size.c_str(), name, run.atRest ? "at rest" : "NOT at rest",
-                run.simulatedTime, run.iterations, run.maxSpeed, run.maxStretch, run.wallSeconds);
+                size.c_str(), name, run.atRest ? "at rest" : "NOT at rest", run.simulatedTime, run.iterations,
+                run.maxSpeed, run.maxStretch, run.wallSeconds);
     EXPECT_TRUE(run.atRest) << "fastest node " << run.maxSpeed << " m/s at maxTime";
     // Not torn (DrapeVerdict's 1.5), and no more stretched than the shipped drapes end
     // (1.03 to 1.14, sim/cloth/DrapeVerdict.h) with room for a larger body's dress (1.18).
     EXPECT_LT(run.maxStretch, 1.25);
     EXPECT_EQ(nodesInside(*collider, solver.positions()), 0);
+    // Held up by the body, not slipped down it: a garment's top stays above the crotch
+    // (the skirt's waistband slides only as far as the hips).
+    double top = 0.0;
+    for (const Vec3& p : solver.positions()) top = std::max(top, p.y());
+    EXPECT_GT(top, crotch + 0.1);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Chart, SixBodyDrapes,
-                         ::testing::Values(ChartBody{Sex::Female, Place::Smallest}, ChartBody{Sex::Female, Place::Middle},
-                                           ChartBody{Sex::Female, Place::Largest}, ChartBody{Sex::Male, Place::Smallest},
-                                           ChartBody{Sex::Male, Place::Middle}, ChartBody{Sex::Male, Place::Largest}),
-                         [](const auto& param) {
-                           return std::string(sexName(param.param.sex)) + "_" + placeName(param.param.place);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Chart, SixBodyDrapes,
+    ::testing::Values(ChartBody{Sex::Female, Place::Smallest}, ChartBody{Sex::Female, Place::Middle},
+                      ChartBody{Sex::Female, Place::Largest}, ChartBody{Sex::Male, Place::Smallest},
+                      ChartBody{Sex::Male, Place::Middle}, ChartBody{Sex::Male, Place::Largest}),
+    [](const auto& param) { return std::string(sexName(param.param.sex)) + "_" + placeName(param.param.place); });
 
 }  // namespace

@@ -77,7 +77,7 @@ TEST(MadeBodyFiles, ObjGlbAndIvReadBackWithTheSameBody) {
     points.emplace_back(coordinates->point[i][0], coordinates->point[i][1], coordinates->point[i][2]);
   EXPECT_EQ(points.size(), fromObj.vertices.size());
   EXPECT_EQ(faces->coordIndex.getNum(), 4 * static_cast<int>(fromObj.triangles.size()));  // a, b, c, -1
-  EXPECT_NEAR(heightOf(points), obj.stature, 1e-5);  // Coin's floats
+  EXPECT_NEAR(heightOf(points), obj.stature, 1e-5);                                       // Coin's floats
 }
 
 TEST(MadeBodyFiles, AnotherExtensionIsRefusedInOneLine) {
