@@ -8,6 +8,7 @@
 #include <assimp/scene.h>
 
 #include <assimp/Exporter.hpp>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -71,6 +72,25 @@ void exportObj(const TriangleMesh& mesh, const std::string& path) {
     Assimp::Exporter exporter;
     if (exporter.Export(scene.get(), "objnomtl", temporary) != AI_SUCCESS) return exporter.GetErrorString();
     return "";
+  });
+  if (!error.empty()) throw std::runtime_error(path + ": " + error);
+}
+
+void exportIv(const TriangleMesh& mesh, const std::string& path) {
+  if (mesh.triangles.empty()) throw std::runtime_error(path + ": nothing to write (no triangles)");
+  checkIndices(mesh, path);
+  const std::string error = writeAtomically(path, [&mesh](const std::string& temporary) -> std::string {
+    std::ofstream out(temporary);
+    out.precision(9);
+    out << "#Inventor V2.1 ascii\n\nSeparator {\n"
+           "  ShapeHints { vertexOrdering COUNTERCLOCKWISE  shapeType SOLID  creaseAngle 1.0 }\n"
+           "  Coordinate3 { point [\n";
+    for (const Vec3& p : mesh.vertices) out << "    " << p.x() << ' ' << p.y() << ' ' << p.z() << ",\n";
+    out << "  ] }\n  IndexedFaceSet { coordIndex [\n";
+    for (const Triangle& t : mesh.triangles) out << "    " << t[0] << ", " << t[1] << ", " << t[2] << ", -1,\n";
+    out << "  ] }\n}\n";
+    out.close();
+    return out ? "" : "cannot be written";
   });
   if (!error.empty()) throw std::runtime_error(path + ": " + error);
 }

@@ -17,4 +17,11 @@ namespace figment {
 // be written.
 void exportObj(const TriangleMesh& mesh, const std::string& path);
 
+// Writes `mesh` as an Open Inventor 2.1 ASCII scene Coin reads (a made body for
+// figment-view or a scene's File node): a Separator holding ShapeHints (counter-clockwise,
+// solid), a Coordinate3 with the vertices (9 significant digits, in order) and an
+// IndexedFaceSet of the triangles. Coin's text, written without Coin; whole or not at all.
+// Throws std::runtime_error("<path>: <reason>") as exportObj does.
+void exportIv(const TriangleMesh& mesh, const std::string& path);
+
 }  // namespace figment

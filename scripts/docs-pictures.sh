@@ -2,6 +2,8 @@
 # Renders every figment-view picture in docs/images again, as the README and docs say
 # each was made (one line a picture: scene, output, options). The charts and the wind
 # animation have their own commands (figment-bench's plot scripts, scripts/wind-figures.py).
+# The six chart bodies' pictures are made from bodies and garments the tools make first
+# (scripts/six-bodies.sh, run at the end).
 #   scripts/docs-pictures.sh [BUILD_DIR]   (default: build; about a minute on one core;
 #   FIGMENT_PICTURES_OUT=DIR writes them there instead, to compare)
 set -euo pipefail
@@ -38,3 +40,4 @@ tshirt.iv tshirt.png --size 360x420 --view 30,10
 human-posed-arm.iv human-posed-arm.png --size 480x640 --view 25,10
 human-posed-sitting.iv human-posed-sitting.png --size 480x480 --view 40,10
 LIST
+scripts/six-bodies.sh "${1:-build}" "$out"

@@ -1,12 +1,15 @@
 // figment-body: MakeHuman's body (CC0, docs/bodies.md) made to typed measurements.
 //   figment-body --sex female|male [--stature M] [--bust-girth M] [--waist-girth M]
-//                [--hip-girth M] [...] -o body.obj
+//                [--hip-girth M] [...] -o body.obj|body.glb|body.iv
 // Each typed measurement (metres) is met within 5 mm as figment-measure measures it; the
 // others follow MakeHuman's macro model. Prints the achieved measurements as one JSON
 // object on stdout. A set it cannot reach is one line on stderr naming the measurement
 // and the nearest reachable value, exit status 1, and no file.
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -14,6 +17,7 @@
 #include "ToolMain.h"
 #include "io/MakeHumanFiles.h"
 #include "io/MeshExport.h"
+#include "io/MeshSetExport.h"
 #include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
 
@@ -25,6 +29,42 @@ std::string optionName(std::string key) {  // "bust_girth" -> "--bust-girth"
   for (char& c : key)
     if (c == '_') c = '-';
   return "--" + key;
+}
+
+// The file name's extension, lower case: ".obj".
+std::string extensionOf(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+bool writable(const std::string& path) {
+  const std::string extension = extensionOf(path);
+  return extension == ".obj" || extension == ".glb" || extension == ".gltf" || extension == ".iv";
+}
+
+// Area-weighted vertex normals (a cross product's length is twice its triangle's area).
+std::vector<figment::Vec3> vertexNormals(const figment::TriangleMesh& mesh) {
+  std::vector<figment::Vec3> normals(mesh.vertices.size(), figment::Vec3::Zero());
+  for (const figment::Triangle& t : mesh.triangles) {
+    const figment::Vec3 n =
+        (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    for (const int corner : t) normals[corner] += n;
+  }
+  for (figment::Vec3& n : normals) n = n.norm() > 0.0 ? figment::Vec3(n.normalized()) : figment::Vec3(0, 1, 0);
+  return normals;
+}
+
+// The body in the format its name asks for: a Wavefront OBJ, glTF (binary .glb or .gltf
+// with its .bin; smooth normals, a skin colour) or Coin's .iv text; whole or not at all.
+void writeBody(const figment::TriangleMesh& body, const std::string& path) {
+  const std::string extension = extensionOf(path);
+  if (extension == ".obj") return figment::exportObj(body, path);
+  if (extension == ".iv") return figment::exportIv(body, path);
+  figment::ColouredMesh skin{
+      .name = "body", .mesh = body, .normals = vertexNormals(body), .colour = {0.80f, 0.58f, 0.45f}};
+  figment::exportMeshSet({skin}, path);
 }
 
 void printJson(const figment::BodyFitResult& fit) {
@@ -49,7 +89,7 @@ int make(const figment::HumanParameters& start, const std::vector<figment::Measu
     figment::TargetLibrary library(dir);
     const figment::HumanModel model = figment::loadHumanModel(dir, library);
     const figment::BodyFitResult fit = figment::fitBody(model, start, goals);
-    figment::exportObj(figment::numberedByFirstUse(fit.body), output);
+    writeBody(figment::numberedByFirstUse(fit.body), output);
     printJson(fit);
     return 0;
   } catch (const std::exception& error) {
@@ -60,8 +100,10 @@ int make(const figment::HumanParameters& start, const std::vector<figment::Measu
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Makes MakeHuman's body to typed measurements (metres) and writes it as a Wavefront OBJ.",
-               kTool.program()};
+  CLI::App app{
+      "Makes MakeHuman's body to typed measurements (metres) and writes it as a Wavefront OBJ, glTF or "
+      "Open Inventor (.iv) file.",
+      kTool.program()};
   std::string sex, output;
   figment::HumanParameters start;
   std::map<std::string, double> typed;
@@ -73,9 +115,9 @@ int main(int argc, char** argv) {
   app.add_option("--age", start.macro.age, "MakeHuman's age, 0.5 = 25 years, 1 = 90")->check(CLI::Range(0.0, 1.0));
   app.add_option("--muscle", start.macro.muscle, "MakeHuman's muscle, 0 to 1")->check(CLI::Range(0.0, 1.0));
   app.add_option("--weight", start.macro.weight, "MakeHuman's weight, 0 to 1")->check(CLI::Range(0.0, 1.0));
-  app.add_option("-o,--output", output, "OBJ file to write")->required();
+  app.add_option("-o,--output", output, "file to write: .obj, .glb, .gltf or .iv")->required();
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
-  if (!output.ends_with(".obj")) return kTool.fail(output + ": only .obj is written");
+  if (!writable(output)) return kTool.fail(output + ": only .obj, .glb, .gltf and .iv are written");
   start.macro.gender = sex == "male" ? 1.0 : 0.0;
   std::vector<figment::MeasurementGoal> goals;
   for (const auto& [key, value] : typed) goals.push_back({key, value});

@@ -13,7 +13,8 @@
 
   `body` and each node in `layers` is a collision body (Mannequin, MeshFile,
   GarmentSurface, another CollisionGroup); a cloth node is in contact when it touches
-  any, and is pushed out of the deepest (sim/collision/CompositeCollider.h). A garment
+  any, and is pushed out of the deepest (sim/collision/CompositeCollider.h); a posed
+  HumanBody among them moves into its pose as the drape runs, as it does alone. A garment
   over another names the body (usually `USE` of the scene's Mannequin) and the inner
   garments' GarmentSurfaces; the inner garment drapes first, because its surface's
   points are connected to its output. The bodies are referenced, not drawn: draws

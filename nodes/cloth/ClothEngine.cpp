@@ -22,7 +22,6 @@
 #include "nodes/cloth/ToleranceChoice.h"
 #include "sim/cloth/ClothSolver.h"
 #include "sim/cloth/DrapeVerdict.h"
-#include "sim/collision/MovingMeshCollider.h"
 #include "sim/core/ParameterChecks.h"
 #include "sim/drape/GarmentDrape.h"
 #include "sim/progressive/Decimation.h"
@@ -316,7 +315,7 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
   // Before any step: a garment in another unit or on its side is an error, one partly
   // inside the body or wound clockwise a warning in the verdict's line. A body that moves
   // into its pose is checked as the drape starts on it: at its first keyframe.
-  if (auto moving = std::dynamic_pointer_cast<const figment::MovingMeshCollider>(collider)) moving->advanceTo(0.0);
+  if (collider && collider->moves()) collider->advanceTo(0.0);
   stats.garmentWarning = figment::garmentStartWarning(engine, garment, collider.get());
   if (!script.empty()) {
     const std::string path = figment::resolveSceneFile(script, sceneDirectories);
@@ -330,9 +329,10 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                 .schedule = schedule};
   if (context.stepObserver)
     request.stepObserver = [&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); };
-  // A body that moves into its pose (a posed HumanBody) follows the drape's clock.
-  if (auto moving = std::dynamic_pointer_cast<const figment::MovingMeshCollider>(request.body))
-    request.bodyClock = [moving](double time) { moving->advanceTo(time); };
+  // A body that moves into its pose (a posed HumanBody, alone or in a CollisionGroup)
+  // follows the drape's clock.
+  if (request.body && request.body->moves())
+    request.bodyClock = [moving = request.body](double time) { moving->advanceTo(time); };
   request.progress = [&](const figment::DrapeProgress& p) {
     if (!context.progress) return;
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;

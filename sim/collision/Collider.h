@@ -33,6 +33,14 @@ class Collider {
   // distance to this collider is at least min(that bound, reach)), and (b) a push-out
   // target more than reach - clearance from p was not checked against the parts left out.
   virtual std::shared_ptr<const Collider> focusedOn(const Eigen::AlignedBox3d& region, double reach) const;
+
+  // A body that moves during the drape (MovingMeshCollider: a posed body turning into its
+  // pose) follows the drape's clock (DrapeRequest::bodyClock) through these, wherever it
+  // sits: alone, or a part of a CompositeCollider (a CollisionGroup's). A still collider
+  // does not move and ignores the clock.
+  virtual bool moves() const { return false; }
+  // Moves it to its shape at simulated time `time` (s). Not concurrent with contact().
+  virtual void advanceTo(double /*time*/) const {}
 };
 
 }  // namespace figment

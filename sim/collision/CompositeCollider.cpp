@@ -28,6 +28,14 @@ std::shared_ptr<const Collider> CompositeCollider::focusedOn(const Eigen::Aligne
   return narrower ? focused : nullptr;
 }
 
+bool CompositeCollider::moves() const {
+  return std::any_of(parts_.begin(), parts_.end(), [](const auto& part) { return part->moves(); });
+}
+
+void CompositeCollider::advanceTo(double time) const {
+  for (const auto& part : parts_) part->advanceTo(time);
+}
+
 bool CompositeCollider::contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const {
   bool touching = false;
   double bound = std::numeric_limits<double>::infinity();

@@ -33,6 +33,11 @@ class CompositeCollider : public Collider {
   // leaves anything out.
   std::shared_ptr<const Collider> focusedOn(const Eigen::AlignedBox3d& region, double reach) const override;
 
+  // Whether any part moves, and each part moved to `time`: a posed body in a group moves
+  // into its pose as it does alone.
+  bool moves() const override;
+  void advanceTo(double time) const override;
+
   const std::vector<std::shared_ptr<const Collider>>& parts() const { return parts_; }
 
  private:

@@ -42,7 +42,8 @@ class MovingMeshCollider : public Collider {
 
   // Moves the surface to its shape at simulated time `time` (s): the keyframe at or
   // before it. Not concurrent with contact().
-  void advanceTo(double time) const;
+  void advanceTo(double time) const override;
+  bool moves() const override { return true; }
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
 
   double duration() const { return duration_; }

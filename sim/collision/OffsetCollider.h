@@ -23,6 +23,10 @@ class OffsetCollider : public Collider {
   bool contact(const Vec3& p, double clearance, double searchRadius, Contact& out) const override;
   std::shared_ptr<const Collider> focusedOn(const Eigen::AlignedBox3d& region, double reach) const override;
 
+  // The inner collider's motion, passed on (a moving surface moves its offset too).
+  bool moves() const override { return inner_->moves(); }
+  void advanceTo(double time) const override { inner_->advanceTo(time); }
+
   double offset() const { return offset_; }
 
  private:

@@ -6,6 +6,7 @@
 
 #include "sim/collision/CompositeCollider.h"
 #include "sim/collision/MeshCollider.h"
+#include "sim/collision/MovingMeshCollider.h"
 #include "sim/collision/PlaneCollider.h"
 #include "support/TestMeshes.h"
 
@@ -103,4 +104,28 @@ TEST(CompositeCollider, EmptyTouchesNothingAndNullPartsAreRefused) {
   EXPECT_THROW(body.add(nullptr), std::invalid_argument);
   EXPECT_THROW(CompositeCollider({std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY()), nullptr}),
                std::invalid_argument);
+}
+
+// A moving part (a posed body in a CollisionGroup) follows the drape's clock through the
+// group: the group moves, and advancing it advances the part.
+TEST(CompositeCollider, PassesTheClockToAMovingPart) {
+  const TriangleMesh ball = meshes::sphere(0.1);
+  auto moving = std::make_shared<MovingMeshCollider>(
+      ball.triangles,
+      [ball](double share) {
+        std::vector<Vec3> v = ball.vertices;
+        for (Vec3& p : v) p.x() += 0.5 * share;  // 0.5 m along +x
+        return v;
+      },
+      1.0);
+  CompositeCollider still = ballOverFloor();
+  EXPECT_FALSE(still.moves());
+  still.add(moving);
+  EXPECT_TRUE(still.moves());
+  Contact c;
+  still.advanceTo(0.0);  // the moving ball at its start, round x = 0
+  EXPECT_FALSE(moving->contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
+  still.advanceTo(1.0);  // arrived: round x = 0.5
+  EXPECT_TRUE(moving->contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
+  EXPECT_TRUE(still.contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
 }

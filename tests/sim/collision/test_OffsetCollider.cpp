@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "sim/collision/MeshCollider.h"
+#include "sim/collision/MovingMeshCollider.h"
 #include "sim/collision/OffsetCollider.h"
 #include "support/TestMeshes.h"
 
@@ -34,4 +35,25 @@ TEST(OffsetCollider, RefusesNoColliderAndANegativeOffset) {
   auto ball = std::make_shared<MeshCollider>(meshes::sphere(0.1));
   EXPECT_THROW(OffsetCollider(ball, -0.001), std::invalid_argument);
   EXPECT_THROW(OffsetCollider(ball, std::numeric_limits<double>::quiet_NaN()), std::invalid_argument);
+}
+
+// A surface that moves moves its offset too: the clock passes through to it.
+TEST(OffsetCollider, PassesTheClockToAMovingSurface) {
+  const TriangleMesh ball = meshes::sphere(0.1);
+  auto moving = std::make_shared<MovingMeshCollider>(
+      ball.triangles,
+      [ball](double share) {
+        std::vector<Vec3> v = ball.vertices;
+        for (Vec3& p : v) p.x() += 0.5 * share;
+        return v;
+      },
+      1.0);
+  const OffsetCollider offset(moving, 0.01);
+  EXPECT_TRUE(offset.moves());
+  EXPECT_FALSE(OffsetCollider(std::make_shared<MeshCollider>(ball), 0.01).moves());
+  Contact c;
+  offset.advanceTo(0.0);
+  EXPECT_FALSE(offset.contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
+  offset.advanceTo(1.0);
+  EXPECT_TRUE(offset.contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
 }
