@@ -70,4 +70,14 @@ std::string recommendationJson(const Recommendation& r) {
   return out + "}}";
 }
 
+std::vector<std::string> unrestedSizeLines(const Recommendation& recommendation, const std::string& style,
+                                           double maxTime) {
+  std::vector<std::string> lines;
+  for (const SizeFit& fit : recommendation.sizes)
+    if (!fit.drape.run.atRest)
+      lines.push_back(style + " size " + fit.size + " was not at rest after " + formatted("%g", maxTime, 0, 0, 0, 0) +
+                      " s: its fit may still change");
+  return lines;
+}
+
 }  // namespace figment

@@ -93,6 +93,8 @@ int recommend(const Request& request, figment::HumanModel& model, const figment:
     r.sizes.push_back(fitter.tryOn(body, sex, size));
   }
   if (!request.fitMap.empty()) writeFitMaps(request, fitter, chart, sex, body, r);
+  for (const std::string& line : figment::unrestedSizeLines(r, request.style, fitter.parameters().maxTime))
+    std::fprintf(stderr, "%s: %s\n", kTool.program().c_str(), line.c_str());
   if (request.json)
     std::printf("%s\n", figment::recommendationJson(r).c_str());
   else
