@@ -1,8 +1,8 @@
 // A recommendation's JSON and its warnings, from a recommendation made by hand.
 
-#include "io/RecommendationJson.h"
-
 #include <gtest/gtest.h>
+
+#include "io/RecommendationJson.h"
 
 namespace figment {
 namespace {
