@@ -158,8 +158,7 @@ int runSets(const std::string& dir, const BodyStudyOptions& options) {
 int runBodyStudy(const BodyStudyOptions& options) {
   const std::string dir = findMakeHumanData();
   if (dir.empty()) {
-    std::fprintf(stderr,
-                 "figment-bench: MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR\n");
+    std::fprintf(stderr, "figment-bench: %s\n", kMakeHumanDataMissing);
     return 1;
   }
   try {

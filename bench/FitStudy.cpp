@@ -172,8 +172,7 @@ int writeFitCsv(const FitStudyOptions& options, const SizeChart& chart, const st
 int runFitStudy(const FitStudyOptions& options) {
   const std::string dir = findMakeHumanData();
   if (dir.empty()) {
-    std::fprintf(stderr,
-                 "figment-bench: MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR\n");
+    std::fprintf(stderr, "figment-bench: %s\n", kMakeHumanDataMissing);
     return 1;
   }
   TargetLibrary library(dir);

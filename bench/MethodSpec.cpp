@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <stdexcept>
 #include <vector>
 
@@ -67,6 +68,16 @@ std::string configure(ClothEngine& engine, const Method& m) {
 Schedule parseSchedule(const std::string& text) {
   const ScheduleText s = parseScheduleText(text);
   return Schedule{text, s.beginShare, s.rate};
+}
+
+bool parsesOrReports(const std::function<void()>& parse) {
+  try {
+    parse();
+    return true;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "figment-bench: %s\n", e.what());
+    return false;
+  }
 }
 
 }  // namespace figment::bench

@@ -3,6 +3,7 @@
 // ClothEngine fields' spelling (case free): "heun:1.5e-4", "heun:1.5e-4:clamp:30",
 // "implicit:0.05", "implicit+penalty:0.05" (contactModel PENALTY).
 
+#include <functional>
 #include <string>
 
 #include "nodes/cloth/ClothEngine.h"
@@ -31,5 +32,10 @@ struct Schedule {
 
 // Throws std::invalid_argument naming the text.
 Schedule parseSchedule(const std::string& text);
+
+// Runs `parse`, which reads the command line's method and schedule texts; false, with the
+// message of the std::invalid_argument it threw on stderr, when one of them is bad (the
+// studies then exit with 2, CLI11's status for a bad option).
+bool parsesOrReports(const std::function<void()>& parse);
 
 }  // namespace figment::bench

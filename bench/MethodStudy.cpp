@@ -115,13 +115,11 @@ std::string studyScene(const std::string& scene, const MethodStudyOptions& optio
 }  // namespace
 
 int runMethodStudy(const MethodStudyOptions& options) {
-  try {
-    parseMethod(options.reference);
-    for (const std::string& text : options.methods) parseMethod(text);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "figment-bench: %s\n", e.what());
+  if (!parsesOrReports([&] {
+        parseMethod(options.reference);
+        for (const std::string& text : options.methods) parseMethod(text);
+      }))
     return 2;
-  }
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/methods.csv", [&](std::ostream& csv) -> std::string {
     csv << "scene,integrator,limiter,limit_g,method,dt,steps,simulated_s,at_rest,median_wall_s,mean_dev_m,"

@@ -126,13 +126,11 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
 
 int runProgressiveStudy(const ProgressiveStudyOptions& options) {
   std::vector<Method> methods;
-  try {
-    for (const std::string& text : options.methods) methods.push_back(parseMethod(text));
-    for (const std::string& text : options.schedules) parseSchedule(text);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "figment-bench: %s\n", e.what());
+  if (!parsesOrReports([&] {
+        for (const std::string& text : options.methods) methods.push_back(parseMethod(text));
+        for (const std::string& text : options.schedules) parseSchedule(text);
+      }))
     return 2;
-  }
   SceneGarment garment;
   if (!garment.loadOrReport(options.scene)) return 1;
   std::string error;

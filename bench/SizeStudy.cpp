@@ -104,12 +104,7 @@ std::string studySize(SceneGarment& garment, const TriangleMesh& base, int secti
 
 int runSizeStudy(const SizeStudyOptions& options) {
   Method method;
-  try {
-    method = parseMethod(options.method);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "figment-bench: %s\n", e.what());
-    return 2;
-  }
+  if (!parsesOrReports([&] { method = parseMethod(options.method); })) return 2;
   SceneGarment garment;
   if (!garment.loadOrReport(options.scene)) return 1;
   std::string error;

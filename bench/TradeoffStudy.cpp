@@ -343,15 +343,13 @@ TradeoffStudyOptions quickTradeoff(TradeoffStudyOptions options) {
 }
 
 int runTradeoffStudy(const TradeoffStudyOptions& options) {
-  try {
-    parseMethod(options.reference);
-    for (const std::string& text : options.methods) parseMethod(text);
-    for (const std::string& text : options.schedules)
-      if (text != "off") parseSchedule(text);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "figment-bench: %s\n", e.what());
+  if (!parsesOrReports([&] {
+        parseMethod(options.reference);
+        for (const std::string& text : options.methods) parseMethod(text);
+        for (const std::string& text : options.schedules)
+          if (text != "off") parseSchedule(text);
+      }))
     return 2;
-  }
   std::filesystem::create_directories(options.outDir);
   std::vector<Row> rows;
   std::ostringstream references;

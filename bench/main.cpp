@@ -1,5 +1,9 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
 #include <CLI/CLI.hpp>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "BodyStudy.h"
 #include "CollisionStudy.h"
@@ -16,13 +20,34 @@ namespace {
 
 using namespace figment::bench;
 
+// The options several studies share, each the same way: a scene (or scenes) that must exist,
+// the output folder, and a repeat count that must be positive.
+template <typename Target>
+void addSceneOption(CLI::App* command, Target& scenes, const std::string& description) {
+  command->add_option("--scene", scenes, description)->capture_default_str()->check(CLI::ExistingFile);
+}
+
+void addOutOption(CLI::App* command, std::string& outDir, const std::string& files) {
+  command->add_option("--out", outDir, "folder for " + files)->capture_default_str();
+}
+
+void addRepeatOption(CLI::App* command, int& repeat, const std::string& description) {
+  command->add_option("--repeat", repeat, description)->capture_default_str()->check(CLI::PositiveNumber);
+}
+
+// The progressive and size studies' time steps: the method's times each factor.
+void addStepFactorOption(CLI::App* command, std::vector<double>& factors) {
+  command
+      ->add_option("--step-factor", factors, "drape at the method's time step times each (repeat; medians over them)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5, 2.0));
+}
+
 CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
   CLI::App* drapeCommand = app.add_subcommand("drape", "time the drape of every garment in a scene");
-  drapeCommand->add_option("--scene", drape.scene, "scene to drape")->capture_default_str()->check(CLI::ExistingFile);
-  drapeCommand->add_option("--repeat", drape.repeat, "runs per garment")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  drapeCommand->add_option("--out", drape.outDir, "folder for drape.csv")->capture_default_str();
+  addSceneOption(drapeCommand, drape.scene, "scene to drape");
+  addRepeatOption(drapeCommand, drape.repeat, "runs per garment");
+  addOutOption(drapeCommand, drape.outDir, "drape.csv");
   drapeCommand
       ->add_option("--body", drape.bodies,
                    "what the garments collide with, each timed: scene, exact (the Mannequin's body "
@@ -45,11 +70,8 @@ CLI::App* addDrapeCommand(CLI::App& app, DrapeStudyOptions& drape) {
 CLI::App* addStabilityCommand(CLI::App& app, StabilityStudyOptions& stability) {
   CLI::App* stabilityCommand = app.add_subcommand(
       "stability", "integrators x strain clamping x limiters over time steps: stability and accuracy");
-  stabilityCommand->add_option("--scene", stability.scene, "scene to drape")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
-  stabilityCommand->add_option("--out", stability.outDir, "folder for stability.csv and stability.png")
-      ->capture_default_str();
+  addSceneOption(stabilityCommand, stability.scene, "scene to drape");
+  addOutOption(stabilityCommand, stability.outDir, "stability.csv and stability.png");
   stabilityCommand->add_flag("--quick", stability.quick, "a few configurations and steps, 0.3 s runs (under a minute)");
   stabilityCommand->add_option("--dt", stability.timeSteps, "time steps to sweep, s (the smallest is the reference)")
       ->check(CLI::PositiveNumber);
@@ -64,17 +86,13 @@ CLI::App* addStabilityCommand(CLI::App& app, StabilityStudyOptions& stability) {
 CLI::App* addRenderCommand(CLI::App& app, RenderStudyOptions& render) {
   CLI::App* renderCommand =
       app.add_subcommand("render", "render time with the hybrid nodes and with plain depth buffering");
-  renderCommand->add_option("--scene", render.scenes, "scenes to render (repeat the option)")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
+  addSceneOption(renderCommand, render.scenes, "scenes to render (repeat the option)");
   renderCommand->add_option("--width", render.width, "image width")->capture_default_str()->check(CLI::Range(1, 8192));
   renderCommand->add_option("--height", render.height, "image height")
       ->capture_default_str()
       ->check(CLI::Range(1, 8192));
-  renderCommand->add_option("--repeat", render.repeat, "renders per scene and mode")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  renderCommand->add_option("--out", render.outDir, "folder for render.csv")->capture_default_str();
+  addRepeatOption(renderCommand, render.repeat, "renders per scene and mode");
+  addOutOption(renderCommand, render.outDir, "render.csv");
   return renderCommand;
 }
 
@@ -88,19 +106,15 @@ CLI::App* addCollisionCommand(CLI::App& app, CollisionStudyOptions& collision) {
   collisionCommand->add_option("--section-spacing", collision.sectionSpacing, "m between radial depth sections")
       ->capture_default_str()
       ->check(CLI::Range(0.002, 0.2));
-  collisionCommand->add_option("--out", collision.outDir, "folder for collision.csv and collision.png")
-      ->capture_default_str();
+  addOutOption(collisionCommand, collision.outDir, "collision.csv and collision.png");
   return collisionCommand;
 }
 
 CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
   CLI::App* command = app.add_subcommand(
       "methods", "a garment by each method and time step: steps, wall to rest, deviation, strain, nodes inside");
-  command
-      ->add_option("--scene", methods.scenes,
-                   "scenes whose last garment (an outfit's outer layer) is draped (repeat the option)")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
+  addSceneOption(command, methods.scenes,
+                 "scenes whose last garment (an outfit's outer layer) is draped (repeat the option)");
   command
       ->add_option(
           "--method", methods.methods,
@@ -108,19 +122,15 @@ CLI::App* addMethodCommand(CLI::App& app, MethodStudyOptions& methods) {
       ->capture_default_str();
   command->add_option("--reference", methods.reference, "the converged run deviations are measured against")
       ->capture_default_str();
-  command->add_option("--repeat", methods.repeat, "runs per method (median wall time)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  command->add_option("--out", methods.outDir, "folder for methods.csv")->capture_default_str();
+  addRepeatOption(command, methods.repeat, "runs per method (median wall time)");
+  addOutOption(command, methods.outDir, "methods.csv");
   return command;
 }
 
 CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progressive) {
   CLI::App* command = app.add_subcommand(
       "progressive", "a garment draped progressively against the full garment: wall to rest, speed-up, deviation");
-  command->add_option("--scene", progressive.scene, "scene whose last garment is draped progressively")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
+  addSceneOption(command, progressive.scene, "scene whose last garment is draped progressively");
   command->add_option("--method", progressive.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
       ->capture_default_str();
   command
@@ -128,26 +138,20 @@ CLI::App* addProgressiveCommand(CLI::App& app, ProgressiveStudyOptions& progress
                    "BEGIN_SHARE:RATE: begin level as a share of the levels, splits per simulated second "
                    "(0: all once the begin level rests) (repeat)")
       ->capture_default_str();
-  command
-      ->add_option("--step-factor", progressive.stepFactors,
-                   "drape at the method's time step times each (repeat; medians over them)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.5, 2.0));
+  addStepFactorOption(command, progressive.stepFactors);
   command
       ->add_option("--coarse-share", progressive.coarseShare,
                    "a scene with no progressiveScript: its garment decimated to this share of its sections")
       ->capture_default_str()
       ->check(CLI::Range(0.01, 1.0));
-  command->add_option("--out", progressive.outDir, "folder for progressive.csv")->capture_default_str();
+  addOutOption(command, progressive.outDir, "progressive.csv");
   return command;
 }
 
 CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   CLI::App* command = app.add_subcommand(
       "sizes", "a garment resampled to each size, draped whole and progressively: wall to rest, speed-up, deviation");
-  command->add_option("--scene", sizes.scene, "scene whose last garment is resampled")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
+  addSceneOption(command, sizes.scene, "scene whose last garment is resampled");
   command->add_option("--sections", sizes.sizes, "garment sizes, triangles (repeat)")
       ->capture_default_str()
       ->check(CLI::Range(8, 1000000));
@@ -161,22 +165,15 @@ CLI::App* addSizeCommand(CLI::App& app, SizeStudyOptions& sizes) {
   command->add_option("--max-time", sizes.maxTime, "simulated s a drape may take before it counts as never resting")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  command
-      ->add_option("--step-factor", sizes.stepFactors,
-                   "drape at the method's time step times each (repeat; medians over them)")
-      ->capture_default_str()
-      ->check(CLI::Range(0.5, 2.0));
-  command->add_option("--out", sizes.outDir, "folder for sizes.csv")->capture_default_str();
+  addStepFactorOption(command, sizes.stepFactors);
+  addOutOption(command, sizes.outDir, "sizes.csv");
   return command;
 }
 
 CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
   CLI::App* command = app.add_subcommand(
       "tradeoff", "every method choice against a converged reference: wall to rest against deviation, Pareto front");
-  command
-      ->add_option("--scene", tradeoff.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat)")
-      ->capture_default_str()
-      ->check(CLI::ExistingFile);
+  addSceneOption(command, tradeoff.scenes, "scenes whose last garment (an outfit's outer layer) is draped (repeat)");
   command->add_option("--method", tradeoff.methods, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] (repeat)")
       ->capture_default_str();
   command
@@ -192,23 +189,18 @@ CLI::App* addTradeoffCommand(CLI::App& app, TradeoffStudyOptions& tradeoff) {
   command->add_option("--reference", tradeoff.reference, "the converged drape, on the body's triangles")
       ->capture_default_str();
   command->add_flag("!--no-reference-check", tradeoff.checkReference, "skip the reference's half-step drape");
-  command->add_option("--repeat", tradeoff.repeat, "drapes per configuration (median wall)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  addRepeatOption(command, tradeoff.repeat, "drapes per configuration (median wall)");
   command->add_flag("--quick", tradeoff.quick,
                     "the dress, 4 methods x 3 bodies x 2 schedules x 2 resolutions, once (under 5 minutes)");
-  command->add_option("--out", tradeoff.outDir, "folder for tradeoff.csv, tradeoff-reference.csv, tradeoff.png")
-      ->capture_default_str();
+  addOutOption(command, tradeoff.outDir, "tradeoff.csv, tradeoff-reference.csv, tradeoff.png");
   return command;
 }
 
 CLI::App* addBodyCommand(CLI::App& app, BodyStudyOptions& bodies) {
   CLI::App* command = app.add_subcommand(
       "bodies", "make and measure MakeHuman bodies to the 60 measurement sets: median, p90, skin crossings");
-  command->add_option("--repeat", bodies.repeat, "timings per body (median)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  command->add_option("--out", bodies.outDir, "folder for bodies.csv")->capture_default_str();
+  addRepeatOption(command, bodies.repeat, "timings per body (median)");
+  addOutOption(command, bodies.outDir, "bodies.csv");
   return command;
 }
 
@@ -219,14 +211,12 @@ CLI::App* addFitCommand(CLI::App& app, FitStudyOptions& fit) {
   command->add_option("--sex", fit.sexes, "female, male (repeat the option)")
       ->capture_default_str()
       ->check(CLI::IsMember({"female", "male"}));
-  command->add_option("--repeat", fit.repeat, "warm recommendations timed per body (median)")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  addRepeatOption(command, fit.repeat, "warm recommendations timed per body (median)");
   command->add_option("--grid", fit.grid, "bodies along the chart per style and sex: the monotony check")
       ->capture_default_str();
   command->add_option("--grid-beyond", fit.gridBeyond, "sizes the grid reaches beyond each end of the chart")
       ->capture_default_str();
-  command->add_option("--out", fit.outDir, "folder for fit.csv and fit-grid.csv")->capture_default_str();
+  addOutOption(command, fit.outDir, "fit.csv and fit-grid.csv");
   return command;
 }
 
@@ -240,37 +230,33 @@ int main(int argc, char** argv) {
   stability.plotScript = FIGMENT_PLOT_STABILITY;
   RenderStudyOptions render;
   CollisionStudyOptions collision;
-  MethodStudyOptions methods;
   collision.plotScript = FIGMENT_PLOT_COLLISION;
-  CLI::App* drapeCommand = addDrapeCommand(app, drape);
-  CLI::App* stabilityCommand = addStabilityCommand(app, stability);
-  CLI::App* renderCommand = addRenderCommand(app, render);
-  CLI::App* collisionCommand = addCollisionCommand(app, collision);
-  CLI::App* methodCommand = addMethodCommand(app, methods);
+  MethodStudyOptions methods;
   ProgressiveStudyOptions progressive;
   progressive.plotScript = FIGMENT_PLOT_PROGRESSIVE;
-  CLI::App* progressiveCommand = addProgressiveCommand(app, progressive);
   SizeStudyOptions sizes;
   sizes.plotScript = FIGMENT_PLOT_SIZES;
-  CLI::App* sizeCommand = addSizeCommand(app, sizes);
   TradeoffStudyOptions tradeoff;
   tradeoff.plotScript = FIGMENT_PLOT_TRADEOFF;
-  CLI::App* tradeoffCommand = addTradeoffCommand(app, tradeoff);
   BodyStudyOptions bodies;
-  CLI::App* bodyCommand = addBodyCommand(app, bodies);
   FitStudyOptions fit;
-  CLI::App* fitCommand = addFitCommand(app, fit);
+  // Each subcommand, in the order --help lists them, with the study it runs.
+  const std::pair<CLI::App*, std::function<int()>> studies[] = {
+      {addDrapeCommand(app, drape), [&] { return runDrapeStudy(drape); }},
+      {addStabilityCommand(app, stability), [&] { return runStabilityStudy(stability); }},
+      {addRenderCommand(app, render), [&] { return runRenderStudy(render); }},
+      {addCollisionCommand(app, collision), [&] { return runCollisionStudy(collision); }},
+      {addMethodCommand(app, methods), [&] { return runMethodStudy(methods); }},
+      {addProgressiveCommand(app, progressive), [&] { return runProgressiveStudy(progressive); }},
+      {addSizeCommand(app, sizes), [&] { return runSizeStudy(sizes); }},
+      {addTradeoffCommand(app, tradeoff),
+       [&] { return runTradeoffStudy(tradeoff.quick ? quickTradeoff(tradeoff) : tradeoff); }},
+      {addBodyCommand(app, bodies), [&] { return runBodyStudy(bodies); }},
+      {addFitCommand(app, fit), [&] { return runFitStudy(fit); }},
+  };
 
   CLI11_PARSE(app, argc, argv);
-  if (drapeCommand->parsed()) return runDrapeStudy(drape);
-  if (stabilityCommand->parsed()) return runStabilityStudy(stability);
-  if (renderCommand->parsed()) return runRenderStudy(render);
-  if (collisionCommand->parsed()) return runCollisionStudy(collision);
-  if (methodCommand->parsed()) return runMethodStudy(methods);
-  if (progressiveCommand->parsed()) return runProgressiveStudy(progressive);
-  if (sizeCommand->parsed()) return runSizeStudy(sizes);
-  if (bodyCommand->parsed()) return runBodyStudy(bodies);
-  if (fitCommand->parsed()) return runFitStudy(fit);
-  if (tradeoffCommand->parsed()) return runTradeoffStudy(tradeoff.quick ? quickTradeoff(tradeoff) : tradeoff);
+  for (const auto& [command, run] : studies)
+    if (command->parsed()) return run();
   return 1;
 }

@@ -14,6 +14,10 @@ namespace figment {
 // build's setup put it (<build>/data/makehuman). "" when none holds 3dobjs/base.obj.
 std::string findMakeHumanData();
 
+// What a program says when findMakeHumanData() finds none: the one line that tells how to get it.
+inline constexpr const char* kMakeHumanDataMissing =
+    "MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR";
+
 // The group "body" of `dir`/3dobjs/base.obj (the skin, without the helper geometry), its
 // quads split into triangles. Throws std::runtime_error("<path>: <reason>").
 HumanBase readHumanBase(const std::string& dir);

@@ -27,7 +27,7 @@ FitWorker::~FitWorker() = default;
 std::string FitWorker::loadModel() {
   if (model_) return "";
   const std::string dir = findMakeHumanData();
-  if (dir.empty()) return "MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR";
+  if (dir.empty()) return kMakeHumanDataMissing;
   library_ = std::make_unique<TargetLibrary>(dir);
   model_ = std::make_unique<HumanModel>(loadHumanModel(dir, *library_));
   return "";

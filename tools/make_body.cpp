@@ -84,7 +84,7 @@ void printJson(const figment::BodyFitResult& fit) {
 int make(const figment::HumanParameters& start, const std::vector<figment::MeasurementGoal>& goals,
          const std::string& output) {
   const std::string dir = figment::findMakeHumanData();
-  if (dir.empty()) return kTool.fail("MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR");
+  if (dir.empty()) return kTool.fail(figment::kMakeHumanDataMissing);
   try {
     figment::TargetLibrary library(dir);
     const figment::HumanModel model = figment::loadHumanModel(dir, library);

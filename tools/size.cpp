@@ -104,7 +104,7 @@ int recommend(const Request& request, figment::HumanModel& model, const figment:
 
 int run(const Request& request) {
   const std::string dir = figment::findMakeHumanData();
-  if (dir.empty()) return kTool.fail("MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR");
+  if (dir.empty()) return kTool.fail(figment::kMakeHumanDataMissing);
   try {
     figment::TargetLibrary library(dir);
     figment::HumanModel model = figment::loadHumanModel(dir, library);

@@ -147,8 +147,7 @@ bool HumanBody::load(SoInput* in) {
                                   "\": a HumanBody makes its mesh; leave fileName empty");
     if (!data_->model) {
       data_->dir = figment::findMakeHumanData();
-      if (data_->dir.empty())
-        throw std::runtime_error("MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR");
+      if (data_->dir.empty()) throw std::runtime_error(figment::kMakeHumanDataMissing);
       data_->library = std::make_unique<figment::TargetLibrary>(data_->dir);
       data_->model.emplace(figment::loadHumanModel(data_->dir, *data_->library));
     }

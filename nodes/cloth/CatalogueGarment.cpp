@@ -91,8 +91,7 @@ bool CatalogueGarment::load(SoInput* in) {
     }
     if (!data_->model) {
       const std::string dir = figment::findMakeHumanData();
-      if (dir.empty())
-        throw std::runtime_error("MakeHuman's data not found: run scripts/setup.sh, or set FIGMENT_MAKEHUMAN_DIR");
+      if (dir.empty()) throw std::runtime_error(figment::kMakeHumanDataMissing);
       data_->library = std::make_unique<figment::TargetLibrary>(dir);
       data_->model.emplace(figment::loadHumanModel(dir, *data_->library));
     }

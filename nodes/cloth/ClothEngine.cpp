@@ -231,34 +231,9 @@ void ClothEngine::Impl::recordRun(const figment::DrapeResult& run, int triangles
 }
 
 void ClothEngine::Impl::recordMethod(const figment::ClothParameters& parameters) {
-  using figment::AccelerationLimiter;
-  using figment::Integrator;
-  switch (parameters.integrator) {
-    case Integrator::ExplicitEuler:
-      stats.integrator = "EULER";
-      break;
-    case Integrator::SymplecticEuler:
-      stats.integrator = "SYMPLECTIC";
-      break;
-    case Integrator::Heun:
-      stats.integrator = "HEUN";
-      break;
-    case Integrator::Implicit:
-      stats.integrator = "IMPLICIT";
-      break;
-  }
-  stats.contactModel = parameters.implicitSolver.contacts == figment::ContactModel::Penalty ? "PENALTY" : "CONSTRAINTS";
-  switch (parameters.accelerationLimiter) {
-    case AccelerationLimiter::None:
-      stats.accelerationLimiter = "NONE";
-      break;
-    case AccelerationLimiter::Clamp:
-      stats.accelerationLimiter = "CLAMP";
-      break;
-    case AccelerationLimiter::Tanh:
-      stats.accelerationLimiter = "TANH";
-      break;
-  }
+  stats.integrator = figment::fieldName(parameters.integrator);
+  stats.contactModel = figment::fieldName(parameters.implicitSolver.contacts);
+  stats.accelerationLimiter = figment::fieldName(parameters.accelerationLimiter);
   stats.timeStep = parameters.timeStep;
   stats.strainLimit = parameters.strainLimit;
   stats.accelerationLimit = parameters.accelerationLimit;

@@ -2,6 +2,7 @@
 
 #include <Inventor/nodes/SoNode.h>
 
+#include <cstddef>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +18,47 @@
 namespace figment {
 
 namespace {
+
+// One row per method: the engine field's value, the simulation's method, and the value's name
+// as a scene writes it. Both directions (field to method, method to name for RunStats) read
+// the same table, so a method added to one cannot be missed by the other.
+template <typename Method>
+struct MethodRow {
+  int field;
+  Method method;
+  const char* name;
+};
+
+constexpr MethodRow<Integrator> kIntegrators[] = {
+    {ClothEngine::EULER, Integrator::ExplicitEuler, "EULER"},
+    {ClothEngine::SYMPLECTIC, Integrator::SymplecticEuler, "SYMPLECTIC"},
+    {ClothEngine::HEUN, Integrator::Heun, "HEUN"},
+    {ClothEngine::IMPLICIT, Integrator::Implicit, "IMPLICIT"},
+};
+constexpr MethodRow<AccelerationLimiter> kLimiters[] = {
+    {ClothEngine::NONE, AccelerationLimiter::None, "NONE"},
+    {ClothEngine::CLAMP, AccelerationLimiter::Clamp, "CLAMP"},
+    {ClothEngine::TANH, AccelerationLimiter::Tanh, "TANH"},
+};
+constexpr MethodRow<ContactModel> kContactModels[] = {
+    {ClothEngine::CONSTRAINTS, ContactModel::Constraints, "CONSTRAINTS"},
+    {ClothEngine::PENALTY, ContactModel::Penalty, "PENALTY"},
+};
+
+// The method of a field's value; `fallback` for a value outside the table.
+template <typename Method, std::size_t N>
+Method methodOfField(const MethodRow<Method> (&table)[N], int field, Method fallback) {
+  for (const MethodRow<Method>& row : table)
+    if (row.field == field) return row.method;
+  return fallback;
+}
+
+template <typename Method, std::size_t N>
+const char* nameOfMethod(const MethodRow<Method> (&table)[N], Method method) {
+  for (const MethodRow<Method>& row : table)
+    if (row.method == method) return row.name;
+  return "";
+}
 
 std::string at(int index, int value) {
   std::ostringstream out;
@@ -77,6 +119,18 @@ Material materialFromFields(const ClothEngine& engine) {
   return m;
 }
 
+const char* fieldName(Integrator integrator) {
+  return nameOfMethod(kIntegrators, integrator);
+}
+
+const char* fieldName(AccelerationLimiter limiter) {
+  return nameOfMethod(kLimiters, limiter);
+}
+
+const char* fieldName(ContactModel contacts) {
+  return nameOfMethod(kContactModels, contacts);
+}
+
 ClothParameters parametersFromFields(const ClothEngine& engine) {
   // The double fields hold what the scene wrote (see FieldValues.h); gravity is float.
   ClothParameters p;
@@ -91,34 +145,10 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
   p.friction = engine.friction.getValue();
   p.clearance = engine.clearance.getValue();
   p.strainRateDamping = engine.strainRateDamping.getValue();
-  switch (engine.integrator.getValue()) {
-    case ClothEngine::EULER:
-      p.integrator = Integrator::ExplicitEuler;
-      break;
-    case ClothEngine::SYMPLECTIC:
-      p.integrator = Integrator::SymplecticEuler;
-      break;
-    case ClothEngine::IMPLICIT:
-      p.integrator = Integrator::Implicit;
-      break;
-    default:
-      p.integrator = Integrator::Heun;
-      break;
-  }
-  p.implicitSolver.contacts =
-      engine.contactModel.getValue() == ClothEngine::PENALTY ? ContactModel::Penalty : ContactModel::Constraints;
+  p.integrator = methodOfField(kIntegrators, engine.integrator.getValue(), Integrator::Heun);
+  p.implicitSolver.contacts = methodOfField(kContactModels, engine.contactModel.getValue(), ContactModel::Constraints);
   p.strainLimit = engine.strainLimit.getValue();
-  switch (engine.accelerationLimiter.getValue()) {
-    case ClothEngine::CLAMP:
-      p.accelerationLimiter = AccelerationLimiter::Clamp;
-      break;
-    case ClothEngine::TANH:
-      p.accelerationLimiter = AccelerationLimiter::Tanh;
-      break;
-    default:
-      p.accelerationLimiter = AccelerationLimiter::None;
-      break;
-  }
+  p.accelerationLimiter = methodOfField(kLimiters, engine.accelerationLimiter.getValue(), AccelerationLimiter::None);
   p.accelerationLimit = engine.accelerationLimit.getValue();
   const SbVec3f& w = engine.windDirection.getValue();
   p.wind.direction = Vec3(writtenValue(w[0]), writtenValue(w[1]), writtenValue(w[2]));

@@ -26,6 +26,12 @@ TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coo
 // wrote over it, or those four fields alone. Throws for an unknown preset.
 Material materialFromFields(const ClothEngine& engine);
 
+// The name a scene writes a method's field value with ("IMPLICIT", "CLAMP", "PENALTY"), as
+// RunStats reports it.
+const char* fieldName(Integrator integrator);
+const char* fieldName(AccelerationLimiter limiter);
+const char* fieldName(ContactModel contacts);
+
 // Material and run parameters from the engine's fields, validated.
 ClothParameters parametersFromFields(const ClothEngine& engine);
 

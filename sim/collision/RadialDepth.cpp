@@ -81,6 +81,25 @@ inline void turn(double& c, double& s, double cd, double sd) {
   const double next = c * cd - s * sd;
   s = s * cd + c * sd, c = next;
 }
+
+// closest's and closestFast's answer: `best`, `gap` from p (negative inside). Its normal points
+// from `best` to p where p lies off the surface, else along the cap's normal when `best` is on
+// a cap, else the side's (sideNormal(), computed only then).
+template <typename SideNormal>
+SurfacePoint surfacePoint(const Vec3& p, const Vec3& best, double gap, bool inside, const Vec3* capNormal,
+                          SideNormal sideNormal) {
+  SurfacePoint out;
+  out.point = best;
+  out.distance = inside ? -gap : gap;
+  if (!inside && gap > 1e-6)
+    out.normal = (p - best) / gap;
+  else if (capNormal)
+    out.normal = *capNormal;
+  else
+    out.normal = sideNormal();
+  return out;
+}
+
 }  // namespace
 
 // The series below run the harmonics in two chains, odd k and even k, each turned by 2a
@@ -234,17 +253,9 @@ SurfacePoint RadialDepth::closest(const Vec3& p, bool fast) const {
     if (gap < bestGap)
       best = q, bestGap = gap, onCap = true, capNormal = capS == 0.0 ? -parameters_.direction : parameters_.direction;
   }
-  SurfacePoint out;
-  out.point = best;
-  out.distance = inside ? -bestGap : bestGap;
-  if (!inside && bestGap > 1e-6)
-    out.normal = (p - best) / bestGap;
-  else if (onCap)
-    out.normal = capNormal;
-  else
-    out.normal =
-        surfaceNormal(side(t, angle), best - (parameters_.base + t * parameters_.direction), parameters_.direction);
-  return out;
+  return surfacePoint(p, best, bestGap, inside, onCap ? &capNormal : nullptr, [&] {
+    return surfaceNormal(side(t, angle), best - (parameters_.base + t * parameters_.direction), parameters_.direction);
+  });
 }
 
 namespace {
@@ -289,15 +300,9 @@ SurfacePoint RadialDepth::closestFast(const Vec3& p) const {
     best = p - (s - capS) * parameters_.direction, bestGap = gap, onCap = true;
     capNormal = capS == 0.0 ? -parameters_.direction : parameters_.direction;
   }
-  SurfacePoint out;
-  out.point = best;
-  out.distance = inside ? -bestGap : bestGap;
-  if (!inside && bestGap > 1e-6)
-    out.normal = (p - best) / bestGap;
-  else if (onCap)
-    out.normal = capNormal;
-  else
-    out.normal = surfaceNormal(at, best - (parameters_.base + t * parameters_.direction), parameters_.direction);
+  SurfacePoint out = surfacePoint(p, best, bestGap, inside, onCap ? &capNormal : nullptr, [&] {
+    return surfaceNormal(at, best - (parameters_.base + t * parameters_.direction), parameters_.direction);
+  });
   // Inside, where p does not lie along the side's normal (a deep point's steps stop short
   // of the stationary point), a push-out to point + clearance normal would move p
   // sideways: the normal is then the way out from p to the point.

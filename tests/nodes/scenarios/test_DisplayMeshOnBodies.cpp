@@ -62,19 +62,6 @@ Depths depths(const figment::Collider& body, const std::vector<figment::Vec3>& p
   return out;
 }
 
-std::vector<figment::Triangle> triangles(const SoMFInt32& coordIndex) {
-  std::vector<figment::Triangle> out;
-  std::vector<int> face;
-  for (int i = 0; i < coordIndex.getNum(); ++i) {
-    if (coordIndex[i] >= 0) face.push_back(coordIndex[i]);
-    if (coordIndex[i] < 0 || i + 1 == coordIndex.getNum()) {
-      for (size_t k = 1; k + 1 < face.size(); ++k) out.push_back({face[0], face[k], face[k + 1]});
-      face.clear();
-    }
-  }
-  return out;
-}
-
 class DisplayMeshOnBodies : public ::testing::TestWithParam<Drape> {};
 
 TEST_P(DisplayMeshOnBodies, IsNoDeeperInsideTheBodyThanTheDrapesFaces) {
@@ -89,7 +76,7 @@ TEST_P(DisplayMeshOnBodies, IsNoDeeperInsideTheBodyThanTheDrapesFaces) {
   ASSERT_EQ(engine.lastError(), "");
   const std::shared_ptr<const figment::Collider> body = figment::colliderFromBody(engine.body);
   ASSERT_NE(body, nullptr);
-  figment::TriangleMesh drape{{}, triangles(engine.coordIndex)};
+  figment::TriangleMesh drape{{}, figment::garmentFromFields(engine.restPoints, engine.coordIndex).triangles};
   for (int i = 0; i < positions.getNum(); ++i)
     drape.vertices.emplace_back(positions[i][0], positions[i][1], positions[i][2]);
   const Depths simulated = depths(*body, drape.vertices, drape.triangles);

@@ -39,6 +39,7 @@
 
 #include "io/MakeHumanFiles.h"
 #include "io/MeshImport.h"
+#include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/core/BoundaryLoops.h"
 #include "sim/core/DisplaySubdivision.h"
 #include "support/ShippedGarmentScene.h"
@@ -67,19 +68,6 @@ std::vector<figment::Vec3> points(const SoMFVec3f& field) {
   return x;
 }
 
-std::vector<figment::Triangle> triangles(const SoMFInt32& coordIndex) {
-  std::vector<figment::Triangle> out;
-  std::vector<int> face;
-  for (int i = 0; i < coordIndex.getNum(); ++i) {
-    if (coordIndex[i] >= 0) face.push_back(coordIndex[i]);
-    if (coordIndex[i] < 0 || i + 1 == coordIndex.getNum()) {
-      for (size_t k = 1; k + 1 < face.size(); ++k) out.push_back({face[0], face[k], face[k + 1]});
-      face.clear();
-    }
-  }
-  return out;
-}
-
 // The median boundary turning of the display mesh that `levels` splits make of `faces` at
 // `positions`.
 double displayTurning(const std::vector<figment::Vec3>& positions, const std::vector<figment::Triangle>& faces,
@@ -100,7 +88,8 @@ TEST_P(GarmentEdges, TurnLittleAtRestAndDraped) {
   ASSERT_NE(scene.engine(), nullptr);
   ClothEngine& engine = *scene.engine();
   GetParam().configure(engine);
-  const std::vector<figment::Triangle> faces = triangles(engine.coordIndex);
+  const std::vector<figment::Triangle> faces =
+      figment::garmentFromFields(engine.restPoints, engine.coordIndex).triangles;
   const double rest = figment::medianBoundaryTurning(points(engine.restPoints), faces);
   SoMFVec3f positions;
   positions.connectFrom(&engine.positions);

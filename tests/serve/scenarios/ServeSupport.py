@@ -4,6 +4,8 @@ The server is started on a free loopback port (--port 0: it prints the one it to
 temporary folder, with its drape cache there; stop() sends SIGTERM and waits for it.
 RedisServer is a redis-server of the test's own, on a Unix socket in a temporary folder (no
 TCP port at all), stopped at the end; JobWorker is figment-serve --job-worker on it.
+ServerCase is a test case whose tests share one Server, started before the first and stopped
+after the last.
 """
 import http.client
 import socket
@@ -14,6 +16,7 @@ import struct
 import subprocess
 import tempfile
 import time
+import unittest
 import zlib
 
 
@@ -74,6 +77,24 @@ class Server:
     def log(self):
         with open(self.log_path) as log:
             return log.read()
+
+
+class ServerCase(unittest.TestCase):
+    """One figment-serve for all the class's tests, with `server_arguments`; a server that does
+    not exit cleanly (status 0) fails the class. The script sets `ServerCase.executable` from its
+    command line before unittest.main()."""
+    executable = None
+    server_arguments = ("--workers", "1")
+
+    @classmethod
+    def setUpClass(cls):
+        cls.server = Server(ServerCase.executable, *cls.server_arguments)
+
+    @classmethod
+    def tearDownClass(cls):
+        status = cls.server.stop()
+        if status != 0:
+            raise AssertionError("figment-serve exited with %d" % status)
 
 
 class RedisServer:

@@ -14,9 +14,7 @@ import sys
 import unittest
 import urllib.parse
 
-from ServeSupport import Server, count_near, png_pixels
-
-EXECUTABLE = None
+from ServeSupport import ServerCase, count_near, png_pixels
 
 # The women's M and men's L chart bodies (scenes/sizes/chart.txt).
 WOMANS_XS = dict(sex="female", stature="1.68", bust="0.80", waist="0.64", hips="0.88")
@@ -29,17 +27,7 @@ def fit_path(**parameters):
     return "/api/fit?" + urllib.parse.urlencode(parameters)
 
 
-class Fit(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.server = Server(EXECUTABLE, "--workers", "1")
-
-    @classmethod
-    def tearDownClass(cls):
-        status = cls.server.stop()
-        if status != 0:
-            raise AssertionError("figment-serve exited with %d" % status)
-
+class Fit(ServerCase):
     def advice(self, body):
         status, headers, answer = self.server.request(fit_path(**body))
         if status == 500 and b"MakeHuman" in answer:
@@ -208,5 +196,5 @@ class Fit(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    EXECUTABLE = sys.argv.pop(1)
+    ServerCase.executable = sys.argv.pop(1)
     unittest.main()

@@ -17,17 +17,18 @@ from selenium.webdriver.chrome.service import Service as ChromeService
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
-from ServeSupport import Server
+from ServeSupport import ServerCase
 
-EXECUTABLE = None
 SCREENSHOTS = None
 WAIT = 600  # s: WebDriverWait's bound, not an assertion on speed (a cold drape takes seconds)
 
 
-class Page(unittest.TestCase):
+class Page(ServerCase):
+    server_arguments = ("--workers", "2")
+
     @classmethod
     def setUpClass(cls):
-        cls.server = Server(EXECUTABLE, "--workers", "2")
+        super().setUpClass()
         options = webdriver.ChromeOptions()
         options.binary_location = "/usr/bin/chromium"
         for argument in ("--headless", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
@@ -41,8 +42,7 @@ class Page(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
         cls.browser.quit()
-        if cls.server.stop() != 0:
-            raise AssertionError("figment-serve did not stop cleanly")
+        super().tearDownClass()
 
     def picture_query(self):
         return self.browser.find_element(By.ID, "picture").get_attribute("data-query") or ""
@@ -171,6 +171,6 @@ class Page(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    EXECUTABLE = sys.argv.pop(1)
+    ServerCase.executable = sys.argv.pop(1)
     SCREENSHOTS = sys.argv.pop(1)
     unittest.main()

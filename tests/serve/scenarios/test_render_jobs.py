@@ -13,7 +13,7 @@ import time
 import unittest
 import urllib.parse
 
-from ServeSupport import Server
+from ServeSupport import Server, ServerCase
 
 EXECUTABLE = None
 POLL_LIMIT = 60  # s: a small render's job is done well within it
@@ -43,17 +43,7 @@ def wait_for(server, location):
         time.sleep(0.2)
 
 
-class RenderJobs(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.server = Server(EXECUTABLE, "--workers", "1")
-
-    @classmethod
-    def tearDownClass(cls):
-        status = cls.server.stop()
-        if status != 0:
-            raise AssertionError("figment-serve exited with %d" % status)
-
+class RenderJobs(ServerCase):
     def test_job_runs_and_its_result_is_a_cache_hit(self):
         status, headers, job = post(self.server, "size=160x200&outfit=dress:M:ff0000&view=left")
         self.assertEqual(status, 202)
@@ -110,5 +100,5 @@ class Overload(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    EXECUTABLE = sys.argv.pop(1)
+    EXECUTABLE = ServerCase.executable = sys.argv.pop(1)
     unittest.main()

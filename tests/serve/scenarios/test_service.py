@@ -15,7 +15,7 @@ import time
 import unittest
 import urllib.parse
 
-from ServeSupport import Server, count_near, png_pixels
+from ServeSupport import Server, ServerCase, count_near, png_pixels
 
 EXECUTABLE = None
 SMALL = "size=160x200"  # renders stay small: the test checks pictures, not detail
@@ -27,16 +27,8 @@ def render_path(**parameters):
     return "/api/render?" + urllib.parse.urlencode(query)
 
 
-class Endpoints(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.server = Server(EXECUTABLE, "--workers", "2")
-
-    @classmethod
-    def tearDownClass(cls):
-        status = cls.server.stop()
-        if status != 0:
-            raise AssertionError("figment-serve exited with %d" % status)
+class Endpoints(ServerCase):
+    server_arguments = ("--workers", "2")
 
     def test_healthz(self):
         status, body = self.server.json("/healthz")
@@ -251,5 +243,5 @@ class Workers(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    EXECUTABLE = sys.argv.pop(1)
+    EXECUTABLE = ServerCase.executable = sys.argv.pop(1)
     unittest.main()
