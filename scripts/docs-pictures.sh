@@ -29,8 +29,8 @@ dress-progressive.iv fig4-2c-progressive.png --size 360x420 --view 30,10 --stop-
 dress-progressive.iv fig4-2d-progressive.png --size 360x420 --view 30,10
 close-fit.iv fig5-2a-depth-buffer.png --size 360x420 --depth-buffer-only
 close-fit.iv fig5-2b-hybrid.png --size 360x420
-dress.iv fig5-3a-no-stencil.png --size 360x420 --view 60,10 --keep-stencil-fields
-dress.iv fig5-3b-stencil.png --size 360x420 --view 60,10
+dress.iv fig5-3a-no-stencil.png --size 360x420 --view 60,10 --keep-stencil-fields --display-subdivision 0
+dress.iv fig5-3b-stencil.png --size 360x420 --view 60,10 --display-subdivision 0
 mannequin.iv volumes-radial.png --size 360x560 --show-volumes
 mannequin.iv volumes-radial-side.png --size 360x560 --show-volumes --view 60,10
 mannequin-capsules.iv volumes-capsules.png --size 360x560 --show-volumes

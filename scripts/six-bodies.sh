@@ -66,7 +66,7 @@ scene() {
           maxTime 10
         } . positions
       }
-      ClothingLayer { coordIndex = USE Pattern_$id.coordIndex }
+      ClothingLayer { coordIndex = USE Pattern_$id.coordIndex  displaySubdivision 1 }
     }
   }
 BODY

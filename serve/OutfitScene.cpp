@@ -177,6 +177,9 @@ SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt3
   }
   auto* layer = new ClothingLayer;
   layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
+  // Drawn smooth (issue 29), as the shipped scenes are: hems read as curves at the drape's
+  // cost. The ETag follows, since the build digest covers this program.
+  layer->displaySubdivision = OutfitScene::kDisplaySubdivision;
   separator->addChild(layer);
   return separator;
 }

@@ -31,6 +31,11 @@ class Wardrobe;
 
 class OutfitScene {
  public:
+  // Levels of display mesh each garment's ClothingLayer draws (its displaySubdivision), as
+  // the shipped scenes' do: one, each triangle as four on a smooth surface. A fit map is
+  // drawn on the simulation's faces (a ClothingLayer draws one material).
+  static constexpr int kDisplaySubdivision = 1;
+
   // A style's garment graded to a size of the chart, for a measured body; throws when it
   // cannot be made.
   using GradedGarment = std::function<const TriangleMesh&(const OutfitItem& item, Sex sex)>;

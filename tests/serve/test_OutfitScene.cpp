@@ -1,7 +1,8 @@
 // A request's scene, built in code: the lights of its preset, the mannequin at the
 // request's size factors and pose, one engine per garment innermost first, an outer one
 // colliding with the garments beneath; a pattern follows the stature and its size widens it;
-// a fit map colours each garment point by its stretch.
+// a fit map colours each garment point by its stretch; each garment is drawn through one level
+// of display mesh, as the shipped scenes draw theirs.
 
 #include <Inventor/SbBox3f.h>
 #include <Inventor/SoDB.h>
@@ -20,6 +21,7 @@
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
+#include "nodes/render/ClothingLayer.h"
 #include "serve/OutfitScene.h"
 #include "serve/Wardrobe.h"
 #include "sim/fit/FitMap.h"
@@ -78,6 +80,23 @@ TEST_F(OutfitSceneTest, LayersDrapeInsideOutOnTheMannequinAndTheGarmentsBeneath)
   for (int i = 0; i < root->getNumChildren(); ++i)
     lights += root->getChild(i)->isOfType(SoDirectionalLight::getClassTypeId());
   EXPECT_EQ(lights, int(Catalogue::light("soft")->lights.size()));
+  root->unref();
+}
+
+// Drawn smooth as scenes/dress.iv is (issue 29): every garment's ClothingLayer one level.
+TEST_F(OutfitSceneTest, EachGarmentDrawsADisplayMesh) {
+  std::vector<ClothEngine*> engines;
+  SoSeparator* root = scene({{"outfit", "tshirt:M,dress:L"}}, engines);
+  SoSearchAction search;
+  search.setType(ClothingLayer::getClassTypeId());
+  search.setInterest(SoSearchAction::ALL);
+  search.apply(root);
+  ASSERT_EQ(search.getPaths().getLength(), 2);
+  for (int i = 0; i < 2; ++i) {
+    const auto* layer = static_cast<const ClothingLayer*>(search.getPaths()[i]->getTail());
+    EXPECT_EQ(layer->displaySubdivision.getValue(), 1) << i;
+    EXPECT_EQ(layer->fieldProblem(), "") << i;
+  }
   root->unref();
 }
 
