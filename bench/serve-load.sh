@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # figment-serve under load on loopback (docs/service.md, "Figures"): cold requests (a new
 # body each, one garment, 800x600) one after another on one worker, their median and 95th
-# percentile; another view of a draped outfit; then a cached image's requests/s and
+# percentile, on the Mannequin and on bodies made to measurements; another view of a draped outfit; then a cached image's requests/s and
 # latency with wrk (Debian's). Medians, not a test: the figures go into docs/service.md.
 # Last, an overload: wrk asks for a new body on every request (bench/serve-overload.lua),
 # far past what the workers drape, for OVERLOAD_SECONDS; the answers by status, and the
@@ -26,6 +26,11 @@ median() { sort -n | awk '{v[NR]=$1} END {p=int((NR+1)/2); q=int(NR*0.95+0.999);
 echo "cold (new body, dress, 800x600, one worker):"
 for i in $(seq 1 "$cold"); do
   curl -s -o /dev/null -w '%{time_total}\n' "${url}api/render?stature=$(printf '1.%03d' $((600 + i)))&outfit=dress:M"
+done | median
+echo "cold, a body made to measurements (sex=female, new stature each, dress M, 800x600):"
+for i in $(seq 1 "$cold"); do
+  curl -s -o /dev/null -w '%{time_total}\n' \
+    "${url}api/render?sex=female&stature=$(printf '1.%03d' $((640 + i)))&bust=0.88&waist=0.72&hips=0.97&outfit=dress:M"
 done | median
 echo "another view of the outfit just draped (the worker keeps its scene):"
 for i in $(seq 1 "$cold"); do
