@@ -168,6 +168,20 @@ std::vector<double> contactPressures(const FitInput& input) {
   return pressure;
 }
 
+// A region the garment goes on up out of (an edge from one of its nodes to above its top) has
+// no drop: its highest node is then just the garment's nearest row below the top, up to an
+// edge's length (2 cm on the pencil skirt) lower on one body than on another, not where the
+// garment sits.
+void reachedTops(const TriangleMesh& rest, const std::vector<Vec3>& x, const std::vector<FitRegion>& regions,
+                 std::vector<RegionFit>& fits) {
+  for (const Triangle& t : rest.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      for (const auto& [inside, other] : {std::pair(a, b), std::pair(b, a)})
+        if (const int r = regionOf(regions, x[inside]); r >= 0 && x[other].y() >= regions[r].high) fits[r].drop = 0;
+    }
+}
+
 std::vector<RegionFit> measureFit(const FitInput& input, const std::vector<FitRegion>& regions) {
   checkInput(input);
   const std::vector<Vec3>& x = *input.positions;
@@ -191,6 +205,7 @@ std::vector<RegionFit> measureFit(const FitInput& input, const std::vector<FitRe
     regionArea[r] += area[i];
     fits[r].maxPressure = std::max(fits[r].maxPressure, pressure[i]);
   }
+  reachedTops(*input.rest, x, regions, fits);
   const TriangleMesh draped{x, input.rest->triangles};
   for (size_t r = 0; r < regions.size(); ++r) {
     if (fits[r].nodes == 0) continue;

@@ -26,7 +26,7 @@ struct RegionFit {
   // the region where the garment goes all round), and that less the body's there.
   double garmentGirth = std::numeric_limits<double>::quiet_NaN();
   double girthEase = std::numeric_limits<double>::quiet_NaN();
-  double drop = 0;         // m from the region's top down to its highest garment node
+  double drop = 0;  // m from the region's top down to its highest garment node; 0 where the garment goes on above it
   double pressure = 0;     // Pa: the contact forces' sum over the region's garment area
   double maxPressure = 0;  // Pa: the largest at one node (its force over its share of area)
   bool covered() const { return nodes > 0; }

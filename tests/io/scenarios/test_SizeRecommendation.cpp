@@ -6,6 +6,8 @@
 // Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -111,29 +113,51 @@ TEST_F(SizeRecommendation, EveryCatalogueStyleGivesEachChartBodyItsOwnSizeButThe
     }
 }
 
+// The body at `position` along the chart (a size's index, fractional; beyond the ends by the
+// end steps), as figment-bench recommend --grid makes it.
+static TriangleMesh chartBodyAt(const HumanModel& model, const SizeChart& chart, Sex sex, double position) {
+  const std::vector<ChartSize>& sizes = chart.sizes(sex);
+  const int i = std::clamp(static_cast<int>(std::floor(position)), 0, static_cast<int>(sizes.size()) - 2);
+  const double t = position - i;
+  const auto at = [&](double ChartSize::*field) {
+    return sizes[i].*field + t * (sizes[i + 1].*field - sizes[i].*field);
+  };
+  HumanParameters start;
+  start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
+  return fitBody(model, start,
+                 {{"stature", at(&ChartSize::stature)},
+                  {"bust_girth", at(&ChartSize::bust)},
+                  {"waist_girth", at(&ChartSize::waist)},
+                  {"hip_girth", at(&ChartSize::hip)}})
+      .body;
+}
+
 // Bodies along the chart between its sizes, from half a size under XS to half a size over
 // L (a small grid: figment-bench recommend --grid 30 runs the 30 bodies).
 TEST_F(SizeRecommendation, NeverSmallerAsTheBodyGrows) {
-  const std::vector<ChartSize>& sizes = chart_->sizes(Sex::Female);
   int previous = -1;
-  HumanParameters female;
-  female.macro.gender = 0.0;
   for (double position = 0.5; position <= 4.51; position += 0.5) {
-    const int i = std::min(static_cast<int>(position), static_cast<int>(sizes.size()) - 2);
-    const double t = position - i;
-    const auto at = [&](double ChartSize::*field) {
-      return sizes[i].*field + t * (sizes[i + 1].*field - sizes[i].*field);
-    };
-    const TriangleMesh body = fitBody(*model_, female,
-                                      {{"stature", at(&ChartSize::stature)},
-                                       {"bust_girth", at(&ChartSize::bust)},
-                                       {"waist_girth", at(&ChartSize::waist)},
-                                       {"hip_girth", at(&ChartSize::hip)}})
-                                  .body;
+    const TriangleMesh body = chartBodyAt(*model_, *chart_, Sex::Female, position);
     const int recommended = index(Sex::Female, pencil_->recommend(body, Sex::Female).recommended);
     EXPECT_GE(recommended, previous) << "at " << position;
     previous = recommended;
   }
+}
+
+// Two neighbours of the grid (--grid 30 --grid-beyond 2: positions -2 + 9 k / 29),
+// men's, at k = 13 and 14, just over M: the M skirt's thighs were told "2 cm too high" on
+// the first (its row nearest the crotch 2.1 cm lower on the M chart body than on this one),
+// every candidate was tight, and the largest, L, was recommended before M.
+TEST_F(SizeRecommendation, NeverSmallerBetweenTheMensGridBodiesJustOverM) {
+  std::vector<int> recommended;
+  for (const int k : {13, 14}) {
+    const TriangleMesh body = chartBodyAt(*model_, *chart_, Sex::Male, -2.0 + 9.0 * k / 29.0);
+    const Recommendation r = pencil_->recommend(body, Sex::Male);
+    EXPECT_FALSE(r.allTight) << "k = " << k;
+    recommended.push_back(index(Sex::Male, r.recommended));
+  }
+  EXPECT_EQ(recommended[0], index(Sex::Male, "M"));
+  EXPECT_GE(recommended[1], recommended[0]);
 }
 
 TEST_F(SizeRecommendation, SmallOnTheXlBodyIsTightAndXlOnTheSmallBodyLoose) {

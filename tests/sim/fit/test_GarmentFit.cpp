@@ -86,3 +86,15 @@ TEST(GarmentFit, PositionsThatDoNotMatchAreRefused) {
   c.positions.pop_back();
   EXPECT_THROW(measureFit(c.input, {middle(0.15)}), std::invalid_argument);
 }
+
+// The drop tells where a garment's top edge sits in a region: 5 cm below the top of a region
+// reaching over the tube's top (1.2 m). A region the tube goes on up out of has none, not
+// the gap to the tube's row below its top (3 cm here, its rows being 4 cm apart), which
+// changes with where the rows happen to fall on a body.
+TEST(GarmentFit, DropIsWhereTheTopEdgeSitsAndNoneWhereTheGarmentGoesOnAbove) {
+  Case c(0.16, 0.16, 0.15, 0.003);
+  FitRegion toTheTop = middle(0.15);
+  toTheTop.high = 1.25;
+  EXPECT_NEAR(measureFit(c.input, {toTheTop})[0].drop, 0.05, 1e-9);
+  EXPECT_EQ(measureFit(c.input, {middle(0.15)})[0].drop, 0.0);  // 0.85 to 1.15: rows at 1.12 and 1.16
+}
