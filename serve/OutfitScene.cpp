@@ -290,7 +290,8 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     restShape(engine, pattern, wardrobe.heightOrigin(), Catalogue::bodyFactors(request.body).height,
               Catalogue::size(item.size)->girth);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
-    root->addChild(garment(item, engine, &pattern->coordIndex, {fitMaps, "jersey", request.fitMap}));  // cotton jersey
+    root->addChild(garment(item, engine, &pattern->coordIndex,
+                           {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}}));  // cotton jersey
     beneath.push_back({engine, &pattern->coordIndex});
   }
   return root;
@@ -344,8 +345,8 @@ void OutfitScene::paintFitMaps(const std::vector<FitMapGarment>& fitMaps) {
     }
     const FabricLimits limits = fabricLimits(garment.fabric);
     std::vector<SbColor> colours;
-    for (const double value : fitMapValues(input, kind)) {
-      const Vec3 c = fitMapColour(fitMapBand(fitMapShare(value, kind, limits)));
+    for (const int band : fitMapBands(input, kind, limits)) {
+      const Vec3 c = fitMapColour(band);
       colours.emplace_back(float(c.x()), float(c.y()), float(c.z()));
     }
     garment.material->diffuseColor.setValues(0, int(colours.size()), colours.data());

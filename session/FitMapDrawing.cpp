@@ -12,10 +12,7 @@
 namespace figment::session {
 
 std::vector<int> fitMapBands(const EngineFit& fit, FitMapKind kind) {
-  std::vector<int> bands;
-  for (const double value : fitMapValues(fit.input(), kind))
-    bands.push_back(fitMapBand(fitMapShare(value, kind, fit.limits)));
-  return bands;
+  return figment::fitMapBands(fit.input(), kind, fit.limits);
 }
 
 void drawFitMap(const EngineFit& fit, const std::vector<int>& bands) {

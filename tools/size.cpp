@@ -70,9 +70,7 @@ void writeFitMaps(const Request& request, figment::SizeFitter& fitter, const fig
     input.positions = &fit.drape.positions;
     input.body = &collider;
     input.parameters = fitter.parameters();
-    std::vector<int> bands;
-    for (const double value : figment::fitMapValues(input, kind))
-      bands.push_back(figment::fitMapBand(figment::fitMapShare(value, kind, fitter.rule().limits)));
+    const std::vector<int> bands = figment::fitMapBands(input, kind, fitter.rule().limits);
     figment::writeFitMapScene(dir + "/" + fit.size + ".iv", {fit.drape.positions, garment.triangles}, bands,
                               "body.obj");
   }

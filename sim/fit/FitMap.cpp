@@ -77,4 +77,10 @@ Vec3 fitMapColour(int band) {
   }
 }
 
+std::vector<int> fitMapBands(const FitInput& input, FitMapKind kind, const FabricLimits& limits) {
+  std::vector<int> bands;
+  for (const double value : fitMapValues(input, kind)) bands.push_back(fitMapBand(fitMapShare(value, kind, limits)));
+  return bands;
+}
+
 }  // namespace figment

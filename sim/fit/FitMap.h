@@ -34,4 +34,8 @@ double fitMapShare(double value, FitMapKind kind, const FabricLimits& limits);
 int fitMapBand(double share);
 Vec3 fitMapColour(int band);
 
+// Each node's band: fitMapValues through fitMapShare and fitMapBand, what every fit-map
+// drawing (figment-view, figment-size, the service) colours by.
+std::vector<int> fitMapBands(const FitInput& input, FitMapKind kind, const FabricLimits& limits);
+
 }  // namespace figment
