@@ -6,6 +6,8 @@
 #include <tuple>
 #include <utility>
 
+#include "sim/core/BoundaryTurning.h"
+
 namespace figment {
 
 std::vector<std::vector<int>> boundaryLoops(const std::vector<Triangle>& triangles) {
@@ -50,13 +52,7 @@ std::vector<double> boundaryTurningAngles(const std::vector<Vec3>& positions,
 }
 
 double medianBoundaryTurning(const std::vector<Vec3>& positions, const std::vector<Triangle>& triangles) {
-  std::vector<double> angles = boundaryTurningAngles(positions, boundaryLoops(triangles));
-  if (angles.empty()) return 0.0;
-  const size_t middle = angles.size() / 2;
-  std::nth_element(angles.begin(), angles.begin() + static_cast<long>(middle), angles.end());
-  if (angles.size() % 2 == 1) return angles[middle];
-  const double upper = angles[middle];
-  return 0.5 * (upper + *std::max_element(angles.begin(), angles.begin() + static_cast<long>(middle)));
+  return BoundaryTurning::median(boundaryTurningAngles(positions, boundaryLoops(triangles)));
 }
 
 TriangleMesh withBoundaryEdgesSplit(const TriangleMesh& mesh, int count) {
