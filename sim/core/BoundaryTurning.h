@@ -7,7 +7,7 @@
 // while it runs straight along the cloth.
 //
 // At a boundary vertex v with edges p -> v -> q along its loop (BoundaryLoops.h: wound as the
-// triangles are, so the cloth lies on the loop's left):
+// triangles are, so the cloth lies on the loop's left seen from the side they face):
 //   - geodesic turning  kg = pi - sum of the angles at v of the triangles between v -> q and
 //     p -> v (the fan through the cloth): 0 where the cloth makes a straight angle, 2 pi / n
 //     at each corner of a regular n-gon, -2 pi / n round a regular n-gon hole; positive where
@@ -26,8 +26,9 @@
 // the part of the boundary's 3D turning (summed over its vertices) that is the geodesic
 // turning of vertices whose sign differs from both their neighbours' along the loop: 0 for
 // a convex or smoothly waving loop, about 1 for a flat saw tooth. Weighed against the 3D
-// turning, not the geodesic, so a hem that runs straight within the cloth round a body does
-// not count the rounding and the strain's noise in its geodesic turning as a zig-zag.
+// turning rather than the geodesic: a hem that runs straight within the cloth round a body
+// has next to no geodesic turning, and a drape's strain adds noise to it that alternates in
+// sign, which against its own size would read as a zig-zag.
 // Based on: the discrete Gauss-Bonnet theorem for a surface with boundary, whose boundary
 // term is pi minus the angle sum (e.g. Crane, "Discrete Differential Geometry: An Applied
 // Introduction", 2018); Polthier & Schmies, "Straightest geodesics on polyhedral surfaces"
