@@ -16,9 +16,10 @@
 // What the picture shows meets 12 degrees on every garment, rest and draped, the default
 // dress's included: with one level of display mesh (ClothingLayer.displaySubdivision) the
 // medians are 4.3 to 5.5 at rest and 4.9 to 7.2 draped, with two 2.2 to 2.9 and 2.4 to 3.5.
-// "No worse draped than at rest" does not hold on the display mesh either (the skirt's 4.3
-// rest, 6.1 draped at one level): a fold is in the drape's shape, which the display mesh
-// follows; it smooths the corners between the folds' edges, not the folds.
+// "No worse draped than at rest" in 3D does not hold on the display mesh either (the skirt's
+// 4.3 rest, 6.1 draped at one level): a fold is in the drape's shape, which the display mesh
+// follows; it smooths the corners between the folds' edges, not the folds. Within the cloth
+// it holds (below).
 //
 // A drape folds a hem, which adds turning the rest shape has not got: a draped hem turns
 // more than its rest shape wherever it folds, so "no worse than at rest" holds only up to

@@ -192,6 +192,19 @@ TEST(BoundaryTurning, MovesOnlyAsFarAsTheStrainsAllow) {
   }
 }
 
+// Two right triangles touching at one vertex (a bow tie, two loops through it): at that
+// vertex each loop turns by 180 minus its own triangle's 90 degrees, not minus both.
+TEST(BoundaryTurning, LoopsThatTouchEachTurnThroughTheirOwnCloth) {
+  const std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(-1, 0, 0), Vec3(0, -1, 0)};
+  const BoundaryTurning turning({{0, 1, 2}, {0, 3, 4}});
+  const std::vector<std::vector<BoundaryTurning::Turn>> loops = turning.turns(x);
+  ASSERT_EQ(loops.size(), 2u);
+  for (const std::vector<BoundaryTurning::Turn>& loop : loops) {
+    for (const BoundaryTurning::Turn& turn : loop) EXPECT_NEAR(turn.geodesic, turn.vertex == 0 ? 90.0 : 135.0, 1e-9);
+    EXPECT_NEAR(geodesicSum(loop), 360.0, 1e-9);
+  }
+}
+
 TEST(BoundaryTurning, AClosedSurfaceHasNoBoundary) {
   const TriangleMesh ball = meshes::sphere(0.1, 16, 8);
   const BoundaryTurning::Summary summary = BoundaryTurning(ball.triangles).summary(ball.vertices);
