@@ -11,9 +11,8 @@
 #include "Statistics.h"
 #include "io/MakeHumanFiles.h"
 #include "io/MakeHumanRig.h"
+#include "io/MakeHumanSession.h"
 #include "io/SizeChartFile.h"
-#include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
 #include "sim/body/SkinParts.h"
 #include "sim/collision/SelfIntersections.h"
 #include "sim/garment/SizeGrading.h"
@@ -46,10 +45,6 @@ struct Row {
   std::string refused;      // the fit's one line, when it refused
 };
 
-std::vector<MeasurementGoal> goalsOf(const ChartSize& set) {
-  return {{"stature", set.stature}, {"bust_girth", set.bust}, {"waist_girth", set.waist}, {"hip_girth", set.hip}};
-}
-
 // What the study checks each body against: the skin's parts and which of them cross in the base mesh.
 struct Reference {
   std::vector<int> parts;
@@ -64,18 +59,16 @@ std::string newPartCrossings(const std::vector<TrianglePair>& pairs, const Refer
   return out;
 }
 
-Row study(const HumanModel& model, const ChartSize& set, const Reference& base, int repeat) {
+Row study(MakeHumanSession& human, const ChartSize& set, const Reference& base, int repeat) {
   Row row;
   row.set = set;
-  HumanParameters start;
-  start.macro.gender = set.sex == Sex::Male ? 1.0 : 0.0;
   std::vector<double> times, cpu;
   BodyFitResult fit;
   try {
     for (int r = 0; r < repeat; ++r) {
       const auto t0 = std::chrono::steady_clock::now();
       const double c0 = threadSeconds();
-      fit = fitBody(model, start, goalsOf(set));
+      fit = human.fit(set);
       cpu.push_back(threadSeconds() - c0);
       times.push_back(secondsSince(t0));
     }
@@ -86,7 +79,7 @@ Row study(const HumanModel& model, const ChartSize& set, const Reference& base, 
   row.seconds = median(times);
   row.cpuSeconds = median(cpu);
   row.iterations = fit.iterations;
-  for (const MeasurementGoal& goal : goalsOf(set))
+  for (const MeasurementGoal& goal : MakeHumanSession::goals(set))
     row.worstError = std::max(row.worstError, std::abs(fit.achieved.byName(goal.key) - goal.value));
   const double c0 = threadSeconds();
   const std::vector<TrianglePair> pairs = selfIntersections(fit.body);
@@ -110,10 +103,9 @@ bool writeRows(const std::string& path, const std::vector<Row>& rows) {
   });
 }
 
-int runSets(const std::string& dir, const BodyStudyOptions& options) {
+int runSets(MakeHumanSession& human, const BodyStudyOptions& options) {
   const auto loadStart = std::chrono::steady_clock::now();
-  TargetLibrary library(dir);
-  const HumanModel model = loadHumanModel(dir, library);
+  const HumanModel& model = human.model();
   const std::vector<ChartSize> sets = bodyCheckSets(readSizeChart(defaultSizeChartPath()));
   for (const double gender : {0.0, 1.0})
     for (const double s : {0.0, 0.5, 1.0}) {  // reads the targets the fits blend
@@ -123,7 +115,7 @@ int runSets(const std::string& dir, const BodyStudyOptions& options) {
     }
   const double load = secondsSince(loadStart);
   Reference base;
-  base.parts = skinTriangleParts(readHumanRig(dir, model.base().fileVertexCount), model.base());
+  base.parts = skinTriangleParts(readHumanRig(human.dir(), model.base().fileVertexCount), model.base());
   const std::vector<TrianglePair> baseCrossings = selfIntersections(model.base().skin);
   base.crossing = crossingLabels(baseCrossings, base.parts);
 
@@ -131,7 +123,7 @@ int runSets(const std::string& dir, const BodyStudyOptions& options) {
   std::vector<double> times, cpu, checks;
   size_t refused = 0, crossing = 0;
   for (const ChartSize& set : sets) {
-    rows.push_back(study(model, set, base, options.repeat));
+    rows.push_back(study(human, set, base, options.repeat));
     const Row& r = rows.back();
     if (!r.refused.empty()) std::printf("%s %s: %s\n", sexName(set.sex), set.name.c_str(), r.refused.c_str());
     if (r.refused.empty()) times.push_back(r.seconds), cpu.push_back(r.cpuSeconds), checks.push_back(r.checkSeconds);
@@ -156,13 +148,13 @@ int runSets(const std::string& dir, const BodyStudyOptions& options) {
 }  // namespace
 
 int runBodyStudy(const BodyStudyOptions& options) {
-  const std::string dir = findMakeHumanData();
-  if (dir.empty()) {
+  MakeHumanSession human;
+  if (human.dir().empty()) {
     std::fprintf(stderr, "figment-bench: %s\n", kMakeHumanDataMissing);
     return 1;
   }
   try {
-    return runSets(dir, options);
+    return runSets(human, options);
   } catch (const std::exception& error) {  // a chart, a data file or a body it cannot read
     std::fprintf(stderr, "figment-bench: %s\n", error.what());
     return 1;

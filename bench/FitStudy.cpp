@@ -10,9 +10,8 @@
 #include "CsvFile.h"
 #include "Statistics.h"
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanSession.h"
 #include "io/SizeChartFile.h"
-#include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
 #include "sim/fit/SizeFitter.h"
 
 namespace figment::bench {
@@ -82,7 +81,7 @@ ChartSize along(const std::vector<ChartSize>& sizes, double position) {
   return c;
 }
 
-void gridRows(SizeFitter& fitter, const HumanModel& model, const SizeChart& chart, const FitStudyOptions& options,
+void gridRows(SizeFitter& fitter, MakeHumanSession& human, const SizeChart& chart, const FitStudyOptions& options,
               const std::string& style, Sex sex, std::vector<GridRow>& rows) {
   const std::vector<ChartSize>& sizes = chart.sizes(sex);
   const double low = -options.gridBeyond, high = static_cast<double>(sizes.size()) - 1 + options.gridBeyond;
@@ -90,14 +89,8 @@ void gridRows(SizeFitter& fitter, const HumanModel& model, const SizeChart& char
     const double position = low + (high - low) * k / std::max(1, options.grid - 1);
     const ChartSize c = along(sizes, position);
     GridRow row{style, sexName(sex), position, c.bust, c.waist, c.hip, ""};
-    HumanParameters start;
-    start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
     try {
-      const TriangleMesh body =
-          fitBody(model, start,
-                  {{"stature", c.stature}, {"bust_girth", c.bust}, {"waist_girth", c.waist}, {"hip_girth", c.hip}})
-              .body;
-      row.recommended = fitter.recommend(body, sex, true).recommended;
+      row.recommended = fitter.recommend(human.fit(c).body, sex, true).recommended;
     } catch (const UnreachableMeasurement&) {
     }
     std::printf("grid %s %s %.2f (bust %.3f waist %.3f hip %.3f) -> %s\n", style.c_str(), sexName(sex), position,
@@ -170,13 +163,12 @@ int writeFitCsv(const FitStudyOptions& options, const SizeChart& chart, const st
 }  // namespace
 
 int runFitStudy(const FitStudyOptions& options) {
-  const std::string dir = findMakeHumanData();
-  if (dir.empty()) {
+  MakeHumanSession human;
+  if (human.dir().empty()) {
     std::fprintf(stderr, "figment-bench: %s\n", kMakeHumanDataMissing);
     return 1;
   }
-  TargetLibrary library(dir);
-  const HumanModel model = loadHumanModel(dir, library);
+  const HumanModel& model = human.model();
   const SizeChart chart = readSizeChart(defaultSizeChartPath());
   std::vector<ChartRow> rows;
   std::vector<GridRow> grid;
@@ -190,7 +182,7 @@ int runFitStudy(const FitStudyOptions& options) {
     for (const std::string& sexText : options.sexes) {
       const Sex sex = sexText == "male" ? Sex::Male : Sex::Female;
       chartRows(fitter, chart, styleName, sex, options.repeat, rows);
-      gridRows(fitter, model, chart, options, styleName, sex, grid);
+      gridRows(fitter, human, chart, options, styleName, sex, grid);
     }
   }
   return writeFitCsv(options, chart, rows, grid);

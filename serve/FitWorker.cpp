@@ -5,9 +5,7 @@
 
 #include "io/MakeHumanFiles.h"
 #include "io/RecommendationJson.h"
-#include "io/TargetLibrary.h"
 #include "serve/FitRequest.h"
-#include "sim/body/BodyFit.h"
 #include "sim/fit/SizeFitter.h"
 
 namespace figment::serve {
@@ -25,18 +23,13 @@ FitWorker::FitWorker(SizeChart chart) : chart_(std::move(chart)) {}
 FitWorker::~FitWorker() = default;
 
 std::string FitWorker::loadModel() {
-  if (model_) return "";
-  const std::string dir = findMakeHumanData();
-  if (dir.empty()) return kMakeHumanDataMissing;
-  library_ = std::make_unique<TargetLibrary>(dir);
-  model_ = std::make_unique<HumanModel>(loadHumanModel(dir, *library_));
+  if (human_.dir().empty()) return kMakeHumanDataMissing;
+  human_.model();
   return "";
 }
 
 FitWorker::Answer FitWorker::advise(const FitRequest& request) {
   if (const std::string error = loadModel(); !error.empty()) return failure(500, error);
-  HumanParameters start;
-  start.macro.gender = request.sex == Sex::Male ? 1.0 : 0.0;
   // In figment-size's order (its keys sorted): the fit's least squares see the goals in
   // order, and the same body must get the same answer from the program and the service.
   const std::vector<MeasurementGoal> goals = {{"bust_girth", request.body.bust},
@@ -45,7 +38,7 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
                                               {"waist_girth", request.body.waist}};
   TriangleMesh body;
   try {
-    body = fitBody(*model_, start, goals).body;
+    body = human_.fit(request.sex, goals).body;
   } catch (const UnreachableMeasurement& error) {
     return failure(422, std::string("no body of these measurements can be made: ") + error.what());
   }
@@ -54,13 +47,10 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
 
 std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {
   if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
-  HumanParameters start;
-  start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
-  // HumanBody's order (nodes/body/HumanBody.cpp: goalsOf), so the answer is the node's.
-  const std::vector<MeasurementGoal> goals = {
-      {"stature", body.stature}, {"bust_girth", body.bust}, {"waist_girth", body.waist}, {"hip_girth", body.hips}};
+  // Made as a chart body, in HumanBody's order (nodes/body/HumanBody.cpp: goalsOf), so the
+  // answer is the node's.
   try {
-    fitBody(*model_, start, goals);
+    human_.fit(ChartSize{sex, "", "", body.stature, body.bust, body.waist, body.hips});
   } catch (const UnreachableMeasurement& error) {
     return error.what();
   }
@@ -69,7 +59,7 @@ std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {
 
 SizeFitter& FitWorker::fitter(const std::string& style) {
   std::unique_ptr<SizeFitter>& fitter = fitters_[style];
-  if (!fitter) fitter = std::make_unique<SizeFitter>(*model_, chart_, *findStyle(style));
+  if (!fitter) fitter = std::make_unique<SizeFitter>(human_.model(), chart_, *findStyle(style));
   return *fitter;
 }
 

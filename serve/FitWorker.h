@@ -9,14 +9,13 @@
 #include <memory>
 #include <string>
 
+#include "io/MakeHumanSession.h"
 #include "serve/Catalogue.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment {
-class HumanModel;
 class SizeFitter;
-class TargetLibrary;
 }  // namespace figment
 
 namespace figment::serve {
@@ -52,8 +51,7 @@ class FitWorker {
   SizeFitter& fitter(const std::string& style);
 
   SizeChart chart_;
-  std::unique_ptr<TargetLibrary> library_;
-  std::unique_ptr<HumanModel> model_;
+  MakeHumanSession human_;                                      // the worker's: read on its first fit request
   std::map<std::string, std::unique_ptr<SizeFitter>> fitters_;  // by style
 };
 

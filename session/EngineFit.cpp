@@ -11,14 +11,12 @@
 #include <optional>
 
 #include "io/GarmentCatalogue.h"
-#include "io/MakeHumanFiles.h"
-#include "io/TargetLibrary.h"
+#include "io/MakeHumanSession.h"
 #include "nodes/body/HumanBody.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/cloth/CatalogueGarment.h"
 #include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/ClothEngineInputs.h"
 #include "nodes/render/ClothingLayer.h"
 #include "sim/body/BodyMeasurements.h"
 #include "sim/fit/FitRegion.h"
@@ -111,9 +109,9 @@ std::vector<EngineFit> drawnEngines(SoSeparator* scene) {
 bool fillInputs(EngineFit& fit) {
   const ClothEngine& engine = *fit.engine;
   fit.name = engine.getName().getString();
-  fit.rest = garmentFromFields(engine.restPoints, engine.coordIndex);
+  fit.rest = engine.restGarment();
   if (fit.rest.vertices.size() != fit.positions.size()) return false;
-  fit.parameters = parametersFromFields(engine);
+  fit.parameters = engine.clothParameters();
   fit.limits = fabricLimits(engine.material.getValue().getString());
   const MeshFile& body = *meshBody(engine);
   fit.bodyMesh = body.collisionSurface();
@@ -148,12 +146,9 @@ void measureRegions(EngineFit& fit, const GarmentStyle* style) {
 }
 
 // Verdicts against the garment's size draped on its own chart body, as figment-size's.
-void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& chart) {
-  const std::string dir = findMakeHumanData();
-  if (dir.empty()) return;
-  TargetLibrary library(dir);
-  const HumanModel model = loadHumanModel(dir, library);
-  SizeFitter fitter(model, chart, *item.style);
+void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& chart, MakeHumanSession& human) {
+  if (human.dir().empty()) return;
+  SizeFitter fitter(human.model(), chart, *item.style);
   const std::vector<RegionFit>& own = fitter.graded(item.sex, item.size).ownFit;
   std::vector<RegionFit> intended;
   for (const RegionFit& region : fit.regions) {
@@ -167,7 +162,7 @@ void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& ch
 
 }  // namespace
 
-std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, bool verdicts) {
+std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeHumanSession* verdicts) {
   std::vector<EngineFit> fits;
   for (EngineFit& fit : drawnEngines(scene)) {
     if (!fillInputs(fit)) continue;
@@ -181,7 +176,7 @@ std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, bool 
         item = shop->resolve(fit.garment);
       }
       if (regions) measureRegions(fit, item ? item->style : nullptr);
-      if (regions && verdicts && item && !fit.regions.empty()) judgeRegions(fit, *item, shop->chart());
+      if (regions && verdicts && item && !fit.regions.empty()) judgeRegions(fit, *item, shop->chart(), *verdicts);
     } catch (const std::exception&) {
       fit.verdicts.clear();
       fit.text.clear();

@@ -19,6 +19,10 @@ class ClothingLayer;
 class SoGroup;
 class SoSeparator;
 
+namespace figment {
+class MakeHumanSession;
+}
+
 namespace figment::session {
 
 struct EngineFit {
@@ -43,9 +47,10 @@ struct EngineFit {
 };
 
 // The scene's draped garments on mesh bodies, in scene order: drape the scene first.
-// `regions` false leaves the regions out (a fit map needs none); `verdicts` true judges the
-// regions of a catalogue garment against its size on its own chart body (that body and
-// drape are made here: about 1 s, and MakeHuman's data; without it, no verdicts).
-std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, bool verdicts);
+// `regions` false leaves the regions out (a fit map needs none). With `verdicts`, the
+// caller's MakeHuman session, the regions of a catalogue garment are judged against its
+// size on its own chart body (that body and drape are made here with it: about 1 s, and
+// MakeHuman's data; without the data, no verdicts); null: no verdicts.
+std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeHumanSession* verdicts);
 
 }  // namespace figment::session

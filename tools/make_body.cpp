@@ -16,10 +16,9 @@
 
 #include "ToolMain.h"
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanSession.h"
 #include "io/MeshExport.h"
 #include "io/MeshSetExport.h"
-#include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
 
 namespace {
 
@@ -83,12 +82,10 @@ void printJson(const figment::BodyFitResult& fit) {
 
 int make(const figment::HumanParameters& start, const std::vector<figment::MeasurementGoal>& goals,
          const std::string& output) {
-  const std::string dir = figment::findMakeHumanData();
-  if (dir.empty()) return kTool.fail(figment::kMakeHumanDataMissing);
+  figment::MakeHumanSession human;
+  if (human.dir().empty()) return kTool.fail(figment::kMakeHumanDataMissing);
   try {
-    figment::TargetLibrary library(dir);
-    const figment::HumanModel model = figment::loadHumanModel(dir, library);
-    const figment::BodyFitResult fit = figment::fitBody(model, start, goals);
+    const figment::BodyFitResult fit = human.fit(start, goals);
     writeBody(figment::numberedByFirstUse(fit.body), output);
     printJson(fit);
     return 0;

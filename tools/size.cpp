@@ -16,11 +16,10 @@
 #include "io/FitMapScene.h"
 #include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanSession.h"
 #include "io/MeshExport.h"
 #include "io/RecommendationJson.h"
 #include "io/SizeChartFile.h"
-#include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
 #include "sim/fit/FitMap.h"
 #include "sim/fit/SizeFitter.h"
 
@@ -77,7 +76,7 @@ void writeFitMaps(const Request& request, figment::SizeFitter& fitter, const fig
 }
 
 // The recommendation for `body`; the exit status.
-int recommend(const Request& request, figment::HumanModel& model, const figment::TriangleMesh& body) {
+int recommend(const Request& request, const figment::HumanModel& model, const figment::TriangleMesh& body) {
   const figment::SizeChart chart = figment::readSizeChart(request.chart);
   const figment::GarmentStyle& style = *figment::findStyle(request.style);
   figment::SizeFitter fitter(model, chart, style);
@@ -101,11 +100,10 @@ int recommend(const Request& request, figment::HumanModel& model, const figment:
 }
 
 int run(const Request& request) {
-  const std::string dir = figment::findMakeHumanData();
-  if (dir.empty()) return kTool.fail(figment::kMakeHumanDataMissing);
+  figment::MakeHumanSession human;
+  if (human.dir().empty()) return kTool.fail(figment::kMakeHumanDataMissing);
   try {
-    figment::TargetLibrary library(dir);
-    figment::HumanModel model = figment::loadHumanModel(dir, library);
+    const figment::HumanModel& model = human.model();
     if (!request.body.empty()) {
       figment::tools::BodyInput input;
       input.name = request.body;
@@ -113,11 +111,10 @@ int run(const Request& request) {
         return recommend(request, model, body);
       });
     }
-    figment::HumanParameters start;
-    start.macro.gender = request.sex == "male" ? 1.0 : 0.0;
     std::vector<figment::MeasurementGoal> goals;
     for (const auto& [key, value] : request.typed) goals.push_back({key, value});
-    return recommend(request, model, figment::fitBody(model, start, goals).body);
+    return recommend(request, model,
+                     human.fit(request.sex == "male" ? figment::Sex::Male : figment::Sex::Female, goals).body);
   } catch (const std::exception& error) {
     return kTool.fail(error.what());
   }

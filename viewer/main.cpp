@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "io/DrapeCache.h"
+#include "io/MakeHumanSession.h"
 #include "nodes/Init.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
@@ -292,6 +293,16 @@ std::string exportDrape(const SceneSession& session, const Options& options, Wri
   return error;
 }
 
+// The garments' fit on their bodies, for the fit map's colours and the statistics; the
+// statistics' verdicts judge against chart bodies made with MakeHuman's data, read only then.
+std::vector<figment::session::EngineFit> measureFits(const SceneSession& session, const Options& options) {
+  using figment::session::measureEngineFits;
+  if (options.fitMap.empty() && options.stats.empty()) return {};
+  if (options.stats.empty()) return measureEngineFits(session.scene(), false, nullptr);
+  figment::MakeHumanSession makeHuman;
+  return measureEngineFits(session.scene(), true, &makeHuman);
+}
+
 int render(const Options& options, const std::optional<ImagePlan>& images) {
   using namespace figment::session;
   using namespace figment::viewer;
@@ -318,9 +329,7 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
   if (options.strict && !session.verdicts().empty()) return 1;
 
   // The garments' fit on their bodies: for the fit map's colours and the statistics.
-  std::vector<figment::session::EngineFit> fits;
-  if (!options.fitMap.empty() || !options.stats.empty())
-    fits = measureEngineFits(session.scene(), !options.stats.empty(), !options.stats.empty());
+  const std::vector<figment::session::EngineFit> fits = measureFits(session, options);
   if (!options.fitMap.empty() && fits.empty())
     return fail("--fit-map " + options.fitMap,
                 "no garment drawn by a ClothingLayer on a mesh body (a HumanBody or MeshFile) to colour");

@@ -10,15 +10,13 @@
 
 #include <algorithm>
 #include <initializer_list>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "io/MakeHumanFiles.h"
 #include "io/MakeHumanRig.h"
-#include "io/TargetLibrary.h"
+#include "io/MakeHumanSession.h"
 #include "sim/body/BodyFit.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
@@ -46,9 +44,7 @@ struct HumanBody::Data {
   ~Data() {
     if (material) material->unref();
   }
-  std::string dir;
-  std::unique_ptr<figment::TargetLibrary> library;
-  std::optional<figment::HumanModel> model;
+  figment::MakeHumanSession human;               // this node's: the targets it blends, read once
   std::shared_ptr<const figment::HumanRig> rig;  // read on the first pose
   std::shared_ptr<const figment::RigSkin> skin;
   std::shared_ptr<const PoseMotion> motion;  // null: the rest pose
@@ -145,12 +141,7 @@ bool HumanBody::load(SoInput* in) {
     if (fileName.getValue().getLength() != 0)
       throw std::invalid_argument("fileName \"" + std::string(fileName.getValue().getString()) +
                                   "\": a HumanBody makes its mesh; leave fileName empty");
-    if (!data_->model) {
-      data_->dir = figment::findMakeHumanData();
-      if (data_->dir.empty()) throw std::runtime_error(figment::kMakeHumanDataMissing);
-      data_->library = std::make_unique<figment::TargetLibrary>(data_->dir);
-      data_->model.emplace(figment::loadHumanModel(data_->dir, *data_->library));
-    }
+    const figment::HumanModel& model = data_->human.model();
     if (skinTone.getValue() < 0 || skinTone.getValue() > 10)
       throw std::invalid_argument("skinTone " + std::to_string(skinTone.getValue()) + " is not 0 (none) or 1 to 10");
     if (!(poseTime.getValue() >= 0.0f))
@@ -159,9 +150,9 @@ bool HumanBody::load(SoInput* in) {
     figment::HumanParameters parameters = parametersOf(*this);
     figment::TriangleMesh body;
     if (goals.empty()) {
-      body = data_->model->make(parameters);
+      body = model.make(parameters);
     } else {
-      figment::BodyFitResult fit = figment::fitBody(*data_->model, parameters, goals);
+      figment::BodyFitResult fit = data_->human.fit(parameters, goals);
       body = std::move(fit.body);
       parameters = fit.parameters;
     }
@@ -212,15 +203,15 @@ figment::TriangleMesh HumanBody::posed(const figment::HumanParameters& parameter
   data_->moving.reset();
   if (pose.getValue() == A_POSE && rotatedJoints.getNum() == 0 && rotations.getNum() == 0) return rest;
   if (!data_->rig) {
-    const int count = data_->model->base().fileVertexCount;
-    data_->rig = std::make_shared<const figment::HumanRig>(figment::readHumanRig(data_->dir, count));
-    data_->skin =
-        std::make_shared<const figment::RigSkin>(figment::bindSkin(*data_->rig, data_->model->base().fileIndex));
+    const figment::HumanModel& model = data_->human.model();
+    data_->rig = std::make_shared<const figment::HumanRig>(
+        figment::readHumanRig(data_->human.dir(), model.base().fileVertexCount));
+    data_->skin = std::make_shared<const figment::RigSkin>(figment::bindSkin(*data_->rig, model.base().fileIndex));
   }
   auto motion = std::make_shared<PoseMotion>();
   motion->rig = data_->rig;
   motion->skin = data_->skin;
-  motion->placed = data_->rig->place(data_->model->fileVertices(parameters));
+  motion->placed = data_->rig->place(data_->human.model().fileVertices(parameters));
   motion->pose = poseOf(*this, *data_->rig, motion->placed);
   motion->method = skinning.getValue() == LINEAR_BLEND ? figment::SkinningMethod::LinearBlend
                                                        : figment::SkinningMethod::DualQuaternion;

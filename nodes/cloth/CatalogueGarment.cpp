@@ -4,23 +4,19 @@
 #include <Inventor/errors/SoDebugError.h>
 #include <Inventor/errors/SoReadError.h>
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "io/GarmentCatalogue.h"
-#include "io/MakeHumanFiles.h"
-#include "io/TargetLibrary.h"
+#include "io/MakeHumanSession.h"
 #include "nodes/SceneFiles.h"
-#include "sim/body/BodyFit.h"
 
 SO_NODE_SOURCE(CatalogueGarment);
 
 struct CatalogueGarment::Data {
   std::vector<std::string> sceneDirectories;  // kept at read time for later loads
-  std::unique_ptr<figment::TargetLibrary> library;
-  std::optional<figment::HumanModel> model;
+  figment::MakeHumanSession human;            // this node's: the targets its chart bodies blend, read once
 };
 
 void CatalogueGarment::initClass() {
@@ -89,21 +85,7 @@ bool CatalogueGarment::load(SoInput* in) {
     } catch (const std::invalid_argument& bad) {
       throw std::invalid_argument(std::string("garment ") + bad.what());
     }
-    if (!data_->model) {
-      const std::string dir = figment::findMakeHumanData();
-      if (dir.empty()) throw std::runtime_error(figment::kMakeHumanDataMissing);
-      data_->library = std::make_unique<figment::TargetLibrary>(dir);
-      data_->model.emplace(figment::loadHumanModel(dir, *data_->library));
-    }
-    const figment::ChartSize& size = shop.chart().sizes(item.sex)[item.size];
-    figment::HumanParameters start;
-    start.macro.gender = item.sex == figment::Sex::Male ? 1.0 : 0.0;
-    const figment::TriangleMesh body = figment::fitBody(*data_->model, start,
-                                                        {{"stature", size.stature},
-                                                         {"bust_girth", size.bust},
-                                                         {"waist_girth", size.waist},
-                                                         {"hip_girth", size.hip}})
-                                           .body;
+    const figment::TriangleMesh body = data_->human.fit(shop.chart().sizes(item.sex)[item.size]).body;
     const figment::TriangleMesh cut = figment::cutGarment(*item.style, body);
     setMesh(cut, cut);
     colour.setValue(colourOf(item.colour));

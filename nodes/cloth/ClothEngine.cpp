@@ -183,6 +183,14 @@ std::string ClothEngine::label() const {
   return name.getLength() ? "ClothEngine '" + std::string(name.getString()) + "'" : "ClothEngine";
 }
 
+figment::TriangleMesh ClothEngine::restGarment() const {
+  return figment::garmentFromFields(restPoints, coordIndex);
+}
+
+figment::ClothParameters ClothEngine::clothParameters() const {
+  return figment::parametersFromFields(*this);
+}
+
 namespace {
 
 // What the run's ending says (sim/cloth/DrapeVerdict.h): "" when clean.

@@ -18,6 +18,8 @@
 namespace figment {
 class ClothSolver;
 struct DrapeContext;
+struct ClothParameters;
+struct TriangleMesh;
 }  // namespace figment
 
 /*!
@@ -311,6 +313,12 @@ class ClothEngine : public SoEngine {
   double timeStepSeconds() const;
   // "ClothEngine 'Name'", or "ClothEngine" when it has no name: how messages name it.
   std::string label() const;
+  // What the fields give to drape, as the engine reads them, for a program that measures
+  // a drape (session/EngineFit.h): the garment (restPoints, coordIndex's faces split into
+  // triangles) and the material and run parameters, validated. Each throws
+  // std::invalid_argument naming the field and value when an input cannot be used.
+  figment::TriangleMesh restGarment() const;
+  figment::ClothParameters clothParameters() const;
 
  protected:
   ~ClothEngine() override;

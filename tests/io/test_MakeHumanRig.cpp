@@ -10,7 +10,7 @@
 
 #include "io/MakeHumanFiles.h"
 #include "io/MakeHumanRig.h"
-#include "io/TargetLibrary.h"
+#include "io/MakeHumanSession.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 
@@ -27,11 +27,9 @@ double enclosedVolume(const std::vector<Vec3>& v, const std::vector<Triangle>& t
 class MakeHumanRigTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir = findMakeHumanData();
-    if (dir.empty()) GTEST_SKIP() << "MakeHuman's data not found";
-    library = std::make_unique<TargetLibrary>(dir);
-    model.emplace(loadHumanModel(dir, *library));
-    rig.emplace(readHumanRig(dir, model->base().fileVertexCount));
+    if (human.dir().empty()) GTEST_SKIP() << "MakeHuman's data not found";
+    model = &human.model();
+    rig.emplace(readHumanRig(human.dir(), model->base().fileVertexCount));
   }
   std::vector<PlacedBone> placedOn(const HumanParameters& p) const { return rig->place(model->fileVertices(p)); }
   Vec3 headOf(const std::vector<PlacedBone>& placed, const std::vector<Eigen::Isometry3d>& g,
@@ -39,9 +37,8 @@ class MakeHumanRigTest : public ::testing::Test {
     const int b = rig->require(bone);
     return g[b] * placed[b].head;
   }
-  std::string dir;
-  std::unique_ptr<TargetLibrary> library;
-  std::optional<HumanModel> model;
+  MakeHumanSession human;
+  const HumanModel* model = nullptr;  // human's
   std::optional<HumanRig> rig;
 };
 

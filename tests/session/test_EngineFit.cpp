@@ -57,7 +57,7 @@ class EngineFitTest : public ::testing::Test {
     EXPECT_TRUE(session_.load(path)) << session_.loadError();
     session_.drape();
     EXPECT_EQ(session_.firstError(), "");
-    return measureEngineFits(session_.scene(), false, false);
+    return measureEngineFits(session_.scene(), false, nullptr);
   }
   figment::test::TempDir dir_;
   SceneSession session_;

@@ -59,7 +59,7 @@ TEST(FitMapDrawing, ColoursTheGarmentsVerticesByTheirBands) {
   ASSERT_TRUE(session.load(dir.file("scene.iv", tubeScene()))) << session.loadError();
   session.drape();
   ASSERT_EQ(session.firstError(), "");
-  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, false);
+  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, nullptr);
   ASSERT_EQ(fits.size(), 1u);
 
   // Unstretched: every vertex in the first band. 17 mm off the skin (the stand-off less the

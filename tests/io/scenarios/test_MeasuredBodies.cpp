@@ -12,10 +12,10 @@
 
 #include "io/MakeHumanFiles.h"
 #include "io/MakeHumanRig.h"
+#include "io/MakeHumanSession.h"
 #include "io/MeshExport.h"
 #include "io/MeshImport.h"
 #include "io/SizeChartFile.h"
-#include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
 #include "sim/body/SkinParts.h"
 #include "sim/collision/SelfIntersections.h"
@@ -30,11 +30,9 @@ namespace {
 class MeasuredBodies : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string dir = findMakeHumanData();
-    if (dir.empty()) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
-    library = std::make_unique<TargetLibrary>(dir);
-    model.emplace(loadHumanModel(dir, *library));
-    parts = skinTriangleParts(readHumanRig(dir, model->base().fileVertexCount), model->base());
+    if (human.dir().empty()) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
+    model = &human.model();
+    parts = skinTriangleParts(readHumanRig(human.dir(), model->base().fileVertexCount), model->base());
     baseCrossing = crossingLabels(selfIntersections(model->base().skin), parts);
   }
   // The part pairs that cross on `body` and not in the base mesh, named: "left thigh x right thigh".
@@ -50,8 +48,8 @@ class MeasuredBodies : public ::testing::Test {
     p.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
     return p;
   }
-  std::unique_ptr<TargetLibrary> library;
-  std::optional<HumanModel> model;
+  MakeHumanSession human;
+  const HumanModel* model = nullptr;  // human's
   std::vector<int> parts;
   std::vector<std::pair<int, int>> baseCrossing;
 };

@@ -10,7 +10,7 @@
 
 #include "io/MakeHumanFiles.h"
 #include "io/MakeHumanRig.h"
-#include "io/TargetLibrary.h"
+#include "io/MakeHumanSession.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 #include "sim/collision/MovingMeshCollider.h"
@@ -25,11 +25,9 @@ namespace {
 class PosedDrapes : public ::testing::Test {
  protected:
   void SetUp() override {
-    const std::string dir = findMakeHumanData();
-    if (dir.empty()) GTEST_SKIP() << "MakeHuman's data not found";
-    library = std::make_unique<TargetLibrary>(dir);
-    model.emplace(loadHumanModel(dir, *library));
-    rig.emplace(readHumanRig(dir, model->base().fileVertexCount));
+    if (human.dir().empty()) GTEST_SKIP() << "MakeHuman's data not found";
+    model = &human.model();
+    rig.emplace(readHumanRig(human.dir(), model->base().fileVertexCount));
     skin = bindSkin(*rig, model->base().fileIndex);
     rest = model->make(parameters);
     placed = rig->place(model->fileVertices(parameters));
@@ -78,8 +76,8 @@ class PosedDrapes : public ::testing::Test {
   }
 
   HumanParameters parameters;
-  std::unique_ptr<TargetLibrary> library;
-  std::optional<HumanModel> model;
+  MakeHumanSession human;
+  const HumanModel* model = nullptr;  // human's
   std::optional<HumanRig> rig;
   RigSkin skin;
   TriangleMesh rest;

@@ -17,14 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "io/MakeHumanFiles.h"
-#include "io/SizeChartFile.h"
-#include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
 #include "sim/body/BodyMeasurements.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
+#include "support/ChartBodies.h"
 
 using namespace figment;
 
@@ -47,43 +44,21 @@ void PrintTo(const ChartBody& body, std::ostream* out) {
 
 class SixBodyDrapes : public ::testing::TestWithParam<ChartBody> {
  protected:
-  static void SetUpTestSuite() {
-    const std::string dir = findMakeHumanData();
-    if (dir.empty()) return;
-    library_ = std::make_unique<TargetLibrary>(dir);
-    model_ = std::make_unique<HumanModel>(loadHumanModel(dir, *library_));
-    chart_ = std::make_unique<SizeChart>(readSizeChart(defaultSizeChartPath()));
-  }
-  static void TearDownTestSuite() {
-    chart_.reset();
-    model_.reset();
-    library_.reset();
-  }
+  static void SetUpTestSuite() { bodies_ = test::loadChartBodies(); }
+  static void TearDownTestSuite() { bodies_.reset(); }
   void SetUp() override {
-    if (!model_) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
+    if (!bodies_) GTEST_SKIP() << test::kMakeHumanDataSkip;
   }
 
   static const ChartSize& chartSize(const ChartBody& which) {
-    const std::vector<ChartSize>& sizes = chart_->sizes(which.sex);
+    const std::vector<ChartSize>& sizes = bodies_->chart.sizes(which.sex);
     const size_t n = sizes.size();
     return sizes.at(which.place == Place::Smallest ? 0 : which.place == Place::Middle ? n / 2 : n - 1);
   }
   // The size's body, made to its stature, bust, waist and hip girth.
-  static TriangleMesh chartBody(const ChartBody& which) {
-    const ChartSize& size = chartSize(which);
-    HumanParameters start;
-    start.macro.gender = which.sex == Sex::Male ? 1.0 : 0.0;
-    return fitBody(*model_, start,
-                   {{"stature", size.stature},
-                    {"bust_girth", size.bust},
-                    {"waist_girth", size.waist},
-                    {"hip_girth", size.hip}})
-        .body;
-  }
+  static TriangleMesh chartBody(const ChartBody& which) { return bodies_->human->fit(chartSize(which)).body; }
 
-  static inline std::unique_ptr<TargetLibrary> library_;
-  static inline std::unique_ptr<HumanModel> model_;
-  static inline std::unique_ptr<SizeChart> chart_;
+  static inline std::unique_ptr<test::ChartBodies> bodies_;
 };
 
 // Cloth nodes deeper than 1 mm inside the body (as tests/io/scenarios/test_PosedDrapes.cpp

@@ -15,11 +15,8 @@
 #include <sstream>
 
 #include "io/GarmentCatalogue.h"
-#include "io/MakeHumanFiles.h"
-#include "io/SizeChartFile.h"
-#include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
 #include "sim/fit/SizeFitter.h"
+#include "support/ChartBodies.h"
 #include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
@@ -30,39 +27,33 @@ namespace {
 class SizeRecommendation : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    const std::string dir = findMakeHumanData();
-    if (dir.empty()) return;
-    library_ = std::make_unique<TargetLibrary>(dir);
-    model_ = std::make_unique<HumanModel>(loadHumanModel(dir, *library_));
-    chart_ = std::make_unique<SizeChart>(readSizeChart(defaultSizeChartPath()));
-    pencil_ = std::make_unique<SizeFitter>(*model_, *chart_, *findStyle("pencil"));
+    bodies_ = test::loadChartBodies();
+    if (bodies_) pencil_ = std::make_unique<SizeFitter>(model(), chart(), *findStyle("pencil"));
   }
   static void TearDownTestSuite() {
     pencil_.reset();
-    chart_.reset();
-    model_.reset();
-    library_.reset();
+    bodies_.reset();
   }
   void SetUp() override {
-    if (!model_) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
+    if (!bodies_) GTEST_SKIP() << test::kMakeHumanDataSkip;
   }
-  static int index(Sex sex, const std::string& name) { return chart_->find(sex, name); }
+  static const HumanModel& model() { return bodies_->human->model(); }
+  static const SizeChart& chart() { return bodies_->chart; }
+  static int index(Sex sex, const std::string& name) { return chart().find(sex, name); }
   static const Verdict* verdictAt(const SizeFit& fit, const std::string& region) {
     for (size_t r = 0; r < fit.regions.size(); ++r)
       if (fit.regions[r].name == region) return &fit.verdicts[r];
     return nullptr;
   }
 
-  static inline std::unique_ptr<TargetLibrary> library_;
-  static inline std::unique_ptr<HumanModel> model_;
-  static inline std::unique_ptr<SizeChart> chart_;
+  static inline std::unique_ptr<test::ChartBodies> bodies_;
   static inline std::unique_ptr<SizeFitter> pencil_;
 };
 
 }  // namespace
 
 TEST_F(SizeRecommendation, EachWomensChartBodyGetsItsOwnPencilSkirt) {
-  const std::vector<ChartSize>& sizes = chart_->sizes(Sex::Female);
+  const std::vector<ChartSize>& sizes = chart().sizes(Sex::Female);
   for (size_t i = 0; i < sizes.size(); ++i) {
     const Recommendation r = pencil_->recommend(pencil_->graded(Sex::Female, int(i)).body, Sex::Female);
     EXPECT_EQ(r.recommended, sizes[i].name);
@@ -73,8 +64,8 @@ TEST_F(SizeRecommendation, EachWomensChartBodyGetsItsOwnPencilSkirt) {
 }
 
 TEST_F(SizeRecommendation, EachMensChartBodyGetsItsOwnTShirt) {
-  SizeFitter tshirt(*model_, *chart_, *findStyle("tshirt"));
-  const std::vector<ChartSize>& sizes = chart_->sizes(Sex::Male);
+  SizeFitter tshirt(model(), chart(), *findStyle("tshirt"));
+  const std::vector<ChartSize>& sizes = chart().sizes(Sex::Male);
   for (size_t i = 0; i < sizes.size(); ++i)
     EXPECT_EQ(tshirt.recommend(tshirt.graded(Sex::Male, int(i)).body, Sex::Male).recommended, sizes[i].name);
 }
@@ -101,7 +92,7 @@ TEST_F(SizeRecommendation, EveryCatalogueStyleGivesEachChartBodyItsOwnSizeButThe
   for (const CatalogueStyle& style : catalogue.styles())
     for (const Sex sex : style.sexes) {
       if ((style.name == "pencil" && sex == Sex::Female) || (style.name == "tshirt" && sex == Sex::Male)) continue;
-      SizeFitter fitter(*model_, *chart_, *findStyle(style.name));
+      SizeFitter fitter(model(), chart(), *findStyle(style.name));
       for (const std::string& size : style.sizes(sex)) {
         std::string expected = size, why;
         for (const Exception& e : kExceptions)
@@ -115,20 +106,16 @@ TEST_F(SizeRecommendation, EveryCatalogueStyleGivesEachChartBodyItsOwnSizeButThe
 
 // The body at `position` along the chart (a size's index, fractional; beyond the ends by the
 // end steps), as figment-bench recommend --grid makes it.
-static TriangleMesh chartBodyAt(const HumanModel& model, const SizeChart& chart, Sex sex, double position) {
+static TriangleMesh chartBodyAt(MakeHumanSession& human, const SizeChart& chart, Sex sex, double position) {
   const std::vector<ChartSize>& sizes = chart.sizes(sex);
   const int i = std::clamp(static_cast<int>(std::floor(position)), 0, static_cast<int>(sizes.size()) - 2);
   const double t = position - i;
   const auto at = [&](double ChartSize::*field) {
     return sizes[i].*field + t * (sizes[i + 1].*field - sizes[i].*field);
   };
-  HumanParameters start;
-  start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
-  return fitBody(model, start,
-                 {{"stature", at(&ChartSize::stature)},
-                  {"bust_girth", at(&ChartSize::bust)},
-                  {"waist_girth", at(&ChartSize::waist)},
-                  {"hip_girth", at(&ChartSize::hip)}})
+  return human
+      .fit(ChartSize{sex, "", "", at(&ChartSize::stature), at(&ChartSize::bust), at(&ChartSize::waist),
+                     at(&ChartSize::hip)})
       .body;
 }
 
@@ -137,7 +124,7 @@ static TriangleMesh chartBodyAt(const HumanModel& model, const SizeChart& chart,
 TEST_F(SizeRecommendation, NeverSmallerAsTheBodyGrows) {
   int previous = -1;
   for (double position = 0.5; position <= 4.51; position += 0.5) {
-    const TriangleMesh body = chartBodyAt(*model_, *chart_, Sex::Female, position);
+    const TriangleMesh body = chartBodyAt(*bodies_->human, chart(), Sex::Female, position);
     const int recommended = index(Sex::Female, pencil_->recommend(body, Sex::Female).recommended);
     EXPECT_GE(recommended, previous) << "at " << position;
     previous = recommended;
@@ -151,7 +138,7 @@ TEST_F(SizeRecommendation, NeverSmallerAsTheBodyGrows) {
 TEST_F(SizeRecommendation, NeverSmallerBetweenTheMensGridBodiesJustOverM) {
   std::vector<int> recommended;
   for (const int k : {13, 14}) {
-    const TriangleMesh body = chartBodyAt(*model_, *chart_, Sex::Male, -2.0 + 9.0 * k / 29.0);
+    const TriangleMesh body = chartBodyAt(*bodies_->human, chart(), Sex::Male, -2.0 + 9.0 * k / 29.0);
     const Recommendation r = pencil_->recommend(body, Sex::Male);
     EXPECT_FALSE(r.allTight) << "k = " << k;
     recommended.push_back(index(Sex::Male, r.recommended));
