@@ -59,8 +59,9 @@ TEST_F(MakeHumanSessionData, TheModelIsReadOnceAndKept) {
 TEST_F(MakeHumanSessionData, AChartBodyIsFitBodysToTheSizesFourMeasurements) {
   const ChartSize m{Sex::Male, "M", "48", 1.74, 0.96, 0.84, 1.00};
   const BodyFitResult made = human_.fit(m);
-  const BodyFitResult direct = fitBody(human_.model(), MakeHumanSession::start(Sex::Male),
-                                       {{"stature", 1.74}, {"bust_girth", 0.96}, {"waist_girth", 0.84}, {"hip_girth", 1.00}});
+  const BodyFitResult direct =
+      fitBody(human_.model(), MakeHumanSession::start(Sex::Male),
+              {{"stature", 1.74}, {"bust_girth", 0.96}, {"waist_girth", 0.84}, {"hip_girth", 1.00}});
   ASSERT_EQ(made.body.vertices.size(), direct.body.vertices.size());
   for (size_t i = 0; i < made.body.vertices.size(); ++i) ASSERT_EQ(made.body.vertices[i], direct.body.vertices[i]) << i;
   EXPECT_EQ(made.parameters.macro.gender, 1.0);
