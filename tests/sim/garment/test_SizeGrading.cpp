@@ -54,10 +54,12 @@ TEST(SizeGrading, MeasurementSetsAreEachSizeAtEachStatureOffset) {
   EXPECT_NEAR(sets.back().stature, 1.94, 1e-12);
   // the shipped chart's 6 + 6 sizes give the 60 sets
   std::vector<ChartSize> twelve;
+  // appended, not "F" + std::to_string(i): GCC 12 warns (-Wrestrict) on that operator+
+  const auto named = [](char sex, int i) { return std::string(1, sex).append(std::to_string(i)); };
   for (int i = 0; i < 6; ++i) {
-    twelve.push_back({Sex::Female, "F" + std::to_string(i), std::to_string(32 + 2 * i), 1.68, 0.76 + 0.04 * i,
-                      0.60 + 0.04 * i, 0.84 + 0.04 * i});
-    twelve.push_back({Sex::Male, "M" + std::to_string(i), std::to_string(44 + 2 * i), 1.68 + 0.03 * i, 0.88 + 0.04 * i,
+    twelve.push_back({Sex::Female, named('F', i), std::to_string(32 + 2 * i), 1.68, 0.76 + 0.04 * i, 0.60 + 0.04 * i,
+                      0.84 + 0.04 * i});
+    twelve.push_back({Sex::Male, named('M', i), std::to_string(44 + 2 * i), 1.68 + 0.03 * i, 0.88 + 0.04 * i,
                       0.76 + 0.04 * i, 0.92 + 0.04 * i});
   }
   EXPECT_EQ(bodyCheckSets(SizeChart(twelve)).size(), 60u);
