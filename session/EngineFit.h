@@ -34,9 +34,13 @@ struct EngineFit {
   std::vector<Vec3> positions;               // its drape (m)
   TriangleMesh bodyMesh;                     // the skin it collided with
   std::shared_ptr<const MeshCollider> body;  // and its collider
+  // A posed HumanBody's skin at rest and posed: its regions are found at rest and the
+  // drape carried back to them (sim/fit/PosedSkin.h); null for a standing body.
+  std::shared_ptr<const PosedSkin> pose;
   ClothParameters parameters;                // the engine's (material, clearance, gravity)
   FabricLimits limits;                       // of its material preset (the woven ones' for none)
-  // Per region of the body (empty when the body cannot be measured as a standing human),
+  // Per region of the body (empty when the body, or a posed one's rest pose, cannot be
+  // measured as a standing human),
   // and their verdicts where the intended fit is known (a CatalogueGarment's size on its
   // own chart body); else empty.
   std::vector<RegionFit> regions;
