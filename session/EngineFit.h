@@ -37,8 +37,8 @@ struct EngineFit {
   // A posed HumanBody's skin at rest and posed: its regions are found at rest and the
   // drape carried back to them (sim/fit/PosedSkin.h); null for a standing body.
   std::shared_ptr<const PosedSkin> pose;
-  ClothParameters parameters;                // the engine's (material, clearance, gravity)
-  FabricLimits limits;                       // of its material preset (the woven ones' for none)
+  ClothParameters parameters;  // the engine's (material, clearance, gravity)
+  FabricLimits limits;         // of its material preset (the woven ones' for none)
   // Per region of the body (empty when the body, or a posed one's rest pose, cannot be
   // measured as a standing human),
   // and their verdicts where the intended fit is known (a CatalogueGarment's size on its

@@ -24,6 +24,7 @@ constexpr double kLevelStep = 0.01;     // m down the band when the garment miss
 // rest; past kTornShare of a region's edges its girth and drop are not told.
 constexpr double kTearGrowth = 1.5, kTearSlack = 0.005;
 constexpr double kTornShare = 0.10;
+constexpr double kStray = 0.03;  // m a node may be carried off its neighbours' move (see toldPositions)
 
 // Each node's share of the draped area (a third of each section it is a corner of), m^2.
 std::vector<double> nodeAreas(const TriangleMesh& rest, const std::vector<Vec3>& x) {
@@ -191,23 +192,28 @@ void reachedTops(const TriangleMesh& rest, const std::vector<Vec3>& x, const std
 
 namespace {
 
+// Whether the edge a-b parts when carried back to the standing body (`at`).
+bool torn(const std::vector<Vec3>& at, const std::vector<Vec3>& x, int a, int b) {
+  return (at[a] - at[b]).norm() > kTearGrowth * (x[a] - x[b]).norm() + kTearSlack;
+}
+
 // On a posed body: each region whose garment edges tear past kTornShare when carried back
 // to the standing body (`at`) is told unmeasured, its girth and drop left out.
 void markTorn(const FitInput& input, const std::vector<Vec3>& at, const std::vector<FitRegion>& regions,
               std::vector<RegionFit>& fits) {
   const std::vector<Vec3>& x = *input.positions;
-  std::vector<int> edges(regions.size(), 0), torn(regions.size(), 0);
+  std::vector<int> edges(regions.size(), 0), parted(regions.size(), 0);
   for (const Triangle& t : input.rest->triangles)
     for (int k = 0; k < 3; ++k) {
       const int a = t[k], b = t[(k + 1) % 3];
       const int r = regionOf(regions, at[a]);
       if (r < 0) continue;
       edges[r] += 1;
-      torn[r] += (at[a] - at[b]).norm() > kTearGrowth * (x[a] - x[b]).norm() + kTearSlack;
+      parted[r] += torn(at, x, a, b);
     }
   for (size_t r = 0; r < regions.size(); ++r) {
-    if (edges[r] == 0 || torn[r] <= kTornShare * edges[r]) continue;
-    const int percent = static_cast<int>(std::lround(100.0 * torn[r] / edges[r]));
+    if (edges[r] == 0 || parted[r] <= kTornShare * edges[r]) continue;
+    const int percent = static_cast<int>(std::lround(100.0 * parted[r] / edges[r]));
     fits[r].unmeasured = "the pose folds the skin under it: " + std::to_string(percent) +
                          " % of its garment's edges part when carried back to the standing body";
     fits[r].garmentGirth = fits[r].girthEase = std::numeric_limits<double>::quiet_NaN();
@@ -228,13 +234,56 @@ void addGirths(const FitInput& input, const std::vector<Vec3>& at, const std::ve
   }
 }
 
+// The component-wise median of `values`.
+Vec3 median(std::vector<Vec3> values) {
+  Vec3 m;
+  const size_t middle = values.size() / 2;
+  for (int k = 0; k < 3; ++k) {
+    std::nth_element(values.begin(), values.begin() + middle, values.end(),
+                     [k](const Vec3& a, const Vec3& b) { return a[k] < b[k]; });
+    m[k] = values[middle][k];
+  }
+  return m;
+}
+
+// Where each node is told: where it lies, or on a posed body where it would lie on the
+// standing one (PosedSkin). A node whose closest skin is another limb's than its
+// neighbours' (a skirt's front touching the thigh that steps forward) goes back with that
+// limb, away from them (35 cm out of the walking body's hip loop): a node carried more
+// than kStray from the median of its neighbours' moves takes that median instead.
+std::vector<Vec3> toldPositions(const FitInput& input) {
+  const std::vector<Vec3>& x = *input.positions;
+  if (!input.pose) return x;
+  const std::vector<Vec3> carried = input.pose->toRest(x);
+  std::vector<std::vector<int>> neighbours(x.size());
+  for (const Triangle& t : input.rest->triangles)
+    for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]), neighbours[t[k]].push_back(t[(k + 2) % 3]);
+  std::vector<Vec3> at = carried;
+  for (size_t i = 0; i < x.size(); ++i) {
+    if (neighbours[i].empty()) continue;
+    std::vector<Vec3> moves;
+    for (const int j : neighbours[i]) moves.push_back(carried[j] - x[j]);
+    const Vec3 usual = median(std::move(moves));
+    if ((carried[i] - x[i] - usual).norm() > kStray) at[i] = x[i] + usual;
+  }
+  return at;
+}
+
 }  // namespace
+
+std::vector<int> nodeRegions(const FitInput& input, const std::vector<FitRegion>& regions) {
+  checkInput(input);
+  const std::vector<Vec3> at = toldPositions(input);
+  std::vector<int> region;
+  region.reserve(at.size());
+  for (const Vec3& p : at) region.push_back(regionOf(regions, p));
+  return region;
+}
 
 std::vector<RegionFit> measureFit(const FitInput& input, const std::vector<FitRegion>& regions) {
   checkInput(input);
   const std::vector<Vec3>& x = *input.positions;
-  // Where each node is told: where it lies, or on a posed body where it would on the standing one.
-  const std::vector<Vec3> at = input.pose ? input.pose->toRest(x) : x;
+  const std::vector<Vec3> at = toldPositions(input);
   std::vector<RegionFit> fits(regions.size());
   for (size_t r = 0; r < regions.size(); ++r) {
     fits[r].name = regions[r].name;

@@ -58,6 +58,10 @@ double largestPrincipalStrain(const Vec3& a, const Vec3& b, const Vec3& c, const
 // rest (zero velocity), over the node's share of the draped area; 0 elsewhere.
 std::vector<double> contactPressures(const FitInput& input);
 
+// Each node's region: its index in `regions` (found on the rest skin when `input.pose` is
+// set, the node told where it would lie on it), or -1. What measureFit counts by.
+std::vector<int> nodeRegions(const FitInput& input, const std::vector<FitRegion>& regions);
+
 // Fit in each region (found on the rest skin when `input.pose` is set). Throws
 // std::invalid_argument when an input is missing or the positions do not match the rest mesh.
 std::vector<RegionFit> measureFit(const FitInput& input, const std::vector<FitRegion>& regions);
