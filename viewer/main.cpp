@@ -430,12 +430,12 @@ void describeOutputOptions(CLI::App& app, Options& options) {
                  "simulated, neither read from nor kept in the drape cache");
   app.add_option("--stats", options.stats,
                  "Write simulation and render statistics (JSON) here; each garment on a measurable body (a "
-                 "HumanBody, a human body read from a file) with its fit per region (docs/sizes.md), and a "
-                 "catalogue garment's verdicts against its size on its own chart body");
+                 "HumanBody, posed or standing, a human body read from a file) with its fit per region "
+                 "(docs/sizes.md), and a catalogue garment's verdicts against its size on its own chart body");
   app.add_option("--fit-map", options.fitMap,
                  "Draw the draped garments on mesh bodies in their fit map's colours (docs/sizes.md): stretch "
                  "(blue at rest to red at the fabric's limit), ease (red on the skin to blue 5 cm off) or pressure "
-                 "(blue at 0 to red at 2 kPa), eight bands")
+                 "(blue at 0 to red at 2 kPa), eight bands; with --frames, each frame in its own drape's colours")
       ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
   app.add_option("--export", options.exportPath,
                  "After draping, write the draped garments here, one mesh each with its Material's diffuse colour "
