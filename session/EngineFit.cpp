@@ -122,6 +122,7 @@ bool fillInputs(EngineFit& fit) {
     if (rest.triangles == fit.bodyMesh.triangles && rest.vertices.size() == fit.bodyMesh.vertices.size() &&
         rest.vertices != fit.bodyMesh.vertices)
       fit.pose = std::make_shared<const PosedSkin>(std::move(rest), fit.bodyMesh);
+    fit.motion = std::dynamic_pointer_cast<const MovingMeshCollider>(body.bodyCollider());
   }
   // The shipped catalogue's garments only: the one a verdict's intended fit is graded from.
   if (const CatalogueGarment* garment = catalogueGarment(engine);

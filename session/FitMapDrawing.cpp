@@ -15,14 +15,22 @@ std::vector<int> fitMapBands(const EngineFit& fit, FitMapKind kind) {
   return figment::fitMapBands(fit.input(), kind, fit.limits);
 }
 
-std::vector<int> fitMapBands(const EngineFit& fit, const std::vector<SbVec3f>& positions, FitMapKind kind) {
+std::vector<int> fitMapBands(const EngineFit& fit, const std::vector<SbVec3f>& positions, double time,
+                             FitMapKind kind) {
   if (positions.size() != fit.rest.vertices.size()) return fitMapBands(fit, kind);
   std::vector<Vec3> state;
   state.reserve(positions.size());
   for (const SbVec3f& p : positions) state.emplace_back(p[0], p[1], p[2]);
   FitInput input = fit.input();
   input.positions = &state;
-  return figment::fitMapBands(input, kind, fit.limits);
+  if (!fit.motion || time >= fit.motion->duration()) return figment::fitMapBands(input, kind, fit.limits);
+  // The engine's moving body, at the frame's keyframe and then back at its end (as drawn,
+  // and as the drape left it).
+  fit.motion->advanceTo(time);
+  input.body = &fit.motion->current();
+  std::vector<int> bands = figment::fitMapBands(input, kind, fit.limits);
+  fit.motion->advanceTo(fit.motion->duration());
+  return bands;
 }
 
 void colourFitMap(SoIndexedFaceSet* faces, const std::vector<int>& bands) {

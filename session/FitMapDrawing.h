@@ -15,8 +15,9 @@ namespace figment::session {
 // Each vertex's band (0 to kFitMapBands - 1) of `kind` on `fit`'s drape.
 std::vector<int> fitMapBands(const EngineFit& fit, FitMapKind kind);
 // The same on another state of its drape (a frame of figment-view --frames: `positions`,
-// one per rest point), against the same body.
-std::vector<int> fitMapBands(const EngineFit& fit, const std::vector<SbVec3f>& positions, FitMapKind kind);
+// one per rest point, at `time` s simulated), against the body as it was then (a posed
+// HumanBody moving into its pose: its keyframe at or before `time`).
+std::vector<int> fitMapBands(const EngineFit& fit, const std::vector<SbVec3f>& positions, double time, FitMapKind kind);
 
 // Replaces each ClothingLayer of `fit` in its group by a separator drawing the same faces
 // (the Coordinate3 before it holds the drape) coloured by `bands`, seen from both sides.

@@ -244,8 +244,8 @@ struct DrawnFitMaps {
 void colourFrame(const DrawnFitMaps& maps, const DrapeRecorder& recorder, size_t k) {
   for (const DrawnFitMap& map : maps.drawn) {
     if (!recorder.observed(*map.fit->engine)) continue;
-    const std::vector<int> bands =
-        figment::session::fitMapBands(*map.fit, recorder.frame(*map.fit->engine, k), maps.kind);
+    const std::vector<int> bands = figment::session::fitMapBands(*map.fit, recorder.frame(*map.fit->engine, k),
+                                                                 recorder.frameTimes()[k], maps.kind);
     for (SoIndexedFaceSet* faces : map.faces) figment::session::colourFitMap(faces, bands);
   }
 }

@@ -103,7 +103,7 @@ TEST(FitMapDrawing, AnotherStateOfTheDrapeIsColouredByItsOwnBands) {
   std::vector<SbVec3f> stretched;
   for (const figment::Vec3& p : fits[0].rest.vertices)
     stretched.emplace_back(float(1.022 * p.x()), float(p.y()), float(1.022 * p.z()));
-  const std::vector<int> bands = fitMapBands(fits[0], stretched, figment::FitMapKind::Stretch);
+  const std::vector<int> bands = fitMapBands(fits[0], stretched, 0.0, figment::FitMapKind::Stretch);
   ASSERT_EQ(bands.size(), stretched.size());
   const int expected = figment::fitMapBand(0.022 / figment::fabricLimits("cotton").stretch);
   ASSERT_EQ(expected, 4);

@@ -8,12 +8,14 @@
 // Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 #include "io/MakeHumanFiles.h"
 #include "session/EngineFit.h"
+#include "session/FitMapDrawing.h"
 #include "session/SceneSession.h"
 #include "sim/body/BodyMeasurements.h"
 #include "sim/fit/FitRegion.h"
@@ -174,4 +176,36 @@ TEST_F(PosedBodyFit, TheSittingThighsFollowTheBentLegs) {
   }
   EXPECT_FALSE(named(sitting.regions, "bust").covered());
   EXPECT_TRUE(named(sitting.asStanding, "bust").covered());  // the control
+}
+
+// A frame's fit map on a body moving into its pose is measured against the body as it was
+// then: at 0 s the T-shirt is as cut round the standing body, 1.5 cm off it (the ease map's
+// red half: within 2.5 cm) nearly everywhere; against the body as it ends, arm raised, the
+// left sleeve stands off the arm that left it (the control). Before, every frame was
+// measured against the body as it ended.
+TEST_F(PosedBodyFit, AFramesEaseIsAgainstTheBodyAsItWasThen) {
+  std::string text = test::readText(FIGMENT_SOURCE_DIR "/scenes/human-posed-arm.iv");
+  test::replace(text, "\"human-body-tshirt.obj\"", "\"" FIGMENT_SOURCE_DIR "/scenes/human-body-tshirt.obj\"");
+  SceneSession session;
+  ASSERT_TRUE(session.load(dir_.file("arm.iv", text))) << session.loadError();
+  session.drape();
+  ASSERT_EQ(session.firstError(), "");
+  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, false);
+  ASSERT_EQ(fits.size(), 1u);
+  ASSERT_NE(fits[0].motion, nullptr);
+  std::vector<SbVec3f> start;
+  for (const Vec3& p : fits[0].rest.vertices) start.emplace_back(float(p.x()), float(p.y()), float(p.z()));
+  // The share of the left sleeve's nodes (as cut: beyond 20 cm left of the middle, where
+  // the shoulders end) in the red half.
+  const auto nearShare = [&](double time) {
+    const std::vector<int> bands = fitMapBands(fits[0], start, time, FitMapKind::Ease);
+    int sleeve = 0, near = 0;
+    for (size_t i = 0; i < bands.size(); ++i)
+      if (start[i][0] > 0.2f) sleeve += 1, near += bands[i] >= kFitMapBands / 2;
+    EXPECT_GT(sleeve, 20);
+    return sleeve > 0 ? double(near) / sleeve : 0.0;
+  };
+  const double then = nearShare(0.0), end = nearShare(1e3);
+  EXPECT_GT(then, 0.9);
+  EXPECT_LT(end, 0.5) << then;  // the control
 }
