@@ -4,7 +4,8 @@
 // The T-shirt on arms brought down tells its torso as it does standing; the sleeve on the
 // raised arm is the upper arms'; the skirt over a sitting body's level thighs keeps its
 // thigh nodes in the thighs. Each against its control: the old measure (the standing
-// bands found on the posed body itself) and the bands told by where the nodes lie.
+// bands found on the posed body itself) and the bands told by where the nodes lie. And a
+// frame's fit map on the body moving into its pose is measured against it as it was then.
 // Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
