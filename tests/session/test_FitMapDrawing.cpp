@@ -98,7 +98,7 @@ TEST(FitMapDrawing, AnotherStateOfTheDrapeIsColouredByItsOwnBands) {
   ASSERT_TRUE(session.load(dir.file("scene.iv", tubeScene()))) << session.loadError();
   session.drape();
   ASSERT_EQ(session.firstError(), "");
-  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, false);
+  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, nullptr);
   ASSERT_EQ(fits.size(), 1u);
   std::vector<SbVec3f> stretched;
   for (const figment::Vec3& p : fits[0].rest.vertices)

@@ -70,7 +70,7 @@ class PosedBodyFit : public ::testing::Test {
     EXPECT_TRUE(session.load(dir_.file(pose + "-" + name, text))) << session.loadError();
     session.drape();
     EXPECT_EQ(session.firstError(), "");
-    const std::vector<EngineFit> fits = measureEngineFits(session.scene(), true, false);
+    const std::vector<EngineFit> fits = measureEngineFits(session.scene(), true, nullptr);
     PosedFit out;
     if (fits.size() != 1) return out;
     const EngineFit& fit = fits[0];
@@ -191,7 +191,7 @@ TEST_F(PosedBodyFit, AFramesEaseIsAgainstTheBodyAsItWasThen) {
   ASSERT_TRUE(session.load(dir_.file("arm.iv", text))) << session.loadError();
   session.drape();
   ASSERT_EQ(session.firstError(), "");
-  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, false);
+  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, nullptr);
   ASSERT_EQ(fits.size(), 1u);
   ASSERT_NE(fits[0].motion, nullptr);
   std::vector<SbVec3f> start;
