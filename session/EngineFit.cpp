@@ -116,6 +116,14 @@ bool fillInputs(EngineFit& fit) {
   const MeshFile& body = *meshBody(engine);
   fit.bodyMesh = body.collisionSurface();
   fit.body = body.collider();
+  // A posed HumanBody: its regions are its rest pose's, the drape carried back to them.
+  if (body.isOfType(HumanBody::getClassTypeId())) {
+    TriangleMesh rest = static_cast<const HumanBody&>(body).restSurface();
+    if (rest.triangles == fit.bodyMesh.triangles && rest.vertices.size() == fit.bodyMesh.vertices.size() &&
+        rest.vertices != fit.bodyMesh.vertices)
+      fit.pose = std::make_shared<const PosedSkin>(std::move(rest), fit.bodyMesh);
+    fit.motion = std::dynamic_pointer_cast<const MovingMeshCollider>(body.bodyCollider());
+  }
   // The shipped catalogue's garments only: the one a verdict's intended fit is graded from.
   if (const CatalogueGarment* garment = catalogueGarment(engine);
       garment && garment->point.getNum() > 0 && garment->catalogue.getValue().getLength() == 0)
@@ -130,16 +138,18 @@ bool isFemale(const ClothEngine& engine) {
 }
 
 // The body's regions the garment's style tells (all of them for a garment not of the
-// catalogue), measured; none when the body cannot be measured as a standing human.
+// catalogue), measured; none when the body (a posed one at rest) cannot be measured as a
+// standing human.
 void measureRegions(EngineFit& fit, const GarmentStyle* style) {
+  const TriangleMesh& standing = fit.pose ? fit.pose->rest() : fit.bodyMesh;
   BodyMeasurements measured;
   try {
-    measured = measureBody(fit.bodyMesh);
+    measured = measureBody(standing);
   } catch (const std::exception&) {
     return;
   }
   std::vector<FitRegion> regions;
-  for (FitRegion& region : bodyRegions(fit.bodyMesh, measured, isFemale(*fit.engine)))
+  for (FitRegion& region : bodyRegions(standing, measured, isFemale(*fit.engine)))
     if (!style || std::find(style->regions.begin(), style->regions.end(), region.name) != style->regions.end())
       regions.push_back(std::move(region));
   fit.regions = measureFit(fit.input(), regions);
@@ -192,6 +202,7 @@ FitInput EngineFit::input() const {
   in.positions = &positions;
   in.body = body.get();
   in.parameters = parameters;
+  in.pose = pose.get();
   return in;
 }
 

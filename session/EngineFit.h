@@ -11,6 +11,7 @@
 
 #include "sim/cloth/ClothParameters.h"
 #include "sim/collision/MeshCollider.h"
+#include "sim/collision/MovingMeshCollider.h"
 #include "sim/fit/FitVerdict.h"
 #include "sim/fit/GarmentFit.h"
 
@@ -34,9 +35,16 @@ struct EngineFit {
   std::vector<Vec3> positions;               // its drape (m)
   TriangleMesh bodyMesh;                     // the skin it collided with
   std::shared_ptr<const MeshCollider> body;  // and its collider
-  ClothParameters parameters;                // the engine's (material, clearance, gravity)
-  FabricLimits limits;                       // of its material preset (the woven ones' for none)
-  // Per region of the body (empty when the body cannot be measured as a standing human),
+  // A posed HumanBody's skin at rest and posed: its regions are found at rest and the
+  // drape carried back to them (sim/fit/PosedSkin.h); null for a standing body.
+  std::shared_ptr<const PosedSkin> pose;
+  // Its body moving into that pose during the drape (the engine's own collider), for the
+  // body as it was at a frame's time (FitMapDrawing); null for a body that stands still.
+  std::shared_ptr<const MovingMeshCollider> motion;
+  ClothParameters parameters;  // the engine's (material, clearance, gravity)
+  FabricLimits limits;         // of its material preset (the woven ones' for none)
+  // Per region of the body (empty when the body, or a posed one's rest pose, cannot be
+  // measured as a standing human),
   // and their verdicts where the intended fit is known (a CatalogueGarment's size on its
   // own chart body); else empty.
   std::vector<RegionFit> regions;

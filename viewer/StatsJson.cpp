@@ -56,6 +56,11 @@ nlohmann::json fitJson(const session::EngineFit& fit) {
                              {"girth_ease_cm", std::isfinite(g.girthEase) ? 100 * g.girthEase : -1.0},
                              {"pressure_kpa", g.pressure / 1000}};
     if (i < fit.verdicts.size()) region["verdict"] = verdictName(fit.verdicts[i]);
+    // On a posed body, a region whose girth the pose hides: why, and no verdict on it but tight.
+    if (!g.unmeasured.empty()) {
+      region["unmeasured"] = g.unmeasured;
+      if (i < fit.verdicts.size() && fit.verdicts[i] != Verdict::Tight) region["verdict"] = "unmeasured";
+    }
     regions[g.name] = std::move(region);
   }
   return {{"catalogue", fit.garment}, {"text", fit.text}, {"regions", regions}};

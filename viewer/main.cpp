@@ -17,6 +17,7 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoPath.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <CLI/CLI.hpp>
@@ -227,9 +228,32 @@ void showFrame(const SceneSession& session, const DrapeRecorder& recorder, size_
     if (recorder.observed(*engine)) figment::session::showPositions(*engine, recorder.frame(*engine, k));
 }
 
+// --fit-map: the face sets each garment's map is drawn with, coloured again at each frame
+// of --frames by that frame's drape.
+struct DrawnFitMap {
+  const figment::session::EngineFit* fit = nullptr;
+  std::vector<SoIndexedFaceSet*> faces;
+};
+struct DrawnFitMaps {
+  figment::FitMapKind kind = figment::FitMapKind::Stretch;
+  std::vector<DrawnFitMap> drawn;
+};
+
+// Colours each fit map by its garment's state at frame k (a drape not recorded step by
+// step keeps its end's colours, as it shows its end).
+void colourFrame(const DrawnFitMaps& maps, const DrapeRecorder& recorder, size_t k) {
+  for (const DrawnFitMap& map : maps.drawn) {
+    if (!recorder.observed(*map.fit->engine)) continue;
+    const std::vector<int> bands = figment::session::fitMapBands(*map.fit, recorder.frame(*map.fit->engine, k),
+                                                                 recorder.frameTimes()[k], maps.kind);
+    for (SoIndexedFaceSet* faces : map.faces) figment::session::colourFitMap(faces, bands);
+  }
+}
+
 // Frames of a time span, one camera for all: it frames the box that holds every frame.
 std::string renderFrames(SceneSession& session, const DrapeRecorder& recorder, const ImagePlan& plan,
-                         const Options& options, WrittenImages& images, double& renderWall, std::string& where) {
+                         const Options& options, const DrawnFitMaps& maps, WrittenImages& images, double& renderWall,
+                         std::string& where) {
   for (ClothEngine* engine : session.engines())  // simulated, but not step by step
     if (!recorder.observed(*engine) && engine->evaluationCount() > 0)
       std::fprintf(stderr,
@@ -245,6 +269,7 @@ std::string renderFrames(SceneSession& session, const DrapeRecorder& recorder, c
   SceneRenderer renderer(plan.size, options.supersample);
   for (size_t k = 0; k < plan.frameTimes.size(); ++k) {
     showFrame(session, recorder, k);
+    colourFrame(maps, recorder, k);
     const std::string error = renderImage(root, options, renderer, plan.paths[k], renderWall, where);
     if (!error.empty()) return error;
     images.add(plan.paths[k]);
@@ -340,13 +365,15 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
     if (!error.empty()) return fail("--export " + options.exportPath, error);
   }
   // After the export: it keeps the garments' own colours.
+  DrawnFitMaps maps;
+  if (!options.fitMap.empty()) maps.kind = figment::fitMapKind(options.fitMap);
   for (const EngineFit& fit : fits)
-    if (!options.fitMap.empty()) drawFitMap(fit, fitMapBands(fit, figment::fitMapKind(options.fitMap)));
+    if (!options.fitMap.empty()) maps.drawn.push_back({&fit, drawFitMap(fit, fitMapBands(fit, maps.kind))});
   double renderWall = 0.0;
   std::string where;
   if (images)
     error = plan.frameTimes.empty() ? renderViews(session, plan, options, outputs, renderWall, where)
-                                    : renderFrames(session, *recorder, plan, options, outputs, renderWall, where);
+                                    : renderFrames(session, *recorder, plan, options, maps, outputs, renderWall, where);
   if (!error.empty()) return fail(where, error);
   if (!options.windForce.empty()) {
     error = writeWindForceCsv(options.windForce, session.drapes(), *recorder);
@@ -403,12 +430,12 @@ void describeOutputOptions(CLI::App& app, Options& options) {
                  "simulated, neither read from nor kept in the drape cache");
   app.add_option("--stats", options.stats,
                  "Write simulation and render statistics (JSON) here; each garment on a measurable body (a "
-                 "HumanBody, a human body read from a file) with its fit per region (docs/sizes.md), and a "
-                 "catalogue garment's verdicts against its size on its own chart body");
+                 "HumanBody, posed or standing, a human body read from a file) with its fit per region "
+                 "(docs/sizes.md), and a catalogue garment's verdicts against its size on its own chart body");
   app.add_option("--fit-map", options.fitMap,
                  "Draw the draped garments on mesh bodies in their fit map's colours (docs/sizes.md): stretch "
                  "(blue at rest to red at the fabric's limit), ease (red on the skin to blue 5 cm off) or pressure "
-                 "(blue at 0 to red at 2 kPa), eight bands")
+                 "(blue at 0 to red at 2 kPa), eight bands; with --frames, each frame in its own drape's colours")
       ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
   app.add_option("--export", options.exportPath,
                  "After draping, write the draped garments here, one mesh each with its Material's diffuse colour "

@@ -246,6 +246,10 @@ void HumanBody::colourSkin() {
   root->insertChild(data_->material, 0);
 }
 
+figment::TriangleMesh HumanBody::restSurface() const {
+  return data_->motion ? data_->motion->rest : collisionSurface();
+}
+
 std::shared_ptr<const figment::Collider> HumanBody::bodyCollider() const {
   if (!data_->motion) return inherited::bodyCollider();
   if (!data_->moving) {

@@ -127,6 +127,10 @@ class HumanBody : public MeshFile {
   // As a ClothEngine's body: the rest body moving into its pose (posed), else the
   // MeshFile's collider. Throws as MeshFile's.
   std::shared_ptr<const figment::Collider> bodyCollider() const override;
+  // The made body in its rest pose (A_POSE), its vertices numbered as the posed
+  // collisionSurface()'s: what a posed body's fit is measured on (sim/fit/PosedSkin.h).
+  // The collisionSurface() itself when not posed; empty when not made.
+  figment::TriangleMesh restSurface() const;
 
  protected:
   ~HumanBody() override;

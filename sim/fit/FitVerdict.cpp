@@ -56,6 +56,8 @@ FabricLimits fabricLimits(const std::string& fabric) {
 Verdict judge(const RegionFit& fit, const RegionFit& intended, const VerdictRule& rule) {
   if (!fit.covered() || !intended.covered()) return Verdict::Fits;
   if (fit.meanStrain > rule.limits.stretch || fit.pressure > rule.limits.pressure) return Verdict::Tight;
+  // Its girth and drop not told in the body's pose: its stretch and pressure alone.
+  if (!fit.unmeasured.empty()) return Verdict::Fits;
   if (known(intended.girthEase) && fit.drop > intended.drop + rule.dropTolerance) return Verdict::Loose;
   if (known(intended.girthEase) && fit.drop < intended.drop - rule.dropTolerance) return Verdict::Tight;
   if (known(fit.girthEase) && known(intended.girthEase)) {

@@ -35,7 +35,8 @@ struct VerdictRule {
 };
 
 // `fit` judged against `intended` (the same region of the same size on its chart body).
-// A region the garment does not cover, or the intended one does not, is Fits.
+// A region the garment does not cover, or the intended one does not, is Fits; one whose
+// girth the body's pose hides (RegionFit::unmeasured) is Tight past the fabric's limits, else Fits.
 Verdict judge(const RegionFit& fit, const RegionFit& intended, const VerdictRule& rule);
 
 // "tight at the hips: 7 % stretch; loose at the waist: 3 cm too much ease", or "fits

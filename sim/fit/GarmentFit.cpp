@@ -19,6 +19,12 @@ constexpr double kSearchRadius = 0.10;  // m a distance query looks
 constexpr double kJoinGrid = 1e-7;      // m: section points closer than this are one
 constexpr double kMaxGap = M_PI / 3;    // rad: a section with a wider gap does not go round
 constexpr double kLevelStep = 0.01;     // m down the band when the garment misses the level
+// An edge carried back to the standing body (PosedSkin) that grows by more than half (and
+// 5 mm) has its ends on skin the pose brought together (an armpit, a groin), told apart at
+// rest; past kTornShare of a region's edges its girth and drop are not told.
+constexpr double kTearGrowth = 1.5, kTearSlack = 0.005;
+constexpr double kTornShare = 0.10;
+constexpr double kStray = 0.03;  // m a node may be carried off its neighbours' move (see toldPositions)
 
 // Each node's share of the draped area (a third of each section it is a corner of), m^2.
 std::vector<double> nodeAreas(const TriangleMesh& rest, const std::vector<Vec3>& x) {
@@ -110,12 +116,14 @@ void checkInput(const FitInput& input) {
 }
 
 // Stretch over each region's sections (by the centroid's region), area-weighted.
-void addStretch(const FitInput& input, const std::vector<FitRegion>& regions, std::vector<RegionFit>& fits) {
+// `at`: where each node is told (PosedSkin).
+void addStretch(const FitInput& input, const std::vector<Vec3>& at, const std::vector<FitRegion>& regions,
+                std::vector<RegionFit>& fits) {
   const TriangleMesh& rest = *input.rest;
   const std::vector<Vec3>& x = *input.positions;
   std::vector<double> weight(regions.size(), 0.0);
   for (const Triangle& t : rest.triangles) {
-    const int r = regionOf(regions, (x[t[0]] + x[t[1]] + x[t[2]]) / 3.0);
+    const int r = regionOf(regions, (at[t[0]] + at[t[1]] + at[t[2]]) / 3.0);
     if (r < 0) continue;
     const Vec3 &a = rest.vertices[t[0]], &b = rest.vertices[t[1]], &c = rest.vertices[t[2]];
     const double area = 0.5 * (b - a).cross(c - a).norm();
@@ -182,40 +190,128 @@ void reachedTops(const TriangleMesh& rest, const std::vector<Vec3>& x, const std
     }
 }
 
+namespace {
+
+// Whether the edge a-b parts when carried back to the standing body (`at`).
+bool torn(const std::vector<Vec3>& at, const std::vector<Vec3>& x, int a, int b) {
+  return (at[a] - at[b]).norm() > kTearGrowth * (x[a] - x[b]).norm() + kTearSlack;
+}
+
+// On a posed body: each region whose garment edges tear past kTornShare when carried back
+// to the standing body (`at`) is told unmeasured, its girth and drop left out.
+void markTorn(const FitInput& input, const std::vector<Vec3>& at, const std::vector<FitRegion>& regions,
+              std::vector<RegionFit>& fits) {
+  const std::vector<Vec3>& x = *input.positions;
+  std::vector<int> edges(regions.size(), 0), parted(regions.size(), 0);
+  for (const Triangle& t : input.rest->triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const int r = regionOf(regions, at[a]);
+      if (r < 0) continue;
+      edges[r] += 1;
+      parted[r] += torn(at, x, a, b);
+    }
+  for (size_t r = 0; r < regions.size(); ++r) {
+    if (edges[r] == 0 || parted[r] <= kTornShare * edges[r]) continue;
+    const int percent = static_cast<int>(std::lround(100.0 * parted[r] / edges[r]));
+    fits[r].unmeasured = "the pose folds the skin under it: " + std::to_string(percent) +
+                         " % of its garment's edges part when carried back to the standing body";
+    fits[r].garmentGirth = fits[r].girthEase = std::numeric_limits<double>::quiet_NaN();
+    fits[r].drop = 0;
+  }
+}
+
+// The garment's girths where it goes round, on the standing body (`at`, `body`).
+void addGirths(const FitInput& input, const std::vector<Vec3>& at, const std::vector<FitRegion>& regions,
+               std::vector<RegionFit>& fits) {
+  const TriangleMesh draped{at, input.rest->triangles};
+  const TriangleMesh& body = input.pose ? input.pose->rest() : input.body->surface();
+  for (size_t r = 0; r < regions.size(); ++r) {
+    if (fits[r].nodes == 0 || !regions[r].hasGirth()) continue;
+    const auto [garment, skin] = girths(draped, body, regions[r]);
+    fits[r].garmentGirth = garment;
+    fits[r].girthEase = garment - skin;
+  }
+}
+
+// The component-wise median of `values`.
+Vec3 median(std::vector<Vec3> values) {
+  Vec3 m;
+  const size_t middle = values.size() / 2;
+  for (int k = 0; k < 3; ++k) {
+    std::nth_element(values.begin(), values.begin() + middle, values.end(),
+                     [k](const Vec3& a, const Vec3& b) { return a[k] < b[k]; });
+    m[k] = values[middle][k];
+  }
+  return m;
+}
+
+// Where each node is told: where it lies, or on a posed body where it would lie on the
+// standing one (PosedSkin). A node whose closest skin is another limb's than its
+// neighbours' (a skirt's front touching the thigh that steps forward) goes back with that
+// limb, away from them (35 cm out of the walking body's hip loop): a node carried more
+// than kStray from the median of its neighbours' moves takes that median instead.
+std::vector<Vec3> toldPositions(const FitInput& input) {
+  const std::vector<Vec3>& x = *input.positions;
+  if (!input.pose) return x;
+  const std::vector<Vec3> carried = input.pose->toRest(x);
+  std::vector<std::vector<int>> neighbours(x.size());
+  for (const Triangle& t : input.rest->triangles)
+    for (int k = 0; k < 3; ++k) neighbours[t[k]].push_back(t[(k + 1) % 3]), neighbours[t[k]].push_back(t[(k + 2) % 3]);
+  std::vector<Vec3> at = carried;
+  for (size_t i = 0; i < x.size(); ++i) {
+    if (neighbours[i].empty()) continue;
+    std::vector<Vec3> moves;
+    for (const int j : neighbours[i]) moves.push_back(carried[j] - x[j]);
+    const Vec3 usual = median(std::move(moves));
+    if ((carried[i] - x[i] - usual).norm() > kStray) at[i] = x[i] + usual;
+  }
+  return at;
+}
+
+}  // namespace
+
+std::vector<int> nodeRegions(const FitInput& input, const std::vector<FitRegion>& regions) {
+  checkInput(input);
+  const std::vector<Vec3> at = toldPositions(input);
+  std::vector<int> region;
+  region.reserve(at.size());
+  for (const Vec3& p : at) region.push_back(regionOf(regions, p));
+  return region;
+}
+
 std::vector<RegionFit> measureFit(const FitInput& input, const std::vector<FitRegion>& regions) {
   checkInput(input);
   const std::vector<Vec3>& x = *input.positions;
+  const std::vector<Vec3> at = toldPositions(input);
   std::vector<RegionFit> fits(regions.size());
   for (size_t r = 0; r < regions.size(); ++r) {
     fits[r].name = regions[r].name;
     fits[r].drop = regions[r].high - regions[r].low;
   }
-  addStretch(input, regions, fits);
+  addStretch(input, at, regions, fits);
   const std::vector<double> pressure = contactPressures(input);
   const std::vector<double> area = nodeAreas(*input.rest, x);
   std::vector<double> force(regions.size(), 0.0), regionArea(regions.size(), 0.0);
   for (size_t i = 0; i < x.size(); ++i) {
-    const int r = regionOf(regions, x[i]);
+    const int r = regionOf(regions, at[i]);
     if (r < 0) continue;
     const double distance = std::sqrt(input.body->bvh().closest(x[i]).distanceSquared);
     fits[r].ease += std::max(0.0, distance - input.parameters.clearance);
     fits[r].nodes += 1;
-    fits[r].drop = std::min(fits[r].drop, regions[r].high - x[i].y());
+    fits[r].drop = std::min(fits[r].drop, regions[r].high - at[i].y());
     force[r] += pressure[i] * area[i];
     regionArea[r] += area[i];
     fits[r].maxPressure = std::max(fits[r].maxPressure, pressure[i]);
   }
-  reachedTops(*input.rest, x, regions, fits);
-  const TriangleMesh draped{x, input.rest->triangles};
+  reachedTops(*input.rest, at, regions, fits);
   for (size_t r = 0; r < regions.size(); ++r) {
     if (fits[r].nodes == 0) continue;
     fits[r].ease /= fits[r].nodes;
     fits[r].pressure = regionArea[r] > 0 ? force[r] / regionArea[r] : 0.0;
-    if (!regions[r].hasGirth()) continue;
-    const auto [garment, body] = girths(draped, input.body->surface(), regions[r]);
-    fits[r].garmentGirth = garment;
-    fits[r].girthEase = garment - body;
   }
+  addGirths(input, at, regions, fits);
+  if (input.pose) markTorn(input, at, regions, fits);
   return fits;
 }
 

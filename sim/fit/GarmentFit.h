@@ -3,7 +3,9 @@
 // largest principal strain of each section, % of rest), its ease (the garment's mean
 // distance from the skin, and its taped girth less the body's), and its pressure on the
 // body (the contact forces over the garment's area). Measured on the drape's end state;
-// the verdict on these is sim/fit/FitVerdict.h's. Definitions in docs/sizes.md.
+// the verdict on these is sim/fit/FitVerdict.h's. Definitions in docs/sizes.md. On a posed
+// body the regions and girths are the standing body's, each node told where it would lie
+// on it (sim/fit/PosedSkin.h); stretch, ease and pressure are the posed drape's own.
 
 #include <limits>
 #include <string>
@@ -13,6 +15,7 @@
 #include "sim/collision/MeshCollider.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/fit/FitRegion.h"
+#include "sim/fit/PosedSkin.h"
 
 namespace figment {
 
@@ -29,6 +32,9 @@ struct RegionFit {
   double drop = 0;  // m from the region's top down to its highest garment node; 0 where the garment goes on above it
   double pressure = 0;     // Pa: the contact forces' sum over the region's garment area
   double maxPressure = 0;  // Pa: the largest at one node (its force over its share of area)
+  // On a posed body, why the region's girth and drop cannot be told (NaN and 0 then); ""
+  // where they can, and on a standing body.
+  std::string unmeasured{};
   bool covered() const { return nodes > 0; }
 };
 
@@ -37,6 +43,9 @@ struct FitInput {
   const std::vector<Vec3>* positions = nullptr;  // where each rest point lies after the drape
   const MeshCollider* body = nullptr;            // the skin
   ClothParameters parameters;                    // the drape's: material, gravity, clearance
+  // The body's skin at rest and posed (`body` is its posed shape), or null for a body that
+  // stands as its regions were found (the regions are then the rest skin's).
+  const PosedSkin* pose = nullptr;
 };
 
 // The largest principal strain of a section: sqrt of the largest eigenvalue of F^T F less 1,
@@ -49,8 +58,12 @@ double largestPrincipalStrain(const Vec3& a, const Vec3& b, const Vec3& c, const
 // rest (zero velocity), over the node's share of the draped area; 0 elsewhere.
 std::vector<double> contactPressures(const FitInput& input);
 
-// Fit in each region. Throws std::invalid_argument when an input is missing or the
-// positions do not match the rest mesh.
+// Each node's region: its index in `regions` (found on the rest skin when `input.pose` is
+// set, the node told where it would lie on it), or -1. What measureFit counts by.
+std::vector<int> nodeRegions(const FitInput& input, const std::vector<FitRegion>& regions);
+
+// Fit in each region (found on the rest skin when `input.pose` is set). Throws
+// std::invalid_argument when an input is missing or the positions do not match the rest mesh.
 std::vector<RegionFit> measureFit(const FitInput& input, const std::vector<FitRegion>& regions);
 
 }  // namespace figment

@@ -10,6 +10,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 #include <string>
@@ -83,4 +84,37 @@ TEST(FitMapDrawing, ColoursTheGarmentsVerticesByTheirBands) {
   const figment::Vec3 red = figment::fitMapColour(figment::kFitMapBands - 1);
   EXPECT_FLOAT_EQ(material->diffuseColor[figment::kFitMapBands - 1][0], float(red.x()));
   EXPECT_EQ(findIn<SoMaterialBinding>(session.scene())->value.getValue(), SoMaterialBinding::PER_VERTEX_INDEXED);
+}
+
+// A frame's map (figment-view --frames): the bands of another state of the drape, the tube
+// stretched 2.2 % round (55 % of cotton's 4 % limit: band 4 of 8, from 50 to 62.5 %, the
+// sections' largest strain being the round one; float positions move it by 1e-7), and the face set drawn coloured again
+// by them.
+TEST(FitMapDrawing, AnotherStateOfTheDrapeIsColouredByItsOwnBands) {
+  figment::viewer::initHeadless();
+  figment::test::TempDir dir;
+  figment::exportObj(figment::test::cylinder(kBody), (dir.path() / "cylinder.obj").string());
+  SceneSession session;
+  ASSERT_TRUE(session.load(dir.file("scene.iv", tubeScene()))) << session.loadError();
+  session.drape();
+  ASSERT_EQ(session.firstError(), "");
+  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, nullptr);
+  ASSERT_EQ(fits.size(), 1u);
+  std::vector<SbVec3f> stretched;
+  for (const figment::Vec3& p : fits[0].rest.vertices)
+    stretched.emplace_back(float(1.022 * p.x()), float(p.y()), float(1.022 * p.z()));
+  const std::vector<int> bands = fitMapBands(fits[0], stretched, 0.0, figment::FitMapKind::Stretch);
+  ASSERT_EQ(bands.size(), stretched.size());
+  const int expected = figment::fitMapBand(0.022 / figment::fabricLimits("cotton").stretch);
+  ASSERT_EQ(expected, 4);
+  EXPECT_EQ(std::count(bands.begin(), bands.end(), expected), std::ptrdiff_t(bands.size()));
+  // The drape as it ended is unstretched: the first band, drawn; then coloured by the frame's.
+  const std::vector<SoIndexedFaceSet*> drawn = drawFitMap(fits[0], fitMapBands(fits[0], figment::FitMapKind::Stretch));
+  ASSERT_EQ(drawn.size(), 1u);
+  EXPECT_EQ(drawn[0]->materialIndex[0], 0);
+  colourFitMap(drawn[0], bands);
+  int wrong = 0;
+  for (int i = 0; i < drawn[0]->coordIndex.getNum(); ++i)
+    wrong += drawn[0]->materialIndex[i] != (drawn[0]->coordIndex[i] < 0 ? -1 : expected);
+  EXPECT_EQ(wrong, 0);
 }

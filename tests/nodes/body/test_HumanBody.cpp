@@ -112,6 +112,22 @@ TEST_F(HumanBodyTest, APoseTurnsTheDrawnBodyAndItsColliderMovesIntoIt) {
   EXPECT_EQ(std::dynamic_pointer_cast<const figment::MovingMeshCollider>(body->bodyCollider()), nullptr);
 }
 
+// What a posed body's fit is measured on: its rest pose, numbered as the posed skin (the
+// same triangles, the same vertex count), the body as made to its measurements; standing,
+// the skin itself.
+TEST_F(HumanBodyTest, APosedBodyKeepsItsRestSurface) {
+  SceneRoot root = read("stature 1.68 hipGirth 0.96 pose SITTING");
+  ASSERT_TRUE(root);
+  auto* body = find<HumanBody>(root.get());
+  const figment::TriangleMesh rest = body->restSurface(), posed = body->collisionSurface();
+  ASSERT_EQ(rest.vertices.size(), posed.vertices.size());
+  EXPECT_EQ(rest.triangles, posed.triangles);
+  EXPECT_NE(rest.vertices, posed.vertices);
+  EXPECT_NEAR(figment::measureBody(rest).hipGirth, 0.96, 0.005);  // the made body, standing
+  body->pose = HumanBody::A_POSE;
+  EXPECT_EQ(body->restSurface().vertices, body->collisionSurface().vertices);
+}
+
 TEST_F(HumanBodyTest, AJointsRotationFollowsThePreset) {
   SceneRoot root = read("rotatedJoints \"upperarm01.L\" rotations 0 0 1 0.8");
   ASSERT_TRUE(root);

@@ -1,6 +1,7 @@
 // The verdict rule: a region is tight past its fabric's limits or half a size step short of
 // the intended girth ease, loose half a step beyond it, else it fits; the shopper's line
-// names each tight and loose region with its reason.
+// names each tight and loose region with its reason; a region a pose hides the girth of is
+// judged by its stretch and pressure alone.
 #include <gtest/gtest.h>
 
 #include "sim/fit/FitVerdict.h"
@@ -67,6 +68,23 @@ TEST(FitVerdict, HangingLowIsLooseRidingHighTight) {
   EXPECT_EQ(judge(near, intended, rule), Verdict::Fits);
   EXPECT_EQ(shopperText({low, high}, {intended, intended}, {Verdict::Loose, Verdict::Tight}, rule),
             "tight at the waist: 3 cm too high; loose at the waist: hangs 3 cm low");
+}
+
+// A region whose girth and drop the body's pose hides (RegionFit::unmeasured: their NaN and
+// 0 would read as riding 8 cm high) is judged by what is still told: tight past the
+// fabric's limits, else not tight or loose.
+TEST(FitVerdict, AnUnmeasuredRegionIsJudgedByItsStretchAndPressureAlone) {
+  const VerdictRule rule{fabricLimits("cotton")};
+  RegionFit intended = region("thighs", 0.04);
+  intended.drop = 0.08;
+  RegionFit folded = region("thighs", NAN);
+  folded.unmeasured = "the pose folds the skin under it";
+  EXPECT_EQ(judge(folded, intended, rule), Verdict::Fits);
+  folded.unmeasured.clear();
+  EXPECT_EQ(judge(folded, intended, rule), Verdict::Tight);  // the control: drop 0 against 8 cm
+  folded.unmeasured = "the pose folds the skin under it";
+  folded.meanStrain = 0.05;
+  EXPECT_EQ(judge(folded, intended, rule), Verdict::Tight);
 }
 
 TEST(FitVerdict, UncoveredRegionsFit) {

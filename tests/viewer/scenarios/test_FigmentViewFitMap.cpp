@@ -1,7 +1,8 @@
 // figment-view on a catalogue garment (scenes/sizes/pencil-S-on-XL.iv: the pencil skirt's
 // women's S on the chart's XL body, named "pencil:S" by a CatalogueGarment): --fit-map
 // draws the drape in the fit map's colours, red where it is stretched past the fabric's
-// limit, and the body's own size (pencil:XL) far less so; --stats tells the fit per region
+// limit, and the body's own size (pencil:XL) far less so; with --frames each frame's map
+// is that frame's drape's (blue at the start, red once stretched); --stats tells the fit per region
 // with figment-size's verdicts; a bad --fit-map value or catalogue name is one line naming
 // it and what is accepted. Skipped when MakeHuman's data is absent.
 #include <gtest/gtest.h>
@@ -77,6 +78,21 @@ TEST_F(FigmentViewFitMap, ASizeTooSmallShowsRedWhereTheBodysOwnSizeShowsBlue) {
   const auto plain = view("pencil:S", "--size 150x200 --view 0,0 -o " + quote(path("plain.png")));
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_LT(bandPixels(figment::test::readPng(path("plain.png"))).red, s.red / 10);
+}
+
+// Each frame's colours are its own drape's: at 0 s the skirt is as cut (no stretch: the
+// first band, blue, and no red), at 1.5 s stretched over the XL body's seat (red, as the
+// end's map above). Before, every frame took the end's colours: the first as red as the last.
+TEST_F(FigmentViewFitMap, EachFrameIsColouredByItsOwnDrape) {
+  const auto run =
+      view("pencil:S", "--fit-map stretch --frames 0:1.5:2 --size 150x200 --view 0,0 -o " + quote(path("f.png")));
+  ASSERT_EQ(run.status, 0) << run.err;
+  const BandPixels start = bandPixels(figment::test::readPng(path("f-0.png")));
+  const BandPixels later = bandPixels(figment::test::readPng(path("f-1.png")));
+  ASSERT_GT(start.blue + start.red, 100);  // the control: the garment is drawn in the map's colours
+  EXPECT_EQ(start.red, 0) << "blue " << start.blue;
+  EXPECT_GT(later.red, 200) << "red " << later.red << " blue " << later.blue;
+  EXPECT_GT(start.blue, 4 * later.blue) << "start blue " << start.blue << ", later blue " << later.blue;
 }
 
 TEST_F(FigmentViewFitMap, StatsTellTheFitPerRegionWithTheVerdicts) {
