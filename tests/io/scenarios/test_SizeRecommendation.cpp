@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "io/GarmentCatalogue.h"
+#include "sim/body/BodyMeasurements.h"
 #include "sim/fit/SizeFitter.h"
 #include "support/ChartBodies.h"
 #include "support/ProgramRun.h"
@@ -144,6 +145,24 @@ TEST_F(SizeRecommendation, NeverSmallerBetweenTheMensGridBodiesJustOverM) {
     recommended.push_back(index(Sex::Male, r.recommended));
   }
   EXPECT_EQ(recommended[0], index(Sex::Male, "M"));
+  EXPECT_GE(recommended[1], recommended[0]);
+}
+
+// The grid's first two women's bodies, two sizes under XXS (k = 0 and 1): the
+// first was recommended XS before the second's XXS, every candidate "tight at the waist",
+// because its underbust was found on the ribcage's foot 8 cm under the fold (the lowest
+// front of a flat chest's window), so the waist region's top, midway to it, fell 4 cm.
+TEST_F(SizeRecommendation, NeverSmallerBetweenTheWomensGridBodiesTwoSizesUnderXxs) {
+  std::vector<int> recommended;
+  for (const int k : {0, 1}) {
+    const TriangleMesh body = chartBodyAt(*bodies_->human, chart(), Sex::Female, -2.0 + 9.0 * k / 29.0);
+    const BodyMeasurements m = measureBody(body, {"underbust_girth"});
+    EXPECT_GT(m.landmarks.underbust, m.landmarks.bust - 0.05) << "k = " << k;
+    const Recommendation r = pencil_->recommend(body, Sex::Female);
+    EXPECT_FALSE(r.allTight) << "k = " << k << ": " << r.sizes.front().text;
+    recommended.push_back(index(Sex::Female, r.recommended));
+  }
+  EXPECT_EQ(recommended[0], index(Sex::Female, "XXS"));
   EXPECT_GE(recommended[1], recommended[0]);
 }
 

@@ -1,9 +1,14 @@
 // Girths as a tape measures them (sim/body/BodyMeasurements.h): convex perimeters with
-// analytic values. The landmarks on a real body are checked on MakeHuman's body
-// (tests/io/test_MakeHumanFiles.cpp) and human.zae (tests/io/test_MeasureTool.cpp).
+// analytic values; the underbust on a mannequin of tubes whose chest front is a formula: the
+// fold under the breasts wherever the belly recedes, 3.5 cm under a flat chest's bust, and
+// continuous between. The landmarks on a real body are checked on MakeHuman's body
+// (tests/io/test_MakeHumanFiles.cpp, tests/io/scenarios/test_MeasuredBodies.cpp) and
+// human.zae (tests/io/test_MeasureTool.cpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "sim/body/BodyMeasurements.h"
@@ -26,6 +31,62 @@ double polygonPerimeter(const std::vector<Vec3>& closed) {
   double sum = 0;
   for (size_t i = 0; i < closed.size(); ++i) sum += (closed[(i + 1) % closed.size()] - closed[i]).norm();
   return sum;
+}
+
+// An open tube of rings of 48 points from `low` to `high` every 2.5 mm; the ring at height y
+// the ellipse of half-width halfWidth(y) (x) about x = `x`, from z = back(y) to z = front(y).
+struct Ring {
+  std::function<double(double)> halfWidth, back, front;
+};
+void addTube(TriangleMesh& mesh, double x, double low, double high, const Ring& ring) {
+  constexpr int kAround = 48;
+  const int rings = static_cast<int>(std::lround((high - low) / 0.0025)) + 1;
+  const int first = static_cast<int>(mesh.vertices.size());
+  for (int r = 0; r < rings; ++r) {
+    const double y = low + (high - low) * r / (rings - 1);
+    const double a = ring.halfWidth(y), mid = 0.5 * (ring.front(y) + ring.back(y));
+    const double depth = 0.5 * (ring.front(y) - ring.back(y));
+    for (int i = 0; i < kAround; ++i) {
+      const double t = 2 * std::numbers::pi * i / kAround;
+      mesh.vertices.emplace_back(x + a * std::cos(t), y, mid + depth * std::sin(t));
+    }
+  }
+  for (int r = 0; r + 1 < rings; ++r)
+    for (int i = 0; i < kAround; ++i) {
+      const int a = first + r * kAround + i, b = first + r * kAround + (i + 1) % kAround;
+      mesh.triangles.push_back({a, a + kAround, b});
+      mesh.triangles.push_back({b, a + kAround, b + kAround});
+    }
+}
+
+double bump(double y, double at, double width) {
+  return std::exp(-(y - at) * (y - at) / (width * width));
+}
+
+// A 1.7 m mannequin: legs to 0.8 m, arms hanging apart from 0.75 m to the armpits at 1.3 m,
+// a torso to the top of the head, fullest at the bust (1.2 m), narrowest at the waist
+// (1.0 m). Its front: a flat chest wall at z = 8 cm with breasts `breasts` m proud at the
+// bust, the ribcage 8 mm proud at 1.12 m, and the belly receding `belly` m from 1.10 m
+// down to 1.0 m (coming forward where negative): the fold under the breasts lies near 1.16 m.
+TriangleMesh mannequin(double breasts, double belly) {
+  const auto chest = [=](double y) {
+    const double wall = 0.08 - belly * std::clamp((1.10 - y) / 0.1, 0.0, 1.0);
+    return wall + breasts * bump(y, 1.2, 0.02) + 0.008 * bump(y, 1.12, 0.025);
+  };
+  const Ring torso{[](double y) { return 0.14 + 0.02 * bump(y, 1.2, 0.06) - 0.03 * bump(y, 1.0, 0.06); },
+                   [](double) { return -0.09; }, chest};
+  const Ring limb{[](double) { return 0.05; }, [](double) { return -0.05; }, [](double) { return 0.05; }};
+  TriangleMesh mesh;
+  addTube(mesh, 0, 0.8, 1.7, torso);
+  for (const double side : {-1.0, 1.0}) {
+    addTube(mesh, side * 0.08, 0.0, 0.8, limb);
+    addTube(mesh, side * 0.26, 0.75, 1.3, limb);
+  }
+  return mesh;
+}
+
+BodyLandmarks underbustOf(const TriangleMesh& body) {
+  return measureBody(body, {"underbust_girth"}).landmarks;
 }
 
 }  // namespace
@@ -77,4 +138,51 @@ TEST(BodyMeasurements, NamedKeysAreTheIsoNamesInOrder) {
   EXPECT_DOUBLE_EQ(m.byName("waist_girth"), 0.7);
   EXPECT_THROW(m.byName("waist"), std::invalid_argument);
   EXPECT_THROW(measureBody(TriangleMesh{}), std::invalid_argument);
+}
+
+// The fold under the breasts: the front's lowest level between the breasts and the ribcage
+// under them, even where the belly below the ribs recedes further (the lowest front of the
+// whole window, where the underbust was taken before: 8 cm under the fold on the smallest
+// women's bodies of issue 31's grid).
+TEST(BodyMeasurements, TheUnderbustIsTheFoldUnderTheBreasts) {
+  for (const double belly : {0.0, 0.01, 0.02}) {
+    const BodyLandmarks l = underbustOf(mannequin(0.02, belly));
+    EXPECT_NEAR(l.bust, 1.2, 0.005) << belly;
+    EXPECT_NEAR(l.waist, 1.0, 0.005) << belly;
+    // the analytic fold: the chest's lowest front between the bust and the ribcage
+    double fold = 1.2, lowest = 1.0;
+    for (double y = 1.12; y <= 1.2; y += 1e-4) {
+      const double front = 0.08 + 0.02 * bump(y, 1.2, 0.02) + 0.008 * bump(y, 1.12, 0.025);
+      if (front < lowest) lowest = front, fold = y;
+    }
+    EXPECT_NEAR(l.underbust, fold, 0.003) << belly;
+  }
+}
+
+// No breasts: 3.5 cm under the bust (where the women's folds lie), between the bust and the
+// waist, not at the flat front's lowest point.
+TEST(BodyMeasurements, AFlatChestsUnderbustIsUnderTheBust) {
+  for (const double belly : {0.0, 0.02}) {
+    const BodyLandmarks l = underbustOf(mannequin(0.0, belly));
+    EXPECT_NEAR(l.bust - l.underbust, 0.035, 0.002) << belly;
+    EXPECT_GT(l.underbust, l.waist + 0.5 * (l.bust - l.waist)) << belly;
+  }
+}
+
+// As the breasts grow from none, or the belly recedes under breasts, the underbust moves
+// continuously: never more than 1 cm between bodies 2 mm apart (before, it fell 8 cm to the
+// window's foot as soon as the belly there receded past the fold's front).
+TEST(BodyMeasurements, TheUnderbustMovesContinuouslyWithTheBody) {
+  double previous = underbustOf(mannequin(0.0, 0.015)).underbust;
+  for (int mm = 2; mm <= 20; mm += 2) {
+    const double now = underbustOf(mannequin(0.001 * mm, 0.015)).underbust;
+    EXPECT_NEAR(now, previous, 0.01) << "breasts " << mm << " mm";
+    previous = now;
+  }
+  previous = underbustOf(mannequin(0.02, -0.01)).underbust;
+  for (int mm = -8; mm <= 20; mm += 2) {
+    const double now = underbustOf(mannequin(0.02, 0.001 * mm)).underbust;
+    EXPECT_NEAR(now, previous, 0.01) << "belly " << mm << " mm";
+    previous = now;
+  }
 }
