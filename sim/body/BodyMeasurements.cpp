@@ -10,17 +10,17 @@
 //   the narrowest; the arm followed by sections perpendicular to its own axis, the wrist its
 //   narrowest section before the hand widens;
 // - the underbust "directly below the breasts" (ISO 8559-1): the fold under them, found on the
-//   torso's front (its most forward z) walking down from 2 cm under the bust, as far as 60 %
-//   of the way to the waist: the lowest front so far, until the front comes forward again by
-//   2 mm (the chest wall under the breast). The fold's depth is the lesser of how far the
-//   front recedes to it from the bust level and how far it comes forward again below it. A
-//   flat chest has no fold, or one too shallow to tell from the chest wall's own waves (the
-//   men's bodies of issue 31's grid: under 5 mm; the women's: 5 mm and more): there the
-//   underbust is 3.5 cm under the bust, where the women's folds lie (2.8 to 4.0 cm). Between
-//   2 and 5 mm of depth it moves linearly from that level to the fold's, so it moves
-//   continuously as a bust grows from flat, rather than jump to wherever the lowest front
-//   of the whole window is (on the smallest women's bodies, the ribcage's foot 8 cm under
-//   the fold, issue 31). Depths and distances at 1.7 m, scaled by the stature.
+//   torso's front (its most forward z): walking down from the breasts' apex (the most forward
+//   level within 4 cm under the bust), the lowest front so far until the front comes forward
+//   again by 0.5 mm (the chest wall under the breast), kept between 2 cm under the bust and
+//   60 % of the way to the waist. Its depth is how far the front recedes from the apex to it.
+//   A flat chest has no fold, or one too shallow to tell from the chest wall's own waves (the
+//   men's bodies of issue 31's grid: under 5 mm; the women's: 8 mm and more; human.zae: 11
+//   mm): there the underbust is 3.5 cm under the bust, where the women's folds lie (2.8 to
+//   4.0 cm). Between 4 and 7 mm of depth it moves linearly from that level to the fold's, so
+//   it moves continuously as a bust grows from flat, rather than jump to wherever the lowest
+//   front of the whole window is (on the smallest women's bodies, the ribcage's foot 8 cm
+//   under the fold, issue 31). Depths and distances at 1.7 m, scaled by the stature.
 
 #include "sim/body/BodyMeasurements.h"
 
@@ -220,36 +220,41 @@ void measureArm(const Tape& tape, BodyMeasurements& m) {
   m.armLength = toShoulder + track.arc[wrist];
 }
 
-constexpr double kFoldDetect = 0.002;  // m the front comes forward under a fold: a fold at all
-constexpr double kFoldFull = 0.005;    // m of depth from which the fold alone is the underbust
-constexpr double kFlatDrop = 0.035;    // m under the bust: the underbust where there is no fold
+constexpr double kApexReach = 0.04;     // m under the bust within which the breast's apex lies
+constexpr double kFoldDetect = 0.0005;  // m the front comes forward again under a fold
+constexpr double kFoldFaint = 0.004;    // m of depth (apex to fold) up to which a fold counts for nothing
+constexpr double kFoldFull = 0.007;     // m of depth from which the fold alone is the underbust
+constexpr double kFlatDrop = 0.035;     // m under the bust: the underbust where there is no fold
 
 struct Fold {
   double height = 0;  // m, absolute
-  double depth = 0;   // m: 0 where there is none
+  double depth = 0;   // m the front recedes from the apex to the fold: 0 where there is none
 };
 
-// The inframammary fold between `top` and `bottom` (absolute heights, top the higher): walking
-// down, the lowest front so far until the front comes forward kFoldDetect past it; its depth
-// the lesser of how far the front receded to it from `bust` and how far it comes forward
-// below it (to `bottom`). Depth 0 where the front never comes forward again.
+// The fold under the breasts, at most `top` and at least `bottom` (absolute heights): walking
+// down from the apex (the torso's most forward level within kApexReach under the bust), the
+// lowest front so far until the front comes forward kFoldDetect past it. Depth 0 where it
+// never comes forward again above `bottom`.
 Fold findFold(const Tape& tape, double bust, double top, double bottom) {
   const auto front = [&](double y) { return tape.front(y); };
-  std::vector<double> levels;  // from the bottom up, as Tape::best scans: the same levels where they agree
-  for (double y = bottom; y <= top; y += kScanStep) levels.push_back(y);
-  if (levels.empty()) return {};
-  double lowest = levels.back(), lowestFront = front(lowest), below = -std::numeric_limits<double>::infinity();
-  bool found = false;
-  for (auto y = levels.rbegin() + 1; y != levels.rend(); ++y) {
-    const double f = front(*y);
-    if (!found && f < lowestFront) lowest = *y, lowestFront = f;
-    found = found || f > lowestFront + tape.scaled(kFoldDetect);
-    if (found) below = std::max(below, f);
+  std::vector<double> levels, fronts;  // from the bottom up as Tape::best scans them, on up to the bust
+  for (double y = bottom; y <= bust; y += kScanStep) levels.push_back(y), fronts.push_back(front(y));
+  size_t apex = levels.size();
+  for (size_t k = 0; k < levels.size(); ++k)
+    if (levels[k] >= bust - tape.scaled(kApexReach) && (apex == levels.size() || fronts[k] > fronts[apex])) apex = k;
+  if (apex == levels.size() || apex == 0) return {};
+  size_t lowest = apex;
+  for (size_t k = apex; k-- > 0;) {
+    if (fronts[k] < fronts[lowest])
+      lowest = k;
+    else if (fronts[k] > fronts[lowest] + tape.scaled(kFoldDetect))
+      break;
+    if (k == 0) return {};  // receding all the way down: no fold
   }
-  if (!found) return {};
-  // to the millimetre, never past the level it was found by
-  const Level fold = tape.best(std::max(bottom, lowest - kScanStep), std::min(top, lowest + kScanStep), -1, front);
-  return {fold.height, std::min(front(bust) - fold.value, below - fold.value)};
+  // to the millimetre within the window, about the level it was found at
+  const double centre = std::clamp(levels[lowest], std::min(bottom, top), top);
+  const Level fold = tape.best(std::max(bottom, centre - kScanStep), std::min(top, centre + kScanStep), -1, front);
+  return {fold.height, fronts[apex] - fold.value};
 }
 
 // The underbust (rules at the top of the file) under the bust at `bust` and above the waist
@@ -259,7 +264,7 @@ double underbustHeight(const Tape& tape, double bust, double waist) {
   const double flat = std::clamp(bust - tape.scaled(kFlatDrop), std::min(bottom, top), top);
   const Fold fold = findFold(tape, bust, top, bottom);
   const double share =
-      std::clamp((fold.depth - tape.scaled(kFoldDetect)) / tape.scaled(kFoldFull - kFoldDetect), 0.0, 1.0);
+      std::clamp((fold.depth - tape.scaled(kFoldFaint)) / tape.scaled(kFoldFull - kFoldFaint), 0.0, 1.0);
   return share > 0 ? flat + share * (fold.height - flat) : flat;
 }
 

@@ -284,6 +284,10 @@ TEST(BodyTools, MeasureTheDefaultBodyAsATapeWould) {
   // a woman's proportions: the waist narrower than bust and hips, the neck narrowest
   EXPECT_LT(m.waistGirth, m.bustGirth);
   EXPECT_LT(m.waistGirth, m.hipGirth);
+  // the underbust at the fold under the breasts (1.17 m, 79.5 cm against the bust's 90.0 cm),
+  // not on the breasts 3.5 cm under the bust level, though the front under the fold comes
+  // forward only 1 mm
+  EXPECT_LT(m.underbustGirth, m.bustGirth - 0.08);
   EXPECT_LT(m.neckGirth, m.upperArmGirth * 2);
   EXPECT_GT(m.armLength, 0.4);
   // figment-measure prints the same as JSON with --json, for the body in centimetres, z up,
