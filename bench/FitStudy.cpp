@@ -9,6 +9,7 @@
 
 #include "CsvFile.h"
 #include "Statistics.h"
+#include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
 #include "io/MakeHumanSession.h"
 #include "io/SizeChartFile.h"
@@ -100,17 +101,29 @@ void gridRows(SizeFitter& fitter, MakeHumanSession& human, const SizeChart& char
   }
 }
 
-// Whether each style's and sex's grid recommendations never get smaller: the violations.
-int monotonyBreaks(const SizeChart& chart, const std::vector<GridRow>& grid) {
-  int breaks = 0;
+bool soldIn(const GarmentCatalogue& catalogue, const std::string& style, Sex sex) {
+  const CatalogueStyle* sold = catalogue.style(style);
+  return sold && !sold->sizes(sex).empty();
+}
+
+// Whether each style's and sex's grid recommendations never get smaller: the violations,
+// told apart where the catalogue does not sell the style in that sex (the flared skirt on
+// men's bodies), since no shopper is told those sizes.
+struct MonotonyBreaks {
+  int sold = 0, unsold = 0;
+};
+
+MonotonyBreaks monotonyBreaks(const GarmentCatalogue& catalogue, const std::vector<GridRow>& grid) {
+  MonotonyBreaks breaks;
   for (size_t k = 1; k < grid.size(); ++k) {
     const GridRow &a = grid[k - 1], &b = grid[k];
     if (a.style != b.style || a.sex != b.sex || a.recommended.empty() || b.recommended.empty()) continue;
     const Sex sex = a.sex == "male" ? Sex::Male : Sex::Female;
-    if (chart.find(sex, b.recommended) < chart.find(sex, a.recommended)) {
-      std::printf("not monotone: %s %s at %.2f -> %s, at %.2f -> %s\n", a.style.c_str(), a.sex.c_str(), a.position,
-                  a.recommended.c_str(), b.position, b.recommended.c_str());
-      ++breaks;
+    if (catalogue.chart().find(sex, b.recommended) < catalogue.chart().find(sex, a.recommended)) {
+      const bool sold = soldIn(catalogue, a.style, sex);
+      std::printf("not monotone%s: %s %s at %.2f -> %s, at %.2f -> %s\n", sold ? "" : " (not sold in this sex)",
+                  a.style.c_str(), a.sex.c_str(), a.position, a.recommended.c_str(), b.position, b.recommended.c_str());
+      ++(sold ? breaks.sold : breaks.unsold);
     }
   }
   return breaks;
@@ -134,7 +147,7 @@ void summarise(const std::vector<ChartRow>& rows) {
       rows.size(), own, median(warm), median(cold), warmSteps, coldSteps, median(saved));
 }
 
-int writeFitCsv(const FitStudyOptions& options, const SizeChart& chart, const std::vector<ChartRow>& rows,
+int writeFitCsv(const FitStudyOptions& options, const GarmentCatalogue& catalogue, const std::vector<ChartRow>& rows,
                 const std::vector<GridRow>& grid) {
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/fit.csv", [&](std::ostream& csv) -> std::string {
@@ -155,8 +168,11 @@ int writeFitCsv(const FitStudyOptions& options, const SizeChart& chart, const st
           << r.recommended << '\n';
     return "";
   });
-  std::printf("grid: %zu bodies, %d places where the recommendation got smaller\n", grid.size(),
-              monotonyBreaks(chart, grid));
+  const MonotonyBreaks breaks = monotonyBreaks(catalogue, grid);
+  std::printf(
+      "grid: %zu bodies, %d places where the recommendation got smaller (and %d in styles not sold in that "
+      "sex)\n",
+      grid.size(), breaks.sold, breaks.unsold);
   return gridWritten ? 0 : 1;
 }
 
@@ -185,7 +201,7 @@ int runFitStudy(const FitStudyOptions& options) {
       gridRows(fitter, human, chart, options, styleName, sex, grid);
     }
   }
-  return writeFitCsv(options, chart, rows, grid);
+  return writeFitCsv(options, GarmentCatalogue(defaultCataloguePath()), rows, grid);
 }
 
 }  // namespace figment::bench
