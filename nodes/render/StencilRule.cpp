@@ -11,7 +11,7 @@
 #include <Inventor/nodes/SoFile.h>
 
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 #include "nodes/SceneSearch.h"
 #include "nodes/render/ClothingLayer.h"
@@ -22,12 +22,18 @@ namespace figment {
 
 namespace {
 
-// Where a node lies for the camera: its screen rectangle and its depth range along the
-// viewing direction (nearest corner and centre) from its world bounding box.
+// Where a node lies for the camera, from its world bounding box: its screen rectangle,
+// and along the viewing direction its centre's depth and how far it reaches towards the
+// eye from there. A garment or a limb is round, not a box: its reach is that of the
+// ellipsoid inscribed in the box, not of the box's nearest corner. The corner overstates
+// it in oblique views (by up to 1.7 times; the default dress from 135 degrees, 10 up:
+// 0.35 m for the corner, 0.21 m for the ellipsoid, 0.22 m for the cloth's nearest node),
+// and the arm beside the dress, its hand in front of the hem, then missed the front half
+// of the dress by 1 mm and the dress was drawn over the hand (issue 29).
 struct Extent {
   SbBox2f screen;
-  float nearest = std::numeric_limits<float>::max();
   float centre = 0.0f;
+  float reach = 0.0f;
   bool empty = true;
 };
 
@@ -43,23 +49,27 @@ Extent extentOf(SoPath* path, const SbViewportRegion& viewport, const SbViewVolu
   const SbVec3f& high = box.getMax();
   for (int corner = 0; corner < 8; ++corner) {
     const SbVec3f p(corner & 1 ? high[0] : low[0], corner & 2 ? high[1] : low[1], corner & 4 ? high[2] : low[2]);
-    const float depth = (p - eye).dot(direction);
-    extent.nearest = std::min(extent.nearest, depth);
     SbVec3f screen;
     view.projectToScreen(p, screen);
     extent.screen.extendBy(SbVec2f(screen[0], screen[1]));
   }
   extent.centre = (box.getCenter() - eye).dot(direction);
+  float reach = 0.0f;  // the inscribed ellipsoid's support along the direction
+  for (int axis = 0; axis < 3; ++axis) {
+    const float along = 0.5f * (high[axis] - low[axis]) * direction[axis] / direction.length();
+    reach += along * along;
+  }
+  extent.reach = std::sqrt(reach);
   return extent;
 }
 
 // In front: the part's centre lies in the front half of the garment's depth, nearer
-// than halfway from the garment's centre to its nearest point. A part the garment
-// encloses (a torso) sits about its centre; one outside and nearer (a forearm across a
-// shirt, the near arm from the side) is well in front of it.
+// than halfway from the garment's centre to its nearest point (its reach). A part the
+// garment encloses (a torso) sits about its centre; one outside and nearer (a forearm
+// across a shirt, the near arm from the side or obliquely from behind) is well in front.
 bool inFront(const Extent& part, const Extent& garment) {
   if (part.empty || garment.empty || !part.screen.intersect(garment.screen)) return false;
-  return part.centre < garment.centre - 0.5f * (garment.centre - garment.nearest);
+  return part.centre < garment.centre - 0.5f * garment.reach;
 }
 
 // Paths to every node of `type` under `root`, inside File nodes too: the render draws

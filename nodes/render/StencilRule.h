@@ -24,10 +24,11 @@ struct StencilDecision {
 
 // For the camera `view`, a StencilSeparator under `root` writes the stencil when it
 // lies in front of a ClothingLayer: their screen rectangles overlap, and the centre of
-// the separator's bounding box lies in the front half of the layer's depth range along
-// the viewing direction (nearer than halfway from the layer's centre to its nearest
-// point): a forearm across a shirt, the near arm seen from the side; not a torso the
-// garment encloses, nor a part behind the garment. Every ClothingLayer that such a
+// the separator's bounding box lies in the front half of the layer's depth along the
+// viewing direction (nearer than halfway from the layer's centre to its nearest point,
+// that of the ellipsoid inscribed in its bounding box): a forearm across a shirt, the
+// near arm seen from the side or obliquely from behind; not a torso the garment
+// encloses, nor a part behind the garment. Every ClothingLayer that such a
 // separator lies in front of is masked. Changes nothing in the scene.
 StencilDecision decideStencil(SoNode* root, const SbViewportRegion& viewport, const SbViewVolume& view);
 

@@ -203,10 +203,9 @@ class DefaultScene : public ::testing::Test {
           EXPECT_GT(plain.countWithin(figment::test::kRed, dress), 500) << "azimuth " << azimuth << ": the control";
           continue;  // the arms are judged on the drape as it is
         }
-        if (azimuth != 0.0 && azimuth != 60.0 && azimuth != 180.0) continue;
         EXPECT_GE(hybrid.countWithin(figment::test::kGreen, dress), plain.countWithin(figment::test::kGreen, dress))
             << "azimuth " << azimuth;
-        if (azimuth == 60.0) {
+        if (azimuth == 60.0 || azimuth == 90.0 || azimuth == 270.0) {
           EXPECT_GT(plain.countWithin(figment::test::kGreen, dress), 100) << "the near arm is in front";
         }
       }
@@ -317,8 +316,10 @@ TEST_F(DefaultScene, FrontViewShowsDressAndSkin) {
 TEST_F(DefaultScene, NoSkinInsideTheDressAndArmsInFrontKeepTheirPixels) {
   // From 8 azimuths (and 60 degrees, the near arm in front of the dress). Wherever the
   // dress's outside faces the viewer, its outline and the rim seen edge-on included, no
-  // torso pixel shows; at the front, side and back (0, 60, 180) the arms keep at least
-  // the pixels the depth buffer gives them there. The draped dress stands off the skin by
+  // torso pixel shows, and the arms keep at least the pixels the depth buffer gives them
+  // there (from 135 and 225 degrees, 4 and 5 pixels of the near hand in front of the hem,
+  // which the dress was drawn over while the stencil rule judged the garment's depth by
+  // its bounding box's nearest corner; issue 29). The draped dress stands off the skin by
   // its clearance, so the depth buffer alone shows no torso either (but for a pixel or
   // two at the rim); the control draws it 7 % narrower about its axis (into the skin by
   // up to a centimetre): then the depth buffer alone shows the torso through it (650 to
