@@ -105,6 +105,9 @@ struct ClothingLayer::DrawCache {
   std::vector<int32_t> index;
   std::unique_ptr<figment::DisplaySubdivision> layout;
   SbUniqueId layoutLayerId = 0;
+  // The box of the display mesh's triangles (empty without subdivision): what the layer
+  // draws reaches this far past its faces (computeBBox).
+  SbBox3f drawnBox;
   std::vector<figment::FacetGeometry> facets;
   figment::Winding winding = figment::Winding::UNDECIDED;  // which side is the outside
   // The view the arrays were built for.
@@ -135,8 +138,12 @@ struct ClothingLayer::DrawCache {
       layout.reset();
       index.assign(faces, faces + indexCount);
       smooth = vertexNormals(points.data(), pointCount, faces, indexCount);
+      drawnBox.makeEmpty();
     } else {
       subdivide(layer, levels);
+      drawnBox.makeEmpty();
+      for (int32_t corner : index)
+        if (corner >= 0) drawnBox.extendBy(points[corner]);
     }
     facets = figment::describeFacets(points.data(), static_cast<int>(points.size()), index.data(),
                                      static_cast<int>(index.size()));
@@ -242,6 +249,20 @@ void ClothingLayer::GLRenderPlain(SoGLRenderAction* action) {
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisableClientState(GL_VERTEX_ARRAY);
   state->pop();
+}
+
+void ClothingLayer::computeBBox(SoAction* action, SbBox3f& box, SbVec3f& center) {
+  inherited::computeBBox(action, box, center);
+  if (box.isEmpty() || std::clamp(displaySubdivision.getValue(), 0, kMostDisplaySubdivision) == 0) return;
+  // The display mesh, made here as the next render would make it (and kept for it).
+  SoState* state = action->getState();
+  state->push();
+  if (auto* properties = static_cast<SoVertexProperty*>(vertexProperty.getValue())) properties->doAction(action);
+  if (!cache_) cache_ = std::make_unique<DrawCache>();
+  cache_->takeGeometry(SoCoordinateElement::getInstance(state), *this);
+  state->pop();
+  box.extendBy(cache_->drawnBox);
+  center = box.getCenter();
 }
 
 void ClothingLayer::arrange(SoGLRenderAction* action) {

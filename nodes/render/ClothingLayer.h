@@ -14,8 +14,9 @@
 
   Paper §5: a Clothing Layer keeps the definition of an indexed face set, so any
   IndexedFaceSet in a scene can be swapped for one, and adds how the layer is drawn
-  over what lies beneath it. It accepts every IndexedFaceSet field, and picks, bounds,
-  counts and writes exactly as an IndexedFaceSet does.
+  over what lies beneath it. It accepts every IndexedFaceSet field, and picks, counts
+  and writes exactly as an IndexedFaceSet does; it bounds as one too, but for the display
+  mesh (below), whose box it adds.
 
   Drawing (the hybrid depth-buffer / depth-sort method of §5): every render, each facet
   is tested against the line from the eye (or the viewing direction of an orthographic
@@ -55,8 +56,11 @@
   (across a seam). The simulation stays as coarse as the drape needs; the picture shows it
   smooth. Every pass of the hybrid drawing (the sort, the facing test, the stencil) uses
   the display mesh, and so does the depth buffer alone (GLRenderPlain: figment-view
-  --depth-buffer-only). Picking, bounds, counts, writing and --export keep the faces. Because the order depends on the
-  view, a ClothingLayer keeps any separator above it from caching its rendering.
+  --depth-buffer-only). The bounding box covers what is drawn: the faces' box, grown to
+  hold the display mesh (which reaches a little past them), made with it and kept with
+  it while the coordinates stay. Picking, counts, writing and --export keep the faces.
+  Because the order depends on the view, a ClothingLayer keeps any separator above it
+  from caching its rendering.
 
   The garment's coordinates come from the Coordinate3 before it, usually connected to
   a ClothEngine's output:
@@ -111,6 +115,10 @@ class ClothingLayer : public SoIndexedFaceSet {
 
  protected:
   ~ClothingLayer() override;
+  // The box of what the layer draws: its faces, and with a display mesh that mesh too,
+  // which stands a little past them (the default dress's by up to 2 mm). A camera framed
+  // on the scene (viewAll), culling and the near and far planes then hold all of it.
+  void computeBBox(SoAction* action, SbBox3f& box, SbVec3f& center) override;
 
  private:
   // The facets in drawing order, as vertex arrays, kept while neither the view nor the

@@ -6,9 +6,14 @@
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoRayPickAction.h>
 #include <Inventor/details/SoFaceDetail.h>
+#include <Inventor/nodes/SoCoordinate3.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
 #include "nodes/render/ClothingLayer.h"
+#include "sim/core/DisplaySubdivision.h"
 #include "support/ActionChecks.h"
 #include "support/SceneTestSupport.h"
 
@@ -110,4 +115,78 @@ TEST_F(ClothingLayerTest, ActsLikeAnIndexedFaceSetInEveryAction) {
   EXPECT_EQ(face->getFaceIndex(), 1);
   ASSERT_EQ(face->getNumPoints(), 4);  // the second square
   EXPECT_EQ(face->getPoint(0)->getMaterialIndex(), 0) << "materialIndex [ 1, 0 ]: the second face takes colour 0";
+}
+
+namespace {
+
+// An open hexagonal tube of radius 1 about z, 2 long, in triangles: its corners lie at
+// 0, 60, ..., 300 degrees, so its flat sides reach y = +-sin 60 and the smooth surface of
+// a display mesh stands past that, between the corners at 60 and 120 degrees.
+std::string hexagonalTube(int levels) {
+  std::string points, faces;
+  for (int ring = 0; ring < 2; ++ring)
+    for (int k = 0; k < 6; ++k)
+      points += std::to_string(std::cos(k * M_PI / 3)) + " " + std::to_string(std::sin(k * M_PI / 3)) + " " +
+                std::to_string(2.0 * ring) + ", ";
+  for (int k = 0; k < 6; ++k) {
+    const int a = k, b = (k + 1) % 6, c = 6 + (k + 1) % 6, d = 6 + k;
+    faces += std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c) + " -1, " + std::to_string(a) + " " +
+             std::to_string(c) + " " + std::to_string(d) + " -1, ";
+  }
+  return "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ " + points + "] }\n" +
+         "  ClothingLayer { coordIndex [ " + faces + "] displaySubdivision " + std::to_string(levels) + " }\n}\n";
+}
+
+// The box of the display mesh the layer draws, made apart from it.
+SbBox3f displayMeshBox(const SoCoordinate3& coordinates, const ClothingLayer& layer) {
+  std::vector<figment::Vec3> points;
+  for (int i = 0; i < coordinates.point.getNum(); ++i)
+    points.emplace_back(coordinates.point[i][0], coordinates.point[i][1], coordinates.point[i][2]);
+  std::vector<figment::Triangle> triangles;
+  for (int i = 0; i + 3 < layer.coordIndex.getNum(); i += 4)
+    triangles.push_back({layer.coordIndex[i], layer.coordIndex[i + 1], layer.coordIndex[i + 2]});
+  const figment::DisplaySubdivision display(triangles, points, layer.displaySubdivision.getValue());
+  std::vector<figment::Vec3> fine, normals;
+  display.apply(points, fine, normals);
+  SbBox3f box;
+  for (const figment::Triangle& t : display.triangles())
+    for (int v : t) box.extendBy(SbVec3f(float(fine[v].x()), float(fine[v].y()), float(fine[v].z())));
+  return box;
+}
+
+void expectSameBox(const SbBox3f& a, const SbBox3f& b) {
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_NEAR(a.getMin()[axis], b.getMin()[axis], 1e-6f) << "axis " << axis;
+    EXPECT_NEAR(a.getMax()[axis], b.getMax()[axis], 1e-6f) << "axis " << axis;
+  }
+}
+
+}  // namespace
+
+// The box covers what is drawn (issue 29): with a display mesh, that mesh, which stands
+// past the faces; at level 0 the faces' box, as an IndexedFaceSet's. Picking and counts
+// keep the faces (ActsLikeAnIndexedFaceSetInEveryAction).
+TEST_F(ClothingLayerTest, BoundsWhatItDraws) {
+  SceneRoot faces = readString(hexagonalTube(0));
+  ASSERT_TRUE(faces);
+  const SbBox3f flat = boundingBoxOf(faces.get());
+  EXPECT_NEAR(flat.getMax()[1], std::sin(M_PI / 3), 1e-5);
+  for (int levels : {1, 2}) {
+    SceneRoot root = readString(hexagonalTube(levels));
+    ASSERT_TRUE(root);
+    auto* layer = find<ClothingLayer>(root.get());
+    auto* coordinates = find<SoCoordinate3>(root.get());
+    ASSERT_TRUE(layer && coordinates);
+    const SbBox3f drawn = displayMeshBox(*coordinates, *layer);
+    EXPECT_GT(drawn.getMax()[1], flat.getMax()[1] + 0.05f) << "the display mesh stands past the faces";
+    SbBox3f expected = flat;
+    expected.extendBy(drawn);
+    expectSameBox(boundingBoxOf(root.get()), expected);
+    // Kept with the coordinates: a moved corner moves the box.
+    coordinates->point.set1Value(0, 3.0f, 0.0f, 0.0f);
+    SbBox3f moved = displayMeshBox(*coordinates, *layer);
+    moved.extendBy(SbVec3f(3.0f, 0.0f, 0.0f));
+    expectSameBox(boundingBoxOf(root.get()), moved);
+  }
+  expectSameBox(boundingBoxOf(faces.get()), flat);
 }
