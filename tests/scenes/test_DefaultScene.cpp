@@ -1,6 +1,7 @@
 // The default scene end to end: scenes/dress.iv is read, the dress is draped on the
 // default body by the simulation and comes to rest outside the body, held up at the
 // shoulders, and the front view shows both dress and skin.
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/engines/SoEngineOutput.h>
 #include <Inventor/fields/SoMFVec3f.h>
@@ -99,9 +100,9 @@ class DefaultScene : public ::testing::Test {
   // `outsideOnly`, only the dress, as a solid whose back faces are culled: the pixels
   // where its outside faces the viewer (not its inside, seen through the neckline).
   // Every variant of one view is framed on the box of the scene as the hybrid nodes draw
-  // it: a stand-in's box differs (the display mesh stands up to 2 mm outside the faces
-  // the layer is bounded by, and the dress's back is the scene's), and a camera moved
-  // by that much moves the outline by a pixel, which then reads as skin at the rim.
+  // it: a camera moved by a hair moves the outline by a pixel, which then reads as skin
+  // at the rim. (Before the layer's box held its display mesh, the stand-in's box stood
+  // up to 2 mm outside the layer's.)
   static figment::test::Image flatRender(double azimuth, bool outsideOnly, bool plain, float shrink = 1.0f) {
     const ImageSize size{300, 400};
     std::vector<std::function<void()>> undo;
@@ -326,8 +327,8 @@ TEST_F(DefaultScene, NoSkinInsideTheDressAndArmsInFrontKeepTheirPixels) {
   // 2,300 pixels a view) and the hybrid nodes still none. At every level of display mesh
   // the scenes draw (0: the paper's drawing of the simulation's faces; 1, the scene's;
   // 2). Before, the hybrid render and its references were framed each on its own scene's
-  // box, and the IndexedFaceSet standing in for the display mesh is up to 2 mm larger
-  // than the layer's faces: the outlines moved by a pixel, and 2 to 4 pixels of the rim
+  // box, and the IndexedFaceSet standing in for the display mesh was up to 2 mm larger
+  // than the layer's box was then: the outlines moved by a pixel, and 2 to 4 pixels of the rim
   // (up to 11 narrowed) read as skin through the display mesh, none on one camera.
   SoSearchAction search;
   search.setName("Dress");
@@ -339,6 +340,47 @@ TEST_F(DefaultScene, NoSkinInsideTheDressAndArmsInFrontKeepTheirPixels) {
     layer->displaySubdivision = levels;
     SCOPED_TRACE("displaySubdivision " + std::to_string(levels));
     expectNoSkinInsideTheDress();
+  }
+  layer->displaySubdivision = sceneLevels;
+}
+
+TEST_F(DefaultScene, TheDressIsBoundedAsDrawn) {
+  // The layer's bounding box holds the display mesh it draws, which stands up to 2 mm
+  // past its faces: the dress bounds as that mesh as an IndexedFaceSet does, at every
+  // level; at level 0 the box is the faces' own.
+  SoSearchAction search;
+  search.setName("Dress");
+  search.apply(scene_);
+  auto* layer = static_cast<ClothingLayer*>(search.getPath()->getTail());
+  auto* parent = static_cast<SoGroup*>(search.getPath()->getNodeFromTail(1));
+  auto boxOf = [parent] {
+    SoGetBoundingBoxAction bounds(SbViewportRegion(300, 400));
+    bounds.apply(parent);
+    return bounds.getBoundingBox();
+  };
+  const int sceneLevels = layer->displaySubdivision.getValue();
+  SbBox3f faces;
+  for (int levels : {0, 1, 2}) {
+    layer->displaySubdivision = levels;
+    SCOPED_TRACE("displaySubdivision " + std::to_string(levels));
+    const SbBox3f drawn = boxOf();
+    if (levels == 0) faces = drawn;
+    SoNode* standIn = plainDress(*layer);
+    layer->ref();
+    parent->replaceChild(layer, standIn);
+    const SbBox3f expected = boxOf();
+    parent->replaceChild(standIn, layer);
+    layer->unref();
+    float past = 0.0f;  // how far the box reaches past the faces' box
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_NEAR(drawn.getMin()[axis], expected.getMin()[axis], 1e-6f) << "axis " << axis;
+      EXPECT_NEAR(drawn.getMax()[axis], expected.getMax()[axis], 1e-6f) << "axis " << axis;
+      past = std::max({past, faces.getMin()[axis] - drawn.getMin()[axis], drawn.getMax()[axis] - faces.getMax()[axis]});
+    }
+    if (levels > 0) {
+      EXPECT_GT(past, 0.0005f) << "the display mesh stands past the faces";
+    }
+    RecordProperty("box_past_faces_mm_level_" + std::to_string(levels), std::to_string(past * 1000));
   }
   layer->displaySubdivision = sceneLevels;
 }
