@@ -50,18 +50,24 @@ T* findIn(SoNode* root) {
   return search.getPath() ? static_cast<T*>(search.getPath()->getTail()) : nullptr;
 }
 
-}  // namespace
-
-TEST(FitMapDrawing, ColoursTheGarmentsVerticesByTheirBands) {
+// The tube draped round the cylinder in `dir`, and its one garment's fit.
+void drapeTube(const figment::test::TempDir& dir, SceneSession& session, std::vector<EngineFit>& fits) {
   figment::viewer::initHeadless();
-  figment::test::TempDir dir;
   figment::exportObj(figment::test::cylinder(kBody), (dir.path() / "cylinder.obj").string());
-  SceneSession session;
   ASSERT_TRUE(session.load(dir.file("scene.iv", tubeScene()))) << session.loadError();
   session.drape();
   ASSERT_EQ(session.firstError(), "");
-  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, nullptr);
+  fits = measureEngineFits(session.scene(), false, nullptr);
   ASSERT_EQ(fits.size(), 1u);
+}
+
+}  // namespace
+
+TEST(FitMapDrawing, ColoursTheGarmentsVerticesByTheirBands) {
+  figment::test::TempDir dir;
+  SceneSession session;
+  std::vector<EngineFit> fits;
+  ASSERT_NO_FATAL_FAILURE(drapeTube(dir, session, fits));
 
   // Unstretched: every vertex in the first band. 17 mm off the skin (the stand-off less the
   // clearance, within the chords' 0.2 mm): one band, 1 - 17/50 of the way to red.
@@ -91,15 +97,10 @@ TEST(FitMapDrawing, ColoursTheGarmentsVerticesByTheirBands) {
 // sections' largest strain being the round one; float positions move it by 1e-7), and the face set drawn coloured again
 // by them.
 TEST(FitMapDrawing, AnotherStateOfTheDrapeIsColouredByItsOwnBands) {
-  figment::viewer::initHeadless();
   figment::test::TempDir dir;
-  figment::exportObj(figment::test::cylinder(kBody), (dir.path() / "cylinder.obj").string());
   SceneSession session;
-  ASSERT_TRUE(session.load(dir.file("scene.iv", tubeScene()))) << session.loadError();
-  session.drape();
-  ASSERT_EQ(session.firstError(), "");
-  const std::vector<EngineFit> fits = measureEngineFits(session.scene(), false, nullptr);
-  ASSERT_EQ(fits.size(), 1u);
+  std::vector<EngineFit> fits;
+  ASSERT_NO_FATAL_FAILURE(drapeTube(dir, session, fits));
   std::vector<SbVec3f> stretched;
   for (const figment::Vec3& p : fits[0].rest.vertices)
     stretched.emplace_back(float(1.022 * p.x()), float(p.y()), float(1.022 * p.z()));
