@@ -12,7 +12,6 @@
 #include "SceneGarment.h"
 #include "Statistics.h"
 #include "TemporaryScript.h"
-#include "nodes/cloth/ClothEngineInputs.h"
 
 namespace figment::bench {
 
@@ -139,7 +138,7 @@ int runProgressiveStudy(const ProgressiveStudyOptions& options) {
   std::optional<TemporaryScript> made;
   if (script.empty()) {
     try {
-      made.emplace(garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex), options.coarseShare);
+      made.emplace(garment.engine->restGarment(), options.coarseShare);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "figment-bench: %s: %s\n", options.scene.c_str(), e.what());
       return 1;

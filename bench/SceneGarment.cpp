@@ -14,7 +14,6 @@
 #include "Statistics.h"
 #include "nodes/Init.h"
 #include "nodes/SceneSearch.h"
-#include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/core/TriangleMesh.h"
 
 namespace figment::bench {
@@ -65,7 +64,7 @@ bool SceneGarment::load(const std::string& scene, std::string& error) {
   }
   rest.assign(engine->restPoints.getValues(0), engine->restPoints.getValues(0) + engine->restPoints.getNum());
   try {
-    edges = uniqueEdges(garmentFromFields(engine->restPoints, engine->coordIndex));
+    edges = uniqueEdges(engine->restGarment());
   } catch (const std::invalid_argument& e) {
     error = scene + ": " + engine->label() + ": " + e.what();
     return false;

@@ -12,7 +12,6 @@
 #include "SceneGarment.h"
 #include "Statistics.h"
 #include "TemporaryScript.h"
-#include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/progressive/Resampling.h"
 
 namespace figment::bench {
@@ -113,7 +112,7 @@ int runSizeStudy(const SizeStudyOptions& options) {
     return 1;
   }
   garment.engine->maxTime = options.maxTime;
-  const TriangleMesh base = garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex);
+  const TriangleMesh base = garment.engine->restGarment();
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/sizes.csv", [&](std::ostream& csv) -> std::string {
     // Steps, walls and deviations are medians over the time steps; *_rested count the

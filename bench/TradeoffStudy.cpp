@@ -20,7 +20,6 @@
 #include "nodes/body/CollisionBody.h"
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
-#include "nodes/cloth/ClothEngineInputs.h"
 #include "nodes/cloth/ToleranceChoice.h"
 #include "sim/body/Skeleton.h"
 #include "sim/collision/Collider.h"
@@ -269,7 +268,7 @@ std::string studyScene(const std::string& scene, const TradeoffStudyOptions& opt
   SceneGarment garment;
   std::string error;
   if (!garment.load(scene, error)) return error;
-  const TriangleMesh base = garmentFromFields(garment.engine->restPoints, garment.engine->coordIndex);
+  const TriangleMesh base = garment.engine->restGarment();
   const Bodies bodies(garment.session.scene(), options, base.vertices, garment.engine->body.getValue(), error);
   if (!error.empty()) return scene + ": " + error;
   std::printf("%s\n", scene.c_str());
