@@ -12,18 +12,19 @@
 #include "SceneGarment.h"
 #include "Statistics.h"
 #include "TemporaryScript.h"
+#include "sim/progressive/ProgressiveDrape.h"
 
 namespace figment::bench {
 
 namespace {
 
-// The script's number of levels: a drape of one step that ends at the coarsest level.
+// The script's number of levels: a drape of one coarse step that ends at the coarsest level.
 int countLevels(SceneGarment& garment, const std::string& script, std::string& error) {
   ClothEngine& engine = *garment.engine;
   const double maxTime = engine.maxTime.getValue();
   engine.progressiveScript = script.c_str();
   engine.endLevel = 0;
-  engine.maxTime = engine.timeStepSeconds();
+  engine.maxTime = kMaxStepGrowth * engine.timeStepSeconds();  // a coarse level's step may be longer
   const RepeatedDrape probe = garment.drapeRepeatedly(1);
   engine.maxTime = maxTime;
   error = probe.error;

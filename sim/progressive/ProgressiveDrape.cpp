@@ -21,8 +21,6 @@ constexpr int kBatches = 10;  // the splits come in at most this many rebuilds (
 // where the body holds their ends apart.
 constexpr double kSettledStrain = 0.01;
 constexpr int kSettleRounds = 20, kSweepsPerRound = 2;
-// How much longer a coarse level's explicit step may be than the scene's.
-constexpr double kMaxStepGrowth = 2.0;
 
 // An explicit step's stability bound scales with the shortest period of the mesh's
 // nodes, sqrt(m_i / k_i): a node's mass goes with the area of its sections, its

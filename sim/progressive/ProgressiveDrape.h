@@ -29,6 +29,10 @@
 
 namespace figment {
 
+// How much longer a coarse level's explicit step may be than the scene's (so a run of one
+// coarse step needs maxTime this many scene steps).
+constexpr double kMaxStepGrowth = 2.0;
+
 // What happened after the last split: when the end level arrived (simulated s; -1 if
 // it never did) and how far the garment moved from its placed state at that moment to
 // where the run ended (mean and largest over the end level's vertices, m). A coarse
