@@ -15,6 +15,8 @@
 #include "SizeStudy.h"
 #include "StabilityStudy.h"
 #include "TradeoffStudy.h"
+#include "nodes/Init.h"
+#include "viewer/CoinMessages.h"
 
 namespace {
 
@@ -223,6 +225,9 @@ CLI::App* addFitCommand(CLI::App& app, FitStudyOptions& fit) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Coin's messages as one-line warnings; a ClothEngine's error is reported by the study
+  figment::init();
+  figment::viewer::CoinMessages::install("figment-bench");
   CLI::App app{"FIGMENT benchmarks: studies that write CSV"};
   app.require_subcommand(1);
   DrapeStudyOptions drape;

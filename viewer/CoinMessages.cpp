@@ -11,13 +11,13 @@ namespace figment::viewer {
 
 namespace {
 
-void onDebugMessage(const SoError* error, void*) {
+void onDebugMessage(const SoError* error, void* program) {
   const std::string text = error->getDebugString().getString();
   // Coin asks GLX whether rendering is direct even when no GLX context exists.
   if (text.find("glxglue_isdirect") != std::string::npos) return;
-  // A ClothEngine's error is its lastError(), which figment-view reports itself.
+  // A ClothEngine's error is its lastError(), which the program reports itself.
   if (text.find("ClothEngine::evaluate") != std::string::npos) return;
-  std::cerr << "figment-view: warning: " << guard::ReadMessages::oneLine(text) << "\n";
+  std::cerr << static_cast<const char*>(program) << ": warning: " << guard::ReadMessages::oneLine(text) << "\n";
 }
 
 // A read error outside the guard's reads (the guard takes those of a scene's read): none is
@@ -28,9 +28,11 @@ void onReadError(const SoError* error, void* data) {
 
 }  // namespace
 
-void CoinMessages::install() {
-  SoReadError::setHandlerCallback(onReadError, nullptr);
-  SoDebugError::setHandlerCallback(onDebugMessage, nullptr);
+void CoinMessages::install(const char* program) {
+  if (SoDebugError::getHandlerCallback() == onDebugMessage) return;
+  void* name = const_cast<char*>(program);  // Coin passes it back as the callbacks' data
+  SoReadError::setHandlerCallback(onReadError, name);
+  SoDebugError::setHandlerCallback(onDebugMessage, name);
 }
 
 }  // namespace figment::viewer

@@ -1,5 +1,6 @@
 #pragma once
-// Coin's error and warning messages, turned into what figment-view prints.
+// Coin's error and warning messages, turned into what a program (figment-view,
+// figment-bench) prints.
 
 #include <string>
 
@@ -12,8 +13,11 @@ namespace figment::viewer {
 // once the read has succeeded.
 class CoinMessages {
  public:
-  // Replaces Coin's default handlers; called by initHeadless().
-  static void install();
+  // Replaces Coin's default handlers with ones that print "<program>: warning: ...";
+  // called by initHeadless() for figment-view. Once installed, a later call keeps the
+  // first program's name (figment-bench installs its own, then may render headless).
+  // `program` must outlive the process's use of Coin (a string literal).
+  static void install(const char* program = "figment-view");
 };
 
 }  // namespace figment::viewer

@@ -112,3 +112,16 @@ TEST_F(FigmentBench, TheProgressiveStudyCountsTheLevelsOfAnExplicitScene) {
   for (int column = 0; column < 5; ++column) std::getline(fields, field, ',');
   EXPECT_GT(std::stoi(field), 1) << row;  // the skirt's script has levels to split through
 }
+
+// A ClothEngine's error is the study's one line: Coin's own "Coin error in
+// ClothEngine::evaluate()" line, printed by its default handler, came before it.
+TEST_F(FigmentBench, AnEnginesErrorIsOneLine) {
+  const std::string scene = write("cloth.iv",
+                                  "#Inventor V2.1 ascii\nSeparator {\n"
+                                  "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+                                  "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+                                  "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.1  maxTime 0.01\n"
+                                  "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n");
+  expectOneLine(run("drape --scene " + quote(scene) + " --repeat 1 --out " + out()),
+                "timeStep = 0.1 must not exceed maxTime = 0.01");
+}
