@@ -41,6 +41,15 @@ std::string writeCrashScene(const figment::test::TempDir& dir) {
   return dir.file("scene.iv", "#Inventor V2.1 ascii\nSeparator {\n  File { name \"volumes.iv\" }\n  Cube { }\n}\n");
 }
 
+// A square of cloth draped by a ClothEngine with `fields` (its time step and run).
+std::string squareOfCloth(const std::string& fields) {
+  return "#Inventor V2.1 ascii\nSeparator {\n"
+         "  Coordinate3 { point = DEF Drape ClothEngine {\n"
+         "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
+         "    coordIndex [ 0 3 2 1 -1 ]  " +
+         fields + "\n  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n";
+}
+
 void expectOneLine(const ProcessResult& r, const std::string& words) {
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line: " << r.err;
@@ -71,12 +80,7 @@ TEST_F(FigmentBench, TheRenderStudyRefusesAShapeIndexingPastItsData) {
 // The drape study says each drape's verdict: in its CSV (clean, the most stretched edge,
 // the step control's halved and failed steps) and on its line.
 TEST_F(FigmentBench, TheDrapeStudySaysWhetherEachDrapeIsClean) {
-  const std::string scene = write("cloth.iv",
-                                  "#Inventor V2.1 ascii\nSeparator {\n"
-                                  "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-                                  "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-                                  "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.001  maxTime 0.01\n"
-                                  "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n");
+  const std::string scene = write("cloth.iv", squareOfCloth("timeStep 0.001  maxTime 0.01"));
   const std::string stdoutFile = (dir_.path() / "stdout.txt").string();
   const int raw = std::system((quote(FIGMENT_BENCH_EXECUTABLE) + " drape --scene " + quote(scene) +
                                " --repeat 1 --out " + out() + " > " + quote(stdoutFile) + " 2> /dev/null")
@@ -116,12 +120,7 @@ TEST_F(FigmentBench, TheProgressiveStudyCountsTheLevelsOfAnExplicitScene) {
 // A ClothEngine's error is the study's one line: Coin's own "Coin error in
 // ClothEngine::evaluate()" line, printed by its default handler, came before it.
 TEST_F(FigmentBench, AnEnginesErrorIsOneLine) {
-  const std::string scene = write("cloth.iv",
-                                  "#Inventor V2.1 ascii\nSeparator {\n"
-                                  "  Coordinate3 { point = DEF Drape ClothEngine {\n"
-                                  "    restPoints [ -0.5 1 -0.5, 0.5 1 -0.5, 0.5 1 0.5, -0.5 1 0.5 ]\n"
-                                  "    coordIndex [ 0 3 2 1 -1 ]  timeStep 0.1  maxTime 0.01\n"
-                                  "  } . positions }\n  IndexedFaceSet { coordIndex [ 0 3 2 1 -1 ] }\n}\n");
+  const std::string scene = write("cloth.iv", squareOfCloth("timeStep 0.1  maxTime 0.01"));
   expectOneLine(run("drape --scene " + quote(scene) + " --repeat 1 --out " + out()),
                 "timeStep = 0.1 must not exceed maxTime = 0.01");
 }
