@@ -8,8 +8,6 @@
 
 namespace figment {
 
-namespace {
-// The garment, once checked: triangles that index its vertices.
 const TriangleMesh& checkedGarment(const TriangleMesh& rest) {
   const int n = static_cast<int>(rest.vertices.size());
   if (n == 0 || rest.triangles.empty()) throw std::invalid_argument("the garment has no triangles");
@@ -20,6 +18,8 @@ const TriangleMesh& checkedGarment(const TriangleMesh& rest) {
                                     std::to_string(n - 1) + "]");
   return rest;
 }
+
+namespace {
 
 // The garment's sections, leaving out the degenerate ones.
 std::vector<MembraneElement> sectionsOf(const TriangleMesh& rest) {

@@ -29,6 +29,11 @@
 
 namespace figment {
 
+// The garment, once checked: it has triangles and they index its vertices. Throws
+// std::invalid_argument("coordIndex = 99 is out of range [0, 8]") otherwise; whatever
+// reads a garment's triangles (ClothModel, the solver's EdgeStretch) checks it first.
+const TriangleMesh& checkedGarment(const TriangleMesh& rest);
+
 class ClothModel {
  public:
   // Throws std::invalid_argument for an empty garment, an index out of range or a

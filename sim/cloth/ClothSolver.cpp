@@ -12,7 +12,7 @@ namespace figment {
 
 ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
                          std::shared_ptr<const Collider> body)
-    : parameters_(parameters), body_(std::move(body)), edges_(garment) {
+    : parameters_(parameters), body_(std::move(body)), edges_(checkedGarment(garment)) {
   parameters_.validate();
   model_ = std::make_unique<ClothModel>(garment, parameters_);
   x_ = garment.vertices;
