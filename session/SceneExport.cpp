@@ -68,17 +68,6 @@ bool clockwise(SoCallbackAction* action) {
   return SoShapeHintsElement::getVertexOrdering(action->getState()) == SoShapeHintsElement::CLOCKWISE;
 }
 
-// Area-weighted vertex normals (the cross product's length is twice the area).
-std::vector<Vec3> smoothNormals(const TriangleMesh& mesh) {
-  std::vector<Vec3> normals(mesh.vertices.size(), Vec3::Zero());
-  for (const Triangle& t : mesh.triangles) {
-    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-    for (const int corner : t) normals[corner] += n;
-  }
-  for (Vec3& n : normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3(0, 1, 0);
-  return normals;
-}
-
 // A face set's faces, fanned, as triangles of the coordinates they use (renumbered in
 // their order, in world coordinates).
 TriangleMesh facesOf(const SoIndexedFaceSet* shape, const SbVec3f* points, int count, const SbMatrix& toWorld,
@@ -180,7 +169,7 @@ SoCallbackAction::Response Gatherer::atFaceSet(void* self, SoCallbackAction* act
   const std::string label = std::string(shape->getTypeId().getName().getString()) + " '" + part.name + "'";
   part.mesh = facesOf(shape, points, count, action->getModelMatrix(), clockwise(action), label);
   if (part.mesh.triangles.empty()) return SoCallbackAction::PRUNE;
-  part.normals = smoothNormals(part.mesh);
+  part.normals = vertexNormals(part.mesh);
   gatherer->garments_.push_back(std::move(part));
   return SoCallbackAction::PRUNE;
 }

@@ -5,7 +5,14 @@
 namespace figment {
 
 BendingJoint::BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec3>& rest) : corners_{e0, e1, o2, o3} {
-  const Vec3 &x0 = rest[e0], &x1 = rest[e1], &x2 = rest[o2], &x3 = rest[o3];
+  setRest(rest[e0], rest[e1], rest[o2], rest[o3]);
+}
+
+BendingJoint::BendingJoint(const std::array<int, 4>& corners, const std::array<Vec3, 4>& hinge) : corners_(corners) {
+  setRest(hinge[0], hinge[1], hinge[2], hinge[3]);
+}
+
+void BendingJoint::setRest(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3) {
   const double areaA = 0.5 * (x1 - x0).cross(x2 - x0).norm();
   const double areaB = 0.5 * (x1 - x0).cross(x3 - x0).norm();
   if (!(areaA > 0.0 && areaB > 0.0)) return;

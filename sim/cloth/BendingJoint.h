@@ -21,6 +21,9 @@ class BendingJoint {
  public:
   // Corners: shared edge (e0, e1), opposite o2 of section A = (e0, e1, o2), o3 of B.
   BendingJoint(int e0, int e1, int o2, int o3, const std::vector<Vec3>& rest);
+  // The same corners, resting as the four points `hinge` have them (sim/cloth/RestShape.h:
+  // a sewn garment's joints rest flat, unfolded about their edge).
+  BendingJoint(const std::array<int, 4>& corners, const std::array<Vec3, 4>& hinge);
 
   bool valid() const { return valid_; }
   const std::array<int, 4>& corners() const { return corners_; }
@@ -48,6 +51,8 @@ class BendingJoint {
   static std::array<Vec3, 4> angleGradient(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
 
  private:
+  void setRest(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
+
   std::array<int, 4> corners_;
   double restAngle_ = 0.0;
   bool valid_ = false;

@@ -21,11 +21,19 @@ const TriangleMesh& checkedGarment(const TriangleMesh& rest) {
 
 namespace {
 
+// The rest shape, checked as checkedGarment checks a mesh.
+const RestShape& checkedRest(const RestShape& rest) {
+  if (const TriangleMesh* mesh = rest.mesh()) checkedGarment(*mesh);
+  if (rest.nodeCount() == 0 || rest.triangles().empty()) throw std::invalid_argument("the garment has no triangles");
+  return rest;
+}
+
 // The garment's sections, leaving out the degenerate ones.
-std::vector<MembraneElement> sectionsOf(const TriangleMesh& rest) {
+std::vector<MembraneElement> sectionsOf(const RestShape& rest) {
   std::vector<MembraneElement> sections;
-  for (const Triangle& t : rest.triangles) {
-    MembraneElement section(t, rest.vertices[t[0]], rest.vertices[t[1]], rest.vertices[t[2]]);
+  for (size_t s = 0; s < rest.triangles().size(); ++s) {
+    const std::array<Vec3, 3>& c = rest.corners(s);
+    MembraneElement section(rest.triangles()[s], c[0], c[1], c[2]);
     if (section.valid()) sections.push_back(section);
   }
   if (sections.empty()) throw std::invalid_argument("every garment triangle is degenerate (zero area)");
@@ -34,12 +42,16 @@ std::vector<MembraneElement> sectionsOf(const TriangleMesh& rest) {
 }  // namespace
 
 ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& parameters)
+    : ClothModel(RestShape(checkedGarment(rest)), parameters) {}
+
+ClothModel::ClothModel(const RestShape& rest, const ClothParameters& parameters, const SeamPull& seams)
     : parameters_(parameters),
       law_(parameters.material),
-      sections_(sectionsOf(checkedGarment(rest))),
+      sections_(sectionsOf(checkedRest(rest))),
       bending_(rest, parameters.material.bendingStiffness(), parameters.material.poissonRatio),
-      nodes_(sections_, rest.vertices.size(), parameters),
+      nodes_(sections_, rest.nodeCount(), parameters),
       jointBound_(parameters.implicitSolver.bending == BendingStiffness::Joints) {
+  if (!seams.seams.empty()) seams_ = SeamSprings(seams.seams, nodes_.masses(), seams.rate);
   planElements();
   forceSlots_.assign(plan_.vectorSlots(), Vec3::Zero());
   stiffnessVelocitySlots_.assign(plan_.vectorSlots(), Vec3::Zero());
@@ -47,7 +59,7 @@ ClothModel::ClothModel(const TriangleMesh& rest, const ClothParameters& paramete
   angleGradients_.resize(bending_.joints().size());
   moments_.resize(bending_.sectionForms().size());
   clamped_.assign(sections_.size(), 0);
-  diagonal_.resize(rest.vertices.size());
+  diagonal_.resize(rest.nodeCount());
 }
 
 void ClothModel::planElements() {
@@ -67,6 +79,10 @@ void ClothModel::planElements() {
   if (nodes_.wind().blows()) {
     windElements_ = static_cast<int>(nodes.size());
     for (const MembraneElement& section : sections_) add({section.corners().begin(), section.corners().end()}, false);
+  }
+  if (!seams_.empty()) {
+    seamElements_ = static_cast<int>(nodes.size());
+    for (size_t s = 0; s < seams_.size(); ++s) add({seams_.nodes(s)[0], seams_.nodes(s)[1]}, true);
   }
   plan_ = AssemblyPlan(static_cast<int>(nodeCount()), nodes, withBlocks);
 }
@@ -96,6 +112,7 @@ void ClothModel::evaluate(const std::vector<Vec3>& x, const std::vector<Vec3>& v
     evaluateSections(x, v, request, scatter);
     evaluateBending(x, v, request, scatter);
     evaluateWind(x, pressure, request, scatter);
+    evaluateSeams(x, v, request, scatter);
   }
   out.clampedSections = std::count(clamped_.begin(), clamped_.end(), 1);
   if (!scatter) plan_.gatherVectors(forceSlots_, out.forces);
@@ -192,6 +209,20 @@ void ClothModel::evaluateWind(const std::vector<Vec3>& x, double pressure, const
       for (int i : sections_[e].corners()) (*scatter)[i] += cornerForce;
     else
       std::fill_n(slots(windElements_ + e, false).force, 3, cornerForce);
+  }
+}
+
+void ClothModel::evaluateSeams(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Request& request,
+                               std::vector<Vec3>* scatter) const {
+  if (seamElements_ < 0) return;
+  const int count = static_cast<int>(seams_.size());
+#pragma omp for schedule(static)
+  for (int s = 0; s < count; ++s) {
+    std::array<Vec3, 2> local;
+    ElementOutput out = slots(seamElements_ + s, request.system);
+    if (scatter) out.force = local.data();
+    seams_.evaluate(s, x, v, request.elastic, request.damping, request.system, out);
+    if (scatter) addForces(seams_.nodes(s), local.data(), *scatter);
   }
 }
 

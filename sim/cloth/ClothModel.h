@@ -15,7 +15,8 @@
 // (AssemblyPlan.h):
 // the membrane sections, the bending sections (only with the `sections` form of the
 // bending stiffness: they carry its blocks), the joints (the bending forces), the wind
-// on each section (only when a wind blows); then the air's resistance and gravity. The
+// on each section (only when a wind blows), the seams being sewn (only while a pattern's
+// panels are pulled together); then the air's resistance and gravity. The
 // result does not depend on the thread count.
 
 #include <vector>
@@ -25,6 +26,8 @@
 #include "sim/cloth/MembraneElement.h"
 #include "sim/cloth/NodeTerms.h"
 #include "sim/cloth/PlateBending.h"
+#include "sim/cloth/RestShape.h"
+#include "sim/cloth/SeamSprings.h"
 #include "sim/core/TriangleMesh.h"
 
 namespace figment {
@@ -39,6 +42,9 @@ class ClothModel {
   // Throws std::invalid_argument for an empty garment, an index out of range or a
   // garment whose sections are all degenerate.
   ClothModel(const TriangleMesh& rest, const ClothParameters& parameters);
+  // The same from a rest shape (sim/cloth/RestShape.h: a sewn garment's flat pieces), with
+  // seams being sewn (sim/cloth/SeamSprings.h), an element each, after the wind.
+  ClothModel(const RestShape& rest, const ClothParameters& parameters, const SeamPull& seams = {});
 
   // What an integrator asks of the model at (x, v, t).
   struct Request {
@@ -88,6 +94,7 @@ class ClothModel {
   const PlaneStressLaw& law() const { return law_; }
   const PlateBending& bending() const { return bending_; }
   const NodeTerms& nodes() const { return nodes_; }
+  const SeamSprings& seams() const { return seams_; }
   size_t nodeCount() const { return nodes_.masses().size(); }
 
   // The wind's total force on the garment at positions x and time t, N: the sum of
@@ -108,6 +115,8 @@ class ClothModel {
   void evaluateBendingStiffness(const std::vector<Vec3>& v, const SystemWeights& weights) const;
   void evaluateWind(const std::vector<Vec3>& x, double pressure, const Request& request,
                     std::vector<Vec3>* scatter) const;
+  void evaluateSeams(const std::vector<Vec3>& x, const std::vector<Vec3>& v, const Request& request,
+                     std::vector<Vec3>* scatter) const;
   void addNodeTerms(const std::vector<Vec3>& v, const Request& request, std::vector<Vec3>& forces) const;
   void gatherSystem(const Request& request, Evaluation& out) const;
   void limitAccelerations(std::vector<Vec3>& a) const;
@@ -117,8 +126,9 @@ class ClothModel {
   std::vector<MembraneElement> sections_;
   PlateBending bending_;
   NodeTerms nodes_;
+  SeamSprings seams_;
   bool jointBound_;  // the `joints` form of the bending stiffness (else `sections`)
-  int bendingSectionElements_ = 0, jointElements_ = 0, windElements_ = -1;  // first elements; -1: none
+  int bendingSectionElements_ = 0, jointElements_ = 0, windElements_ = -1, seamElements_ = -1;  // first elements; -1: none
   AssemblyPlan plan_;
   // Scratch of an evaluation: the elements' slots, the joints' angle changes and
   // gradients, the bending sections' moments, the sections' clamp flags, the matrix's

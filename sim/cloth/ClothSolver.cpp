@@ -12,10 +12,24 @@ namespace figment {
 
 ClothSolver::ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters,
                          std::shared_ptr<const Collider> body)
-    : parameters_(parameters), body_(std::move(body)), edges_(checkedGarment(garment)) {
+    : ClothSolver(garment.vertices, RestShape(checkedGarment(garment)), parameters, std::move(body)) {}
+
+namespace {
+const RestShape& startingAt(const std::vector<Vec3>& start, const RestShape& rest) {
+  if (start.size() != rest.nodeCount())
+    throw std::invalid_argument("the garment starts with " + std::to_string(start.size()) + " positions for " +
+                                std::to_string(rest.nodeCount()) + " nodes");
+  if (const TriangleMesh* mesh = rest.mesh()) checkedGarment(*mesh);
+  return rest;
+}
+}  // namespace
+
+ClothSolver::ClothSolver(const std::vector<Vec3>& start, const RestShape& rest, const ClothParameters& parameters,
+                         std::shared_ptr<const Collider> body, const SeamPull& seams)
+    : parameters_(parameters), body_(std::move(body)), edges_(startingAt(start, rest)) {
   parameters_.validate();
-  model_ = std::make_unique<ClothModel>(garment, parameters_);
-  x_ = garment.vertices;
+  model_ = std::make_unique<ClothModel>(rest, parameters_, seams);
+  x_ = start;
   v_.assign(x_.size(), Vec3::Zero());
   pinned_.assign(x_.size(), 0);
   bodyDistanceBound_.assign(x_.size(), 0.0);

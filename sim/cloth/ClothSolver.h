@@ -79,6 +79,12 @@ class ClothSolver {
   // `garment` is the rest (unstressed) shape and also the starting placement, in the
   // same frame as the collider (the scene's world frame). `body` may be null.
   ClothSolver(const TriangleMesh& garment, const ClothParameters& parameters, std::shared_ptr<const Collider> body);
+  // A garment whose rest shape is not where it starts (sim/cloth/RestShape.h: a sewn
+  // garment's flat panels), starting at `start` (one position per node), with seams being
+  // sewn (sim/cloth/SeamSprings.h; none by default). Throws std::invalid_argument when
+  // `start` does not have one position per node.
+  ClothSolver(const std::vector<Vec3>& start, const RestShape& rest, const ClothParameters& parameters,
+              std::shared_ptr<const Collider> body, const SeamPull& seams = {});
   ~ClothSolver();
 
   // Holds a node where it is (a pin): it keeps its position and never moves.

@@ -2,9 +2,34 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <utility>
 
 namespace figment {
+
+EdgeStretch::EdgeStretch(const RestShape& rest) {
+  if (const TriangleMesh* mesh = rest.mesh()) {
+    *this = EdgeStretch(*mesh);
+    return;
+  }
+  // Flat pieces: each edge's rest length as the sections that have it were cut, the mean
+  // where two sections sewn along it differ.
+  std::map<std::pair<int, int>, std::pair<double, int>> sums;
+  for (size_t s = 0; s < rest.triangles().size(); ++s) {
+    const Triangle& t = rest.triangles()[s];
+    for (int k = 0; k < 3; ++k) {
+      auto& [sum, count] = sums[std::minmax(t[k], t[(k + 1) % 3])];
+      sum += (rest.corners(s)[(k + 1) % 3] - rest.corners(s)[k]).norm();
+      ++count;
+    }
+  }
+  for (const auto& [edge, sum] : sums) {
+    const double length = sum.first / sum.second;
+    if (!(length > 0.0)) continue;
+    edges_.push_back({edge.first, edge.second});
+    restLengths_.push_back(length);
+  }
+}
 
 EdgeStretch::EdgeStretch(const TriangleMesh& rest) {
   std::vector<std::pair<int, int>> edges;

@@ -7,6 +7,7 @@
 #include <array>
 #include <vector>
 
+#include "sim/cloth/RestShape.h"
 #include "sim/core/TriangleMesh.h"
 
 namespace figment {
@@ -16,6 +17,8 @@ class EdgeStretch {
   // The edges of `rest`'s triangles, each once; an edge of zero rest length is left out
   // (its stretch is undefined; a degenerate section carries no force either).
   explicit EdgeStretch(const TriangleMesh& rest);
+  // The same for a rest shape (sim/cloth/RestShape.h): a sewn garment's flat pieces.
+  explicit EdgeStretch(const RestShape& rest);
   EdgeStretch() = default;  // no edges
 
   // max over the edges of |x_a - x_b| / L_ab, dimensionless (1: at rest length); 1 for a

@@ -12,15 +12,14 @@ namespace {
 // Triangle t's bending form (false for a triangle of no area), from its edges' in-plane
 // normals t_k and weights w_k = l_k / 2A: (tr dS)^2 = (sum_i w_i d_i)^2 and
 // |dS|^2 = sum_ij w_i w_j d_i d_j (t_i . t_j)^2.
-bool bendingForm(const TriangleMesh& rest, const Triangle& t, double stiffness, double poissonRatio,
-                 Eigen::Matrix3d& form) {
-  const Vec3 normal = (rest.vertices[t[1]] - rest.vertices[t[0]]).cross(rest.vertices[t[2]] - rest.vertices[t[0]]);
+bool bendingForm(const std::array<Vec3, 3>& corners, double stiffness, double poissonRatio, Eigen::Matrix3d& form) {
+  const Vec3 normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
   const double area = 0.5 * normal.norm();
   if (!(area > 0.0)) return false;
   std::array<Vec3, 3> edgeNormal;
   std::array<double, 3> weight;
   for (int k = 0; k < 3; ++k) {
-    const Vec3 edge = rest.vertices[t[(k + 1) % 3]] - rest.vertices[t[k]];
+    const Vec3 edge = corners[(k + 1) % 3] - corners[k];
     edgeNormal[k] = edge.cross(normal).normalized();
     weight[k] = edge.norm() / (2.0 * area);
   }
@@ -34,25 +33,30 @@ bool bendingForm(const TriangleMesh& rest, const Triangle& t, double stiffness, 
 
 }  // namespace
 
-PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double poissonRatio) {
+PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double poissonRatio)
+    : PlateBending(RestShape(rest), stiffness, poissonRatio) {}
+
+PlateBending::PlateBending(const RestShape& rest, double stiffness, double poissonRatio) {
+  const std::vector<Triangle>& triangles = rest.triangles();
   // Each undirected edge -> the sections that run along it, as (from, to, opposite).
   struct EdgeUse {
     int section, from, to, opposite;
   };
   std::map<std::pair<int, int>, std::vector<EdgeUse>> uses;
-  for (int s = 0; s < static_cast<int>(rest.triangles.size()); ++s) {
-    const Triangle& t = rest.triangles[s];
+  for (int s = 0; s < static_cast<int>(triangles.size()); ++s) {
+    const Triangle& t = triangles[s];
     for (int k = 0; k < 3; ++k)
       uses[std::minmax(t[k], t[(k + 1) % 3])].push_back({s, t[k], t[(k + 1) % 3], t[(k + 2) % 3]});
   }
   // Per section and local edge k (corners k -> k+1): the joint there and its sign.
-  std::vector<std::array<int, 3>> jointOf(rest.triangles.size(), {-1, -1, -1});
-  std::vector<std::array<int, 3>> neighbourOf(rest.triangles.size(), {-1, -1, -1});
-  std::vector<std::array<double, 3>> signOf(rest.triangles.size(), {1.0, 1.0, 1.0});
+  std::vector<std::array<int, 3>> jointOf(triangles.size(), {-1, -1, -1});
+  std::vector<std::array<int, 3>> neighbourOf(triangles.size(), {-1, -1, -1});
+  std::vector<std::array<double, 3>> signOf(triangles.size(), {1.0, 1.0, 1.0});
   for (const auto& [edge, list] : uses) {
     if (list.size() != 2) continue;
     const EdgeUse &A = list[0], &B = list[1];
-    BendingJoint joint(A.from, A.to, A.opposite, B.opposite, rest.vertices);
+    const std::array<int, 4> corners{A.from, A.to, A.opposite, B.opposite};
+    const BendingJoint joint(corners, rest.hinge(A.section, B.section, corners));
     if (!joint.valid()) continue;
     const int index = static_cast<int>(joints_.size());
     joints_.push_back(joint);
@@ -60,7 +64,7 @@ PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double po
     // the edge the other way (consistent winding), the opposite when it does not.
     const double signB = B.from == A.to ? 1.0 : -1.0;
     for (const auto& [use, other, sign] : {std::tuple{A, B.section, 1.0}, std::tuple{B, A.section, signB}}) {
-      const Triangle& t = rest.triangles[use.section];
+      const Triangle& t = triangles[use.section];
       for (int k = 0; k < 3; ++k)
         if (t[k] == use.from && t[(k + 1) % 3] == use.to) {
           jointOf[use.section][k] = index;
@@ -69,15 +73,15 @@ PlateBending::PlateBending(const TriangleMesh& rest, double stiffness, double po
         }
     }
   }
-  for (size_t s = 0; s < rest.triangles.size(); ++s) {
+  for (size_t s = 0; s < triangles.size(); ++s) {
     SectionForm section{static_cast<int>(s), jointOf[s], neighbourOf[s],         signOf[s],
                         signOf[s],           false,      Eigen::Matrix3d::Zero()};
-    if (!bendingForm(rest, rest.triangles[s], stiffness, poissonRatio, section.form)) continue;
+    if (!bendingForm(rest.corners(s), stiffness, poissonRatio, section.form)) continue;
     if (section.joints == std::array<int, 3>{-1, -1, -1}) continue;
     sections_.push_back(section);
     stencils_.push_back(stencilOf(section));
   }
-  triangles_ = rest.triangles;
+  triangles_ = triangles;
   linkJoints();
 }
 

@@ -50,6 +50,7 @@
 
 #include "sim/cloth/BendingJoint.h"
 #include "sim/cloth/ElementOutput.h"
+#include "sim/cloth/RestShape.h"
 #include "sim/core/TriangleMesh.h"
 
 namespace figment {
@@ -59,6 +60,8 @@ class PlateBending {
   // Joints on every edge shared by exactly two sections (none on non-manifold edges).
   // `stiffness` = D, N*m; Poisson's ratio nu couples the curvatures in two directions.
   PlateBending(const TriangleMesh& rest, double stiffness, double poissonRatio);
+  // The same from a rest shape (sim/cloth/RestShape.h): a sewn garment's flat pieces.
+  PlateBending(const RestShape& rest, double stiffness, double poissonRatio);
 
   // Marks the sections whose three corners are held (heldNodes[i] != 0) as clamps.
   void hold(const std::vector<char>& heldNodes);

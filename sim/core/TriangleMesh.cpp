@@ -32,6 +32,17 @@ constexpr double kSmallestCell = 1e-9;  // m
 
 }  // namespace
 
+std::vector<Vec3> vertexNormals(const TriangleMesh& mesh) {
+  std::vector<Vec3> normals(mesh.vertices.size(), Vec3::Zero());
+  for (const Triangle& t : mesh.triangles) {
+    // The cross product's length is twice the triangle's area: the weight.
+    const Vec3 n = (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+    for (const int corner : t) normals[corner] += n;
+  }
+  for (Vec3& n : normals) n = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3(0, 1, 0);
+  return normals;
+}
+
 double surfaceArea(const TriangleMesh& mesh) {
   double sum = 0.0;
   for (const Triangle& t : mesh.triangles) {

@@ -31,6 +31,10 @@ struct Bounds {
 
 Bounds boundsOf(const std::vector<Vec3>& points);
 
+// Area-weighted vertex normals, one unit vector per vertex (+y for a vertex no triangle
+// with area uses): what an exported mesh carries for smooth shading.
+std::vector<Vec3> vertexNormals(const TriangleMesh& mesh);
+
 // m^2: the sum of the triangles' areas, in triangle order.
 double surfaceArea(const TriangleMesh& mesh);
 

@@ -5,6 +5,7 @@
 // its fields and chooses the method, then asks this; a front end without Coin asks it
 // directly.
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -14,13 +15,32 @@
 #include "sim/cloth/ClothSolver.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/pattern/Sewing.h"
 #include "sim/progressive/ProgressiveDrape.h"
 #include "sim/progressive/ProgressiveMesh.h"
 
 namespace figment {
 
+// A pattern's panels to sew before the drape (sim/pattern/Sewing.h): the request's garment
+// is then the panels, cut and placed around the body but not yet sewn.
+struct DrapeSewing {
+  std::vector<Vec2> flat;                 // per garment node: its panel coordinates (m), the rest shape
+  std::vector<std::array<int, 2>> seams;  // the node pairs the stitches pull together
+  SewingParameters parameters{};
+};
+
+// What the sewing did, beside the drape that followed it.
+struct SewingOutcome {
+  DrapeResult run;           // the sewing's steps (gravity off, until every seam closed)
+  double closedGap = 0.0;    // m: the largest gap of a pair when it was merged
+  double seamGap = 0.0;      // m: the largest gap across any seam at the drape's end
+  int openPairs = 0;         // seam pairs not closed while sewing (drawn on through the drape)
+  int sewnNodes = 0;         // nodes once the closed seams were merged
+  int droppedTriangles = 0;  // triangles merging folded to a line (a dart's apex)
+};
+
 struct DrapeRequest {
-  TriangleMesh garment{};  // its rest shape, which is also where the drape starts
+  TriangleMesh garment{};  // its rest shape, which is also where the drape starts (unless sewn)
   ClothParameters parameters{};
   std::shared_ptr<const Collider> body{};
   // Set: the garment is draped level by level from this mesh (paper §4), by `schedule`.
@@ -36,6 +56,9 @@ struct DrapeRequest {
   // Called about every `progressInterval` s of wall time (0: every 64 steps).
   std::function<void(const DrapeProgress&)> progress{};
   double progressInterval = 1.0;
+  // Set: the garment's panels are sewn first, then draped (a whole-garment drape only),
+  // resting as its flat panels.
+  std::optional<DrapeSewing> sewing{};
 };
 
 struct GarmentDrape {
@@ -44,11 +67,12 @@ struct GarmentDrape {
   std::vector<Triangle> sections;  // those simulated last, in the garment's numbering
   int level = 0, levels = 0;       // progressive only: the level reached, of how many
   EndLevelSettling settling;       // progressive only: after the full detail arrived
+  std::optional<SewingOutcome> sewing;  // sewn only
 };
 
 // Throws SimulationError (sim/cloth/ClothSolver.h) when the simulation blows up, and
 // std::invalid_argument naming the parameter when one cannot be used (or a moving body
-// with a progressive drape).
+// with a progressive or sewn drape, or sewing with a progressive mesh).
 GarmentDrape drapeGarment(const DrapeRequest& request);
 
 }  // namespace figment

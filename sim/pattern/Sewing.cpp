@@ -1,0 +1,142 @@
+#include "sim/pattern/Sewing.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace figment {
+
+void SewingParameters::validate() const {
+  if (!(rate > 0.0) || !std::isfinite(rate))
+    throw std::invalid_argument("sewing rate = " + std::to_string(rate) + " 1/s^2 must be > 0");
+  if (!(closedGap > 0.0) || !std::isfinite(closedGap))
+    throw std::invalid_argument("sewing closedGap = " + std::to_string(closedGap) + " m must be > 0");
+  if (!(maxTime > 0.0) || !std::isfinite(maxTime))
+    throw std::invalid_argument("sewing maxTime = " + std::to_string(maxTime) + " s must be > 0");
+}
+
+namespace {
+
+std::array<Vec3, 3> flatCorners(const UnsewnGarment& garment, const Triangle& t) {
+  std::array<Vec3, 3> corners;
+  for (int k = 0; k < 3; ++k) corners[k] = Vec3(garment.flat[t[k]].x(), garment.flat[t[k]].y(), 0.0);
+  return corners;
+}
+
+RestShape panelsAtRest(const UnsewnGarment& garment) {
+  std::vector<std::array<Vec3, 3>> corners;
+  for (const Triangle& t : garment.placed.triangles) corners.push_back(flatCorners(garment, t));
+  return RestShape::flatPieces(garment.placed.triangles, std::move(corners), garment.placed.vertices.size());
+}
+
+void checkGarment(const UnsewnGarment& garment) {
+  const size_t n = garment.placed.vertices.size();
+  if (garment.flat.size() != n)
+    throw std::invalid_argument("the pattern's garment has " + std::to_string(garment.flat.size()) +
+                                " panel coordinates for " + std::to_string(n) + " nodes");
+  if (garment.seams.empty()) throw std::invalid_argument("the pattern's garment has no seams to sew");
+}
+
+// Union-find over the panel nodes, joined along the closed seam pairs.
+class NodeClasses {
+ public:
+  explicit NodeClasses(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+  int find(int a) {
+    while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+    return a;
+  }
+  void join(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// Merges the closed pairs: each class of panel nodes becomes one sewn node at their mean,
+// numbered in the order of their first panel node.
+void merge(const UnsewnGarment& garment, const std::vector<Vec3>& x, double closedGap, SewnGarment& out) {
+  const size_t n = x.size();
+  NodeClasses classes(n);
+  for (const auto& [a, b] : garment.seams) {
+    const double gap = (x[a] - x[b]).norm();
+    if (gap > closedGap) continue;
+    out.closedGap = std::max(out.closedGap, gap);
+    classes.join(a, b);
+  }
+  out.nodeOf.assign(n, -1);
+  std::vector<int> members;
+  for (size_t i = 0; i < n; ++i) {
+    const int root = classes.find(static_cast<int>(i));
+    if (out.nodeOf[root] < 0) {
+      out.nodeOf[root] = static_cast<int>(out.positions.size());
+      out.positions.push_back(Vec3::Zero());
+      members.push_back(0);
+    }
+    out.nodeOf[i] = out.nodeOf[root];
+    out.positions[out.nodeOf[i]] += x[i];
+    ++members[out.nodeOf[i]];
+  }
+  for (size_t k = 0; k < out.positions.size(); ++k) out.positions[k] /= members[k];
+
+  std::vector<Triangle> triangles;
+  std::vector<std::array<Vec3, 3>> corners;
+  for (const Triangle& t : garment.placed.triangles) {
+    const Triangle sewn{out.nodeOf[t[0]], out.nodeOf[t[1]], out.nodeOf[t[2]]};
+    if (sewn[0] == sewn[1] || sewn[1] == sewn[2] || sewn[0] == sewn[2]) {
+      ++out.droppedTriangles;
+      continue;
+    }
+    triangles.push_back(sewn);
+    corners.push_back(flatCorners(garment, t));
+  }
+  out.rest = RestShape::flatPieces(std::move(triangles), std::move(corners), out.positions.size());
+
+  std::set<std::array<int, 2>> open;
+  for (const auto& [a, b] : garment.seams) {
+    const int p = out.nodeOf[a], q = out.nodeOf[b];
+    if (p != q) open.insert({std::min(p, q), std::max(p, q)});
+  }
+  out.openSeams.assign(open.begin(), open.end());
+}
+
+}  // namespace
+
+SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& parameters,
+                      std::shared_ptr<const Collider> body, const SewingParameters& sewing) {
+  checkGarment(garment);
+  sewing.validate();
+  ClothParameters pulled = parameters;
+  pulled.gravity = Vec3::Zero();  // the panels hang in place while the seams close
+  pulled.maxTime = sewing.maxTime;
+  const auto started = std::chrono::steady_clock::now();
+  ClothSolver solver(garment.placed.vertices, panelsAtRest(garment), pulled, std::move(body),
+                     SeamPull{garment.seams, sewing.rate});
+  const SeamSprings& seams = solver.model().seams();
+  while (seams.largestGap(solver.positions()) > sewing.closedGap && solver.time() < sewing.maxTime - 1e-12)
+    solver.step();
+
+  SewnGarment out;
+  merge(garment, solver.positions(), sewing.closedGap, out);
+  out.sewing.iterations = solver.iterations();
+  out.sewing.simulatedTime = solver.time();
+  out.sewing.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  out.sewing.maxSpeed = solver.maxSpeed();
+  out.sewing.maxStretch = solver.maxStretch();
+  out.sewing.implicitCosts = solver.implicitCosts();
+  return out;
+}
+
+double largestSeamGap(const UnsewnGarment& garment, const std::vector<Vec3>& positions) {
+  double largest = 0.0;
+  for (const auto& [a, b] : garment.seams) largest = std::max(largest, (positions[a] - positions[b]).norm());
+  return largest;
+}
+
+}  // namespace figment

@@ -1,0 +1,53 @@
+#pragma once
+// Sewing a pattern's panels around a body (issue 44), as garment tools do: the panels
+// start where the pattern places them, and the simulation pulls every seam shut (zero
+// rest-length springs in the implicit step, sim/cloth/SeamSprings.h) with gravity off, the
+// body holding the cloth out; then the nodes of each closed seam are merged (a corner
+// where several seams meet, once) and what is left is one garment, whose rest shape is
+// still its flat panels (sim/cloth/RestShape.h): darts and curved seams shape it.
+//
+// A seam that does not close within the sewing's time is not merged: it stays a spring
+// through the drape that follows, and its gap is reported (a seam left open).
+
+#include <memory>
+#include <vector>
+
+#include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/ClothSolver.h"
+#include "sim/cloth/RestShape.h"
+#include "sim/cloth/SeamSprings.h"
+#include "sim/collision/Collider.h"
+#include "sim/pattern/UnsewnGarment.h"
+
+namespace figment {
+
+struct SewingParameters {
+  double rate = 400.0;      // the seams' pull, k / m (1/s^2; sim/cloth/SeamSprings.h)
+  double closedGap = 2e-3;  // m: a seam pair this close is closed, and merged
+  double maxTime = 3.0;     // s of simulated time to close every seam, at most
+  // Throws std::invalid_argument naming the field and value when out of range.
+  void validate() const;
+};
+
+struct SewnGarment {
+  std::vector<Vec3> positions;  // per sewn node, where the sewing left it (m)
+  RestShape rest;               // the sewn triangles, each resting as its flat panel
+  std::vector<int> nodeOf;      // per panel node (UnsewnGarment's numbering): its sewn node
+  std::vector<std::array<int, 2>> openSeams;  // seam pairs not closed, in sewn nodes
+  double closedGap = 0.0;       // m: the largest gap of a pair when it was merged
+  DrapeResult sewing;           // the sewing's run: steps, time, wall time
+  int droppedTriangles = 0;     // triangles that merging folded to a line (at a dart's apex)
+};
+
+// Sews `garment` around `body` (may be null): `parameters` are the drape's (implicit
+// integrator), gravity and the rest rule set aside while sewing. Throws
+// std::invalid_argument for a garment without seams or bad parameters, and
+// SimulationError when the sewing blows up.
+SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& parameters,
+                      std::shared_ptr<const Collider> body, const SewingParameters& sewing = {});
+
+// The largest distance between the two nodes of any seam pair at `positions` (per panel
+// node), m: what a drape of the sewn garment reports as its seams' largest gap.
+double largestSeamGap(const UnsewnGarment& garment, const std::vector<Vec3>& positions);
+
+}  // namespace figment
