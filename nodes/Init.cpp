@@ -12,6 +12,7 @@
 #include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
 #include "nodes/cloth/CatalogueGarment.h"
+#include "nodes/cloth/SewingPattern.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/GarmentSurface.h"
 #include "nodes/render/ClothingLayer.h"
@@ -27,6 +28,7 @@ void init() {
   MeshFile::initClass();
   HumanBody::initClass();
   CatalogueGarment::initClass();
+  SewingPattern::initClass();
   ClothingLayer::initClass();
   ClothEngine::initClass();
   DepthSortedGroup::initClass();

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "io/MeshImport.h"
+#include "nodes/MeshFields.h"
 #include "nodes/SceneFiles.h"
 #include "nodes/body/HiddenChildren.h"
 #include "nodes/cloth/FieldValues.h"
@@ -82,22 +83,6 @@ std::string joined(const std::vector<std::string>& names) {
   std::string out;
   for (const auto& name : names) out += (out.empty() ? "" : ", ") + name;
   return out;
-}
-
-void toFields(const figment::TriangleMesh& mesh, SoMFVec3f& points, SoMFInt32& indices) {
-  points.setNum(static_cast<int>(mesh.vertices.size()));
-  SbVec3f* p = points.startEditing();
-  for (const auto& v : mesh.vertices) *p++ = SbVec3f(float(v.x()), float(v.y()), float(v.z()));
-  points.finishEditing();
-  indices.setNum(static_cast<int>(4 * mesh.triangles.size()));
-  int32_t* c = indices.startEditing();
-  for (const auto& t : mesh.triangles) {
-    *c++ = t[0];
-    *c++ = t[1];
-    *c++ = t[2];
-    *c++ = -1;
-  }
-  indices.finishEditing();
 }
 
 std::string text(const SoSFVec3f& field) {
@@ -273,7 +258,7 @@ bool MeshFile::load(SoInput* in) {
 }
 
 void MeshFile::setMesh(const figment::TriangleMesh& drawn, const figment::TriangleMesh& collision) {
-  toFields(drawn, point, coordIndex);
+  figment::setMeshFields(drawn, point, coordIndex);
   // Outputs, not settings: default-flagged fields are left out of written files.
   point.setDefault(TRUE);
   coordIndex.setDefault(TRUE);

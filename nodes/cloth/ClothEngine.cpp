@@ -73,6 +73,8 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   const figment::ClothParameters defaults;
   SO_ENGINE_ADD_INPUT(restPoints, (0.0f, 0.0f, 0.0f));
   SO_ENGINE_ADD_INPUT(coordIndex, (0));
+  SO_ENGINE_ADD_INPUT(panelPoints, (0.0f, 0.0f));
+  SO_ENGINE_ADD_INPUT(seams, (0));
   SO_ENGINE_ADD_INPUT(body, (nullptr));
   SO_ENGINE_ADD_INPUT(material, (""));
   SO_ENGINE_ADD_INPUT(thickness, (defaults.material.thickness));
@@ -121,6 +123,10 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   restPoints.setDefault(TRUE);
   coordIndex.setNum(0);
   coordIndex.setDefault(TRUE);
+  panelPoints.setNum(0);
+  panelPoints.setDefault(TRUE);
+  seams.setNum(0);
+  seams.setDefault(TRUE);
   SO_ENGINE_ADD_OUTPUT(positions, SoMFVec3f);
   SO_ENGINE_ADD_OUTPUT(levelCoordIndex, SoMFInt32);
 }
@@ -310,6 +316,9 @@ std::vector<figment::Vec3> ClothEngine::Impl::simulate(const ClothEngine& engine
                                 .body = std::move(collider),
                                 .progressive = std::move(mesh),
                                 .schedule = schedule};
+  request.sewing = figment::sewingFromFields(engine.panelPoints, engine.seams, garment.vertices.size());
+  if (request.sewing && engine.tolerance.getValue() > 0.0)
+    throw std::invalid_argument("tolerance: a sewn garment drapes by the engine's own fields (tolerance 0)");
   if (context.stepObserver)
     request.stepObserver = [&engine, &context](const figment::ClothSolver& s) { context.stepObserver(engine, s); };
   // A body that moves into its pose (a posed HumanBody, alone or in a CollisionGroup)

@@ -3,6 +3,7 @@
 
 #include <Inventor/engines/SoSubEngine.h>
 #include <Inventor/fields/SoMFInt32.h>
+#include <Inventor/fields/SoMFVec2f.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFDouble.h>
 #include <Inventor/fields/SoSFEnum.h>
@@ -62,6 +63,8 @@ struct TriangleMesh;
     ClothEngine {
         restPoints [ ]
         coordIndex [ ]
+        panelPoints [ ]
+        seams [ ]
         body NULL
         material ""
         thickness 0.0005
@@ -108,6 +111,15 @@ class ClothEngine : public SoEngine {
   // Faces of the garment as indices into restPoints, each face ended by -1; faces with
   // more than three corners are split into triangles as a fan. Default [ ].
   SoMFInt32 coordIndex;
+  // A sewing pattern's garment (a SewingPattern's outputs): each rest point's panel
+  // coordinates, m, and pairs of rest point indices its stitches pull together. Given
+  // seams, the engine sews the panels shut around the body first (gravity off, until every
+  // pair is within 2 mm: sim/pattern/Sewing.h), merges each closed pair into one node and
+  // drapes what it sewed; the rest shape is then the flat panels (panelPoints, one per rest
+  // point), not restPoints, which are only where the panels start. Default [ ] and [ ]
+  // (nothing to sew).
+  SoMFVec2f panelPoints;
+  SoMFInt32 seams;
   // What the cloth collides with: a MeshFile (its triangles, exactly), a Mannequin (its
   // posed collision volumes), or NULL for nothing. Default NULL.
   SoSFNode body;

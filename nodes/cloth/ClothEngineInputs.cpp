@@ -1,5 +1,6 @@
 #include "nodes/cloth/ClothEngineInputs.h"
 
+#include <Inventor/fields/SoMFVec2f.h>
 #include <Inventor/nodes/SoNode.h>
 
 #include <cstddef>
@@ -67,6 +68,28 @@ std::string at(int index, int value) {
 }
 
 }  // namespace
+
+std::optional<DrapeSewing> sewingFromFields(const SoMFVec2f& panelPoints, const SoMFInt32& seams, size_t restPoints) {
+  if (seams.getNum() == 0) return std::nullopt;
+  if (static_cast<size_t>(panelPoints.getNum()) != restPoints)
+    throw std::invalid_argument("panelPoints has " + std::to_string(panelPoints.getNum()) + " points for " +
+                                std::to_string(restPoints) + " restPoints");
+  if (seams.getNum() % 2 != 0)
+    throw std::invalid_argument("seams has " + std::to_string(seams.getNum()) + " indices, not pairs");
+  DrapeSewing sewing;
+  for (int i = 0; i < panelPoints.getNum(); ++i) sewing.flat.emplace_back(panelPoints[i][0], panelPoints[i][1]);
+  for (int i = 0; i < seams.getNum(); i += 2) {
+    for (int k = 0; k < 2; ++k)
+      if (seams[i + k] < 0 || static_cast<size_t>(seams[i + k]) >= restPoints)
+        throw std::invalid_argument("seams[" + std::to_string(i + k) + "] = " + std::to_string(seams[i + k]) +
+                                    " is out of range [0, " + std::to_string(restPoints - 1) + "]");
+    if (seams[i] == seams[i + 1])
+      throw std::invalid_argument("seams[" + std::to_string(i) + "] sews point " + std::to_string(seams[i]) +
+                                  " to itself");
+    sewing.seams.push_back({seams[i], seams[i + 1]});
+  }
+  return sewing;
+}
 
 TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex, const char* pointsName) {
   const int numPoints = restPoints.getNum();

@@ -4,13 +4,16 @@
 // value when an input cannot be used.
 
 #include <memory>
+#include <optional>
 
 #include "sim/cloth/ClothParameters.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/GarmentDrape.h"
 
 class ClothEngine;
 class SoMFInt32;
+class SoMFVec2f;
 class SoMFVec3f;
 class SoSFNode;
 
@@ -21,6 +24,11 @@ namespace figment {
 // `pointsName` names the points field in errors.
 TriangleMesh garmentFromFields(const SoMFVec3f& restPoints, const SoMFInt32& coordIndex,
                                const char* pointsName = "restPoints");
+
+// The sewing a pattern's garment asks for: its panel points (m) and seam pairs; nothing
+// when `seams` is empty. Throws naming the field for a count that does not match the rest
+// points, an odd seams count or an index out of range.
+std::optional<DrapeSewing> sewingFromFields(const SoMFVec2f& panelPoints, const SoMFInt32& seams, size_t restPoints);
 
 // The material: a preset named in `material` with the four material fields the scene
 // wrote over it, or those four fields alone. Throws for an unknown preset.

@@ -4,6 +4,7 @@
 #include <Inventor/fields/SoMFInt32.h>
 #include <Inventor/fields/SoMFNode.h>
 #include <Inventor/fields/SoMFRotation.h>
+#include <Inventor/fields/SoMFVec2f.h>
 #include <Inventor/fields/SoMFVec3f.h>
 #include <Inventor/fields/SoSFBool.h>
 #include <Inventor/fields/SoSFDouble.h>
@@ -84,6 +85,10 @@ void addField(KeyWriter& key, const std::string& name, const SoField& field, std
   if (type == SoMFVec3f::getClassTypeId()) {
     const auto& f = static_cast<const SoMFVec3f&>(field);
     return key.bytes(name, f.getValues(0), f.getNum() * sizeof(SbVec3f));
+  }
+  if (type == SoMFVec2f::getClassTypeId()) {
+    const auto& f = static_cast<const SoMFVec2f&>(field);
+    return key.bytes(name, f.getValues(0), f.getNum() * sizeof(SbVec2f));
   }
   if (type == SoMFInt32::getClassTypeId()) {
     const auto& f = static_cast<const SoMFInt32&>(field);

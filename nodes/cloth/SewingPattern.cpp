@@ -1,0 +1,110 @@
+#include "nodes/cloth/SewingPattern.h"
+
+#include <Inventor/SoInput.h>
+#include <Inventor/errors/SoDebugError.h>
+#include <Inventor/errors/SoReadError.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "io/PatternFile.h"
+#include "nodes/MeshFields.h"
+#include "nodes/SceneFiles.h"
+#include "sim/core/ParameterChecks.h"
+#include "sim/pattern/PanelCutting.h"
+#include "sim/pattern/PatternPlacement.h"
+
+SO_NODE_SOURCE(SewingPattern);
+
+void SewingPattern::initClass() {
+  if (classTypeId != SoType::badType()) return;
+  MeshFile::initClass();
+  SO_NODE_INIT_CLASS(SewingPattern, MeshFile, "MeshFile");
+}
+
+SewingPattern::SewingPattern() {
+  SO_NODE_CONSTRUCTOR(SewingPattern);
+  SO_NODE_ADD_FIELD(spacing, (0.02));
+  SO_NODE_ADD_FIELD(madeForStature, (0.0));
+  SO_NODE_ADD_FIELD(body, (nullptr));
+  SO_NODE_ADD_EMPTY_MFIELD(panelPoint);
+  SO_NODE_ADD_EMPTY_MFIELD(seams);
+}
+
+SewingPattern::~SewingPattern() = default;
+
+bool SewingPattern::isLoadOption(const SoField* field) const {
+  return field == &spacing || field == &madeForStature || field == &body || inherited::isLoadOption(field);
+}
+
+SbBool SewingPattern::readInstance(SoInput* in, unsigned short flags) {
+  // The folders the pattern is looked up in, before MeshFile's read loads it.
+  sceneDirectories_ = figment::sceneSearchDirectories(in);
+  return inherited::readInstance(in, flags);
+}
+
+namespace {
+
+constexpr double kMinSpacing = 0.005, kMaxSpacing = 0.1;  // m
+
+// The pattern's panels cut, placed around the node's body; throws naming the field.
+figment::UnsewnGarment cutFor(const SewingPattern& node, const std::vector<std::string>& dirs) {
+  const double spacing = node.spacing.getValue();
+  if (!(spacing >= kMinSpacing && spacing <= kMaxSpacing))
+    throw std::invalid_argument("spacing = " + figment::formatNumber(spacing) + " must be within [" +
+                                figment::formatNumber(kMinSpacing) + ", " + figment::formatNumber(kMaxSpacing) + "] m");
+  const std::string name = node.fileName.getValue().getString();
+  const std::string path = figment::resolveSceneFile(name, dirs);
+  if (path.empty()) throw std::runtime_error("fileName \"" + name + "\" not found");
+  figment::SewingPattern pattern = figment::readPatternFile(path);
+  if (SoNode* body = node.body.getValue()) {
+    if (!body->isOfType(MeshFile::getClassTypeId()))
+      throw std::invalid_argument(std::string("body is a ") + body->getTypeId().getName().getString() +
+                                  ", not a MeshFile");
+    const figment::TriangleMesh& surface = static_cast<const MeshFile*>(body)->collisionSurface();
+    pattern = figment::placed(pattern, figment::placementOn(surface, node.madeForStature.getValue()));
+  }
+  return figment::cutPattern(pattern, spacing);
+}
+
+}  // namespace
+
+bool SewingPattern::load(SoInput* in) {
+  std::string error;
+  try {
+    if (fileName.getValue().getLength() == 0) {
+      clearMesh();
+      panelPoint.setNum(0);
+      seams.setNum(0);
+      return true;
+    }
+    const figment::UnsewnGarment cut = cutFor(*this, sceneDirectories_);
+    setMesh(cut.placed, cut.placed);
+    panelPoint.setNum(static_cast<int>(cut.flat.size()));
+    SbVec2f* uv = panelPoint.startEditing();
+    for (const figment::Vec2& p : cut.flat) *uv++ = SbVec2f(float(p.x()), float(p.y()));
+    panelPoint.finishEditing();
+    seams.setNum(static_cast<int>(2 * cut.seams.size()));
+    int32_t* pair = seams.startEditing();
+    for (const auto& [a, b] : cut.seams) *pair++ = a, *pair++ = b;
+    seams.finishEditing();
+    // Outputs, not settings: left out of written files.
+    panelPoint.setDefault(TRUE);
+    seams.setDefault(TRUE);
+    return true;
+  } catch (const std::exception& e) {
+    error = e.what();
+  }
+  clearMesh();
+  panelPoint.setNum(0);
+  seams.setNum(0);
+  const SbName name = getName();
+  const std::string message = std::string("SewingPattern") +
+                              (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": " + error;
+  if (in)
+    SoReadError::post(in, "%s", message.c_str());
+  else
+    SoDebugError::post("SewingPattern::load", "%s", message.c_str());
+  return false;
+}
