@@ -13,6 +13,11 @@
 
 namespace figment {
 
+// A circle's radius may fall short of half its chord by this fraction (rounding in a file's
+// decimals) and is then taken as a half circle; shorter, the arc does not exist and the
+// functions below throw std::invalid_argument.
+constexpr double kArcRadiusSlack = 1e-6;
+
 // The point at parameter t in [0, 1] along the edge (not arc length: a Bézier's own
 // parameter, an arc's angle fraction).
 Vec2 edgePoint(const Panel& panel, int edge, double t);
