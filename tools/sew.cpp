@@ -4,7 +4,7 @@
 // PATTERN is GarmentCode's specification JSON (io/PatternFile.h); BODY any standing body a
 // MeshFile reads (human.zae, one figment-body made), found through the model search path.
 // The panels are placed around the body (sim/pattern/PatternPlacement.h), cut into cloth
-// (sim/pattern/PanelCutting.h), sewn and draped to rest (sim/pattern/Sewing.h) by backward
+// (sim/pattern/PatternCutting.h), sewn and draped to rest (sim/pattern/Sewing.h) by backward
 // Euler at 1/20 s. The garment goes to the output with its panel coordinates; --stats writes
 // what the drape did as JSON. Bad input is one line on stderr, exit status 1, and no file.
 // A drape that is not clean (not at rest, torn, a seam left open, nodes inside the body) is
@@ -25,7 +25,7 @@
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/drape/GarmentDrape.h"
-#include "sim/pattern/PanelCutting.h"
+#include "sim/pattern/PatternCutting.h"
 #include "sim/pattern/PatternPlacement.h"
 
 namespace {

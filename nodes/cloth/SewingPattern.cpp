@@ -12,7 +12,7 @@
 #include "nodes/MeshFields.h"
 #include "nodes/SceneFiles.h"
 #include "sim/core/ParameterChecks.h"
-#include "sim/pattern/PanelCutting.h"
+#include "sim/pattern/PatternCutting.h"
 #include "sim/pattern/PatternPlacement.h"
 
 SO_NODE_SOURCE(SewingPattern);

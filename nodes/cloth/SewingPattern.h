@@ -22,7 +22,7 @@
   up as a MeshFile's file is. The node reads it (io/PatternFile.h), moves its panels onto
   `body` (sim/pattern/PatternPlacement.h: the pattern's feet and axis onto the body's,
   heights scaled by the two statures when `madeForStature` is given), cuts each panel into
-  triangles about `spacing` apart (sim/pattern/PanelCutting.h) and offers the result as a
+  triangles about `spacing` apart (sim/pattern/PatternCutting.h) and offers the result as a
   MeshFile does: `point` and `coordIndex` (the panels as placed, not yet sewn), and two more
   outputs for a ClothEngine: `panelPoint`, each point's panel coordinates (m: the rest shape
   and texture coordinates), and `seams`, pairs of point indices the stitches pull together.
