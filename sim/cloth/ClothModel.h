@@ -95,6 +95,7 @@ class ClothModel {
   const PlateBending& bending() const { return bending_; }
   const NodeTerms& nodes() const { return nodes_; }
   const SeamSprings& seams() const { return seams_; }
+  SeamSprings& seams() { return seams_; }
   size_t nodeCount() const { return nodes_.masses().size(); }
 
   // The wind's total force on the garment at positions x and time t, N: the sum of

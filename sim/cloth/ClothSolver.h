@@ -110,6 +110,8 @@ class ClothSolver {
 
   bool atRest() const;
   const ClothModel& model() const { return *model_; }
+  // The seams being sewn, to pull harder (sim/pattern/Sewing.h).
+  SeamSprings& seams() { return model_->seams(); }
   const std::vector<Vec3>& positions() const;
   const std::vector<Vec3>& velocities() const;
   double time() const;

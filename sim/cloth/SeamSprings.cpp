@@ -39,6 +39,14 @@ void SeamSprings::evaluate(size_t seam, const std::vector<Vec3>& x, const std::v
   out.blocks[3] = w * Block3::Identity();
 }
 
+void SeamSprings::strengthen(double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor))
+    throw std::invalid_argument("seam strengthening factor = " + std::to_string(factor) + " must be > 0");
+  for (double& k : stiffness_) k *= factor;
+  // Critical damping of the pair scales with sqrt(k).
+  for (double& c : damping_) c *= std::sqrt(factor);
+}
+
 double SeamSprings::largestGap(const std::vector<Vec3>& x) const {
   double largest = 0.0;
   for (const auto& [a, b] : seams_) largest = std::max(largest, (x[a] - x[b]).norm());

@@ -42,6 +42,10 @@ class SeamSprings {
   void evaluate(size_t seam, const std::vector<Vec3>& x, const std::vector<Vec3>& v, bool elastic, bool damping,
                 const SystemWeights* weights, const ElementOutput& out) const;
 
+  // Every seam's spring and damper `factor` times as stiff (> 0): a seam that stopped
+  // closing against the cloth's own tension pulls harder.
+  void strengthen(double factor);
+
   // The largest distance between a seam's two nodes at x (m); 0 without seams.
   double largestGap(const std::vector<Vec3>& x) const;
 

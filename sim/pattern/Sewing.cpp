@@ -17,6 +17,13 @@ void SewingParameters::validate() const {
     throw std::invalid_argument("sewing closedGap = " + std::to_string(closedGap) + " m must be > 0");
   if (!(maxTime > 0.0) || !std::isfinite(maxTime))
     throw std::invalid_argument("sewing maxTime = " + std::to_string(maxTime) + " s must be > 0");
+  if (!(snapGap >= closedGap) || !std::isfinite(snapGap))
+    throw std::invalid_argument("sewing snapGap = " + std::to_string(snapGap) + " m must be >= closedGap");
+  if (!(stall >= 0.0 && stall < 1.0)) throw std::invalid_argument("sewing stall = " + std::to_string(stall) + " must be in [0, 1)");
+  if (stallSteps < 1) throw std::invalid_argument("sewing stallSteps = " + std::to_string(stallSteps) + " must be >= 1");
+  if (!(strengthen > 1.0) || !(maxStrength >= 1.0) || !std::isfinite(strengthen) || !std::isfinite(maxStrength))
+    throw std::invalid_argument("sewing strengthen = " + std::to_string(strengthen) + " must be > 1 and maxStrength = " +
+                                std::to_string(maxStrength) + " >= 1");
 }
 
 namespace {
@@ -61,12 +68,12 @@ class NodeClasses {
 
 // Merges the closed pairs: each class of panel nodes becomes one sewn node at their mean,
 // numbered in the order of their first panel node.
-void merge(const UnsewnGarment& garment, const std::vector<Vec3>& x, double closedGap, SewnGarment& out) {
+void merge(const UnsewnGarment& garment, const std::vector<Vec3>& x, double snapGap, SewnGarment& out) {
   const size_t n = x.size();
   NodeClasses classes(n);
   for (const auto& [a, b] : garment.seams) {
     const double gap = (x[a] - x[b]).norm();
-    if (gap > closedGap) continue;
+    if (gap > snapGap) continue;
     out.closedGap = std::max(out.closedGap, gap);
     classes.join(a, b);
   }
@@ -118,12 +125,23 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
   const auto started = std::chrono::steady_clock::now();
   ClothSolver solver(garment.placed.vertices, panelsAtRest(garment), pulled, std::move(body),
                      SeamPull{garment.seams, sewing.rate});
-  const SeamSprings& seams = solver.model().seams();
-  while (seams.largestGap(solver.positions()) > sewing.closedGap && solver.time() < sewing.maxTime - 1e-12)
+  double strength = 1.0, gap = solver.model().seams().largestGap(solver.positions());
+  int stalled = 0;
+  while (gap > sewing.closedGap && solver.time() < sewing.maxTime - 1e-12) {
     solver.step();
+    const double before = gap;
+    gap = solver.model().seams().largestGap(solver.positions());
+    stalled = gap > (1.0 - sewing.stall) * before ? stalled + 1 : 0;
+    if (stalled < sewing.stallSteps) continue;
+    if (strength * sewing.strengthen > sewing.maxStrength) break;  // as hard as it pulls: what is left stays
+    solver.seams().strengthen(sewing.strengthen);
+    strength *= sewing.strengthen;
+    stalled = 0;
+  }
 
   SewnGarment out;
-  merge(garment, solver.positions(), sewing.closedGap, out);
+  out.strength = strength;
+  merge(garment, solver.positions(), sewing.snapGap, out);
   out.sewing.iterations = solver.iterations();
   out.sewing.simulatedTime = solver.time();
   out.sewing.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

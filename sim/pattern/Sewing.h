@@ -2,9 +2,11 @@
 // Sewing a pattern's panels around a body (issue 44), as garment tools do: the panels
 // start where the pattern places them, and the simulation pulls every seam shut (zero
 // rest-length springs in the implicit step, sim/cloth/SeamSprings.h) with gravity off, the
-// body holding the cloth out; then the nodes of each closed seam are merged (a corner
-// where several seams meet, once) and what is left is one garment, whose rest shape is
-// still its flat panels (sim/cloth/RestShape.h): darts and curved seams shape it.
+// body holding the cloth out, pulling harder wherever a seam stops closing (a fitted
+// waistband, a pencil skirt round spread legs: the cloth must stretch to close them); then
+// the nodes of each seam are merged (a corner where several seams meet, once) and what is
+// left is one garment, whose rest shape is still its flat panels (sim/cloth/RestShape.h):
+// darts and curved seams shape it.
 //
 // A seam that does not close within the sewing's time is not merged: it stays a spring
 // through the drape that follows, and its gap is reported (a seam left open).
@@ -22,8 +24,20 @@
 namespace figment {
 
 struct SewingParameters {
-  double rate = 400.0;      // the seams' pull, k / m (1/s^2; sim/cloth/SeamSprings.h)
-  double closedGap = 2e-3;  // m: a seam pair this close is closed, and merged
+  double rate = 400.0;      // the seams' first pull, k / m (1/s^2; sim/cloth/SeamSprings.h)
+  double closedGap = 2e-3;  // m: a seam pair this close is closed
+  // A seam that stops closing (its largest gap shrank by less than `stall` of itself in
+  // each of `stallSteps` steps) is pulling against the cloth's own tension, which a pull
+  // scaled to the nodes' mass cannot outdo: the seams then pull `strengthen` times harder,
+  // up to `maxStrength` times the first pull.
+  double stall = 0.03;
+  int stallSteps = 3;
+  double strengthen = 4.0;
+  double maxStrength = 4096.0;
+  // m: when the sewing ends (every pair closed, or the pull at its strongest and stalled,
+  // or maxTime), pairs this close are merged at their midpoint, the drape that follows
+  // spreading the strain; pairs farther apart stay open (reported, and pulled on).
+  double snapGap = 0.05;
   double maxTime = 3.0;     // s of simulated time to close every seam, at most
   // Throws std::invalid_argument naming the field and value when out of range.
   void validate() const;
@@ -35,6 +49,7 @@ struct SewnGarment {
   std::vector<int> nodeOf;      // per panel node (UnsewnGarment's numbering): its sewn node
   std::vector<std::array<int, 2>> openSeams;  // seam pairs not closed, in sewn nodes
   double closedGap = 0.0;       // m: the largest gap of a pair when it was merged
+  double strength = 1.0;        // how much harder than `rate` the seams pulled at the end
   DrapeResult sewing;           // the sewing's run: steps, time, wall time
   int droppedTriangles = 0;     // triangles that merging folded to a line (at a dart's apex)
 };

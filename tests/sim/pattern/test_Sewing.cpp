@@ -70,9 +70,24 @@ TEST(Sewing, KeepsTheFlatPanelsAsTheRestShape) {
 TEST(Sewing, LeavesASeamOpenWhenTimeRunsOutAndSaysSo) {
   SewingParameters quick;
   quick.maxTime = 0.05;  // one step: a 40 cm gap cannot close
+  quick.snapGap = quick.closedGap;
   const SewnGarment sewn = sewPanels(tube(), implicitCotton(), upright(), quick);
   EXPECT_FALSE(sewn.openSeams.empty());
   EXPECT_EQ(sewn.sewing.iterations, 1);
+}
+
+TEST(Sewing, PullsHarderWhereTheClothMustStretchToClose) {
+  // 2 x 30 cm panels round a capsule of girth 2 pi (10.3 cm) = 64.7 cm: the tube closes only
+  // stretched by 8 %, which a pull scaled to the nodes' mass cannot do.
+  const UnsewnGarment tight = test::tubePattern(8, 6, 0.3, 0.3, 0.9, 0.4);
+  SewingParameters weak;
+  weak.maxStrength = 1.0;  // the control: never pulls harder
+  weak.snapGap = weak.closedGap;
+  EXPECT_FALSE(sewPanels(tight, implicitCotton(), upright(), weak).openSeams.empty());
+  const SewnGarment sewn = sewPanels(tight, implicitCotton(), upright());
+  EXPECT_TRUE(sewn.openSeams.empty());
+  EXPECT_GT(sewn.strength, 1.0);
+  EXPECT_LE(sewn.closedGap, SewingParameters{}.snapGap);
 }
 
 TEST(Sewing, RefusesAGarmentWithoutSeamsNamingIt) {
