@@ -27,8 +27,8 @@ GarmentDrape drapeSewn(const DrapeRequest& request) {
   const DrapeSewing& sewing = *request.sewing;
   const UnsewnGarment panels{request.garment, sewing.flat, {}, {}, sewing.seams, {}};
   const SewnGarment sewn = sewPanels(panels, request.parameters, request.body, sewing.parameters);
-  // Seams that did not close go on pulling through the drape.
-  const SeamPull open{sewn.openSeams, sewing.parameters.rate};
+  // Seams that did not close go on pulling through the drape, as hard as at the end.
+  const SeamPull open{sewn.openSeams, sewing.parameters.rate * sewn.strength};
   ClothSolver solver(sewn.positions, sewn.rest, request.parameters, request.body, open);
   if (request.stepObserver) solver.setStepObserver(request.stepObserver);
   GarmentDrape out;

@@ -4,8 +4,11 @@
 // x = z = 0, facing +z. On another body (FIGMENT's are MakeHuman's, or any mesh in the scene
 // frame) the panels are moved so that the pattern's feet and axis meet that body's: heights
 // scale with the ratio of the two statures (a skirt's waistband stays at the waist of a
-// shorter body), the axis moves to the centre of the body's torso at its waist. The panels
-// themselves keep their shapes: a garment is the same garment on any body.
+// shorter body), the axis moves to the centre of the body's torso at its waist, and the
+// panels placed along the arms (sleeves, cuffs: turned about z by the pattern's arm angle)
+// turn about their armhole to the body's own arm angle (GarmentCode's bodies hold their
+// arms 45 degrees below the horizontal, MakeHuman's about 53). The panels themselves keep
+// their shapes: a garment is the same garment on any body.
 
 #include "sim/core/TriangleMesh.h"
 #include "sim/pattern/SewingPattern.h"
@@ -16,6 +19,7 @@ struct PatternPlacement {
   double feet = 0.0;          // m: the body's lowest point (y)
   double heightScale = 1.0;   // the body's stature over the pattern's body's
   Vec2 axis = Vec2::Zero();   // m: (x, z) of the body's torso centre
+  double armAngle = 0.0;      // degrees below the horizontal of the body's arms; 0: not known
   // Where a point placed for the pattern's own body goes on this body: (x, y, z) ->
   // (x + axis.x, feet + heightScale y, z + axis.z).
   Vec3 operator()(const Vec3& p) const { return {p.x() + axis.x(), feet + heightScale * p.y(), p.z() + axis.y()}; }
@@ -27,7 +31,12 @@ struct PatternPlacement {
 // or a stature out of [kMinStature, kMaxStature] (sim/body/BodyStance.h).
 PatternPlacement placementOn(const TriangleMesh& body, double madeForStature);
 
-// The pattern with each panel's translation moved by the placement (rotations unchanged).
+// The body's arms' angle below the horizontal, degrees (the left arm's outer contour, +x,
+// between 62 % and 78 % of the stature, fitted by a line); 0 when no arm stands apart there.
+double armAngleOf(const TriangleMesh& body);
+
+// The pattern with each panel's translation moved by the placement, and its arm panels
+// turned to the body's arm angle (when the placement knows it).
 SewingPattern placed(const SewingPattern& pattern, const PatternPlacement& placement);
 
 }  // namespace figment
