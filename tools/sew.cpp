@@ -1,6 +1,6 @@
 // figment-sew: a sewing pattern sewn on a body and draped (docs/patterns.md).
 //   figment-sew PATTERN.json --body BODY -o garment.obj|.glb|.gltf [--stats stats.json]
-//               [--spacing M] [--material NAME] [--made-for-stature M] [--with-body]
+//               [--spacing M] [--material NAME] [--made-for-stature M] [--max-time S] [--with-body]
 // PATTERN is GarmentCode's specification JSON (io/PatternFile.h); BODY any standing body a
 // MeshFile reads (human.zae, one figment-body made), found through the model search path.
 // The panels are placed around the body (sim/pattern/PatternPlacement.h), cut into cloth
@@ -35,7 +35,7 @@ const figment::tools::ToolMain kTool{"figment-sew"};
 
 struct Request {
   std::string pattern, output, stats, material = "cotton";
-  double spacing = 0.02, madeForStature = 0.0;
+  double spacing = 0.02, madeForStature = 0.0, maxTime = 20.0;
   bool withBody = false;
 };
 
@@ -54,7 +54,7 @@ figment::ClothParameters drapeParameters(const Request& request) {
   p.material = *material;
   p.integrator = figment::Integrator::Implicit;
   p.timeStep = 0.05;
-  p.maxTime = 10.0;
+  p.maxTime = request.maxTime;
   p.rest = {0.01, 0.25};
   p.friction = 0.5;
   p.clearance = 0.003;
@@ -184,6 +184,8 @@ int main(int argc, char** argv) {
   app.add_option("--material", request.material, "the fabric: a material preset (default cotton)");
   app.add_option("--made-for-stature", request.madeForStature,
                  "the stature of the body the pattern was made for, m (default: the body's own)");
+  app.add_option("--max-time", request.maxTime, "simulated seconds the drape may take to rest, at most (default 20)")
+      ->check(CLI::Range(0.05, 120.0));
   app.add_flag("--with-body", request.withBody, "write the body beside the garment");
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
   if (!figment::meshSetFormatOf(request.output))

@@ -129,6 +129,9 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
   sewing.validate();
   ClothParameters pulled = parameters;
   pulled.gravity = Vec3::Zero();  // the panels hang in place while the seams close
+  // A seam closing round a shoulder or a hip presses its cloth on the body as it pulls it
+  // over; friction would hold it there (a capstan), so the sewing slides freely.
+  pulled.friction = 0.0;
   pulled.maxTime = sewing.maxTime;
   const auto started = std::chrono::steady_clock::now();
   ClothSolver solver(garment.placed.vertices, panelsAtRest(garment), pulled, std::move(body),

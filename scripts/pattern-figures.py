@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""docs/patterns.csv: every shipped sewing pattern (scenes/patterns/index.json) whose size the
+size chart has (scenes/sizes/chart.txt), sewn and draped on that size's chart body, and what
+each drape did (figment-sew --stats), one row a pattern.
+
+    OMP_NUM_THREADS=1 python3 scripts/pattern-figures.py [--bin build/bin] [--out docs/patterns.csv]
+        [--style tshirt ...] [--sex female|male]
+
+Each size's chart body is made once by figment-body (MakeHuman's, to the chart's stature and
+girths) into a temporary folder; each pattern is sewn on it by figment-sew (cotton, backward
+Euler at 1/20 s, 2 cm spacing). A pattern the reader refuses is a row with its one-line reason.
+Standard library only. Needs MakeHuman's data (scripts/setup.sh)."""
+
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+FIELDS = ["style", "sex", "size", "number", "panels", "nodes", "triangles", "sewing_steps", "drape_steps", "steps",
+          "sewing_wall_s", "wall_s", "at_rest", "max_stretch", "inside_nodes", "open_seam_pairs", "seam_gap_max_m",
+          "closed_gap_m", "clean", "problem"]
+
+
+def chart_sizes(path):
+    """(sex, number) -> dict of the chart's row."""
+    sizes = {}
+    with open(path) as chart:
+        for line in chart:
+            words = line.split("#")[0].split()
+            if len(words) != 7:
+                continue
+            sex, letter, number, stature, bust, waist, hip = words
+            sizes[(sex, int(number))] = {"size": letter, "stature": stature, "bust": bust, "waist": waist, "hip": hip}
+    return sizes
+
+
+def make_body(binary, folder, sex, row):
+    path = os.path.join(folder, "%s-%s.obj" % (sex, row["size"]))
+    if not os.path.exists(path):
+        subprocess.run([os.path.join(binary, "figment-body"), "--sex", sex, "--stature", row["stature"],
+                        "--bust-girth", row["bust"], "--waist-girth", row["waist"], "--hip-girth", row["hip"],
+                        "-o", path], check=True, stdout=subprocess.DEVNULL)
+    return path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--bin", default=os.path.join(ROOT, "build", "bin"))
+    parser.add_argument("--out", default=os.path.join(ROOT, "docs", "patterns.csv"))
+    parser.add_argument("--style", action="append", help="only these styles (repeat)")
+    parser.add_argument("--sex", choices=["female", "male"])
+    args = parser.parse_args()
+
+    index = json.load(open(os.path.join(ROOT, "scenes", "patterns", "index.json")))
+    sizes = chart_sizes(os.path.join(ROOT, "scenes", "sizes", "chart.txt"))
+    rows = []
+    with tempfile.TemporaryDirectory() as folder:
+        for entry in index["patterns"]:
+            key = (entry["sex"], entry["number"])
+            if key not in sizes or (args.style and entry["style"] not in args.style) or (
+                    args.sex and entry["sex"] != args.sex):
+                continue
+            body = make_body(args.bin, folder, entry["sex"], sizes[key])
+            stats = os.path.join(folder, "stats.json")
+            garment = os.path.join(folder, "garment.obj")
+            run = subprocess.run([os.path.join(args.bin, "figment-sew"),
+                                  os.path.join(ROOT, "scenes", "patterns", entry["file"]), "--body", body,
+                                  "-o", garment, "--stats", stats], capture_output=True, text=True)
+            row = {"style": entry["style"], "sex": entry["sex"], "size": entry["size"], "number": entry["number"]}
+            if run.returncode != 0:
+                row["problem"] = run.stderr.strip()
+            else:
+                figures = json.load(open(stats))
+                row.update({k: figures[k] for k in FIELDS if k in figures})
+                row["problem"] = "; ".join(line.split(": ", 2)[-1] for line in run.stderr.strip().splitlines())
+                os.remove(stats)
+            rows.append(row)
+            print("%-8s %-6s %-4s %s" % (row["style"], row["sex"], row["size"],
+                                         "clean" if row.get("clean") else row["problem"]), file=sys.stderr)
+    with open(args.out, "w", newline="") as out:
+        writer = csv.DictWriter(out, fieldnames=FIELDS)
+        writer.writeheader()
+        writer.writerows(rows)
+
+
+if __name__ == "__main__":
+    main()
