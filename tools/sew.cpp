@@ -43,14 +43,11 @@ figment::ClothParameters drapeParameters(const Request& request) {
   figment::ClothParameters p;
   const auto material = figment::materialPreset(request.material);
   if (!material)
-    throw std::invalid_argument("--material " + request.material + ": not a fabric (" +
-                                [] {
-                                  std::string names;
-                                  for (const std::string& n : figment::materialPresetNames())
-                                    names += (names.empty() ? "" : ", ") + n;
-                                  return names;
-                                }() +
-                                ")");
+    throw std::invalid_argument("--material " + request.material + ": not a fabric (" + [] {
+      std::string names;
+      for (const std::string& n : figment::materialPresetNames()) names += (names.empty() ? "" : ", ") + n;
+      return names;
+    }() + ")");
   p.material = *material;
   p.integrator = figment::Integrator::Implicit;
   p.timeStep = 0.05;
@@ -83,9 +80,9 @@ std::string statsJson(const figment::GarmentDrape& drape, const figment::DrapeVe
                 "  \"triangles\": %zu,\n  \"clean\": %s\n}\n",
                 drape.run.atRest ? "true" : "false", sewing.seamGap, inside, drape.run.maxStretch,
                 sewing.run.iterations + drape.run.iterations, sewing.run.wallSeconds + drape.run.wallSeconds,
-                sewing.run.iterations, sewing.run.wallSeconds, drape.run.iterations, sewing.closedGap,
-                sewing.openPairs, cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes,
-                cut.placed.triangles.size(), verdict.clean() && inside == 0 && sewing.openPairs == 0 ? "true" : "false");
+                sewing.run.iterations, sewing.run.wallSeconds, drape.run.iterations, sewing.closedGap, sewing.openPairs,
+                cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes, cut.placed.triangles.size(),
+                verdict.clean() && inside == 0 && sewing.openPairs == 0 ? "true" : "false");
   return text;
 }
 
@@ -101,8 +98,8 @@ std::string openStitches(const figment::SewingPattern& pattern, const figment::U
     const auto edge = [&](const figment::EdgeRef& e) {
       return pattern.panels[e.panel].name + " edge " + std::to_string(e.edge);
     };
-    text += (text.empty() ? "" : ", ") + ("stitch " + std::to_string(s) + " (" + edge(stitch.first) + ", " +
-                                          edge(stitch.second) + ")");
+    text += (text.empty() ? "" : ", ") +
+            ("stitch " + std::to_string(s) + " (" + edge(stitch.first) + ", " + edge(stitch.second) + ")");
   }
   return text;
 }
@@ -159,7 +156,8 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   }
 
   const std::string name = request.pattern;
-  if (!verdict.clean()) std::fprintf(stderr, "%s: %s: %s\n", kTool.program().c_str(), name.c_str(), verdict.describe().c_str());
+  if (!verdict.clean())
+    std::fprintf(stderr, "%s: %s: %s\n", kTool.program().c_str(), name.c_str(), verdict.describe().c_str());
   if (drape.sewing->openPairs > 0)
     std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm (%s)\n",
                  kTool.program().c_str(), name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap,
@@ -190,5 +188,6 @@ int main(int argc, char** argv) {
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
   if (!figment::meshSetFormatOf(request.output))
     return kTool.fail("-o " + request.output + ": not .obj, .glb or .gltf");
-  return kTool.withBody(body, [&](const figment::TriangleMesh& mesh, const std::string&) { return sew(request, mesh); });
+  return kTool.withBody(body,
+                        [&](const figment::TriangleMesh& mesh, const std::string&) { return sew(request, mesh); });
 }

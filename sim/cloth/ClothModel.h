@@ -129,7 +129,8 @@ class ClothModel {
   NodeTerms nodes_;
   SeamSprings seams_;
   bool jointBound_;  // the `joints` form of the bending stiffness (else `sections`)
-  int bendingSectionElements_ = 0, jointElements_ = 0, windElements_ = -1, seamElements_ = -1;  // first elements; -1: none
+  int bendingSectionElements_ = 0, jointElements_ = 0, windElements_ = -1,
+      seamElements_ = -1;  // first elements; -1: none
   AssemblyPlan plan_;
   // Scratch of an evaluation: the elements' slots, the joints' angle changes and
   // gradients, the bending sections' moments, the sections' clamp flags, the matrix's

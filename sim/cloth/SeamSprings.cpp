@@ -14,9 +14,10 @@ SeamSprings::SeamSprings(std::vector<std::array<int, 2>> seams, const std::vecto
   const int n = static_cast<int>(masses.size());
   for (const auto& [a, b] : seams_) {
     if (a < 0 || a >= n || b < 0 || b >= n)
-      throw std::invalid_argument("seam (" + std::to_string(a) + ", " + std::to_string(b) + ") names a node out of [0, " +
-                                  std::to_string(n) + ")");
-    if (a == b) throw std::invalid_argument("seam (" + std::to_string(a) + ", " + std::to_string(b) + ") joins a node to itself");
+      throw std::invalid_argument("seam (" + std::to_string(a) + ", " + std::to_string(b) +
+                                  ") names a node out of [0, " + std::to_string(n) + ")");
+    if (a == b)
+      throw std::invalid_argument("seam (" + std::to_string(a) + ", " + std::to_string(b) + ") joins a node to itself");
     const double m = 0.5 * (masses[a] + masses[b]);
     stiffness_.push_back(rate * m);
     damping_.push_back(2.0 * std::sqrt(rate) * m);

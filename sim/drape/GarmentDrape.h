@@ -31,13 +31,13 @@ struct DrapeSewing {
 
 // What the sewing did, beside the drape that followed it.
 struct SewingOutcome {
-  DrapeResult run;           // the sewing's steps (gravity off, until every seam closed)
-  double closedGap = 0.0;    // m: the largest gap of a pair when it was merged
-  double seamGap = 0.0;      // m: the largest gap across any seam at the drape's end
-  int openPairs = 0;         // seam pairs not closed while sewing (drawn on through the drape)
+  DrapeResult run;                 // the sewing's steps (gravity off, until every seam closed)
+  double closedGap = 0.0;          // m: the largest gap of a pair when it was merged
+  double seamGap = 0.0;            // m: the largest gap across any seam at the drape's end
+  int openPairs = 0;               // seam pairs not closed while sewing (drawn on through the drape)
   std::vector<int> openSeamPairs;  // which: indices into DrapeSewing::seams
-  int sewnNodes = 0;         // nodes once the closed seams were merged
-  int droppedTriangles = 0;  // triangles merging folded to a line (a dart's apex)
+  int sewnNodes = 0;               // nodes once the closed seams were merged
+  int droppedTriangles = 0;        // triangles merging folded to a line (a dart's apex)
 };
 
 struct DrapeRequest {
@@ -64,10 +64,10 @@ struct DrapeRequest {
 
 struct GarmentDrape {
   DrapeResult run;
-  std::vector<Vec3> positions;     // every rest point's
-  std::vector<Triangle> sections;  // those simulated last, in the garment's numbering
-  int level = 0, levels = 0;       // progressive only: the level reached, of how many
-  EndLevelSettling settling;       // progressive only: after the full detail arrived
+  std::vector<Vec3> positions;          // every rest point's
+  std::vector<Triangle> sections;       // those simulated last, in the garment's numbering
+  int level = 0, levels = 0;            // progressive only: the level reached, of how many
+  EndLevelSettling settling;            // progressive only: after the full detail arrived
   std::optional<SewingOutcome> sewing;  // sewn only
 };
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <vector>
 #include <string>
+#include <vector>
 
 #include "sim/body/BodySlices.h"
 #include "sim/body/BodyStance.h"
@@ -32,8 +32,8 @@ PatternPlacement placementOn(const TriangleMesh& body, double madeForStature) {
   placement.heightScale = madeForStature > 0.0 ? stature / madeForStature : 1.0;
   const SliceOptions options = centredSlicing(body, 0.04, 0.12);
   const TorsoSlice waist = sliceTorso(body, box.min.y() + kWaistShare * stature, options);
-  placement.axis = waist.empty() ? Vec2(0.5 * (box.min.x() + box.max.x()), 0.5 * (box.min.z() + box.max.z()))
-                                 : waist.centroid();
+  placement.axis =
+      waist.empty() ? Vec2(0.5 * (box.min.x() + box.max.x()), 0.5 * (box.min.z() + box.max.z())) : waist.centroid();
   placement.armAngle = armAngleOf(body);
   return placement;
 }
@@ -59,7 +59,7 @@ double armAngleOf(const TriangleMesh& body) {
   }
   if (n < kBands / 2) return 0.0;
   const double slope = (n * sxy - sx * sy) / (n * syy - sy * sy);  // dx/dy: < 0, the arm goes out as it goes down
-  if (!(slope < -0.05)) return 0.0;                                    // arms along the body: no angle to match
+  if (!(slope < -0.05)) return 0.0;                                // arms along the body: no angle to match
   return std::atan2(1.0, -slope) * 180.0 / M_PI;
 }
 

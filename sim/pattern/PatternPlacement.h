@@ -16,10 +16,10 @@
 namespace figment {
 
 struct PatternPlacement {
-  double feet = 0.0;          // m: the body's lowest point (y)
-  double heightScale = 1.0;   // the body's stature over the pattern's body's
-  Vec2 axis = Vec2::Zero();   // m: (x, z) of the body's torso centre
-  double armAngle = 0.0;      // degrees below the horizontal of the body's arms; 0: not known
+  double feet = 0.0;         // m: the body's lowest point (y)
+  double heightScale = 1.0;  // the body's stature over the pattern's body's
+  Vec2 axis = Vec2::Zero();  // m: (x, z) of the body's torso centre
+  double armAngle = 0.0;     // degrees below the horizontal of the body's arms; 0: not known
   // Where a point placed for the pattern's own body goes on this body: (x, y, z) ->
   // (x + axis.x, feet + heightScale y, z + axis.z).
   Vec3 operator()(const Vec3& p) const { return {p.x() + axis.x(), feet + heightScale * p.y(), p.z() + axis.y()}; }

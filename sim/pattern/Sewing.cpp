@@ -19,11 +19,13 @@ void SewingParameters::validate() const {
     throw std::invalid_argument("sewing maxTime = " + std::to_string(maxTime) + " s must be > 0");
   if (!(snapGap >= closedGap) || !std::isfinite(snapGap))
     throw std::invalid_argument("sewing snapGap = " + std::to_string(snapGap) + " m must be >= closedGap");
-  if (!(stall >= 0.0 && stall < 1.0)) throw std::invalid_argument("sewing stall = " + std::to_string(stall) + " must be in [0, 1)");
-  if (stallSteps < 1) throw std::invalid_argument("sewing stallSteps = " + std::to_string(stallSteps) + " must be >= 1");
+  if (!(stall >= 0.0 && stall < 1.0))
+    throw std::invalid_argument("sewing stall = " + std::to_string(stall) + " must be in [0, 1)");
+  if (stallSteps < 1)
+    throw std::invalid_argument("sewing stallSteps = " + std::to_string(stallSteps) + " must be >= 1");
   if (!(strengthen > 1.0) || !(maxStrength >= 1.0) || !std::isfinite(strengthen) || !std::isfinite(maxStrength))
-    throw std::invalid_argument("sewing strengthen = " + std::to_string(strengthen) + " must be > 1 and maxStrength = " +
-                                std::to_string(maxStrength) + " >= 1");
+    throw std::invalid_argument("sewing strengthen = " + std::to_string(strengthen) +
+                                " must be > 1 and maxStrength = " + std::to_string(maxStrength) + " >= 1");
 }
 
 namespace {

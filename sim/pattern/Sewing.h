@@ -38,21 +38,21 @@ struct SewingParameters {
   // or maxTime), pairs this close are merged at their midpoint, the drape that follows
   // spreading the strain; pairs farther apart stay open (reported, and pulled on).
   double snapGap = 0.05;
-  double maxTime = 3.0;     // s of simulated time to close every seam, at most
+  double maxTime = 3.0;  // s of simulated time to close every seam, at most
   // Throws std::invalid_argument naming the field and value when out of range.
   void validate() const;
 };
 
 struct SewnGarment {
-  std::vector<Vec3> positions;  // per sewn node, where the sewing left it (m)
-  RestShape rest;               // the sewn triangles, each resting as its flat panel
-  std::vector<int> nodeOf;      // per panel node (UnsewnGarment's numbering): its sewn node
+  std::vector<Vec3> positions;                // per sewn node, where the sewing left it (m)
+  RestShape rest;                             // the sewn triangles, each resting as its flat panel
+  std::vector<int> nodeOf;                    // per panel node (UnsewnGarment's numbering): its sewn node
   std::vector<std::array<int, 2>> openSeams;  // seam pairs not closed, in sewn nodes
-  std::vector<int> openPairs;   // the same pairs, as indices into the garment's seams
-  double closedGap = 0.0;       // m: the largest gap of a pair when it was merged
-  double strength = 1.0;        // how much harder than `rate` the seams pulled at the end
-  DrapeResult sewing;           // the sewing's run: steps, time, wall time
-  int droppedTriangles = 0;     // triangles that merging folded to a line (at a dart's apex)
+  std::vector<int> openPairs;                 // the same pairs, as indices into the garment's seams
+  double closedGap = 0.0;                     // m: the largest gap of a pair when it was merged
+  double strength = 1.0;                      // how much harder than `rate` the seams pulled at the end
+  DrapeResult sewing;                         // the sewing's run: steps, time, wall time
+  int droppedTriangles = 0;                   // triangles that merging folded to a line (at a dart's apex)
 };
 
 // Sews `garment` around `body` (may be null): `parameters` are the drape's (implicit

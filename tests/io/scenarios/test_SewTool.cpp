@@ -78,7 +78,8 @@ TEST(SewTool, AnOutputItCannotWriteIsOneLineBeforeAnyWork) {
 
 TEST(SewTool, AMissingPatternIsOneLine) {
   const figment::test::TempDir dir;
-  const auto result = sew(dir, quote((dir.path() / "none.json").string()) + " -o " + quote((dir.path() / "x.obj").string()));
+  const auto result =
+      sew(dir, quote((dir.path() / "none.json").string()) + " -o " + quote((dir.path() / "x.obj").string()));
   EXPECT_EQ(result.status, 1);
   EXPECT_EQ(lines(result.err), 1) << result.err;
   EXPECT_NE(result.err.find("none.json"), std::string::npos) << result.err;

@@ -96,7 +96,8 @@ INSTANTIATE_TEST_SUITE_P(MiddleSizes, SewnPatterns,
                                            ShippedPattern{"shirt/shirt-f-38_specification.json", Sex::Female, "M"},
                                            // Not shirt-m-48: its right sleeve closes beside the arm, not round it
                                            // (docs/patterns.md, known limits).
-                                           ShippedPattern{"trousers/trousers-f-38_specification.json", Sex::Female, "M"},
+                                           ShippedPattern{"trousers/trousers-f-38_specification.json", Sex::Female,
+                                                          "M"},
                                            ShippedPattern{"trousers/trousers-m-48_specification.json", Sex::Male, "M"},
                                            ShippedPattern{"pencil/pencil-f-38_specification.json", Sex::Female, "M"},
                                            ShippedPattern{"circle/circle-f-38_specification.json", Sex::Female, "M"},

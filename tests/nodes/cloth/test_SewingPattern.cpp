@@ -2,9 +2,8 @@
 // panel coordinates and the seam pairs; a ClothEngine given them sews the panels shut. A
 // pattern that does not read, or a spacing out of range, is a read error naming the node.
 
-#include <gtest/gtest.h>
-
 #include <Inventor/engines/SoEngineOutput.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
@@ -74,7 +73,8 @@ TEST(SewingPattern, ABadPatternIsAReadErrorNamingTheNodeAndThePanel) {
   const TempDir dir;
   const std::string path = (dir.path() / "bad.json").string();
   std::string text = kTube;
-  text.replace(text.find("{\"endpoints\": [1, 2]}"), 21, R"({"endpoints": [1, 2], "curvature": {"type": "spline", "params": []}})");
+  text.replace(text.find("{\"endpoints\": [1, 2]}"), 21,
+               R"({"endpoints": [1, 2], "curvature": {"type": "spline", "params": []}})");
   std::ofstream(path) << text;
   initCoin();
   CapturedErrors errors;
@@ -98,7 +98,9 @@ TEST(SewingPattern, AClothEngineSewsItsSeamsShut) {
   initCoin();
   SceneRoot root = readString(
       "#Inventor V2.1 ascii\nSeparator {\n"
-      "  Switch { whichChild -1  DEF Tube SewingPattern { fileName \"" + path + "\"  spacing 0.04 } }\n"
+      "  Switch { whichChild -1  DEF Tube SewingPattern { fileName \"" +
+      path +
+      "\"  spacing 0.04 } }\n"
       "  Coordinate3 { point = DEF Drape ClothEngine {\n"
       "    restPoints = USE Tube.point  coordIndex = USE Tube.coordIndex\n"
       "    panelPoints = USE Tube.panelPoint  seams = USE Tube.seams\n"

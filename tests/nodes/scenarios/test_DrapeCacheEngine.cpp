@@ -88,6 +88,10 @@ bool change(SoField& field) {
     auto& f = static_cast<SoMFVec3f&>(field);
     return f.set1Value(0, f.getNum() ? f[0] + SbVec3f(0, 1e-6f, 0) : SbVec3f(0, 0, 0)), true;
   }
+  if (type == SoMFVec2f::getClassTypeId()) {
+    auto& f = static_cast<SoMFVec2f&>(field);
+    return f.set1Value(0, f.getNum() ? f[0] + SbVec2f(0, 1e-6f) : SbVec2f(0, 0)), true;
+  }
   if (type == SoMFInt32::getClassTypeId()) {
     auto& f = static_cast<SoMFInt32&>(field);
     return f.set1Value(f.getNum(), -1), true;

@@ -1,9 +1,8 @@
 // A garment's rest shape: a mesh's own, or flat pieces whose joints rest flat.
-#include "sim/cloth/RestShape.h"
-
 #include <gtest/gtest.h>
 
 #include "sim/cloth/BendingJoint.h"
+#include "sim/cloth/RestShape.h"
 #include "support/TestMeshes.h"
 
 namespace figment {

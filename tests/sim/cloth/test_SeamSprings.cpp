@@ -1,9 +1,8 @@
 // Seams being sewn: zero-length springs with dampers, their forces the energy's gradient
 // and their blocks its Hessian.
-#include "sim/cloth/SeamSprings.h"
-
 #include <gtest/gtest.h>
 
+#include "sim/cloth/SeamSprings.h"
 #include "support/FiniteDifferences.h"
 
 namespace figment {

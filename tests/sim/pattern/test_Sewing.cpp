@@ -1,7 +1,5 @@
 // Sewing a pattern's panels around a body: the seams close, their nodes merge once, the
 // body holds the cloth out, and the rest shape stays the flat panels.
-#include "sim/pattern/Sewing.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +8,7 @@
 
 #include "sim/collision/CapsuleCollider.h"
 #include "sim/core/BoundaryLoops.h"
+#include "sim/pattern/Sewing.h"
 #include "support/TestCapsules.h"
 #include "support/TubePattern.h"
 
@@ -26,13 +25,14 @@ ClothParameters implicitCotton() {
 
 constexpr double kBodyRadius = 0.1;  // m
 std::shared_ptr<const Collider> upright() {
-  return std::make_shared<CapsuleCollider>(
-      test::segmentCapsule(Vec3(0, 0.2, 0), Vec3(0, 1.2, 0), kBodyRadius));
+  return std::make_shared<CapsuleCollider>(test::segmentCapsule(Vec3(0, 0.2, 0), Vec3(0, 1.2, 0), kBodyRadius));
 }
 
 // 40 cm panels make an 80 cm tube (radius 12.7 cm) around a 10 cm capsule; placed 40 cm
 // apart, each side seam starts 40 cm open.
-UnsewnGarment tube() { return test::tubePattern(10, 6, 0.4, 0.3, 0.9, 0.4); }
+UnsewnGarment tube() {
+  return test::tubePattern(10, 6, 0.4, 0.3, 0.9, 0.4);
+}
 
 TEST(Sewing, ClosesEverySeamAndMergesItsNodesOnce) {
   const UnsewnGarment garment = tube();
