@@ -246,14 +246,18 @@ bool MeshFile::load(SoInput* in) {
   } catch (...) {
     error = "unknown error while reading the mesh";
   }
+  return failLoad("MeshFile", in, error);
+}
+
+bool MeshFile::failLoad(const char* kind, SoInput* in, const std::string& error) {
   clearMesh();
-  const SbName defName = getName();
-  const std::string message = std::string("MeshFile") +
-                              (defName.getLength() ? " '" + std::string(defName.getString()) + "'" : "") + ": " + error;
+  const SbName name = getName();
+  const std::string message =
+      std::string(kind) + (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": " + error;
   if (in)
     SoReadError::post(in, "%s", message.c_str());  // fails the read; Coin adds file and line
   else
-    SoDebugError::post("MeshFile::load", "%s", message.c_str());
+    SoDebugError::post((std::string(kind) + "::load").c_str(), "%s", message.c_str());
   return false;
 }
 

@@ -157,6 +157,10 @@ class MeshFile : public SoNode, public figment::CollisionBody {
   // Sets the drawn mesh (and the outputs) and the collision surface.
   void setMesh(const figment::TriangleMesh& drawn, const figment::TriangleMesh& collision);
   void clearMesh();
+  // Empties the node and says why in one line, "<kind> '<name>': <error>": a read error
+  // (which fails the read; Coin adds file and line) while reading from `in`, else a posted
+  // debug error. Returns false, for load() to return.
+  bool failLoad(const char* kind, SoInput* in, const std::string& error);
 
  private:
   struct Impl;

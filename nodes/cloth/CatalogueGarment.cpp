@@ -96,13 +96,5 @@ bool CatalogueGarment::load(SoInput* in) {
   } catch (const std::exception& e) {
     error = e.what();
   }
-  clearMesh();
-  const SbName name = getName();
-  const std::string message = std::string("CatalogueGarment") +
-                              (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": " + error;
-  if (in)
-    SoReadError::post(in, "%s", message.c_str());
-  else
-    SoDebugError::post("CatalogueGarment::load", "%s", message.c_str());
-  return false;
+  return failLoad("CatalogueGarment", in, error);
 }

@@ -96,15 +96,7 @@ bool SewingPattern::load(SoInput* in) {
   } catch (const std::exception& e) {
     error = e.what();
   }
-  clearMesh();
   panelPoint.setNum(0);
   seams.setNum(0);
-  const SbName name = getName();
-  const std::string message = std::string("SewingPattern") +
-                              (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": " + error;
-  if (in)
-    SoReadError::post(in, "%s", message.c_str());
-  else
-    SoDebugError::post("SewingPattern::load", "%s", message.c_str());
-  return false;
+  return failLoad("SewingPattern", in, error);
 }
