@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/PatternFile.h"
 #include "io/SizeChartFile.h"
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/fit/FitRegion.h"
@@ -286,6 +287,16 @@ CatalogueItem GarmentCatalogue::resolveIn(const std::string& name, const Sex* se
   if (!isColour(item.colour))
     throw std::invalid_argument("\"" + name + "\": colour " + parts[2] + " is not six hex digits (rrggbb)");
   return item;
+}
+
+SewnStyle sewnStyle(const CatalogueStyle& style, const SizeChart& chart) {
+  SewnStyle sewn;
+  sewn.fabric = style.fabric;
+  sewn.regions = style.regions;
+  for (const PatternIndexEntry& entry : style.patterns)
+    if (const int size = chart.find(entry.sex, entry.size); size >= 0)
+      sewn.sizes[{entry.sex, size}] = {readPatternFile(entry.file), entry.body.stature};
+  return sewn;
 }
 
 std::string defaultCataloguePath() {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/PatternIndexFile.h"
+#include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
 #include "sim/garment/SizeChart.h"
 
@@ -85,6 +86,11 @@ class GarmentCatalogue {
   std::vector<PatternIndexEntry> patterns_;  // the pattern index's entries: empty without one
   std::vector<CatalogueStyle> styles_;
 };
+
+// A pattern style as SizeFitter fits it: its fabric, regions and, for each size it is sold
+// in that `chart` has, its pattern read (io/PatternFile.h; throws PatternError for one
+// that does not read) with the stature it was cut for.
+SewnStyle sewnStyle(const CatalogueStyle& style, const SizeChart& chart);
 
 // The catalogue shipped with the sources (scenes/catalogue/index.txt).
 std::string defaultCataloguePath();
