@@ -43,18 +43,6 @@ bool writable(const std::string& path) {
   return extension == ".obj" || extension == ".glb" || extension == ".gltf" || extension == ".iv";
 }
 
-// Area-weighted vertex normals (a cross product's length is twice its triangle's area).
-std::vector<figment::Vec3> vertexNormals(const figment::TriangleMesh& mesh) {
-  std::vector<figment::Vec3> normals(mesh.vertices.size(), figment::Vec3::Zero());
-  for (const figment::Triangle& t : mesh.triangles) {
-    const figment::Vec3 n =
-        (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-    for (const int corner : t) normals[corner] += n;
-  }
-  for (figment::Vec3& n : normals) n = n.norm() > 0.0 ? figment::Vec3(n.normalized()) : figment::Vec3(0, 1, 0);
-  return normals;
-}
-
 // The body in the format its name asks for: a Wavefront OBJ, glTF (binary .glb or .gltf
 // with its .bin; smooth normals, a skin colour) or Coin's .iv text; whole or not at all.
 void writeBody(const figment::TriangleMesh& body, const std::string& path) {
@@ -62,7 +50,7 @@ void writeBody(const figment::TriangleMesh& body, const std::string& path) {
   if (extension == ".obj") return figment::exportObj(body, path);
   if (extension == ".iv") return figment::exportIv(body, path);
   figment::ColouredMesh skin{
-      .name = "body", .mesh = body, .normals = vertexNormals(body), .colour = {0.80f, 0.58f, 0.45f}};
+      .name = "body", .mesh = body, .normals = figment::vertexNormals(body), .colour = {0.80f, 0.58f, 0.45f}};
   figment::exportMeshSet({skin}, path);
 }
 

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,24 @@ std::string statsJson(const figment::GarmentDrape& drape, const figment::DrapeVe
   return text;
 }
 
+// The stitches whose pairs stayed open, by their panels and edges: "stitch 3 (skirt_front
+// edge 11, skirt_back edge 0), ...".
+std::string openStitches(const figment::SewingPattern& pattern, const figment::UnsewnGarment& cut,
+                         const figment::SewingOutcome& sewing) {
+  std::set<int> stitches;
+  for (int pair : sewing.openSeamPairs) stitches.insert(cut.seamStitch[pair]);
+  std::string text;
+  for (int s : stitches) {
+    const figment::Stitch& stitch = pattern.stitches[s];
+    const auto edge = [&](const figment::EdgeRef& e) {
+      return pattern.panels[e.panel].name + " edge " + std::to_string(e.edge);
+    };
+    text += (text.empty() ? "" : ", ") + ("stitch " + std::to_string(s) + " (" + edge(stitch.first) + ", " +
+                                          edge(stitch.second) + ")");
+  }
+  return text;
+}
+
 int sew(const Request& request, const figment::TriangleMesh& body) {
   const figment::ClothParameters parameters = drapeParameters(request);
   const figment::SewingPattern pattern = figment::readPatternFile(request.pattern);
@@ -142,8 +161,9 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   const std::string name = request.pattern;
   if (!verdict.clean()) std::fprintf(stderr, "%s: %s: %s\n", kTool.program().c_str(), name.c_str(), verdict.describe().c_str());
   if (drape.sewing->openPairs > 0)
-    std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm\n", kTool.program().c_str(),
-                 name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap);
+    std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm (%s)\n",
+                 kTool.program().c_str(), name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap,
+                 openStitches(pattern, cut, *drape.sewing).c_str());
   if (inside > 0)
     std::fprintf(stderr, "%s: %s: %d garment nodes inside the body\n", kTool.program().c_str(), name.c_str(), inside);
   return 0;

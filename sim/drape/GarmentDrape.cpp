@@ -1,5 +1,7 @@
 #include "sim/drape/GarmentDrape.h"
 
+#include <algorithm>
+#include <chrono>
 #include <stdexcept>
 #include <utility>
 
@@ -23,24 +25,54 @@ GarmentDrape drapeWhole(const DrapeRequest& request) {
   return out;
 }
 
+// Per panel node, where its sewn node is.
+std::vector<Vec3> panelPositions(const SewnGarment& sewn, const std::vector<Vec3>& x) {
+  std::vector<Vec3> out;
+  out.reserve(sewn.nodeOf.size());
+  for (int node : sewn.nodeOf) out.push_back(x[node]);
+  return out;
+}
+
+// Sews the panels, then drapes what was sewn. Seams that did not close while sewing go on
+// pulling, with gravity, as hard as at the sewing's end, until they come within half the
+// merging reach (or the run's time is out); then they are merged too, and the garment
+// drapes to rest.
 GarmentDrape drapeSewn(const DrapeRequest& request) {
   const DrapeSewing& sewing = *request.sewing;
   const UnsewnGarment panels{request.garment, sewing.flat, {}, {}, sewing.seams, {}};
-  const SewnGarment sewn = sewPanels(panels, request.parameters, request.body, sewing.parameters);
-  // Seams that did not close go on pulling through the drape, as hard as at the end.
-  const SeamPull open{sewn.openSeams, sewing.parameters.rate * sewn.strength};
-  ClothSolver solver(sewn.positions, sewn.rest, request.parameters, request.body, open);
-  if (request.stepObserver) solver.setStepObserver(request.stepObserver);
-  GarmentDrape out;
-  out.run = solver.run(request.progress, request.progressInterval);
-  out.positions.reserve(sewn.nodeOf.size());
-  for (int node : sewn.nodeOf) out.positions.push_back(solver.positions()[node]);
-  out.sections = request.garment.triangles;
+  SewnGarment sewn = sewPanels(panels, request.parameters, request.body, sewing.parameters);
   SewingOutcome outcome;
   outcome.run = sewn.sewing;
   outcome.closedGap = sewn.closedGap;
+  int steps = 0;
+  double time = 0.0, wall = 0.0;
+  if (!sewn.openPairs.empty()) {
+    const auto started = std::chrono::steady_clock::now();
+    ClothSolver pulling(sewn.positions, sewn.rest, request.parameters, request.body,
+                        SeamPull{sewn.openSeams, sewing.parameters.rate * sewn.strength});
+    while (pulling.model().seams().largestGap(pulling.positions()) > 0.5 * sewing.parameters.snapGap &&
+           pulling.time() < request.parameters.maxTime - 1e-12)
+      pulling.step();
+    steps = pulling.iterations(), time = pulling.time();
+    wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    SewnGarment closer = mergeSeams(panels, panelPositions(sewn, pulling.positions()), sewing.parameters.snapGap);
+    closer.strength = sewn.strength;
+    outcome.closedGap = std::max(outcome.closedGap, closer.closedGap);
+    sewn = std::move(closer);
+  }
+  ClothSolver solver(sewn.positions, sewn.rest, request.parameters, request.body,
+                     SeamPull{sewn.openSeams, sewing.parameters.rate * sewn.strength});
+  if (request.stepObserver) solver.setStepObserver(request.stepObserver);
+  GarmentDrape out;
+  out.run = solver.run(request.progress, request.progressInterval);
+  out.run.iterations += steps;
+  out.run.simulatedTime += time;
+  out.run.wallSeconds += wall;
+  out.positions = panelPositions(sewn, solver.positions());
+  out.sections = request.garment.triangles;
   outcome.seamGap = largestSeamGap(panels, out.positions);
-  outcome.openPairs = static_cast<int>(sewn.openSeams.size());
+  outcome.openPairs = static_cast<int>(sewn.openPairs.size());
+  outcome.openSeamPairs = sewn.openPairs;
   outcome.sewnNodes = static_cast<int>(sewn.positions.size());
   outcome.droppedTriangles = sewn.droppedTriangles;
   out.sewing = outcome;

@@ -35,6 +35,7 @@ struct SewingOutcome {
   double closedGap = 0.0;    // m: the largest gap of a pair when it was merged
   double seamGap = 0.0;      // m: the largest gap across any seam at the drape's end
   int openPairs = 0;         // seam pairs not closed while sewing (drawn on through the drape)
+  std::vector<int> openSeamPairs;  // which: indices into DrapeSewing::seams
   int sewnNodes = 0;         // nodes once the closed seams were merged
   int droppedTriangles = 0;  // triangles merging folded to a line (a dart's apex)
 };

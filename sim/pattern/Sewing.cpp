@@ -66,9 +66,16 @@ class NodeClasses {
   std::vector<int> parent_;
 };
 
-// Merges the closed pairs: each class of panel nodes becomes one sewn node at their mean,
-// numbered in the order of their first panel node.
-void merge(const UnsewnGarment& garment, const std::vector<Vec3>& x, double snapGap, SewnGarment& out) {
+}  // namespace
+
+// Each class of panel nodes joined by pairs within reach becomes one sewn node at their
+// mean, numbered in the order of their first panel node.
+SewnGarment mergeSeams(const UnsewnGarment& garment, const std::vector<Vec3>& x, double snapGap) {
+  checkGarment(garment);
+  if (x.size() != garment.placed.vertices.size())
+    throw std::invalid_argument("mergeSeams: " + std::to_string(x.size()) + " positions for " +
+                                std::to_string(garment.placed.vertices.size()) + " panel nodes");
+  SewnGarment out;
   const size_t n = x.size();
   NodeClasses classes(n);
   for (const auto& [a, b] : garment.seams) {
@@ -106,14 +113,15 @@ void merge(const UnsewnGarment& garment, const std::vector<Vec3>& x, double snap
   out.rest = RestShape::flatPieces(std::move(triangles), std::move(corners), out.positions.size());
 
   std::set<std::array<int, 2>> open;
-  for (const auto& [a, b] : garment.seams) {
-    const int p = out.nodeOf[a], q = out.nodeOf[b];
-    if (p != q) open.insert({std::min(p, q), std::max(p, q)});
+  for (size_t s = 0; s < garment.seams.size(); ++s) {
+    const int p = out.nodeOf[garment.seams[s][0]], q = out.nodeOf[garment.seams[s][1]];
+    if (p == q) continue;
+    out.openPairs.push_back(static_cast<int>(s));
+    open.insert({std::min(p, q), std::max(p, q)});
   }
   out.openSeams.assign(open.begin(), open.end());
+  return out;
 }
-
-}  // namespace
 
 SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& parameters,
                       std::shared_ptr<const Collider> body, const SewingParameters& sewing) {
@@ -139,9 +147,8 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
     stalled = 0;
   }
 
-  SewnGarment out;
+  SewnGarment out = mergeSeams(garment, solver.positions(), sewing.snapGap);
   out.strength = strength;
-  merge(garment, solver.positions(), sewing.snapGap, out);
   out.sewing.iterations = solver.iterations();
   out.sewing.simulatedTime = solver.time();
   out.sewing.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

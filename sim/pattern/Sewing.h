@@ -48,6 +48,7 @@ struct SewnGarment {
   RestShape rest;               // the sewn triangles, each resting as its flat panel
   std::vector<int> nodeOf;      // per panel node (UnsewnGarment's numbering): its sewn node
   std::vector<std::array<int, 2>> openSeams;  // seam pairs not closed, in sewn nodes
+  std::vector<int> openPairs;   // the same pairs, as indices into the garment's seams
   double closedGap = 0.0;       // m: the largest gap of a pair when it was merged
   double strength = 1.0;        // how much harder than `rate` the seams pulled at the end
   DrapeResult sewing;           // the sewing's run: steps, time, wall time
@@ -60,6 +61,11 @@ struct SewnGarment {
 // SimulationError when the sewing blows up.
 SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& parameters,
                       std::shared_ptr<const Collider> body, const SewingParameters& sewing = {});
+
+// The garment with its seam pairs that lie within `within` (m) at `positions` (one per
+// panel node) merged at their midpoints: what sewPanels ends with, and what a drape that
+// began with seams open makes once they have come close (sim/drape/GarmentDrape.cpp).
+SewnGarment mergeSeams(const UnsewnGarment& garment, const std::vector<Vec3>& positions, double within);
 
 // The largest distance between the two nodes of any seam pair at `positions` (per panel
 // node), m: what a drape of the sewn garment reports as its seams' largest gap.

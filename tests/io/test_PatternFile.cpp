@@ -226,3 +226,15 @@ TEST(PatternFile, RefusesABadStitch) {
     "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2]}, {"endpoints": [2, 3]}, {"endpoints": [3, 0]}]}})";
   EXPECT_EQ(refusal(spec(gathered, R"([[{"panel": "a", "edge": 0}, {"panel": "g", "edge": 0}]])")), "(read)");
 }
+
+// GarmentCode's pencil skirt for women's 54 (shipped in the graded set) writes its front
+// waistband's two nearly straight edges (62 cm chords on 8 m circles) as large arcs: 50 m
+// loops that cross the panel. Refused, not sewn.
+TEST(PatternFile, RefusesAFlatArcFlaggedLarge) {
+  EXPECT_EQ(refusal(spec(R"({"wb_front": {"vertices": [[-0.17317810895712427, 0], [0.0017606091853714645,
+    -4.57201956856449], [61.99823939081463, -4.57201956856449], [62.173178108957124, 0]],
+    "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2], "curvature": {"type": "circle",
+    "params": [810.7311321402475, 1, 0]}}, {"endpoints": [2, 3]}, {"endpoints": [3, 0], "curvature":
+    {"type": "circle", "params": [815.3064973158856, 1, 1]}}]}})")),
+            "p.json: panel \"wb_front\": the outline crosses itself (edges 1 and 3)");
+}
