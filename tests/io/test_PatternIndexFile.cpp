@@ -58,7 +58,7 @@ TEST(PatternIndexFile, BadEntriesAreNamed) {
             dir.path().string() + "/index.json: patterns[0]: sex woman is not female or male");
   EXPECT_EQ(errorOf(index(R"({"patterns": [{"sex": "female"}]})")),
             dir.path().string() + "/index.json: patterns[0]: no \"style\"");
-  EXPECT_EQ(errorOf(index("{\"patterns\": [")), dir.path().string() + "/index.json: not JSON (byte 14)");
+  EXPECT_EQ(errorOf(index("{\"patterns\": [")), dir.path().string() + "/index.json: not JSON (byte 15)");
   EXPECT_EQ(errorOf(index("{}")), dir.path().string() + "/index.json: no \"patterns\" list");
   EXPECT_EQ(errorOf(index("{\"patterns\": [{" + entry +
                           R"(, "stature": 1.68, "bust": 0.88, "waist": 0.72, "hips": 0.96}]})")),
