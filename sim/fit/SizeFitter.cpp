@@ -119,7 +119,9 @@ SizeFitter::SizeFitter(const HumanModel& model, const SizeChart& chart, const Se
       parameters_(sizeDrapeParameters(style.fabric)) {}
 
 VerdictRule SizeFitter::rule() const {
-  return VerdictRule{fabricLimits(fabric_)};
+  VerdictRule rule{fabricLimits(fabric_)};
+  rule.stretchAgainstIntended = sewn_ != nullptr;  // a graded pattern's own fit is its maker's
+  return rule;
 }
 
 const SizePattern& SizeFitter::patternOf(Sex sex, int size) const {
