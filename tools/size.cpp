@@ -175,9 +175,13 @@ int main(int argc, char** argv) {
     try {
       const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
       const figment::CatalogueStyle* sold = catalogue.style(request.style);
-      if (!sold || !sold->sewn())
-        return kTool.fail("--style " + request.style + ": not one of " + catalogue.styleNames() +
+      if (!sold || !sold->sewn()) {
+        std::string patterns;
+        for (const figment::CatalogueStyle& style : catalogue.styles())
+          if (style.sewn()) patterns += ", " + style.name;
+        return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames() + patterns +
                           " (or a catalogue garment, style:size)");
+      }
     } catch (const std::exception& error) {
       return kTool.fail(error.what());
     }

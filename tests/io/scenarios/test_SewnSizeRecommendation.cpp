@@ -15,6 +15,8 @@
 #include "io/GarmentCatalogue.h"
 #include "sim/fit/SizeFitter.h"
 #include "support/ChartBodies.h"
+#include "support/ProgramRun.h"
+#include "support/TempDir.h"
 
 using namespace figment;
 
@@ -101,4 +103,18 @@ TEST_F(SewnSizeRecommendation, ASizeWithoutAPatternIsNamed) {
   } catch (const std::invalid_argument& error) {
     EXPECT_STREQ(error.what(), "sewn style: no pattern for the female size M");
   }
+}
+
+// figment-size takes a pattern style by its catalogue name: the pencil skirt's XL on the S
+// body (two sizes up, 8 cm of girth) is loose, as the generated pencil skirt's is.
+TEST_F(SewnSizeRecommendation, FigmentSizeTriesAPatternStyleOn) {
+  const test::TempDir dir;
+  const test::ProgramResult run =
+      test::runProgram(std::string(FIGMENT_BINARY_DIR) + "/bin/figment-size",
+                       "--style pencilskirt:XL --sex female --stature 1.68 --bust-girth 0.84 --waist-girth 0.68 "
+                       "--hip-girth 0.92 --json",
+                       dir.path(), dir.path());
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_EQ(run.out.rfind("{\"sizes\": {\"XL\": {", 0), 0u) << run.out;
+  EXPECT_NE(run.out.find("\"verdict\": \"loose\""), std::string::npos) << run.out;
 }

@@ -229,8 +229,8 @@ TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
       test::runProgram(tool, "--style gown --sex female --body x.obj", dir.path(), dir.path());
   EXPECT_EQ(style.status, 1);
   EXPECT_EQ(style.err,
-            "figment-size: --style gown: not one of dress, skirt, tshirt, pencil (or a catalogue garment, "
-            "style:size)\n");
+            "figment-size: --style gown: not one of dress, skirt, tshirt, pencil, tee, shirt, trousers, pencilskirt, "
+            "circleskirt, sundress (or a catalogue garment, style:size)\n");
   // A catalogue garment's name (scenes/catalogue/) that names no size it is sold in.
   const test::ProgramResult garment =
       test::runProgram(tool, "--style dress:Q --sex female --body x.obj", dir.path(), dir.path());
