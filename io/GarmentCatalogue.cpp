@@ -4,10 +4,14 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
+#include "io/PatternFile.h"
 #include "io/SizeChartFile.h"
+#include "sim/cloth/MaterialPresets.h"
+#include "sim/fit/FitRegion.h"
 
 namespace figment {
 
@@ -44,6 +48,19 @@ std::string chartPathOf(const std::string& indexPath) {
   throw std::runtime_error(indexPath + ": no \"chart FILE\" line");
 }
 
+// The pattern index the index names (its "patterns FILE" line), read; none without one.
+std::vector<PatternIndexEntry> patternsOf(const std::string& indexPath) {
+  for (const Line& line : readLines(indexPath))
+    if (line.words[0] == "patterns" && line.words.size() == 2) {
+      try {
+        return readPatternIndex(besides(indexPath, line.words[1]));
+      } catch (const std::exception& error) {
+        throw std::runtime_error(line.where + ": " + error.what());
+      }
+    }
+  return {};
+}
+
 bool isColour(const std::string& text) {
   return text.size() == 6 && std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isxdigit(c); });
 }
@@ -75,16 +92,73 @@ void readSizes(const Line& line, const SizeChart& chart, CatalogueStyle& style) 
   if (sizes.empty()) throw std::runtime_error(line.where + ": no sizes");
 }
 
-CatalogueStyle readStyle(const std::string& path, const SizeChart& chart) {
+// A "regions NAME, NAME..." line's names (a name may have spaces: "upper arms").
+std::vector<std::string> readRegions(const Line& line) {
+  std::string rest;
+  for (size_t i = 1; i < line.words.size(); ++i) rest += (i > 1 ? " " : "") + line.words[i];
+  std::vector<std::string> regions;
+  std::istringstream in(rest);
+  for (std::string name; std::getline(in, name, ',');) {
+    name.erase(0, name.find_first_not_of(' '));
+    name.erase(name.find_last_not_of(' ') + 1);
+    const std::vector<std::string>& known = fitRegionNames();
+    if (std::find(known.begin(), known.end(), name) == known.end())
+      throw std::runtime_error(line.where + ": region '" + name + "' is not one of " + joined(known));
+    regions.push_back(name);
+  }
+  return regions;
+}
+
+// A pattern style's sizes, each found in the pattern index (`where`: its sex's line).
+void findPatterns(const std::vector<PatternIndexEntry>& index, const std::map<Sex, std::string>& where,
+                  CatalogueStyle& style) {
+  for (const Sex sex : style.sexes)
+    for (const std::string& size : style.sizes(sex)) {
+      const auto entry = std::find_if(index.begin(), index.end(), [&](const PatternIndexEntry& e) {
+        return e.style == style.pattern && e.sex == sex && e.size == size;
+      });
+      if (entry == index.end())
+        throw std::runtime_error(where.at(sex) + ": the pattern index has no " + sexName(sex) + " " + style.pattern +
+                                 " in size " + size);
+      style.patterns.push_back(*entry);
+    }
+}
+
+// The pattern index's style names, for messages.
+std::string patternStyleNames(const std::vector<PatternIndexEntry>& index) {
+  std::vector<std::string> names;
+  for (const PatternIndexEntry& entry : index)
+    if (std::find(names.begin(), names.end(), entry.style) == names.end()) names.push_back(entry.style);
+  return joined(names);
+}
+
+CatalogueStyle readStyle(const std::string& path, const SizeChart& chart, const std::vector<PatternIndexEntry>& index) {
   CatalogueStyle style;
+  std::string styleWhere, patternWhere, fabricWhere, regionsWhere;
+  std::map<Sex, std::string> sizesWhere;
   for (const Line& line : readLines(path)) {
     const std::string& key = line.words[0];
     if (key == "style" && line.words.size() == 2) {
-      if (!findStyle(line.words[1]))
-        throw std::runtime_error(line.where + ": style " + line.words[1] + " is not one of " + styleNames());
-      style.name = line.words[1];
+      style.name = line.words[1], styleWhere = line.where;
+    } else if (key == "patterns" && line.words.size() == 2) {
+      if (index.empty())
+        throw std::runtime_error(line.where + ": patterns " + line.words[1] +
+                                 ", but the catalogue's index has no \"patterns FILE\" line");
+      if (std::none_of(index.begin(), index.end(),
+                       [&](const PatternIndexEntry& e) { return e.style == line.words[1]; }))
+        throw std::runtime_error(line.where + ": the pattern index has no style " + line.words[1] + " (" +
+                                 patternStyleNames(index) + ")");
+      style.pattern = line.words[1], patternWhere = line.where;
+    } else if (key == "fabric" && line.words.size() == 2) {
+      if (!materialPreset(line.words[1]))
+        throw std::runtime_error(line.where + ": fabric " + line.words[1] + " is not one of " +
+                                 joined(materialPresetNames()));
+      style.fabric = line.words[1], fabricWhere = line.where;
+    } else if (key == "regions" && line.words.size() >= 2) {
+      style.regions = readRegions(line), regionsWhere = line.where;
     } else if (key == "female" || key == "male") {
       readSizes(line, chart, style);
+      sizesWhere[style.sexes.back()] = line.where;
     } else if (key == "colours") {
       for (size_t i = 1; i < line.words.size(); ++i) {
         if (!isColour(line.words[i]))
@@ -92,12 +166,33 @@ CatalogueStyle readStyle(const std::string& path, const SizeChart& chart) {
         style.colours.push_back(lower(line.words[i]));
       }
     } else {
-      throw std::runtime_error(line.where + ": '" + key + "' is not style, female, male or colours");
+      throw std::runtime_error(line.where + ": '" + key +
+                               "' is not style, patterns, fabric, regions, female, male or colours");
     }
   }
   if (style.name.empty()) throw std::runtime_error(path + ": no \"style NAME\" line");
   if (style.sexes.empty()) throw std::runtime_error(path + ": no sizes (\"female SIZES...\" or \"male SIZES...\")");
   if (style.colours.empty()) throw std::runtime_error(path + ": no \"colours RRGGBB...\" line");
+  const GarmentStyle* generator = findStyle(style.name);
+  if (style.sewn()) {
+    // Its own name, so "tshirt:M" always means the generator's T-shirt.
+    if (generator)
+      throw std::runtime_error(styleWhere + ": style " + style.name +
+                               " is a generator's; a pattern style needs a name of its own");
+    if (style.fabric.empty()) throw std::runtime_error(path + ": no \"fabric PRESET\" line (a pattern style's cloth)");
+    if (style.regions.empty())
+      throw std::runtime_error(path + ": no \"regions NAME, ...\" line (where a pattern style's fit is told)");
+    findPatterns(index, sizesWhere, style);
+  } else {
+    if (!generator)
+      throw std::runtime_error(styleWhere + ": style " + style.name + " is not one of " + styleNames() +
+                               " (or give \"patterns STYLE\" for a pattern style)");
+    // A generator cuts for its own cloth and regions (sim/garment/GarmentStyle.h).
+    if (!fabricWhere.empty()) throw std::runtime_error(fabricWhere + ": a generator style's fabric is its own");
+    if (!regionsWhere.empty()) throw std::runtime_error(regionsWhere + ": a generator style's regions are its own");
+    style.fabric = generator->fabric;
+    style.regions = generator->regions;
+  }
   return style;
 }
 
@@ -111,16 +206,23 @@ std::vector<std::string> split(const std::string& name) {
 
 }  // namespace
 
-std::string CatalogueItem::name() const {
-  return std::string(style ? style->name : "") + ":" + sizeName + ":" + colour;
+const PatternIndexEntry* CatalogueStyle::patternOf(Sex sex, const std::string& size) const {
+  for (const PatternIndexEntry& entry : patterns)
+    if (entry.sex == sex && entry.size == size) return &entry;
+  return nullptr;
 }
 
-GarmentCatalogue::GarmentCatalogue(const std::string& indexPath) : chart_(readSizeChart(chartPathOf(indexPath))) {
+std::string CatalogueItem::name() const {
+  return styleName + ":" + sizeName + ":" + colour;
+}
+
+GarmentCatalogue::GarmentCatalogue(const std::string& indexPath)
+    : chart_(readSizeChart(chartPathOf(indexPath))), patterns_(patternsOf(indexPath)) {
   for (const Line& line : readLines(indexPath)) {
-    if (line.words[0] == "chart" && line.words.size() == 2) continue;
+    if ((line.words[0] == "chart" || line.words[0] == "patterns") && line.words.size() == 2) continue;
     if (line.words[0] != "style" || line.words.size() != 2)
-      throw std::runtime_error(line.where + ": expected \"chart FILE\" or \"style FILE\"");
-    CatalogueStyle style = readStyle(besides(indexPath, line.words[1]), chart_);
+      throw std::runtime_error(line.where + ": expected \"chart FILE\", \"patterns FILE\" or \"style FILE\"");
+    CatalogueStyle style = readStyle(besides(indexPath, line.words[1]), chart_, patterns_);
     if (this->style(style.name)) throw std::runtime_error(line.where + ": style " + style.name + " listed twice");
     styles_.push_back(std::move(style));
   }
@@ -154,7 +256,10 @@ CatalogueItem GarmentCatalogue::resolveIn(const std::string& name, const Sex* se
   const CatalogueStyle* found = style(parts[0]);
   if (!found) throw std::invalid_argument("\"" + name + "\": no style " + parts[0] + " (styles " + styleNames() + ")");
   CatalogueItem item;
-  item.style = findStyle(found->name);
+  item.styleName = found->name;
+  item.style = found->sewn() ? nullptr : findStyle(found->name);
+  item.fabric = found->fabric;
+  item.regions = found->regions;
   // A letter code in the given sex (else the style's first); a number in whichever sex has it.
   const std::vector<Sex> order = sex ? std::vector<Sex>{*sex} : found->sexes;
   item.size = -1;
@@ -174,10 +279,24 @@ CatalogueItem GarmentCatalogue::resolveIn(const std::string& name, const Sex* se
       accepted += (accepted.empty() ? "" : "; ") + std::string(sexName(s)) + " " + joined(found->sizes(s));
     throw std::invalid_argument("\"" + name + "\": no size " + parts[1] + " of " + found->name + " (" + accepted + ")");
   }
+  if (const PatternIndexEntry* pattern = found->patternOf(item.sex, item.sizeName)) {
+    item.patternFile = pattern->file;
+    item.madeForStature = pattern->body.stature;
+  }
   item.colour = parts.size() == 3 ? lower(parts[2]) : found->colours.front();
   if (!isColour(item.colour))
     throw std::invalid_argument("\"" + name + "\": colour " + parts[2] + " is not six hex digits (rrggbb)");
   return item;
+}
+
+SewnStyle sewnStyle(const CatalogueStyle& style, const SizeChart& chart) {
+  SewnStyle sewn;
+  sewn.fabric = style.fabric;
+  sewn.regions = style.regions;
+  for (const PatternIndexEntry& entry : style.patterns)
+    if (const int size = chart.find(entry.sex, entry.size); size >= 0)
+      sewn.sizes[{entry.sex, size}] = {readPatternFile(entry.file), entry.body.stature};
+  return sewn;
 }
 
 std::string defaultCataloguePath() {

@@ -18,4 +18,15 @@ void setMeshFields(const TriangleMesh& mesh, SoMFVec3f& points, SoMFInt32& coord
   coordIndex.finishEditing();
 }
 
+void setPanelFields(const UnsewnGarment& cut, SoMFVec2f& panelPoints, SoMFInt32& seams) {
+  panelPoints.setNum(static_cast<int>(cut.flat.size()));
+  SbVec2f* uv = panelPoints.startEditing();
+  for (const Vec2& p : cut.flat) *uv++ = SbVec2f(float(p.x()), float(p.y()));
+  panelPoints.finishEditing();
+  seams.setNum(static_cast<int>(2 * cut.seams.size()));
+  int32_t* pair = seams.startEditing();
+  for (const auto& [a, b] : cut.seams) *pair++ = a, *pair++ = b;
+  seams.finishEditing();
+}
+
 }  // namespace figment

@@ -140,7 +140,7 @@ bool isFemale(const ClothEngine& engine) {
 // The body's regions the garment's style tells (all of them for a garment not of the
 // catalogue), measured; none when the body (a posed one at rest) cannot be measured as a
 // standing human.
-void measureRegions(EngineFit& fit, const GarmentStyle* style) {
+void measureRegions(EngineFit& fit, const std::vector<std::string>* told) {
   const TriangleMesh& standing = fit.pose ? fit.pose->rest() : fit.bodyMesh;
   BodyMeasurements measured;
   try {
@@ -150,7 +150,7 @@ void measureRegions(EngineFit& fit, const GarmentStyle* style) {
   }
   std::vector<FitRegion> regions;
   for (FitRegion& region : bodyRegions(standing, measured, isFemale(*fit.engine)))
-    if (!style || std::find(style->regions.begin(), style->regions.end(), region.name) != style->regions.end())
+    if (!told || std::find(told->begin(), told->end(), region.name) != told->end())
       regions.push_back(std::move(region));
   fit.regions = measureFit(fit.input(), regions);
 }
@@ -185,8 +185,11 @@ std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeH
         shop.emplace(defaultCataloguePath());
         item = shop->resolve(fit.garment);
       }
-      if (regions) measureRegions(fit, item ? item->style : nullptr);
-      if (regions && verdicts && item && !fit.regions.empty()) judgeRegions(fit, *item, shop->chart(), *verdicts);
+      if (regions) measureRegions(fit, item ? &item->regions : nullptr);
+      // Verdicts for a generator's garment only: a pattern style's size on its own chart
+      // body is sewn, which SizeFitter's pattern fitter does (figment-size), not yet here.
+      if (regions && verdicts && item && item->style && !fit.regions.empty())
+        judgeRegions(fit, *item, shop->chart(), *verdicts);
     } catch (const std::exception&) {
       fit.verdicts.clear();
       fit.text.clear();

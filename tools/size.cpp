@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,12 +64,11 @@ void writeFitMaps(const Request& request, figment::SizeFitter& fitter, const fig
   const figment::MeshCollider collider(body);
   const figment::FitMapKind kind = figment::fitMapKind(request.fitMap);
   for (const figment::SizeFit& fit : r.sizes) {
-    const figment::TriangleMesh& garment = fitter.graded(sex, chart.find(sex, fit.size)).garment;
-    figment::FitInput input;
-    input.rest = &garment;
+    const figment::SizeFitter::Graded& graded = fitter.graded(sex, chart.find(sex, fit.size));
+    const figment::TriangleMesh& garment = graded.garment;
+    figment::FitInput input = fitter.fitInput(graded);
     input.positions = &fit.drape.positions;
     input.body = &collider;
-    input.parameters = fitter.parameters();
     const std::vector<int> bands = figment::fitMapBands(input, kind, fitter.rule().limits);
     figment::writeFitMapScene(dir + "/" + fit.size + ".iv", {fit.drape.positions, garment.triangles}, bands,
                               "body.obj");
@@ -78,8 +78,13 @@ void writeFitMaps(const Request& request, figment::SizeFitter& fitter, const fig
 // The recommendation for `body`; the exit status.
 int recommend(const Request& request, const figment::HumanModel& model, const figment::TriangleMesh& body) {
   const figment::SizeChart chart = figment::readSizeChart(request.chart);
-  const figment::GarmentStyle& style = *figment::findStyle(request.style);
-  figment::SizeFitter fitter(model, chart, style);
+  std::optional<figment::SewnStyle> sewn;
+  if (!figment::findStyle(request.style)) {
+    const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
+    sewn = figment::sewnStyle(*catalogue.style(request.style), chart);
+  }
+  figment::SizeFitter fitter = sewn ? figment::SizeFitter(model, chart, *sewn)
+                                    : figment::SizeFitter(model, chart, *figment::findStyle(request.style));
   const figment::Sex sex = request.sex == "male" ? figment::Sex::Male : figment::Sex::Female;
   figment::Recommendation r;
   if (request.size.empty()) {
@@ -128,8 +133,8 @@ int main(int argc, char** argv) {
   request.chart = figment::defaultSizeChartPath();
   app.add_option("--style", request.style,
                  figment::styleNames() +
-                     "; or a catalogue garment, style:size[:rrggbb] (scenes/catalogue/): that "
-                     "size tried on, as --size")
+                     ", or a pattern style of the catalogue (scenes/catalogue/: tee, pencilskirt...); or a "
+                     "catalogue garment, style:size[:rrggbb]: that size tried on, as --size")
       ->required();
   app.add_option("--sex", request.sex, "female or male")->required()->check(CLI::IsMember({"female", "male"}));
   auto* body = app.add_option("--body", request.body, "a body mesh file (metres, y up) instead of measurements");
@@ -159,15 +164,28 @@ int main(int argc, char** argv) {
           catalogue.resolve(request.style, request.sex == "male" ? figment::Sex::Male : figment::Sex::Female);
       if (!request.size.empty())
         return kTool.fail("--size " + request.size + ": --style " + request.style + " names the size");
-      request.style = item.style->name;
+      request.style = item.styleName;
       request.size = item.sizeName;
     } catch (const std::exception& error) {
       return kTool.fail("--style " + std::string(error.what()));
     }
   }
-  if (!figment::findStyle(request.style))
-    return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames() +
-                      " (or a catalogue garment, style:size)");
+  if (!figment::findStyle(request.style)) {
+    // A pattern style of the catalogue (a shop's own garments, sewn).
+    try {
+      const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
+      const figment::CatalogueStyle* sold = catalogue.style(request.style);
+      if (!sold || !sold->sewn()) {
+        std::string patterns;
+        for (const figment::CatalogueStyle& style : catalogue.styles())
+          if (style.sewn()) patterns += ", " + style.name;
+        return kTool.fail("--style " + request.style + ": not one of " + figment::styleNames() + patterns +
+                          " (or a catalogue garment, style:size)");
+      }
+    } catch (const std::exception& error) {
+      return kTool.fail(error.what());
+    }
+  }
   if (request.body.empty() && request.typed.size() < 4)
     return kTool.fail("give --body FILE, or all of --stature, --bust-girth, --waist-girth and --hip-girth");
   return run(request);

@@ -10,7 +10,11 @@
 
 #include "io/GarmentCatalogue.h"
 #include "io/MakeHumanSession.h"
+#include "io/PatternFile.h"
+#include "nodes/MeshFields.h"
 #include "nodes/SceneFiles.h"
+#include "sim/pattern/PatternCutting.h"
+#include "sim/pattern/PatternPlacement.h"
 
 SO_NODE_SOURCE(CatalogueGarment);
 
@@ -31,6 +35,8 @@ CatalogueGarment::CatalogueGarment() : data_(std::make_unique<Data>()) {
   SO_NODE_ADD_FIELD(catalogue, (""));
   SO_NODE_ADD_FIELD(colour, (0.8f, 0.8f, 0.8f));
   SO_NODE_ADD_FIELD(fabric, (""));
+  SO_NODE_ADD_EMPTY_MFIELD(panelPoint);
+  SO_NODE_ADD_EMPTY_MFIELD(seams);
 }
 
 CatalogueGarment::~CatalogueGarment() = default;
@@ -60,6 +66,10 @@ figment::GarmentCatalogue readCatalogue(const CatalogueGarment& node, const std:
   }
 }
 
+// A pattern style's cloth spacing, m: as figment-size and figment-sew cut (SewingPattern's
+// default), so the scene drapes the garment the size advice measured.
+constexpr double kPatternSpacing = 0.02;
+
 SbColor colourOf(const std::string& hex) {
   const unsigned long rgb = std::stoul(hex, nullptr, 16);
   return SbColor(float((rgb >> 16) & 0xff) / 255.0f, float((rgb >> 8) & 0xff) / 255.0f, float(rgb & 0xff) / 255.0f);
@@ -74,6 +84,8 @@ bool CatalogueGarment::load(SoInput* in) {
       throw std::invalid_argument("fileName \"" + std::string(fileName.getValue().getString()) +
                                   "\": a CatalogueGarment makes its mesh; leave fileName empty");
     const std::string name = garment.getValue().getString();
+    panelPoint.setNum(0);
+    seams.setNum(0);
     if (name.empty()) {
       clearMesh();
       return true;
@@ -86,15 +98,28 @@ bool CatalogueGarment::load(SoInput* in) {
       throw std::invalid_argument(std::string("garment ") + bad.what());
     }
     const figment::TriangleMesh body = data_->human.fit(shop.chart().sizes(item.sex)[item.size]).body;
-    const figment::TriangleMesh cut = figment::cutGarment(*item.style, body);
-    setMesh(cut, cut);
+    if (item.sewn()) {
+      const figment::SewingPattern pattern = figment::readPatternFile(item.patternFile);
+      const figment::UnsewnGarment cut = figment::cutPattern(
+          figment::placed(pattern, figment::placementOn(body, item.madeForStature)), kPatternSpacing);
+      setMesh(cut.placed, cut.placed);
+      figment::setPanelFields(cut, panelPoint, seams);
+    } else {
+      const figment::TriangleMesh cut = figment::cutGarment(*item.style, body);
+      setMesh(cut, cut);
+    }
     colour.setValue(colourOf(item.colour));
-    fabric.setValue(item.style->fabric);
+    fabric.setValue(item.fabric.c_str());
+    // Outputs, not settings: left out of written files.
     colour.setDefault(TRUE);
     fabric.setDefault(TRUE);
+    panelPoint.setDefault(TRUE);
+    seams.setDefault(TRUE);
     return true;
   } catch (const std::exception& e) {
     error = e.what();
   }
+  panelPoint.setNum(0);
+  seams.setNum(0);
   return failLoad("CatalogueGarment", in, error);
 }

@@ -1,7 +1,11 @@
 #pragma once
 // CatalogueGarment: a garment of the catalogue (scenes/catalogue/, io/GarmentCatalogue.h)
-// named "style:size[:rrggbb]"; a MeshFile whose mesh is the style cut for that size.
+// named "style:size[:rrggbb]"; a MeshFile whose mesh is the style cut for that size, or,
+// for a pattern style, that size's pattern cut and placed around the size's chart body
+// with its seams, for a ClothEngine to sew.
 
+#include <Inventor/fields/SoMFInt32.h>
+#include <Inventor/fields/SoMFVec2f.h>
 #include <Inventor/fields/SoSFColor.h>
 #include <Inventor/fields/SoSFString.h>
 
@@ -24,6 +28,16 @@
   name's colour (else the style's first), for a Material's diffuseColor, and `fabric`, the
   style's material preset, for a ClothEngine's material.
 
+  A pattern style ("tee:M", "pencilskirt:38": a shop's own garment, sewn from its size's
+  graded pattern, scenes/patterns/) gives what a SewingPattern node gives for that pattern
+  placed around the size's chart body (panels cut 2 cm apart, sim/pattern/PatternCutting.h):
+  `point` and `coordIndex` are the panels placed but not yet sewn, `panelPoint` each point's
+  panel coordinates (m: the rest shape) and `seams` the point pairs the stitches pull
+  together, for a ClothEngine's panelPoints and seams; the engine sews the panels shut
+  around its body, then drapes. A generated style's panelPoint and seams are empty, which a
+  ClothEngine reads as nothing to sew: a scene that connects all four outputs drapes any
+  style of the catalogue by its name alone.
+
   A bad name, a catalogue that does not read or MakeHuman's data missing is a read error
   naming the node, the field, the value and the accepted names (a posted error when set
   from code), and the node is then empty.
@@ -36,11 +50,13 @@
     }
   \endcode
 
-  Example (scenes/examples/CatalogueGarment.iv):
+  Example (scenes/examples/CatalogueGarment.iv; a pattern style:
+  scenes/examples/CatalogueGarmentSewn.iv):
   \code
     Switch { whichChild -1  DEF Dress CatalogueGarment { garment "dress:M:1f40b3" } }
     Material { diffuseColor = USE Dress.colour }
     ... ClothEngine { restPoints = USE Dress.point  coordIndex = USE Dress.coordIndex
+                      panelPoints = USE Dress.panelPoint  seams = USE Dress.seams
                       material = USE Dress.fabric ... }
   \endcode
 */
@@ -64,6 +80,10 @@ class CatalogueGarment : public MeshFile {
   // (sRGB, 0..1) and its fabric (a material preset: "jersey", "cotton").
   SoSFColor colour;
   SoSFString fabric;
+  // Read-only outputs for a pattern style (empty for a generated one): per point, its
+  // panel coordinates (m); point index pairs, two per seam.
+  SoMFVec2f panelPoint;
+  SoMFInt32 seams;
 
  protected:
   ~CatalogueGarment() override;

@@ -81,14 +81,7 @@ bool SewingPattern::load(SoInput* in) {
     }
     const figment::UnsewnGarment cut = cutFor(*this, sceneDirectories_);
     setMesh(cut.placed, cut.placed);
-    panelPoint.setNum(static_cast<int>(cut.flat.size()));
-    SbVec2f* uv = panelPoint.startEditing();
-    for (const figment::Vec2& p : cut.flat) *uv++ = SbVec2f(float(p.x()), float(p.y()));
-    panelPoint.finishEditing();
-    seams.setNum(static_cast<int>(2 * cut.seams.size()));
-    int32_t* pair = seams.startEditing();
-    for (const auto& [a, b] : cut.seams) *pair++ = a, *pair++ = b;
-    seams.finishEditing();
+    figment::setPanelFields(cut, panelPoint, seams);
     // Outputs, not settings: left out of written files.
     panelPoint.setDefault(TRUE);
     seams.setDefault(TRUE);

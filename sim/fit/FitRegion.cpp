@@ -65,6 +65,12 @@ std::vector<FitRegion> bodyRegions(const TriangleMesh& body, const BodyMeasureme
   return regions;
 }
 
+const std::vector<std::string>& fitRegionNames() {
+  static const std::vector<std::string> names = {"bust",   "underbust", "waist",     "hips",
+                                                 "thighs", "shoulders", "upper arms"};
+  return names;
+}
+
 int regionOf(const std::vector<FitRegion>& regions, const Vec3& p) {
   for (size_t i = 0; i < regions.size(); ++i)
     if (regions[i].holds(p)) return static_cast<int>(i);

@@ -39,6 +39,10 @@ struct FitRegion {
 // garment point belongs to the first region in the list that holds it.
 std::vector<FitRegion> bodyRegions(const TriangleMesh& body, const BodyMeasurements& measured, bool underbust);
 
+// Every region's name bodyRegions may give, in its order: what a catalogue's style may
+// name as the regions its fit is told for.
+const std::vector<std::string>& fitRegionNames();
+
 // The region of `p`: its index in `regions`, or -1.
 int regionOf(const std::vector<FitRegion>& regions, const Vec3& p);
 

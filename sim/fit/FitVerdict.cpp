@@ -11,15 +11,30 @@ bool known(double value) {
   return std::isfinite(value);
 }
 
+// The strain `fit` may have beyond `intended`'s with stretchAgainstIntended: half a size
+// step of girth over the intended garment girth (a size down is a full step, 4 cm, shorter).
+double strainTolerance(const RegionFit& intended, const VerdictRule& rule) {
+  return known(intended.garmentGirth) && intended.garmentGirth > 0 ? rule.girthTolerance / intended.garmentGirth
+                                                                   : rule.limits.stretch;
+}
+
+bool overstretched(const RegionFit& fit, const RegionFit& intended, const VerdictRule& rule) {
+  if (rule.stretchAgainstIntended) return fit.meanStrain > intended.meanStrain + strainTolerance(intended, rule);
+  return fit.meanStrain > rule.limits.stretch || fit.pressure > rule.limits.pressure;
+}
+
 // Why a region is tight or loose, in a few words ("7 % stretch", "3 cm too little ease").
 std::string reason(const RegionFit& fit, const RegionFit& intended, Verdict verdict, const VerdictRule& rule) {
   char text[96];
   const double girthDifference =
       known(fit.girthEase) && known(intended.girthEase) ? fit.girthEase - intended.girthEase : 0.0;
   const double low = fit.drop - intended.drop;
-  if (verdict == Verdict::Tight && fit.pressure > rule.limits.pressure)
+  if (verdict == Verdict::Tight && rule.stretchAgainstIntended && overstretched(fit, intended, rule))
+    std::snprintf(text, sizeof text, "%.0f %% stretch, %.0f %% as made", 100.0 * fit.meanStrain,
+                  100.0 * intended.meanStrain);
+  else if (verdict == Verdict::Tight && !rule.stretchAgainstIntended && fit.pressure > rule.limits.pressure)
     std::snprintf(text, sizeof text, "%.1f kPa", fit.pressure / 1000.0);
-  else if (verdict == Verdict::Tight && fit.meanStrain > rule.limits.stretch)
+  else if (verdict == Verdict::Tight && !rule.stretchAgainstIntended && fit.meanStrain > rule.limits.stretch)
     std::snprintf(text, sizeof text, "%.0f %% stretch", 100.0 * fit.meanStrain);
   else if (std::abs(low) > rule.dropTolerance && known(intended.girthEase))
     std::snprintf(text, sizeof text, low > 0 ? "hangs %.0f cm low" : "%.0f cm too high", 100.0 * std::abs(low));
@@ -55,7 +70,7 @@ FabricLimits fabricLimits(const std::string& fabric) {
 
 Verdict judge(const RegionFit& fit, const RegionFit& intended, const VerdictRule& rule) {
   if (!fit.covered() || !intended.covered()) return Verdict::Fits;
-  if (fit.meanStrain > rule.limits.stretch || fit.pressure > rule.limits.pressure) return Verdict::Tight;
+  if (overstretched(fit, intended, rule)) return Verdict::Tight;
   // Its girth and drop not told in the body's pose: its stretch and pressure alone.
   if (!fit.unmeasured.empty()) return Verdict::Fits;
   if (known(intended.girthEase) && fit.drop > intended.drop + rule.dropTolerance) return Verdict::Loose;

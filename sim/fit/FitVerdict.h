@@ -32,9 +32,19 @@ struct VerdictRule {
   // m a region's garment may hang lower than intended before it is loose (a skirt a size
   // too large slides down to where it grips).
   double dropTolerance = 0.02;
+  // Stretch judged against the intended fit instead of the fabric's limits: tight past the
+  // intended's mean strain by half a size step (girthTolerance over the intended garment
+  // girth; the fabric's stretch limit where the region has no girth). For a garment sewn
+  // from a graded pattern: its own size on its own chart body is the fit its maker graded,
+  // stretch included, and the pattern's panels were placed for another body
+  // (GarmentCode's), so the chart body strains it where the two differ (docs/sizes.md).
+  // Pressure is then not judged apart: it is the stretch's tension over the body's radius.
+  bool stretchAgainstIntended = false;
 };
 
 // `fit` judged against `intended` (the same region of the same size on its chart body).
+// Tight past the fabric's stretch or pressure limit (or, with stretchAgainstIntended, past
+// the intended stretch by half a size step), then by drop and girth ease against intended.
 // A region the garment does not cover, or the intended one does not, is Fits; one whose
 // girth the body's pose hides (RegionFit::unmeasured) is Tight past the fabric's limits, else Fits.
 Verdict judge(const RegionFit& fit, const RegionFit& intended, const VerdictRule& rule);

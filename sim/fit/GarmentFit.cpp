@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -113,6 +114,17 @@ void checkInput(const FitInput& input) {
   if (input.positions->size() != input.rest->vertices.size())
     throw std::invalid_argument("fit: " + std::to_string(input.positions->size()) + " positions for " +
                                 std::to_string(input.rest->vertices.size()) + " rest points");
+  if (input.restShape && (input.restShape->triangles() != input.rest->triangles ||
+                          input.restShape->nodeCount() != input.rest->vertices.size()))
+    throw std::invalid_argument("fit: the rest shape's " + std::to_string(input.restShape->triangles().size()) +
+                                " sections are not the garment's " + std::to_string(input.rest->triangles.size()));
+}
+
+// Section t's corners at rest: the rest shape's own, else the rest mesh's.
+std::array<Vec3, 3> restCorners(const FitInput& input, size_t t) {
+  if (input.restShape) return input.restShape->corners(t);
+  const Triangle& tri = input.rest->triangles[t];
+  return {input.rest->vertices[tri[0]], input.rest->vertices[tri[1]], input.rest->vertices[tri[2]]};
 }
 
 // Stretch over each region's sections (by the centroid's region), area-weighted.
@@ -122,10 +134,11 @@ void addStretch(const FitInput& input, const std::vector<Vec3>& at, const std::v
   const TriangleMesh& rest = *input.rest;
   const std::vector<Vec3>& x = *input.positions;
   std::vector<double> weight(regions.size(), 0.0);
-  for (const Triangle& t : rest.triangles) {
+  for (size_t i = 0; i < rest.triangles.size(); ++i) {
+    const Triangle& t = rest.triangles[i];
     const int r = regionOf(regions, (at[t[0]] + at[t[1]] + at[t[2]]) / 3.0);
     if (r < 0) continue;
-    const Vec3 &a = rest.vertices[t[0]], &b = rest.vertices[t[1]], &c = rest.vertices[t[2]];
+    const auto [a, b, c] = restCorners(input, i);
     const double area = 0.5 * (b - a).cross(c - a).norm();
     if (area <= 0) continue;
     const double strain = largestPrincipalStrain(a, b, c, x[t[0]], x[t[1]], x[t[2]]);
@@ -159,7 +172,8 @@ double largestPrincipalStrain(const Vec3& a, const Vec3& b, const Vec3& c, const
 std::vector<double> contactPressures(const FitInput& input) {
   checkInput(input);
   const std::vector<Vec3>& x = *input.positions;
-  const ClothModel model(*input.rest, input.parameters);
+  const ClothModel model =
+      input.restShape ? ClothModel(*input.restShape, input.parameters) : ClothModel(*input.rest, input.parameters);
   ClothModel::Evaluation forces;
   ClothModel::Request request;
   request.damping = false;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/RestShape.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/fit/FitRegion.h"
@@ -39,13 +40,18 @@ struct RegionFit {
 };
 
 struct FitInput {
-  const TriangleMesh* rest = nullptr;            // the garment as cut
+  const TriangleMesh* rest = nullptr;  // the garment as cut (its triangles, and its rest shape but for `restShape`)
   const std::vector<Vec3>* positions = nullptr;  // where each rest point lies after the drape
   const MeshCollider* body = nullptr;            // the skin
   ClothParameters parameters;                    // the drape's: material, gravity, clearance
   // The body's skin at rest and posed (`body` is its posed shape), or null for a body that
   // stands as its regions were found (the regions are then the rest skin's).
   const PosedSkin* pose = nullptr;
+  // Set: the garment's rest shape when `rest`'s vertices are not it (a sewn garment: its
+  // flat panels, each section its own corners; `rest` is then the panels as placed, and
+  // `positions` one per panel node): stretch and forces are measured against it. Its
+  // triangles must be `rest`'s. Null: `rest` is the rest shape.
+  const RestShape* restShape = nullptr;
 };
 
 // The largest principal strain of a section: sqrt of the largest eigenvalue of F^T F less 1,

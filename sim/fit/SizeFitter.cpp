@@ -9,6 +9,9 @@
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/TriangleBvh.h"
+#include "sim/drape/GarmentDrape.h"
+#include "sim/pattern/PatternCutting.h"
+#include "sim/pattern/PatternPlacement.h"
 
 namespace figment {
 
@@ -28,11 +31,10 @@ std::vector<int> drapeOrder(int count, int nearest) {
 
 // The body's regions the style's fit is told for, in the body's order.
 std::vector<FitRegion> styleRegions(const TriangleMesh& body, const BodyMeasurements& measured, Sex sex,
-                                    const GarmentStyle& style) {
+                                    const std::vector<std::string>& told) {
   std::vector<FitRegion> regions;
   for (FitRegion& region : bodyRegions(body, measured, sex == Sex::Female))
-    if (std::find(style.regions.begin(), style.regions.end(), region.name) != style.regions.end())
-      regions.push_back(std::move(region));
+    if (std::find(told.begin(), told.end(), region.name) != told.end()) regions.push_back(std::move(region));
   return regions;
 }
 
@@ -64,8 +66,12 @@ HumanParameters sexStart(Sex sex) {
 }  // namespace
 
 ClothParameters sizeDrapeParameters(const GarmentStyle& style) {
+  return sizeDrapeParameters(std::string(style.fabric));
+}
+
+ClothParameters sizeDrapeParameters(const std::string& fabric) {
   ClothParameters p;
-  p.material = materialPreset(style.fabric).value_or(Material{});
+  p.material = materialPreset(fabric).value_or(Material{});
   p.integrator = Integrator::Implicit;
   p.timeStep = 0.05;
   // A flared skirt slides from the waist to the hips for up to 8 s on the chart's end
@@ -94,10 +100,44 @@ std::vector<Vec3> warmStart(const TriangleMesh& garment, const TriangleMesh& ear
 }
 
 SizeFitter::SizeFitter(const HumanModel& model, const SizeChart& chart, const GarmentStyle& style)
-    : model_(model), chart_(chart), style_(style), parameters_(sizeDrapeParameters(style)) {}
+    : model_(model),
+      chart_(chart),
+      style_(&style),
+      fabric_(style.fabric),
+      regions_(style.regions),
+      warmStarts_(style.warmStarts),
+      parameters_(sizeDrapeParameters(style)) {}
+
+SizeFitter::SizeFitter(const HumanModel& model, const SizeChart& chart, const SewnStyle& style)
+    : model_(model),
+      chart_(chart),
+      sewn_(&style),
+      fabric_(style.fabric),
+      regions_(style.regions),
+      // Unsewn panels cannot start from another size's sewn drape: each is sewn cold.
+      warmStarts_(false),
+      parameters_(sizeDrapeParameters(style.fabric)) {}
 
 VerdictRule SizeFitter::rule() const {
-  return VerdictRule{fabricLimits(style_.fabric)};
+  VerdictRule rule{fabricLimits(fabric_)};
+  rule.stretchAgainstIntended = sewn_ != nullptr;  // a graded pattern's own fit is its maker's
+  return rule;
+}
+
+const SizePattern& SizeFitter::patternOf(Sex sex, int size) const {
+  const auto found = sewn_->sizes.find({sex, size});
+  if (found == sewn_->sizes.end())
+    throw std::invalid_argument(std::string("sewn style: no pattern for the ") + sexName(sex) + " size " +
+                                chart_.sizes(sex).at(size).name);
+  return found->second;
+}
+
+FitInput SizeFitter::fitInput(const Graded& graded) const {
+  FitInput input;
+  input.rest = &graded.garment;
+  input.restShape = graded.flat ? &*graded.flat : nullptr;
+  input.parameters = parameters_;
+  return input;
 }
 
 const SizeFitter::Graded& SizeFitter::graded(Sex sex, int size) {
@@ -114,12 +154,50 @@ const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
                                               {"hip_girth", chartSize.hip}};
   Graded made;
   made.body = fitBody(model_, sexStart(sex), goals).body;
-  made.garment = cutGarment(style_, made.body);
+  if (style_) {
+    made.garment = cutGarment(*style_, made.body);
+  } else {
+    const SizePattern& pattern = patternOf(sex, size);
+    const UnsewnGarment cut =
+        cutPattern(placed(pattern.pattern, placementOn(made.body, pattern.madeForStature)), sewn_->spacing);
+    made.garment = cut.placed;
+    std::vector<std::array<Vec3, 3>> corners;
+    for (const Triangle& t : cut.placed.triangles) {
+      std::array<Vec3, 3> c;
+      for (int k = 0; k < 3; ++k) c[k] = Vec3(cut.flat[t[k]].x(), cut.flat[t[k]].y(), 0.0);
+      corners.push_back(c);
+    }
+    made.flat = RestShape::flatPieces(cut.placed.triangles, std::move(corners), cut.placed.vertices.size());
+  }
   const auto collider = std::make_shared<const MeshCollider>(made.body);
-  const SizeDrape own = drape(made.garment, collider);
-  made.ownFit =
-      fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, style_), made.garment, own.positions);
+  const SizeDrape own = drapeSize(made, sex, size, collider, nullptr);
+  made.ownFit = fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, regions_), made, own.positions);
   return graded_.emplace(key, std::move(made)).first->second;
+}
+
+SizeDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
+                                const std::shared_ptr<const MeshCollider>& body, const std::vector<Vec3>* start) const {
+  return sewn_ ? sew(sex, size, body) : drape(graded.garment, body, start);
+}
+
+SizeDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const {
+  const SizePattern& pattern = patternOf(sex, size);
+  const UnsewnGarment cut =
+      cutPattern(placed(pattern.pattern, placementOn(body->surface(), pattern.madeForStature)), sewn_->spacing);
+  DrapeRequest request;
+  request.garment = cut.placed;
+  request.parameters = parameters_;
+  request.body = body;
+  request.sewing = DrapeSewing{cut.flat, cut.seams, {}};
+  const GarmentDrape drape = drapeGarment(request);
+  SizeDrape out;
+  out.positions = drape.positions;
+  out.run = drape.run;
+  if (drape.sewing) {
+    out.run.iterations += drape.sewing->run.iterations;
+    out.run.wallSeconds += drape.sewing->run.wallSeconds;
+  }
+  return out;
 }
 
 SizeDrape SizeFitter::drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
@@ -134,12 +212,10 @@ SizeDrape SizeFitter::drape(const TriangleMesh& garment, const std::shared_ptr<c
 }
 
 std::vector<RegionFit> SizeFitter::fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
-                                         const TriangleMesh& garment, const std::vector<Vec3>& positions) const {
-  FitInput input;
-  input.rest = &garment;
+                                         const Graded& graded, const std::vector<Vec3>& positions) const {
+  FitInput input = fitInput(graded);
   input.positions = &positions;
   input.body = &collider;
-  input.parameters = parameters_;
   return measureFit(input, regions);
 }
 
@@ -147,7 +223,7 @@ SizeFit SizeFitter::fitSize(const Graded& graded, const std::string& name, const
                             const std::vector<FitRegion>& regions, SizeDrape drape) const {
   SizeFit fit;
   fit.size = name;
-  fit.regions = fitOn(collider, regions, graded.garment, drape.positions);
+  fit.regions = fitOn(collider, regions, graded, drape.positions);
   for (size_t r = 0; r < fit.regions.size(); ++r)
     fit.verdicts.push_back(judge(fit.regions[r], graded.ownFit[r], rule()));
   fit.text = shopperText(fit.regions, graded.ownFit, fit.verdicts, rule());
@@ -158,8 +234,9 @@ SizeFit SizeFitter::fitSize(const Graded& graded, const std::string& name, const
 SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
   const Graded& graded = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(body);
-  const std::vector<FitRegion> regions = styleRegions(body, measureBody(body), sex, style_);
-  return fitSize(graded, chart_.sizes(sex).at(size).name, *collider, regions, drape(graded.garment, collider));
+  const std::vector<FitRegion> regions = styleRegions(body, measureBody(body), sex, regions_);
+  return fitSize(graded, chart_.sizes(sex).at(size).name, *collider, regions,
+                 drapeSize(graded, sex, size, collider, nullptr));
 }
 
 Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool warm) {
@@ -171,17 +248,17 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
   const int centre = static_cast<int>(std::find(candidates.begin(), candidates.end(), nearest) - candidates.begin());
   const int count = static_cast<int>(candidates.size());
   const auto collider = std::make_shared<const MeshCollider>(body);
-  const std::vector<FitRegion> regions = styleRegions(body, measured, sex, style_);
+  const std::vector<FitRegion> regions = styleRegions(body, measured, sex, regions_);
   Recommendation out;
   out.sizes.resize(candidates.size());
   for (const int k : drapeOrder(count, centre)) {
     const Graded& graded = grade(sex, candidates[k]);
     std::vector<Vec3> start;
-    if (const int from = k > centre ? k - 1 : k + 1; warm && style_.warmStarts && k != centre)
+    if (const int from = k > centre ? k - 1 : k + 1; warm && warmStarts_ && k != centre)
       start = warmStart(graded.garment, grade(sex, candidates[from]).garment, out.sizes[from].drape.positions,
                         *collider, parameters_.clearance);
     out.sizes[k] = fitSize(graded, chart_.sizes(sex)[candidates[k]].name, *collider, regions,
-                           drape(graded.garment, collider, start.empty() ? nullptr : &start));
+                           drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
   }
   out.allTight = true;
   for (const SizeFit& fit : out.sizes)

@@ -5,29 +5,56 @@
 // own chart body; the recommendation is the smallest candidate with no region tight (the
 // largest when every one is). The sizes share the body's collider, and each later drape
 // starts from the nearest earlier one moved onto the new size (a warm start).
+//
+// A style sewn from patterns (SewnStyle: a shop's own garments, graded as one pattern per
+// size) is fitted the same way, but each candidate is its size's pattern placed on the body
+// that tries it on (sim/pattern/PatternPlacement.h), cut, sewn shut and draped
+// (sim/drape/GarmentDrape.h), cold: its fit is measured against its flat panels (the
+// sewn garment's rest shape), and the intended fit is the size's pattern sewn on its own
+// chart body.
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "sim/body/HumanModel.h"
 #include "sim/cloth/ClothSolver.h"
+#include "sim/cloth/RestShape.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/fit/FitVerdict.h"
+#include "sim/fit/GarmentFit.h"
 #include "sim/garment/GarmentStyle.h"
 #include "sim/garment/SizeChart.h"
+#include "sim/pattern/SewingPattern.h"
 
 namespace figment {
 
 // The drape every size gets: implicit steps of 1/20 s, at rest at 1 cm/s held 1/4 s.
 ClothParameters sizeDrapeParameters(const GarmentStyle& style);
+// The same, in `fabric` (a material preset; the default Material for another name).
+ClothParameters sizeDrapeParameters(const std::string& fabric);
+
+// One size of a style sewn from patterns.
+struct SizePattern {
+  SewingPattern pattern;      // as read (io/PatternFile.h), placed around the body it was cut for
+  double madeForStature = 0;  // m: that body's stature; 0: the same as the body trying it on
+};
+
+// A style sewn from patterns: what SizeFitter needs besides the chart.
+struct SewnStyle {
+  std::string fabric;                                // a material preset (sim/cloth/MaterialPresets.h)
+  std::vector<std::string> regions;                  // the body regions its fit is told for (sim/fit/FitRegion.h)
+  std::map<std::pair<Sex, int>, SizePattern> sizes;  // (sex, index into the chart's sizes) -> its pattern
+  double spacing = 0.02;                             // m: the cloth's node spacing (sim/pattern/PatternCutting.h)
+};
 
 // A drape of one garment on one body, and what it cost.
 struct SizeDrape {
-  std::vector<Vec3> positions;
-  DrapeResult run;
-  bool warm = false;  // started from an earlier size's drape
+  std::vector<Vec3> positions;  // per rest point (a sewn garment: per panel node)
+  DrapeResult run;              // a sewn garment's: the drape's, its wallSeconds and iterations the sewing's too
+  bool warm = false;            // started from an earlier size's drape
 };
 
 struct SizeFit {
@@ -58,10 +85,16 @@ class SizeFitter {
  public:
   // The model, chart and style must outlive the fitter.
   SizeFitter(const HumanModel& model, const SizeChart& chart, const GarmentStyle& style);
+  // A style sewn from patterns; throws std::invalid_argument naming a size of the chart
+  // without a pattern when asked to fit it.
+  SizeFitter(const HumanModel& model, const SizeChart& chart, const SewnStyle& style);
 
   // A size's chart body (made to its four dimensions) and its garment, made once.
   struct Graded {
+    // A sewn style's garment is its panels cut and placed around the chart body, unsewn:
+    // its triangles are the same on every body, `flat` (its flat panels) its rest shape.
     TriangleMesh body, garment;
+    std::optional<RestShape> flat;
     std::vector<RegionFit> ownFit;  // the garment draped on its own chart body: the intended fit
   };
   const Graded& graded(Sex sex, int size);
@@ -69,6 +102,8 @@ class SizeFitter {
   // Drapes `garment` on `body` (its collider), cold or from `start`.
   SizeDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
                   const std::vector<Vec3>* start = nullptr) const;
+  // A sewn style's size: its pattern placed on `body`, cut, sewn and draped.
+  SizeDrape sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const;
 
   // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
   // without warm starts) drapes every size cold.
@@ -79,17 +114,28 @@ class SizeFitter {
 
   const ClothParameters& parameters() const { return parameters_; }
   VerdictRule rule() const;
+  // How a drape of a size's garment is measured (rest, its rest shape, the parameters);
+  // positions and body left for the caller.
+  FitInput fitInput(const Graded& graded) const;
 
  private:
   const Graded& grade(Sex sex, int size);
   std::vector<RegionFit> fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
-                               const TriangleMesh& garment, const std::vector<Vec3>& positions) const;
+                               const Graded& graded, const std::vector<Vec3>& positions) const;
   SizeFit fitSize(const Graded& graded, const std::string& name, const MeshCollider& collider,
                   const std::vector<FitRegion>& regions, SizeDrape drape) const;
 
+  SizeDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
+                      const std::vector<Vec3>* start) const;
+  const SizePattern& patternOf(Sex sex, int size) const;
+
   const HumanModel& model_;
   const SizeChart& chart_;
-  const GarmentStyle& style_;
+  const GarmentStyle* style_ = nullptr;  // a generator's style, or
+  const SewnStyle* sewn_ = nullptr;      // a style sewn from patterns
+  std::string fabric_;
+  std::vector<std::string> regions_;
+  bool warmStarts_ = false;
   ClothParameters parameters_;
   std::map<std::pair<int, int>, Graded> graded_;  // (sex, size index) -> made
 };

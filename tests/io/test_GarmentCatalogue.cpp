@@ -1,9 +1,11 @@
 // The garment catalogue's files: the shipped one lists every style with the chart's sizes
-// and its colours, names resolve to a style, a chart size and a colour, and a bad name or
-// file is refused naming the value and what is accepted.
+// and its colours, and the shipped patterns as styles of their own; names resolve to a
+// style (a generator's, or a size's pattern file), a chart size and a colour, and a bad
+// name or file is refused naming the value and what is accepted.
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string>
@@ -36,7 +38,6 @@ std::string refusal(const std::string& name) {
 
 TEST(GarmentCatalogue, TheShippedOneSellsEveryStyleInTheChartsSizes) {
   const GarmentCatalogue& catalogue = shipped();
-  ASSERT_EQ(catalogue.styles().size(), figment::garmentStyles().size());
   for (const figment::GarmentStyle& style : figment::garmentStyles()) {
     const figment::CatalogueStyle* sold = catalogue.style(style.name);
     ASSERT_NE(sold, nullptr) << style.name;
@@ -67,7 +68,9 @@ TEST(GarmentCatalogue, ANameIsAStyleASizeAndAColour) {
 TEST(GarmentCatalogue, ABadNameSaysWhatIsAccepted) {
   EXPECT_NE(refusal("dress:Q").find("\"dress:Q\": no size Q of dress (female XXS, XS, S, M, L, XL)"), std::string::npos)
       << refusal("dress:Q");
-  EXPECT_NE(refusal("coat:M").find("no style coat (styles dress, skirt, pencil, tshirt)"), std::string::npos)
+  EXPECT_NE(refusal("coat:M").find("no style coat (styles dress, skirt, pencil, tshirt, tee, shirt, trousers, "
+                                   "pencilskirt, circleskirt, sundress)"),
+            std::string::npos)
       << refusal("coat:M");
   EXPECT_NE(refusal("dress").find("is not style:size[:rrggbb]"), std::string::npos);
   EXPECT_NE(refusal("dress:M:blue").find("colour blue is not six hex digits"), std::string::npos);
@@ -101,4 +104,108 @@ TEST(GarmentCatalogue, ABadFileIsRefusedNamingItsLine) {
   EXPECT_EQ(message(), "");
   EXPECT_EQ(GarmentCatalogue(index).resolve("dress:38").sizeName, "M");
   EXPECT_NE(GarmentCatalogue(index).style("dress"), nullptr);
+}
+
+// The shipped patterns (scenes/patterns/) are six styles of their own, each in every size
+// both the chart and the pattern index have: the chart's whole range, which the index's
+// widens (women's to 54, men's to 62).
+TEST(GarmentCatalogue, TheShippedPatternsAreStylesInTheChartsSizes) {
+  const GarmentCatalogue& catalogue = shipped();
+  const std::vector<std::pair<std::string, std::string>> styles = {{"tee", "tshirt"},         {"shirt", "shirt"},
+                                                                   {"trousers", "trousers"},  {"pencilskirt", "pencil"},
+                                                                   {"circleskirt", "circle"}, {"sundress", "dress"}};
+  EXPECT_EQ(catalogue.styles().size(), figment::garmentStyles().size() + styles.size());
+  for (const auto& [name, pattern] : styles) {
+    const figment::CatalogueStyle* sold = catalogue.style(name);
+    ASSERT_NE(sold, nullptr) << name;
+    EXPECT_EQ(sold->pattern, pattern);
+    EXPECT_FALSE(sold->fabric.empty()) << name;
+    EXPECT_FALSE(sold->regions.empty()) << name;
+    for (const Sex sex : sold->sexes) {
+      EXPECT_EQ(sold->sizes(sex).size(), catalogue.chart().sizes(sex).size()) << name;
+      for (const std::string& size : sold->sizes(sex)) {
+        const figment::PatternIndexEntry* entry = sold->patternOf(sex, size);
+        ASSERT_NE(entry, nullptr) << name << " " << size;
+        EXPECT_TRUE(std::filesystem::is_regular_file(entry->file)) << entry->file;
+      }
+    }
+  }
+  // Generated styles have no pattern; their fabric and regions are their generator's.
+  EXPECT_FALSE(catalogue.style("tshirt")->sewn());
+  EXPECT_EQ(catalogue.style("tshirt")->fabric, "jersey");
+}
+
+TEST(GarmentCatalogue, APatternStylesNameIsItsSizesPattern) {
+  const CatalogueItem tee = shipped().resolve("tee:38");
+  EXPECT_TRUE(tee.sewn());
+  EXPECT_EQ(tee.style, nullptr);  // no generator
+  EXPECT_EQ(tee.styleName, "tee");
+  EXPECT_EQ(tee.sex, Sex::Female);
+  EXPECT_EQ(tee.sizeName, "M");
+  EXPECT_EQ(std::filesystem::path(tee.patternFile).filename(), "tshirt-f-38_specification.json");
+  EXPECT_DOUBLE_EQ(tee.madeForStature, 1.68);
+  EXPECT_EQ(tee.fabric, "jersey");
+  EXPECT_EQ(tee.name(), "tee:M:" + shipped().style("tee")->colours.front());
+  const CatalogueItem mens = shipped().resolve("tee:XL");  // a letter code: men's first
+  EXPECT_EQ(std::filesystem::path(mens.patternFile).filename(), "tshirt-m-52_specification.json");
+  EXPECT_DOUBLE_EQ(mens.madeForStature, 1.80);
+  // The generator's T-shirt keeps its name and has no pattern.
+  const CatalogueItem tshirt = shipped().resolve("tshirt:M");
+  EXPECT_FALSE(tshirt.sewn());
+  ASSERT_NE(tshirt.style, nullptr);
+  EXPECT_STREQ(tshirt.style->name, "tshirt");
+  EXPECT_EQ(tshirt.fabric, "jersey");
+  // Beyond the chart: the index has a women's XXL (44), the chart does not.
+  try {
+    shipped().resolve("tee:XXL", Sex::Female);
+    ADD_FAILURE() << "tee:XXL resolved in women's sizes";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_NE(std::string(error.what()).find("no size XXL of tee"), std::string::npos) << error.what();
+  }
+}
+
+TEST(GarmentCatalogue, ABadPatternStyleIsRefusedNamingItsLine) {
+  const figment::test::TempDir dir;
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream((dir.path() / name).string()) << text;
+  };
+  const std::string source = FIGMENT_SOURCE_DIR;
+  write("index.txt", "chart " + source + "/scenes/sizes/chart.txt\npatterns " + source +
+                         "/scenes/patterns/index.json\nstyle coat.txt\n");
+  const std::string index = (dir.path() / "index.txt").string();
+  const auto message = [&] {
+    try {
+      GarmentCatalogue catalogue(index);
+    } catch (const std::runtime_error& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  const std::string good = "fabric cotton\nregions waist, upper arms\nfemale M\ncolours 222222\n";
+  write("coat.txt", "style coat\npatterns parka\n" + good);
+  EXPECT_NE(message().find("coat.txt:2: the pattern index has no style parka (tshirt, shirt"), std::string::npos)
+      << message();
+  write("coat.txt", "style tshirt\npatterns tshirt\n" + good);
+  EXPECT_NE(message().find("coat.txt:1: style tshirt is a generator's"), std::string::npos) << message();
+  write("coat.txt", "style coat\npatterns pencil\nfabric tweed\nfemale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt:3: fabric tweed is not one of"), std::string::npos) << message();
+  write("coat.txt", "style coat\npatterns pencil\nfabric cotton\nregions waist, knees\n");
+  EXPECT_NE(message().find("coat.txt:4: region 'knees' is not one of"), std::string::npos) << message();
+  write("coat.txt", "style coat\npatterns pencil\nfabric cotton\nregions waist\nmale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt:5: the pattern index has no male pencil in size M"), std::string::npos)
+      << message();
+  write("coat.txt", "style coat\npatterns pencil\nfemale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt: no \"fabric PRESET\" line"), std::string::npos) << message();
+  write("coat.txt", "style dress\nfabric silk\nfemale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt:2: a generator style's fabric is its own"), std::string::npos) << message();
+  write("coat.txt", "style coat\npatterns pencil\n" + good);
+  EXPECT_EQ(message(), "");
+  const CatalogueItem coat = GarmentCatalogue(index).resolve("coat:M");
+  EXPECT_EQ(std::filesystem::path(coat.patternFile).filename(), "pencil-f-38_specification.json");
+  EXPECT_EQ(coat.regions, (std::vector<std::string>{"waist", "upper arms"}));
+  // A pattern style with no pattern index to sew it from.
+  write("index.txt", "chart " + source + "/scenes/sizes/chart.txt\nstyle coat.txt\n");
+  EXPECT_NE(message().find("coat.txt:2: patterns pencil, but the catalogue's index has no \"patterns FILE\" line"),
+            std::string::npos)
+      << message();
 }

@@ -1,7 +1,8 @@
 // The verdict rule: a region is tight past its fabric's limits or half a size step short of
 // the intended girth ease, loose half a step beyond it, else it fits; the shopper's line
 // names each tight and loose region with its reason; a region a pose hides the girth of is
-// judged by its stretch and pressure alone.
+// judged by its stretch and pressure alone; a sewn pattern's stretch is judged against the
+// size as made.
 #include <gtest/gtest.h>
 
 #include "sim/fit/FitVerdict.h"
@@ -104,4 +105,28 @@ TEST(FitVerdict, TheShoppersLineNamesTightAndLooseRegions) {
   const std::vector<RegionFit> short_ = {region("waist", -0.01), region("hips", 0.04)};
   EXPECT_EQ(shopperText(short_, intended, {Verdict::Tight, Verdict::Fits}, rule),
             "tight at the waist: 3 cm too little ease");
+}
+
+// A garment sewn from a graded pattern (stretchAgainstIntended): the stretch its own size
+// has on its own chart body is as made, even past the fabric's limit; beyond it by half a
+// size step (2 cm of a 72 cm girth: 2.8 %) it is tight, and pressure is not judged apart.
+TEST(FitVerdict, ASewnPatternsStretchIsJudgedAgainstTheSizeAsMade) {
+  VerdictRule rule{fabricLimits("cotton")};
+  rule.stretchAgainstIntended = true;
+  RegionFit intended = region("waist", 0.015, 0.14);
+  intended.garmentGirth = 0.72;
+  intended.pressure = 1700;  // Pa: past cotton's 2 kPa limit would be tight; under it here
+  RegionFit same = region("waist", 0.015, 0.14);
+  same.pressure = 2500;
+  EXPECT_EQ(judge(same, intended, rule), Verdict::Fits);                            // 14 %, past cotton's 4 %: as made
+  EXPECT_EQ(judge(region("waist", 0.015, 0.165), intended, rule), Verdict::Fits);   // + 2.5 %
+  EXPECT_EQ(judge(region("waist", 0.015, 0.172), intended, rule), Verdict::Tight);  // + 3.2 %
+  // The control: the fabric's own limit calls the same fit tight.
+  EXPECT_EQ(judge(same, intended, VerdictRule{fabricLimits("cotton")}), Verdict::Tight);
+  // Without a girth the fabric's stretch limit is the step.
+  RegionFit shoulders = region("shoulders", NAN, 0.10);
+  EXPECT_EQ(judge(region("shoulders", NAN, 0.13), shoulders, rule), Verdict::Fits);
+  EXPECT_EQ(judge(region("shoulders", NAN, 0.15), shoulders, rule), Verdict::Tight);
+  const std::vector<RegionFit> fits = {region("waist", 0.015, 0.20)};
+  EXPECT_EQ(shopperText(fits, {intended}, {Verdict::Tight}, rule), "tight at the waist: 20 % stretch, 14 % as made");
 }

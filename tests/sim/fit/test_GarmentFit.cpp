@@ -1,11 +1,13 @@
 // A garment's fit measured on analytic cases: a tube round a closed cylinder (the body),
 // stretched round it by a known strain or standing off it by a known distance. Stretch,
 // ease, girth ease and pressure (Laplace's law for a membrane round a cylinder) must be
-// those the geometry gives.
+// those the geometry gives. A rest shape apart from the rest mesh (a sewn garment's flat
+// panels) is what stretch is measured against.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "sim/cloth/RestShape.h"
 #include "sim/fit/GarmentFit.h"
 #include "support/FitTubes.h"
 
@@ -42,6 +44,28 @@ TEST(GarmentFit, ATubeStretchedByFivePercentReportsFivePercent) {
   EXPECT_NEAR(fits[0].meanStrain, 0.05, 1e-9);
   EXPECT_NEAR(fits[0].maxStrain, 0.05, 1e-9);
   EXPECT_NEAR(fits[0].ease, 0.0, 1e-9);  // on the body, at the clearance
+}
+
+// A sewn garment: the mesh is where its panels were placed, its rest shape each section's
+// own corners. The same tube lying as cut, with sections whose corners at rest are 5 %
+// smaller: 5 % stretch, as the tube cut 5 % smaller round reports, where the mesh alone
+// reports none.
+TEST(GarmentFit, ARestShapeApartFromTheMeshIsWhatStretchIsMeasuredAgainst) {
+  const double body = 0.15, clearance = 0.003, draped = body + clearance;
+  Case c(draped, draped, body, clearance);
+  std::vector<std::array<Vec3, 3>> corners;
+  for (const Triangle& t : c.rest.triangles)
+    corners.push_back({c.rest.vertices[t[0]] / 1.05, c.rest.vertices[t[1]] / 1.05, c.rest.vertices[t[2]] / 1.05});
+  const RestShape smaller = RestShape::flatPieces(c.rest.triangles, corners, c.rest.vertices.size());
+  EXPECT_NEAR(measureFit(c.input, {middle(body)})[0].meanStrain, 0.0, 1e-9);  // the control
+  c.input.restShape = &smaller;
+  const std::vector<RegionFit> fits = measureFit(c.input, {middle(body)});
+  EXPECT_NEAR(fits[0].meanStrain, 0.05, 1e-9);
+  EXPECT_GT(fits[0].pressure, 0.0);  // the forces, too, are the rest shape's
+  // A rest shape of other sections is refused.
+  const RestShape other = RestShape::flatPieces({c.rest.triangles[0]}, {corners[0]}, c.rest.vertices.size());
+  c.input.restShape = &other;
+  EXPECT_THROW(measureFit(c.input, {middle(body)}), std::invalid_argument);
 }
 
 // A tube at rest length standing 2 cm off the body: ease 2 cm (less the clearance), no
