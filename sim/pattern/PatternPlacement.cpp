@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "sim/body/BodyMeasurements.h"
 #include "sim/body/BodySlices.h"
 #include "sim/body/BodyStance.h"
 
@@ -36,21 +35,7 @@ PatternPlacement placementOn(const TriangleMesh& body, double madeForStature) {
   placement.axis =
       waist.empty() ? Vec2(0.5 * (box.min.x() + box.max.x()), 0.5 * (box.min.z() + box.max.z())) : waist.centroid();
   placement.armAngle = armAngleOf(body);
-  placement.patternStature = madeForStature > 0.0 ? madeForStature : stature;
-  try {
-    placement.waist = measureBody(body, {"waist_girth"}).landmarks.waist - box.min.y();
-    placement.patternWaist = kGarmentCodeWaistShare * placement.patternStature;
-  } catch (const std::exception&) {
-    placement.waist = 0.0;  // no waist to be found (not a human shape): statures alone
-  }
   return placement;
-}
-
-double PatternPlacement::height(double y) const {
-  if (!(waist > 0.0 && patternWaist > 0.0 && patternStature > patternWaist)) return heightScale * y;
-  if (y <= patternWaist) return y * waist / patternWaist;
-  const double stature = heightScale * patternStature;
-  return waist + (y - patternWaist) * (stature - waist) / (patternStature - patternWaist);
 }
 
 double armAngleOf(const TriangleMesh& body) {
@@ -115,12 +100,7 @@ void turnAboutArmhole(Panel& panel, double degrees, double axisX) {
 
 SewingPattern placed(const SewingPattern& pattern, const PatternPlacement& placement) {
   SewingPattern out = pattern;
-  for (Panel& panel : out.panels) {
-    Vec2 centre = Vec2::Zero();
-    for (const Vec2& p : panel.vertices) centre += p / static_cast<double>(panel.vertices.size());
-    const Vec3 before = panel.rotation * Vec3(centre.x(), centre.y(), 0.0) + panel.translation;
-    panel.translation += placement(before) - before;
-  }
+  for (Panel& panel : out.panels) panel.translation = placement(panel.translation);
   const double patternAngle = patternArmAngle(pattern);
   if (placement.armAngle <= 0.0 || patternAngle <= 0.0) return out;
   for (Panel& panel : out.panels) {
