@@ -132,14 +132,45 @@ std::string patternStyleNames(const std::vector<PatternIndexEntry>& index) {
   return joined(names);
 }
 
+// Where a style file said what (file:line), for the checks after its last line.
+struct StyleLines {
+  std::string style, fabric, regions;
+  std::map<Sex, std::string> sizes;
+};
+
+// A pattern style's own name, cloth and regions and its sizes' patterns; a generator style's
+// cloth and regions its generator's. Throws naming the line.
+void completeStyle(const std::string& path, const StyleLines& where, const std::vector<PatternIndexEntry>& index,
+                   CatalogueStyle& style) {
+  const GarmentStyle* generator = findStyle(style.name);
+  if (style.sewn()) {
+    // Its own name, so "tshirt:M" always means the generator's T-shirt.
+    if (generator)
+      throw std::runtime_error(where.style + ": style " + style.name +
+                               " is a generator's; a pattern style needs a name of its own");
+    if (style.fabric.empty()) throw std::runtime_error(path + ": no \"fabric PRESET\" line (a pattern style's cloth)");
+    if (style.regions.empty())
+      throw std::runtime_error(path + ": no \"regions NAME, ...\" line (where a pattern style's fit is told)");
+    findPatterns(index, where.sizes, style);
+  } else {
+    if (!generator)
+      throw std::runtime_error(where.style + ": style " + style.name + " is not one of " + styleNames() +
+                               " (or give \"patterns STYLE\" for a pattern style)");
+    // A generator cuts for its own cloth and regions (sim/garment/GarmentStyle.h).
+    if (!where.fabric.empty()) throw std::runtime_error(where.fabric + ": a generator style's fabric is its own");
+    if (!where.regions.empty()) throw std::runtime_error(where.regions + ": a generator style's regions are its own");
+    style.fabric = generator->fabric;
+    style.regions = generator->regions;
+  }
+}
+
 CatalogueStyle readStyle(const std::string& path, const SizeChart& chart, const std::vector<PatternIndexEntry>& index) {
   CatalogueStyle style;
-  std::string styleWhere, patternWhere, fabricWhere, regionsWhere;
-  std::map<Sex, std::string> sizesWhere;
+  StyleLines where;
   for (const Line& line : readLines(path)) {
     const std::string& key = line.words[0];
     if (key == "style" && line.words.size() == 2) {
-      style.name = line.words[1], styleWhere = line.where;
+      style.name = line.words[1], where.style = line.where;
     } else if (key == "patterns" && line.words.size() == 2) {
       if (index.empty())
         throw std::runtime_error(line.where + ": patterns " + line.words[1] +
@@ -148,17 +179,17 @@ CatalogueStyle readStyle(const std::string& path, const SizeChart& chart, const 
                        [&](const PatternIndexEntry& e) { return e.style == line.words[1]; }))
         throw std::runtime_error(line.where + ": the pattern index has no style " + line.words[1] + " (" +
                                  patternStyleNames(index) + ")");
-      style.pattern = line.words[1], patternWhere = line.where;
+      style.pattern = line.words[1];
     } else if (key == "fabric" && line.words.size() == 2) {
       if (!materialPreset(line.words[1]))
         throw std::runtime_error(line.where + ": fabric " + line.words[1] + " is not one of " +
                                  joined(materialPresetNames()));
-      style.fabric = line.words[1], fabricWhere = line.where;
+      style.fabric = line.words[1], where.fabric = line.where;
     } else if (key == "regions" && line.words.size() >= 2) {
-      style.regions = readRegions(line), regionsWhere = line.where;
+      style.regions = readRegions(line), where.regions = line.where;
     } else if (key == "female" || key == "male") {
       readSizes(line, chart, style);
-      sizesWhere[style.sexes.back()] = line.where;
+      where.sizes[style.sexes.back()] = line.where;
     } else if (key == "colours") {
       for (size_t i = 1; i < line.words.size(); ++i) {
         if (!isColour(line.words[i]))
@@ -173,26 +204,7 @@ CatalogueStyle readStyle(const std::string& path, const SizeChart& chart, const 
   if (style.name.empty()) throw std::runtime_error(path + ": no \"style NAME\" line");
   if (style.sexes.empty()) throw std::runtime_error(path + ": no sizes (\"female SIZES...\" or \"male SIZES...\")");
   if (style.colours.empty()) throw std::runtime_error(path + ": no \"colours RRGGBB...\" line");
-  const GarmentStyle* generator = findStyle(style.name);
-  if (style.sewn()) {
-    // Its own name, so "tshirt:M" always means the generator's T-shirt.
-    if (generator)
-      throw std::runtime_error(styleWhere + ": style " + style.name +
-                               " is a generator's; a pattern style needs a name of its own");
-    if (style.fabric.empty()) throw std::runtime_error(path + ": no \"fabric PRESET\" line (a pattern style's cloth)");
-    if (style.regions.empty())
-      throw std::runtime_error(path + ": no \"regions NAME, ...\" line (where a pattern style's fit is told)");
-    findPatterns(index, sizesWhere, style);
-  } else {
-    if (!generator)
-      throw std::runtime_error(styleWhere + ": style " + style.name + " is not one of " + styleNames() +
-                               " (or give \"patterns STYLE\" for a pattern style)");
-    // A generator cuts for its own cloth and regions (sim/garment/GarmentStyle.h).
-    if (!fabricWhere.empty()) throw std::runtime_error(fabricWhere + ": a generator style's fabric is its own");
-    if (!regionsWhere.empty()) throw std::runtime_error(regionsWhere + ": a generator style's regions are its own");
-    style.fabric = generator->fabric;
-    style.regions = generator->regions;
-  }
+  completeStyle(path, where, index, style);
   return style;
 }
 

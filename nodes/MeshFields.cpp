@@ -27,6 +27,16 @@ void setPanelFields(const UnsewnGarment& cut, SoMFVec2f& panelPoints, SoMFInt32&
   int32_t* pair = seams.startEditing();
   for (const auto& [a, b] : cut.seams) *pair++ = a, *pair++ = b;
   seams.finishEditing();
+  // Outputs, not settings: left out of written files.
+  panelPoints.setDefault(TRUE);
+  seams.setDefault(TRUE);
+}
+
+void clearPanelFields(SoMFVec2f& panelPoints, SoMFInt32& seams) {
+  panelPoints.setNum(0);
+  seams.setNum(0);
+  panelPoints.setDefault(TRUE);
+  seams.setDefault(TRUE);
 }
 
 }  // namespace figment

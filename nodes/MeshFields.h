@@ -14,7 +14,10 @@
 namespace figment {
 
 void setMeshFields(const TriangleMesh& mesh, SoMFVec3f& points, SoMFInt32& coordIndex);
-// Each node's panel coordinates (m) and the seams' node pairs, two indices a pair.
+// Each node's panel coordinates (m) and the seams' node pairs, two indices a pair: outputs,
+// flagged default so that they are never written to a file.
 void setPanelFields(const UnsewnGarment& cut, SoMFVec2f& panelPoints, SoMFInt32& seams);
+// The same outputs empty: nothing to sew.
+void clearPanelFields(SoMFVec2f& panelPoints, SoMFInt32& seams);
 
 }  // namespace figment

@@ -86,6 +86,18 @@ std::string statsJson(const figment::GarmentDrape& drape, const figment::DrapeVe
   return text;
 }
 
+// What the drape's end says of it (sim/cloth/DrapeVerdict.h).
+figment::DrapeVerdict verdictOf(const figment::GarmentDrape& drape, const figment::ClothParameters& parameters) {
+  figment::DrapeVerdict verdict;
+  verdict.atRest = drape.run.atRest;
+  verdict.maxTime = parameters.maxTime;
+  verdict.maxSpeed = drape.run.maxSpeed;
+  verdict.maxStretch = drape.run.maxStretch;
+  verdict.halvedSteps = drape.run.implicitCosts.halvedSteps;
+  verdict.failedSteps = drape.run.implicitCosts.failedSteps;
+  return verdict;
+}
+
 // The stitches whose pairs stayed open, by their panels and edges: "stitch 3 (skirt_front
 // edge 11, skirt_back edge 0), ...".
 std::string openStitches(const figment::SewingPattern& pattern, const figment::UnsewnGarment& cut,
@@ -118,13 +130,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   drapeRequest.sewing = figment::DrapeSewing{cut.flat, cut.seams, {}};
   const figment::GarmentDrape drape = figment::drapeGarment(drapeRequest);
 
-  figment::DrapeVerdict verdict;
-  verdict.atRest = drape.run.atRest;
-  verdict.maxTime = parameters.maxTime;
-  verdict.maxSpeed = drape.run.maxSpeed;
-  verdict.maxStretch = drape.run.maxStretch;
-  verdict.halvedSteps = drape.run.implicitCosts.halvedSteps;
-  verdict.failedSteps = drape.run.implicitCosts.failedSteps;
+  const figment::DrapeVerdict verdict = verdictOf(drape, parameters);
   const int inside = nodesInside(*collider, drape.positions);
 
   std::vector<figment::ColouredMesh> meshes;

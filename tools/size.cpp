@@ -127,35 +127,9 @@ int run(const Request& request) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  CLI::App app{"Recommends a garment size by draping the size chart's candidates on a body.", kTool.program()};
-  Request request;
-  request.chart = figment::defaultSizeChartPath();
-  app.add_option("--style", request.style,
-                 figment::styleNames() +
-                     ", or a pattern style of the catalogue (scenes/catalogue/: tee, pencilskirt...); or a "
-                     "catalogue garment, style:size[:rrggbb]: that size tried on, as --size")
-      ->required();
-  app.add_option("--sex", request.sex, "female or male")->required()->check(CLI::IsMember({"female", "male"}));
-  auto* body = app.add_option("--body", request.body, "a body mesh file (metres, y up) instead of measurements");
-  for (const char* key : {"stature", "bust_girth", "waist_girth", "hip_girth"}) {
-    std::string name = std::string("--") + key;
-    for (char& c : name)
-      if (c == '_') c = '-';
-    app.add_option_function<double>(
-           name, [&request, key](double v) { request.typed[key] = v; }, std::string(key) + ", m")
-        ->excludes(body);
-  }
-  app.add_option("--chart", request.chart, "size chart file")->capture_default_str();
-  app.add_option("--size", request.size, "try this size on only (letter code or number): no recommendation");
-  app.add_flag("--json", request.json, "one JSON object on stdout");
-  app.add_flag("--cold", request.cold, "drape every size from its cut shape (no warm starts)");
-  app.add_option("--fit-map", request.fitMap,
-                 "write each size's fit map, a scene for figment-view: stretch, ease or pressure")
-      ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
-  app.add_option("--fit-map-dir", request.fitMapDir, "folder for the fit maps (<size>.iv and body.obj)")
-      ->capture_default_str();
-  if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+// --style as a catalogue garment ("pencil:M": its style, and its size tried on) or a pattern
+// style of the catalogue (a shop's own garments, sewn): -1 to go on, else the exit status.
+int resolveStyle(Request& request) {
   if (request.style.find(':') != std::string::npos) {
     // A catalogue garment, "pencil:M": its style, and its size tried on.
     try {
@@ -186,6 +160,39 @@ int main(int argc, char** argv) {
       return kTool.fail(error.what());
     }
   }
+  return -1;
+}
+
+int main(int argc, char** argv) {
+  CLI::App app{"Recommends a garment size by draping the size chart's candidates on a body.", kTool.program()};
+  Request request;
+  request.chart = figment::defaultSizeChartPath();
+  app.add_option("--style", request.style,
+                 figment::styleNames() +
+                     ", or a pattern style of the catalogue (scenes/catalogue/: tee, pencilskirt...); or a "
+                     "catalogue garment, style:size[:rrggbb]: that size tried on, as --size")
+      ->required();
+  app.add_option("--sex", request.sex, "female or male")->required()->check(CLI::IsMember({"female", "male"}));
+  auto* body = app.add_option("--body", request.body, "a body mesh file (metres, y up) instead of measurements");
+  for (const char* key : {"stature", "bust_girth", "waist_girth", "hip_girth"}) {
+    std::string name = std::string("--") + key;
+    for (char& c : name)
+      if (c == '_') c = '-';
+    app.add_option_function<double>(
+           name, [&request, key](double v) { request.typed[key] = v; }, std::string(key) + ", m")
+        ->excludes(body);
+  }
+  app.add_option("--chart", request.chart, "size chart file")->capture_default_str();
+  app.add_option("--size", request.size, "try this size on only (letter code or number): no recommendation");
+  app.add_flag("--json", request.json, "one JSON object on stdout");
+  app.add_flag("--cold", request.cold, "drape every size from its cut shape (no warm starts)");
+  app.add_option("--fit-map", request.fitMap,
+                 "write each size's fit map, a scene for figment-view: stretch, ease or pressure")
+      ->check(CLI::IsMember({"stretch", "ease", "pressure"}));
+  app.add_option("--fit-map-dir", request.fitMapDir, "folder for the fit maps (<size>.iv and body.obj)")
+      ->capture_default_str();
+  if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
+  if (const int status = resolveStyle(request); status >= 0) return status;
   if (request.body.empty() && request.typed.size() < 4)
     return kTool.fail("give --body FILE, or all of --stature, --bust-girth, --waist-girth and --hip-girth");
   return run(request);

@@ -84,8 +84,7 @@ bool CatalogueGarment::load(SoInput* in) {
       throw std::invalid_argument("fileName \"" + std::string(fileName.getValue().getString()) +
                                   "\": a CatalogueGarment makes its mesh; leave fileName empty");
     const std::string name = garment.getValue().getString();
-    panelPoint.setNum(0);
-    seams.setNum(0);
+    figment::clearPanelFields(panelPoint, seams);
     if (name.empty()) {
       clearMesh();
       return true;
@@ -113,13 +112,10 @@ bool CatalogueGarment::load(SoInput* in) {
     // Outputs, not settings: left out of written files.
     colour.setDefault(TRUE);
     fabric.setDefault(TRUE);
-    panelPoint.setDefault(TRUE);
-    seams.setDefault(TRUE);
     return true;
   } catch (const std::exception& e) {
     error = e.what();
   }
-  panelPoint.setNum(0);
-  seams.setNum(0);
+  figment::clearPanelFields(panelPoint, seams);
   return failLoad("CatalogueGarment", in, error);
 }

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <optional>
 #include <utility>
 
@@ -119,14 +120,8 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(splitRate, (0.0));
   SO_ENGINE_ADD_INPUT(tolerance, (0.0));
   // The multiple-value inputs start empty ([ ]), not with the one value set above.
-  restPoints.setNum(0);
-  restPoints.setDefault(TRUE);
-  coordIndex.setNum(0);
-  coordIndex.setDefault(TRUE);
-  panelPoints.setNum(0);
-  panelPoints.setDefault(TRUE);
-  seams.setNum(0);
-  seams.setDefault(TRUE);
+  for (SoMField* list : std::initializer_list<SoMField*>{&restPoints, &coordIndex, &panelPoints, &seams})
+    list->setNum(0), list->setDefault(TRUE);
   SO_ENGINE_ADD_OUTPUT(positions, SoMFVec3f);
   SO_ENGINE_ADD_OUTPUT(levelCoordIndex, SoMFInt32);
 }

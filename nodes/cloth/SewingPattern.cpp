@@ -75,21 +75,16 @@ bool SewingPattern::load(SoInput* in) {
   try {
     if (fileName.getValue().getLength() == 0) {
       clearMesh();
-      panelPoint.setNum(0);
-      seams.setNum(0);
+      figment::clearPanelFields(panelPoint, seams);
       return true;
     }
     const figment::UnsewnGarment cut = cutFor(*this, sceneDirectories_);
     setMesh(cut.placed, cut.placed);
     figment::setPanelFields(cut, panelPoint, seams);
-    // Outputs, not settings: left out of written files.
-    panelPoint.setDefault(TRUE);
-    seams.setDefault(TRUE);
     return true;
   } catch (const std::exception& e) {
     error = e.what();
   }
-  panelPoint.setNum(0);
-  seams.setNum(0);
+  figment::clearPanelFields(panelPoint, seams);
   return failLoad("SewingPattern", in, error);
 }
