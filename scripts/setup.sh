@@ -2,26 +2,45 @@
 # Installs what is missing (Debian packages), configures once and builds incrementally.
 # Shared by the README's two commands and by CI; fast and quiet on a second run.
 #   scripts/setup.sh                 everything: every program, the tests and their tools
-#   scripts/setup.sh TARGET...       only those build targets (the README's first command:
-#                                    figment-view), without the tests' own tools
+#   scripts/setup.sh TARGET...       only those build targets and the packages they need (the
+#                                    README's first command: figment-view), without the
+#                                    tests, their tools or the service's packages
 set -euo pipefail
 cd "$(dirname "$0")/.."
 targets=("$@")
 
-# libpng-dev: PNG files written byte for byte (io/PngFile); python3-pivy: the guard's
-# call from a pivy program (tests/guard/test_GuardC.py). libcpp-httplib-dev: figment-serve's
-# HTTP; chromium, chromium-driver, python3-selenium: its page tested in a real browser
-# (tests/serve/scenarios/test_page.py); wrk: bench/serve-load.sh; clang-format: ctest's
-# lint.Formatting (scripts/check-format.sh). libhiredis-dev, redis-server: figment-serve's
-# shared cache and work queue, and the tests that start a Redis of their own; nginx: the
-# load balancer the deployment test puts before two instances (docs/deploy.md).
-packages=(cmake ninja-build g++ pkg-config
+# What a build of figment-view (or any other program but the service's) needs: the compiler,
+# Coin, OSMesa, assimp, Eigen; libpng-dev: PNG files written byte for byte (io/PngFile);
+# assimp-testmodels: the default scanned mannequin (human.zae) the shipped scenes dress.
+build_packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
-  libgtest-dev libcli11-dev nlohmann-json3-dev
-  assimp-testmodels python3-matplotlib python3-pivy
-  libcpp-httplib-dev chromium chromium-driver python3-selenium wrk
-  libhiredis-dev redis-server nginx
-  clang-format)
+  libcli11-dev nlohmann-json3-dev assimp-testmodels)
+# The service (figment-serve, figment-precompute): libcpp-httplib-dev for its HTTP;
+# libhiredis-dev for the shared cache and work queue in Redis.
+service_packages=(libcpp-httplib-dev libhiredis-dev)
+# The tests and their tools: GoogleTest; python3-matplotlib: figment-bench's plots;
+# python3-pivy: the guard's call from a pivy program (tests/guard/test_GuardC.py); chromium,
+# chromium-driver, python3-selenium: the page tested in a real browser
+# (tests/serve/scenarios/test_page.py); redis-server: the tests that start a Redis of their
+# own; nginx: the load balancer the deployment test puts before two instances
+# (docs/deploy.md); wrk: bench/serve-load.sh; clang-format: ctest's lint.Formatting.
+test_packages=(libgtest-dev python3-matplotlib python3-pivy
+  chromium chromium-driver python3-selenium wrk redis-server nginx clang-format)
+
+# By need: named targets get the build's packages (and the service's for its programs);
+# everything (no target named) gets them all, and every test must be registered.
+service_target=0 tests_target=0
+for target in "${targets[@]}"; do
+  case "$target" in figment-serve | figment-precompute | figment_serve) service_target=1 ;;
+  figment-view | figment-bench | figment-* | figment_*) ;;
+  *) service_target=1 tests_target=1 ;; esac
+done
+packages=("${build_packages[@]}")
+if ((${#targets[@]} == 0 || tests_target)); then
+  packages+=("${service_packages[@]}" "${test_packages[@]}")
+elif ((service_target)); then
+  packages+=("${service_packages[@]}")
+fi
 
 missing=()
 for package in "${packages[@]}"; do
@@ -29,7 +48,9 @@ for package in "${packages[@]}"; do
 done
 # node and npm: the Khronos glTF validator for the export tests (tools/gltf). Debian's
 # nodejs and npm unless a node with its npm is already there (another vendor's, say).
-command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
+if ((${#targets[@]} == 0)); then
+  command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
+fi
 if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}" >&2
   sudo=""
@@ -46,7 +67,21 @@ if ((${#targets[@]} == 0)) && { [ ! -f tools/gltf/node_modules/.package-lock.jso
 fi
 
 build=${FIGMENT_BUILD_DIR:-build}
-[ -f "$build/CMakeCache.txt" ] || cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+if ((${#targets[@]} == 0)); then
+  # Everything: the tests and the service on, and a test that would be left out (a program
+  # missing) stops the configure (cmake/FigmentLeftOut.cmake). Configured again each time, in
+  # seconds, so that a build first made for figment-view alone gains them.
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DFIGMENT_BUILD_TESTS=ON -DFIGMENT_BUILD_SERVICE=ON \
+    -DFIGMENT_REQUIRE_ALL_TESTS=ON >/dev/null
+else
+  # Named targets: a first configure leaves out the tests and the service unless one of
+  # them was named; a later one only turns on what a named target needs.
+  options=()
+  [ -f "$build/CMakeCache.txt" ] || options+=(-DCMAKE_BUILD_TYPE=Release -DFIGMENT_BUILD_TESTS=OFF -DFIGMENT_BUILD_SERVICE=OFF)
+  if ((service_target)); then options+=(-DFIGMENT_BUILD_SERVICE=ON); fi
+  if ((tests_target)); then options+=(-DFIGMENT_BUILD_TESTS=ON); fi
+  if ((${#options[@]})); then cmake -S . -B "$build" -G Ninja "${options[@]}" >/dev/null; fi
+fi
 # MakeHuman's CC0 body model (docs/bodies.md), where the build looks for it by default.
 python3 scripts/fetch-makehuman.py "$build/data/makehuman"
 cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
