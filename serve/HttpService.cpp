@@ -284,7 +284,7 @@ void HttpService::submitJob(const httplib::Request& request, httplib::Response& 
 
 void HttpService::jobStatus(const std::string& id, httplib::Response& response) const {
   const std::optional<RenderJobs::Status> job = jobs_->find(id);
-  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", id.substr(0, 64)}});
+  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", utf8Prefix(id, 64)}});
   nlohmann::json body = {{"status", job->state}, {"result", "/api/render?" + job->canonical}};
   if (!job->error.empty()) body["error"] = job->error;
   sendJson(response, 200, body);

@@ -34,7 +34,7 @@ TEST(RenderRequest, NoParametersIsTheDefaultBodyInTheDress) {
 TEST(RenderRequest, CanonicalTextReadsBackToItself) {
   const RenderRequest request = ok({{"stature", "1.7204"},
                                     {"chest", "0.95"},
-                                    {"skin", "Tan"},
+                                    {"skin", "tan"},
                                     {"outfit", "tshirt:L:2E7D32,skirt:S"},
                                     {"view", "-30,10.04"},
                                     {"size", "320x240"},
