@@ -91,6 +91,10 @@ std::variant<FitRequest, ParameterError> FitRequest::parse(const RenderRequest::
   return request;
 }
 
+std::vector<std::string> FitRequest::parameterNames() {
+  return {std::begin(kNames), std::end(kNames)};
+}
+
 std::string FitRequest::canonical() const {
   char text[160];
   std::snprintf(text, sizeof text, "sex=%s&style=%s&stature=%.3f&bust=%.3f&waist=%.3f&hips=%.3f", sexName(sex),

@@ -322,6 +322,10 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
   return request;
 }
 
+std::vector<std::string> RenderRequest::parameterNames() {
+  return {std::begin(kNames), std::end(kNames)};
+}
+
 std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,
                                                                           const SizeChart* chart) {
   return parse(splitCanonical(text), chart);

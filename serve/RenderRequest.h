@@ -55,6 +55,9 @@ class RenderRequest {
   static std::variant<RenderRequest, ParameterError> parse(const Parameters& parameters,
                                                            const SizeChart* chart = nullptr);
 
+  // Every parameter the request takes (serve/openapi.json lists these; test_serve checks it).
+  static std::vector<std::string> parameterNames();
+
   // name=value&... in a fixed order, numbers rounded to what changes the picture (mm,
   // tenths of a degree): parse(canonical()) gives the same request.
   std::string canonical() const;
