@@ -15,13 +15,15 @@ targets=("$@")
 # lint.Formatting (scripts/check-format.sh). libhiredis-dev, redis-server: figment-serve's
 # shared cache and work queue, and the tests that start a Redis of their own; nginx: the
 # load balancer the deployment test puts before two instances (docs/deploy.md).
+# python3-venv: the contract test's Schemathesis, pinned by hash in a venv of the build
+# folder (tests/serve/contract/requirements.txt).
 packages=(cmake ninja-build g++ pkg-config
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   assimp-testmodels python3-matplotlib python3-pivy
   libcpp-httplib-dev chromium chromium-driver python3-selenium wrk
   libhiredis-dev redis-server nginx
-  clang-format)
+  clang-format python3-venv)
 
 missing=()
 for package in "${packages[@]}"; do
@@ -47,6 +49,17 @@ fi
 
 build=${FIGMENT_BUILD_DIR:-build}
 [ -f "$build/CMakeCache.txt" ] || cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+# Schemathesis for serve.Contract (the tests' tool: not for a build of named targets), at
+# the versions and hashes the requirements file pins; again only when that file changed.
+contract="$build/contract-venv"
+if ((${#targets[@]} == 0)) && { [ ! -f "$contract/installed" ] ||
+  [ tests/serve/contract/requirements.txt -nt "$contract/installed" ]; }; then
+  rm -rf "$contract"
+  /usr/bin/python3 -m venv "$contract"
+  "$contract/bin/pip" install --quiet --disable-pip-version-check --require-hashes --only-binary :all: \
+    -r tests/serve/contract/requirements.txt
+  touch "$contract/installed"
+fi
 # MakeHuman's CC0 body model (docs/bodies.md), where the build looks for it by default.
 python3 scripts/fetch-makehuman.py "$build/data/makehuman"
 cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
