@@ -78,6 +78,9 @@ class RenderJobs(ServerCase):
         self.assertEqual(status, 404)
         self.assertIn("error", body)
         self.assertEqual(self.server.json("/api/jobs/")[0], 404)
+        # An id quoted back cut to 64 bytes, never inside a character (22 euros: 66 bytes).
+        status, body = self.server.json("/api/jobs/" + "%E2%82%AC" * 22)
+        self.assertEqual((status, body["id"]), (404, "\u20ac" * 21))
 
 
 class Overload(unittest.TestCase):

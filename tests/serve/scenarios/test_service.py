@@ -140,7 +140,8 @@ class Endpoints(ServerCase):
                  ("skin=plaid", "skin"), ("pose=handstand", "pose"), ("light=laser", "light"),
                  ("outfit=cape:M", "outfit"), ("outfit=dress:M,tshirt:M,skirt:M,dress:S", "outfit"),
                  ("view=1,2,3", "view"), ("size=5000x5000", "size"), ("size=12", "size"), ("format=obj", "format"),
-                 ("scene=%2Fetc%2Fpasswd", "scene"), ("pose=rest&pose=relaxed", "pose")]
+                 ("scene=%2Fetc%2Fpasswd", "scene"), ("pose=rest&pose=relaxed", "pose"),
+                 ("skin=" + "%E2%82%AC" * 22, "skin")]  # quoted cut to 64 bytes: whole characters
         for query, parameter in cases:
             status, headers, body = self.server.request("/api/render?" + query)
             self.assertEqual(status, 400, query)
