@@ -23,9 +23,11 @@ service_packages=(libcpp-httplib-dev libhiredis-dev)
 # chromium-driver, python3-selenium: the page tested in a real browser
 # (tests/serve/scenarios/test_page.py); redis-server: the tests that start a Redis of their
 # own; nginx: the load balancer the deployment test puts before two instances
-# (docs/deploy.md); wrk: bench/serve-load.sh; clang-format: ctest's lint.Formatting.
+# (docs/deploy.md); wrk: bench/serve-load.sh; clang-format: ctest's lint.Formatting;
+# python3-venv: the contract test's Schemathesis, pinned by hash in a venv of the build
+# folder (tests/serve/contract/requirements.txt).
 test_packages=(libgtest-dev python3-matplotlib python3-pivy
-  chromium chromium-driver python3-selenium wrk redis-server nginx clang-format)
+  chromium chromium-driver python3-selenium wrk redis-server nginx clang-format python3-venv)
 
 # By need: named targets get the build's packages (and the service's for its programs);
 # everything (no target named) gets them all, and every test must be registered.
@@ -81,6 +83,17 @@ else
   if ((service_target)); then options+=(-DFIGMENT_BUILD_SERVICE=ON); fi
   if ((tests_target)); then options+=(-DFIGMENT_BUILD_TESTS=ON); fi
   if ((${#options[@]})); then cmake -S . -B "$build" -G Ninja "${options[@]}" >/dev/null; fi
+fi
+# Schemathesis for serve.Contract (the tests' tool: not for a build of named targets), at
+# the versions and hashes the requirements file pins; again only when that file changed.
+contract="$build/contract-venv"
+if ((${#targets[@]} == 0)) && { [ ! -f "$contract/installed" ] ||
+  [ tests/serve/contract/requirements.txt -nt "$contract/installed" ]; }; then
+  rm -rf "$contract"
+  /usr/bin/python3 -m venv "$contract"
+  "$contract/bin/pip" install --quiet --disable-pip-version-check --require-hashes --only-binary :all: \
+    -r tests/serve/contract/requirements.txt
+  touch "$contract/installed"
 fi
 # MakeHuman's CC0 body model (docs/bodies.md), where the build looks for it by default.
 python3 scripts/fetch-makehuman.py "$build/data/makehuman"

@@ -20,7 +20,7 @@ constexpr double kMinStature = 1.45, kMaxStature = 1.95;  // m: MakeHuman's adul
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
-  return {error, parameter, value.substr(0, 64), accepted};
+  return {error, parameter, utf8Prefix(value, 64), accepted};
 }
 
 // A plain decimal number, nothing before or after it; no inf or nan.
@@ -41,7 +41,7 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Re
   if (int(parameters.size()) > RequestLimits::kMaxParameters) return bad("", "", "too many parameters", "at most 16");
   for (const auto& [name, value] : parameters) {
     if (std::find(std::begin(kNames), std::end(kNames), name) == std::end(kNames))
-      return bad(name.substr(0, 64), value, "unknown parameter", known);
+      return bad(utf8Prefix(name, 64), value, "unknown parameter", known);
     if (value.size() > RequestLimits::kMaxValueLength) return bad(name, value, "value too long", "at most 200 bytes");
     if (!values.emplace(name, value).second) return bad(name, value, "given twice", "each parameter once");
   }
@@ -89,6 +89,10 @@ std::variant<FitRequest, ParameterError> FitRequest::parse(const RenderRequest::
   for (size_t i = 0; i < accepted.size(); ++i)
     if (auto error = measurement(accepted[i], values.at(accepted[i].name), *fields[i])) return *error;
   return request;
+}
+
+std::vector<std::string> FitRequest::parameterNames() {
+  return {std::begin(kNames), std::end(kNames)};
 }
 
 std::string FitRequest::canonical() const {

@@ -25,6 +25,9 @@ class FitRequest {
   // The accepted range of each measurement (stature, bust, waist, hips) for `sex`.
   static std::vector<MeasureRange> ranges(const SizeChart& chart, Sex sex);
 
+  // Every parameter the request takes (serve/openapi.json lists these; test_serve checks it).
+  static std::vector<std::string> parameterNames();
+
   // Every parameter is required: sex, style, stature, bust, waist, hips.
   static std::variant<FitRequest, ParameterError> parse(const RenderRequest::Parameters& parameters,
                                                         const SizeChart& chart);

@@ -111,6 +111,7 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
       RenderJobs::Options{poolOptions.workers, poolOptions.queue, 1024},
       [this](const std::string& canonical) { return pool_->render(canonical); },
       [this](const std::string& id, const RenderResult& result) {
+        if (!result.keepable()) return;  // a restless or torn drape: rendered again when asked
         images_.store('"' + id + '"', std::make_shared<const std::string>(result.body));
         if (sharedImages_) sharedImages_->store(id, result.body);
       });
@@ -195,10 +196,13 @@ bool notModified(const httplib::Request& request, httplib::Response& response, c
   return true;
 }
 
-void answer(httplib::Response& response, const std::string& tag, const std::string& bytes, const char* type, bool hit) {
+// `drape`: a render's X-Figment-Drape (rest, restless, torn); "" for a fit's answer.
+void answer(httplib::Response& response, const std::string& tag, const std::string& bytes, const char* type, bool hit,
+            const std::string& drape = "") {
   response.set_header("ETag", tag);
   response.set_header("Cache-Control", "public, max-age=86400");
   response.set_header("X-Figment-Cache", hit ? "hit" : "miss");
+  if (!drape.empty()) response.set_header("X-Figment-Drape", drape);
   response.set_content(bytes, type);
 }
 
@@ -221,6 +225,7 @@ bool HttpService::made(const std::string& canonical, const std::string& tag, con
     sendJson(response, result->status, nlohmann::json::parse(result->body, nullptr, false));
     return false;
   }
+  if (!result->keepable()) return true;  // a restless or torn drape is answered, never kept
   images_.store(tag, std::make_shared<const std::string>(result->body));
   if (sharedImages_) sharedImages_->store(tag.substr(1, tag.size() - 2), result->body);
   return true;
@@ -234,10 +239,11 @@ void HttpService::render(const httplib::Request& request, httplib::Response& res
   const char* type = std::get<RenderRequest>(parsed).format == "glb" ? "model/gltf-binary" : "image/png";
   const std::string tag = tagOf(canonical, build_);
   if (notModified(request, response, tag)) return;
-  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, type, true);
+  // Only drapes at rest are kept (RenderResult::keepable): a kept picture's drape is at rest.
+  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, type, true, "rest");
   std::shared_ptr<const RenderResult> result;
   if (made(canonical, tag, request, response, result))
-    answer(response, tag, result->body, type, result->drapeFromCache);
+    answer(response, tag, result->body, type, result->drapeFromCache, result->drape);
 }
 
 void HttpService::fit(const httplib::Request& request, httplib::Response& response) {
@@ -278,7 +284,7 @@ void HttpService::submitJob(const httplib::Request& request, httplib::Response& 
 
 void HttpService::jobStatus(const std::string& id, httplib::Response& response) const {
   const std::optional<RenderJobs::Status> job = jobs_->find(id);
-  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", id.substr(0, 64)}});
+  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", utf8Prefix(id, 64)}});
   nlohmann::json body = {{"status", job->state}, {"result", "/api/render?" + job->canonical}};
   if (!job->error.empty()) body["error"] = job->error;
   sendJson(response, 200, body);

@@ -91,7 +91,11 @@ void JobWorker::handle(JobQueue& queue, const SharedImages& images, const RedisS
   }
   const std::shared_ptr<const RenderResult> result = pool_->render(canonical);
   if (!result) return;  // stopping: left pending
-  if (result->status == 200) {
+  if (result->status == 200 && !result->keepable()) {
+    // Only drapes at rest are kept (an instance answers a kept image as one): this one is
+    // rendered again when asked, and says how its drape ended (X-Figment-Drape).
+    queue.fail(job, "the drape did not come to rest: " + result->drape);
+  } else if (result->status == 200) {
     // Acknowledged only once the image is kept: Redis away, the job stays pending.
     if (images.store(tag, result->body)) queue.complete(job, tag, true);
   } else if (result->status == 400 || result->status == 500) {

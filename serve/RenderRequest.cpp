@@ -20,7 +20,7 @@ const char* const kNames[] = {"stature", "bust",  "chest", "waist", "hips",   "s
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
-  return {error, parameter, value.substr(0, 64), accepted};
+  return {error, parameter, utf8Prefix(value, 64), accepted};
 }
 
 std::string formatted(const char* pattern, double a, double b = 0) {
@@ -74,10 +74,11 @@ std::optional<ParameterError> measurement(const std::string& name, const std::st
   return std::nullopt;
 }
 
+// A tone by its name as the catalogue writes it, or hex in any case, optionally after '#'.
 std::optional<ParameterError> skinTone(const std::string& value, std::string& out) {
-  const std::string text = lower(value.size() == 7 && value[0] == '#' ? value.substr(1) : value);
   for (const NamedColour& tone : Catalogue::skinTones())
-    if (tone.name == text) return out = tone.hex, std::nullopt;
+    if (tone.name == value) return out = tone.hex, std::nullopt;
+  const std::string text = lower(value.size() == 7 && value[0] == '#' ? value.substr(1) : value);
   if (isHex6(text)) return out = text, std::nullopt;
   return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(Catalogue::skinTones()));
 }
@@ -108,16 +109,17 @@ std::optional<ParameterError> outfitItem(const std::string& value, const std::st
                                          OutfitItem& out) {
   const std::string accepted = acceptedItems(names);
   const size_t a = item.find(':'), b = a == std::string::npos ? a : item.find(':', a + 1);
-  if (a == std::string::npos) return bad("outfit", value, "a garment without a size: " + item.substr(0, 32), accepted);
+  if (a == std::string::npos)
+    return bad("outfit", value, "a garment without a size: " + utf8Prefix(item, 32), accepted);
   out.style = item.substr(0, a);
   out.size = item.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
   if (names.chart ? !findStyle(out.style) : !Catalogue::style(out.style))
-    return bad("outfit", value, "no style named " + out.style.substr(0, 32), accepted);
+    return bad("outfit", value, "no style named " + utf8Prefix(out.style, 32), accepted);
   if (names.chart ? names.chart->find(names.sex, out.size) < 0 : !Catalogue::size(out.size))
-    return bad("outfit", value, "no size named " + out.size.substr(0, 32), accepted);
+    return bad("outfit", value, "no size named " + utf8Prefix(out.size, 32), accepted);
   if (names.chart) out.size = names.chart->sizes(names.sex)[size_t(names.chart->find(names.sex, out.size))].name;
   out.colour = b == std::string::npos ? defaultColour(out.style) : lower(item.substr(b + 1));
-  if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + out.colour.substr(0, 32), accepted);
+  if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + utf8Prefix(out.colour, 32), accepted);
   return std::nullopt;
 }
 
@@ -201,7 +203,7 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Re
   if (int(parameters.size()) > RequestLimits::kMaxParameters) return bad("", "", "too many parameters", "at most 16");
   for (const auto& [name, value] : parameters) {
     if (std::find(known.begin(), known.end(), name) == known.end())
-      return bad(name.substr(0, 64), value, "unknown parameter", namesOf(known));
+      return bad(utf8Prefix(name, 64), value, "unknown parameter", namesOf(known));
     if (value.size() > RequestLimits::kMaxValueLength) return bad(name, value, "value too long", "at most 200 bytes");
     if (!values.emplace(name, value).second) return bad(name, value, "given twice", "each parameter once");
   }
@@ -291,6 +293,13 @@ std::optional<ParameterError> posedOutfit(const RenderRequest& request) {
 
 }  // namespace
 
+std::string utf8Prefix(const std::string& text, size_t bytes) {
+  if (text.size() <= bytes) return text;
+  size_t end = bytes;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;  // text[end] continues a character
+  return text.substr(0, end);
+}
+
 std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameters& parameters, const SizeChart* chart) {
   auto values = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&values)) return *error;
@@ -311,6 +320,10 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
     request.fitMap.clear();  // the garments in their own colours
   }
   return request;
+}
+
+std::vector<std::string> RenderRequest::parameterNames() {
+  return {std::begin(kNames), std::end(kNames)};
 }
 
 std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,

@@ -31,6 +31,10 @@ struct ParameterError {
   std::string accepted;   // what is accepted
 };
 
+// At most `bytes` bytes of `text`, cut before a UTF-8 character that would not fit whole:
+// what a refusal quotes of a value stays the UTF-8 it was (the answer is JSON).
+std::string utf8Prefix(const std::string& text, size_t bytes);
+
 // Limits on what one request may ask (docs/service.md).
 struct RequestLimits {
   static constexpr int kMinSide = 64, kMaxSide = 1600;  // pixels
@@ -50,6 +54,9 @@ class RenderRequest {
   // garments of sim/garment/GarmentStyle.h's styles); without a chart `sex` is refused.
   static std::variant<RenderRequest, ParameterError> parse(const Parameters& parameters,
                                                            const SizeChart* chart = nullptr);
+
+  // Every parameter the request takes (serve/openapi.json lists these; test_serve checks it).
+  static std::vector<std::string> parameterNames();
 
   // name=value&... in a fixed order, numbers rounded to what changes the picture (mm,
   // tenths of a degree): parse(canonical()) gives the same request.

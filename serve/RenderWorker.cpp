@@ -8,6 +8,7 @@
 #include "io/DrapeCache.h"
 #include "io/PngFile.h"
 #include "io/SizeChartFile.h"
+#include "serve/DrapeState.h"
 #include "serve/FitRequest.h"
 #include "serve/FrameChannel.h"
 #include "serve/OutfitScene.h"
@@ -22,7 +23,7 @@ namespace {
 constexpr std::uintmax_t kCacheBytes = 1024u << 20;  // the drape cache's bound on disk
 
 RenderWorker::Answer failure(int status, const std::string& error) {
-  return {status, nlohmann::json{{"error", error}}.dump(), false};
+  return {status, nlohmann::json{{"error", error}}.dump(), false, ""};
 }
 
 // The request parameter of a fit goal's key (sim/body/BodyMeasurements.h), or "".
@@ -56,7 +57,7 @@ RenderWorker::Answer unreachableBody(const RenderRequest& request, const std::st
                                {"parameter", parameter},
                                {"value", value},
                                {"accepted", accepted}};
-  return {422, body.dump(), false};
+  return {422, body.dump(), false, ""};
 }
 
 }  // namespace
@@ -90,7 +91,8 @@ void RenderWorker::serve(const FrameChannel& channel) {
       answer = failure(500, e.what());
       sceneKey_.clear();  // the scene may be half made: build it again next time
     }
-    const nlohmann::json header = {{"status", answer.status}, {"drapeCache", answer.drapeFromCache ? "hit" : "miss"}};
+    const nlohmann::json header = {
+        {"status", answer.status}, {"drapeCache", answer.drapeFromCache ? "hit" : "miss"}, {"drape", answer.drape}};
     if (!channel.send(header.dump()) || !channel.send(answer.body)) return;
   }
 }
@@ -100,7 +102,7 @@ RenderWorker::Answer RenderWorker::advise(const std::string& canonical) {
   auto parsed = FitRequest::parseCanonical(canonical, fit_->chart());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
   FitWorker::Answer answer = fit_->advise(std::get<FitRequest>(parsed));
-  return {answer.status, std::move(answer.body), false};
+  return {answer.status, std::move(answer.body), false, ""};
 }
 
 RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
@@ -134,10 +136,14 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
     sceneFromCache_ = true;
     for (const session::EngineDrape& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.run.fromCache;
     sceneKey_ = request.sceneKey();
-    return drawView(request);
+    sceneDrape_ = drapeState(drapes);
+    Answer answer = drawView(request);
+    if (answer.status == 200) answer.drape = sceneDrape_;
+    return answer;
   }
   Answer answer = drawView(request);
   answer.drapeFromCache = true;  // the scene was kept from the last request: no drape
+  if (answer.status == 200) answer.drape = sceneDrape_;
   return answer;
 }
 
@@ -147,7 +153,7 @@ RenderWorker::Answer RenderWorker::drawView(const RenderRequest& request) {
     std::string error;
     const std::vector<unsigned char> glb = session::exportGlb(session_.scene(), {true}, error);
     if (!error.empty()) return failure(500, error);
-    return {200, std::string(glb.begin(), glb.end()), sceneFromCache_};
+    return {200, std::string(glb.begin(), glb.end()), sceneFromCache_, ""};
   }
   const session::ImageSize size{request.width, request.height};
   if (!session_.stage(size, session::ViewDirection{request.azimuth, request.elevation}))
@@ -155,7 +161,7 @@ RenderWorker::Answer RenderWorker::drawView(const RenderRequest& request) {
   if (!renderer_ || renderer_->size().width != size.width || renderer_->size().height != size.height)
     renderer_ = std::make_unique<session::SceneRenderer>(size, request.supersample());
   if (std::string error = renderer_->render(session_.stagedRoot()); !error.empty()) return failure(500, error);
-  Answer answer{200, "", sceneFromCache_};
+  Answer answer{200, "", sceneFromCache_, ""};
   if (std::string error = encodePng({size.width, size.height, renderer_->pixels()}, answer.body); !error.empty())
     return failure(500, error);
   return answer;

@@ -38,6 +38,7 @@ class RenderWorker {
     int status = 500;
     std::string body;  // PNG, or JSON {"error": ...}
     bool drapeFromCache = false;
+    std::string drape;  // a render's: drapeState() of its scene (serve/DrapeState.h); "" else
   };
   Answer render(const std::string& canonical);
 
@@ -51,6 +52,7 @@ class RenderWorker {
   session::SceneSession session_;
   std::string sceneKey_;  // the request whose scene the session holds; "" for none
   bool sceneFromCache_ = false;
+  std::string sceneDrape_;  // drapeState() of the held scene
   std::unique_ptr<session::SceneRenderer> renderer_;
   std::unique_ptr<FitWorker> fit_;                   // null when the size chart did not read
   std::vector<OutfitScene::FitMapGarment> fitMaps_;  // the held scene's garments drawn as fit maps

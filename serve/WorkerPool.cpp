@@ -14,7 +14,7 @@ struct WorkerPool::Job {
 namespace {
 
 RenderResult failure(int status, const std::string& error) {
-  return {status, nlohmann::json{{"error", error}}.dump(), false};
+  return {status, nlohmann::json{{"error", error}}.dump(), false, ""};
 }
 
 }  // namespace
@@ -122,7 +122,8 @@ RenderResult WorkerPool::renderOn(WorkerProcess& worker, const std::string& cano
   }
   const nlohmann::json parsed = nlohmann::json::parse(header, nullptr, false);
   if (!parsed.is_object()) return failure(500, "the worker's answer did not read");
-  return {parsed.value("status", 500), std::move(body), parsed.value("drapeCache", "") == "hit"};
+  return {parsed.value("status", 500), std::move(body), parsed.value("drapeCache", "") == "hit",
+          parsed.value("drape", "")};
 }
 
 }  // namespace figment::serve

@@ -24,6 +24,11 @@ struct RenderResult {
   int status = 500;             // HTTP status: 200, 400 (a request the worker refused), 500, 502, 504
   std::string body;             // the PNG, or a JSON error
   bool drapeFromCache = false;  // every drape of the scene came from the drape cache (or was kept)
+  std::string drape;            // a render's: rest, restless or torn (RenderWorker::drapeState); "" else
+  // Whether the answer may be kept for another request (the image caches, Redis): a fit's,
+  // or a render whose drape came to rest; a restless or torn one is answered, not kept, so
+  // every kept picture is of a drape at rest.
+  bool keepable() const { return drape.empty() || drape == "rest"; }
 };
 
 struct PoolOptions {

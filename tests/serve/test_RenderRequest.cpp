@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "serve/RenderRequest.h"
 
 using namespace figment;
@@ -34,7 +36,7 @@ TEST(RenderRequest, NoParametersIsTheDefaultBodyInTheDress) {
 TEST(RenderRequest, CanonicalTextReadsBackToItself) {
   const RenderRequest request = ok({{"stature", "1.7204"},
                                     {"chest", "0.95"},
-                                    {"skin", "Tan"},
+                                    {"skin", "tan"},
                                     {"outfit", "tshirt:L:2E7D32,skirt:S"},
                                     {"view", "-30,10.04"},
                                     {"size", "320x240"},
@@ -232,4 +234,21 @@ TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
     ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed)) << kind;
     EXPECT_EQ(std::get<RenderRequest>(parsed).fitMap, kind);
   }
+}
+
+TEST(RenderRequest, ARefusalQuotesWholeCharacters) {
+  // The answer is JSON: a value cut inside a character would not be UTF-8, its dump would
+  // throw and the client get 500. "€" is 3 bytes: 22 of them cut at 64 bytes fall mid-character.
+  std::string euros;
+  for (int i = 0; i < 22; ++i) euros += "\xe2\x82\xac";
+  for (const auto& [name, value] :
+       RenderRequest::Parameters{{"skin", euros}, {"outfit", "dress:" + euros}, {euros, "1"}}) {
+    const ParameterError error = refused({{name, value}});
+    EXPECT_EQ(error.value.size() % 3, name == euros ? 1u : 0u) << name;  // whole euros ("1" for the name's)
+    EXPECT_LE(error.value.size(), 64u);
+    const nlohmann::json answer = {{"error", error.error}, {"parameter", error.parameter}, {"value", error.value}};
+    EXPECT_NO_THROW(answer.dump()) << name;
+  }
+  EXPECT_EQ(utf8Prefix(euros, 64), euros.substr(0, 63));
+  EXPECT_EQ(utf8Prefix("abc", 64), "abc");
 }
