@@ -80,8 +80,10 @@ int nodesInside(const MeshCollider& body, const std::vector<Vec3>& nodes) {
 // dress slide 60 cm down the body (issue 45); these follow from the garment and the body.
 // The dress and the T-shirt hang from the shoulders: their straps and yoke lie over them,
 // above the level midway from the armpits to the neck where the shoulders are taped
-// (landmarks.shoulder), while a dress slipped off them hangs by its bodice, cut 3 cm under
-// the armpits, some 12 cm below that level.
+// (landmarks.shoulder), while a dress slipped off them hangs by its bodice, whose top edge
+// (3 cm under the armpits, its neckline rising 8 cm between the straps) is cut under that
+// level and slides on down: without straps, 10 to 23 cm under it on these bodies
+// (tests/mutants/dress-without-straps.patch).
 // The skirt hangs by its waistband, a closed ring cut round the waist, and slides down until
 // the body is too wide for it. A ring round the body lies outside the body's section at every
 // level it spans; below the waist those sections widen (each holds the one above), so the
