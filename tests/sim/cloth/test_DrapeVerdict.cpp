@@ -40,6 +40,13 @@ TEST(DrapeVerdict, TornIsAnEdgePastTheBoundNotAtIt) {
   DrapeVerdict v = cleanVerdict();
   v.maxStretch = DrapeVerdict::kTearStretch;
   EXPECT_TRUE(v.clean());
+  // Just past it (a millionth of the bound, far below any edge's measured stretch): torn, so
+  // a bound moved by anything that matters fails here, not only one moved past 2.
+  v.maxStretch = 1.5 * (1 + 1e-6);
+  EXPECT_TRUE(v.tore());
+  EXPECT_FALSE(v.clean());
+  v.maxStretch = 1.5 * (1 - 1e-6);
+  EXPECT_TRUE(v.clean());
   v.maxStretch = 2.0221;
   EXPECT_TRUE(v.tore());
   EXPECT_EQ(v.describe(), "torn: an edge at 2.02 times its rest length (bound 1.5)");
