@@ -100,25 +100,35 @@ const char* errorText(int status) {
   }
 }
 
+// A path of the route table as the refusals need it.
+struct KnownPath {
+  std::regex pattern;
+  std::set<std::string> methods;  // GET, POST
+  std::string allow;              // as the Allow header says it
+};
+
 void refuseMethod(httplib::Response& response, const std::string& allow) {
   response.set_header("Allow", allow);
   sendJson(response, 405, {{"error", errorText(405)}, {"allowed", allow}});
 }
 
 // Why where a request's body ends is unclear, with the status that says so (400, or 411 for
-// a body without a length), or status 0. cpp-httplib reads a body only for POST, PUT, PATCH
-// and DELETE, by the first Content-Length as strtoull reads it ("1e3" is 1), or chunked
-// with no bound at all (payload_max_length is not applied: 4 MB went into memory); anything
-// it does not read stays on the connection and is read as the next request. Behind a proxy
-// that keeps its connections to us open (deploy/nginx.conf) that next "request" is smuggled
-// past the proxy, and its answer goes to whoever's request the proxy sends next.
+// a body without a length), or status 0. cpp-httplib 0.11.4 reads a body only for POST, PUT,
+// PATCH and DELETE: by the first Content-Length as strtoull reads it ("1e3" is 1); chunked,
+// or with no Content-Length until the client closes, both with no bound at all
+// (payload_max_length is not applied: 4 MB went into memory either way). What it does not
+// read stays on the connection and is read as the next request: behind a proxy that keeps
+// its connections to us open (deploy/nginx.conf) that next "request" is smuggled past the
+// proxy, and its answer goes to whoever's request the proxy sends next.
 std::pair<int, const char*> framingError(const httplib::Request& request) {
   const bool readsBody =
       request.method == "POST" || request.method == "PUT" || request.method == "PATCH" || request.method == "DELETE";
   if (request.has_header("Transfer-Encoding"))
-    return readsBody ? std::pair(411, "a body without a Content-Length (chunked bodies are not taken)")
+    return readsBody ? std::pair(411, "a chunked body: a body is read to its stated length only")
                      : std::pair(400, "a body on a request that takes none");
   const size_t lengths = request.get_header_value_count("Content-Length");
+  if (lengths == 0 && readsBody && request.method != "DELETE")  // httplib takes a DELETE without one as empty
+    return {411, "no Content-Length: a body is read to its stated length only"};
   for (size_t i = 0; i < lengths; ++i) {
     const std::string length = request.get_header_value("Content-Length", i);
     if (length.empty() || length.size() > 18 || length.find_first_not_of("0123456789") != std::string::npos ||
@@ -231,7 +241,7 @@ void HttpService::addRoutes() {
 void HttpService::addRefusals() {
   std::map<std::string, std::set<std::string>> taken;  // each path's methods, from the table
   for (const Route& route : routes()) taken[route.path].insert(route.method);
-  std::vector<std::pair<std::regex, std::string>> allowed;  // each path's pattern and Allow
+  std::vector<KnownPath> known;
   for (const auto& [path, methods] : taken) {
     std::string allow = methods.count("GET") ? "GET, HEAD" : "";  // httplib answers HEAD as GET
     if (methods.count("POST")) allow += allow.empty() ? "POST" : ", POST";
@@ -247,23 +257,25 @@ void HttpService::addRefusals() {
     server_->Patch(pattern, refuse);
     server_->Delete(pattern, refuse);
     server_->Options(pattern, refuse);
-    allowed.emplace_back(std::regex(pattern), allow);
+    known.push_back({std::regex(pattern), methods, allow});
   }
-  // Before routing (and before cpp-httplib reads any body): a request whose body's end is
-  // unclear, then TRACE and CONNECT, which cpp-httplib has no handlers for (it answered them
-  // 400), judged by the same table.
-  server_->set_pre_routing_handler([allowed](const httplib::Request& request, httplib::Response& response) {
-    if (const auto [status, error] = framingError(request); status != 0) {
-      refuseAndClose(response, status, error);
-    } else if (request.method != "TRACE" && request.method != "CONNECT") {
+  // Before routing, and before cpp-httplib reads any body: a request whose body's end is
+  // unclear is answered at once and its connection closed (405 still where its method is
+  // refused); TRACE and CONNECT, which cpp-httplib has no handlers for (it answered them 400),
+  // are judged by the same table.
+  server_->set_pre_routing_handler([known](const httplib::Request& request, httplib::Response& response) {
+    const auto [status, error] = framingError(request);
+    if (status == 0 && request.method != "TRACE" && request.method != "CONNECT")
       return httplib::Server::HandlerResponse::Unhandled;
-    } else if (const auto known = std::find_if(allowed.begin(), allowed.end(),
-                                               [&](const auto& p) { return std::regex_match(request.path, p.first); });
-               known != allowed.end()) {
-      refuseMethod(response, known->second);
-    } else {
+    const auto path = std::find_if(known.begin(), known.end(),
+                                   [&](const KnownPath& p) { return std::regex_match(request.path, p.pattern); });
+    if (status != 0) response.set_header("Connection", "close");
+    if (path != known.end() && !path->methods.count(request.method == "HEAD" ? "GET" : request.method))
+      refuseMethod(response, path->allow);
+    else if (status != 0)
+      sendJson(response, status, {{"error", error}});
+    else
       sendJson(response, 404, {{"error", errorText(404)}});
-    }
     return httplib::Server::HandlerResponse::Handled;
   });
 }
