@@ -255,3 +255,25 @@ TEST_F(HttpServiceExchange, EveryRouteIsServedAndARenderWithoutWorkersIs503) {
     EXPECT_TRUE(json(answer).contains("error"));
   }
 }
+
+TEST_F(HttpServiceExchange, TheDocumentListsTheStatusEachOperationAnswersHere) {
+  const nlohmann::json document = nlohmann::json::parse(findWebAsset("/openapi.json")->content);
+  struct Case {
+    std::string path, method, request;
+  };
+  const Case cases[] = {
+      {"/api/render", "get", get("/api/render?stature=%ff")},
+      {"/api/render", "get", get("/api/render?size=160x200")},  // 503: no workers
+      {"/api/render", "post", post("/api/render", "skin=%fe")},
+      {"/api/render", "post", post("/api/render", "size=160x200")},
+      {"/api/render", "post", "POST /api/render HTTP/1.1\r\nTransfer-Encoding: chunked\r\n\r\n"},  // 411
+      {"/api/fit", "get", get("/api/fit?%c0%80")},
+      {"/api/fit", "get", get("/api/fit?sex=female&style=pencil&stature=1.68&bust=0.88&waist=0.72&hips=0.96")},
+      {"/api/jobs/{id}", "get", get("/api/jobs/%ff")},
+  };
+  for (const Case& c : cases) {
+    const int status = ask(c.request).status;
+    EXPECT_TRUE(document["paths"][c.path][c.method]["responses"].contains(std::to_string(status)))
+        << c.method << " " << c.path << ": " << status;
+  }
+}
