@@ -114,6 +114,10 @@ TEST_F(HttpServiceExchange, AQueryThatIsNotUtf8IsRefusedNamingTheParameter) {
     const nlohmann::json body = json(answer);
     EXPECT_EQ(body.value("parameter", ""), c.parameter) << c.request;
     EXPECT_EQ(body.value("value", ""), c.value) << c.request;
+    // Refused as text that is not UTF-8, not for what the bytes fail to be after (a number, a
+    // garment).
+    EXPECT_EQ(body.value("error", ""), c.parameter[0] == '%' ? "a parameter name that is not UTF-8" : "not UTF-8")
+        << c.request;
     EXPECT_FALSE(body.value("accepted", "").empty()) << c.request;
   }
 }
