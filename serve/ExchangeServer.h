@@ -4,6 +4,8 @@
 // answers a socket (httplib::Server::process_request: the request line and header limits,
 // the routing, the error handlers, the response writer). So a test or a fuzz target drives
 // the whole exchange in process, with no socket and no thread, and sees what a client sees.
+// Included only inside figment_serve, which compiles with cpp-httplib's pkg-config flags (its
+// classes' layout depends on them); HttpService::exchange is the way in from outside.
 
 #include <httplib.h>
 
