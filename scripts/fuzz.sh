@@ -46,6 +46,9 @@ max_len=16384
 [ "$target" = fuzz_pattern ] && max_len=8192
 # An exchange's seeds are a few requests; 16 KB also passes the service's 8 KB limits on a URL,
 # a header line and a body (414, 400, 413).
+# A target's dictionary of tokens, where it has one (tests/fuzz/TARGET.dict).
+dict=()
+[ -f "tests/fuzz/$target.dict" ] && dict=(-dict="$root/tests/fuzz/$target.dict")
 echo "fuzz.sh: running $target for $minutes min (log: $build/$target.log)" >&2
 set +e
 start=$SECONDS
@@ -53,7 +56,7 @@ start=$SECONDS
 # shader compiling); the GL calls our nodes make are the same.
 GALLIUM_DRIVER=softpipe OMP_NUM_THREADS=1 nice -n 19 "$build/bin/$target" "$corpus" "$root/tests/fuzz/corpus/$target" \
   -max_total_time=$((minutes * 60)) -max_len=$max_len -timeout=10 -rss_limit_mb=4096 \
-  -artifact_prefix="$findings/" -print_final_stats=1 -close_fd_mask=3 >"$log" 2>&1
+  -artifact_prefix="$findings/" -print_final_stats=1 -close_fd_mask=3 "${dict[@]}" >"$log" 2>&1
 status=$?
 set -e
 executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
