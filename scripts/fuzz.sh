@@ -6,6 +6,7 @@
 #   scripts/fuzz.sh fuzz_mesh 10
 #   scripts/fuzz.sh fuzz_render_request 1   (figment-serve's query parser)
 #   scripts/fuzz.sh fuzz_pattern 10         (the sewing-pattern reader)
+#   scripts/fuzz.sh fuzz_http_exchange 20   (figment-serve's whole HTTP exchange, no workers)
 # New interesting inputs go to build-fuzz/corpus/TARGET (kept between runs); a crash, leak,
 # timeout or out-of-memory input to build-fuzz/findings/TARGET/. Rerun one input with
 #   build-fuzz/bin/TARGET FILE
@@ -13,9 +14,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
-[ $# -eq 2 ] || { echo "usage: scripts/fuzz.sh fuzz_scene|fuzz_mesh|fuzz_render_request|fuzz_pattern MINUTES" >&2; exit 2; }
+[ $# -eq 2 ] || { echo "usage: scripts/fuzz.sh fuzz_scene|fuzz_mesh|fuzz_render_request|fuzz_pattern|fuzz_http_exchange MINUTES" >&2; exit 2; }
 target=$1 minutes=$2
-case "$target" in fuzz_scene | fuzz_mesh | fuzz_render_request | fuzz_pattern) ;; *) echo "fuzz.sh: no fuzz target '$target'" >&2; exit 2 ;; esac
+case "$target" in fuzz_scene | fuzz_mesh | fuzz_render_request | fuzz_pattern | fuzz_http_exchange) ;; *) echo "fuzz.sh: no fuzz target '$target'" >&2; exit 2 ;; esac
 [[ "$minutes" =~ ^[0-9]+$ ]] && ((minutes > 0)) || { echo "fuzz.sh: MINUTES must be a whole number > 0" >&2; exit 2; }
 
 source scripts/need-packages.sh
@@ -43,6 +44,11 @@ max_len=16384
 [ "$target" = fuzz_render_request ] && max_len=1024
 # Pattern seeds are small literal patterns and one shipped skirt (6 KB).
 [ "$target" = fuzz_pattern ] && max_len=8192
+# An exchange's seeds are a few requests; 16 KB also passes the service's 8 KB limits on a URL,
+# a header line and a body (414, 400, 413).
+# A target's dictionary of tokens, where it has one (tests/fuzz/TARGET.dict).
+dict=()
+[ -f "tests/fuzz/$target.dict" ] && dict=(-dict="$root/tests/fuzz/$target.dict")
 echo "fuzz.sh: running $target for $minutes min (log: $build/$target.log)" >&2
 set +e
 start=$SECONDS
@@ -50,7 +56,7 @@ start=$SECONDS
 # shader compiling); the GL calls our nodes make are the same.
 GALLIUM_DRIVER=softpipe OMP_NUM_THREADS=1 nice -n 19 "$build/bin/$target" "$corpus" "$root/tests/fuzz/corpus/$target" \
   -max_total_time=$((minutes * 60)) -max_len=$max_len -timeout=10 -rss_limit_mb=4096 \
-  -artifact_prefix="$findings/" -print_final_stats=1 -close_fd_mask=3 >"$log" 2>&1
+  -artifact_prefix="$findings/" -print_final_stats=1 -close_fd_mask=3 "${dict[@]}" >"$log" 2>&1
 status=$?
 set -e
 executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

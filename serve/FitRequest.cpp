@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "serve/MeasuredPoses.h"
+#include "serve/Utf8Text.h"
 #include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
@@ -20,7 +21,7 @@ constexpr double kMinStature = 1.45, kMaxStature = 1.95;  // m: MakeHuman's adul
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
-  return {error, parameter, utf8Prefix(value, 64), accepted};
+  return {error, parameter, Utf8Text::shown(value, 64), accepted};
 }
 
 // A plain decimal number, nothing before or after it; no inf or nan.
@@ -40,8 +41,9 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Re
   const std::string known = "sex, style, stature, bust, waist, hips";
   if (int(parameters.size()) > RequestLimits::kMaxParameters) return bad("", "", "too many parameters", "at most 16");
   for (const auto& [name, value] : parameters) {
+    if (auto error = RenderRequest::textError(name, value)) return *error;
     if (std::find(std::begin(kNames), std::end(kNames), name) == std::end(kNames))
-      return bad(utf8Prefix(name, 64), value, "unknown parameter", known);
+      return bad(Utf8Text::shown(name, 64), value, "unknown parameter", known);
     if (value.size() > RequestLimits::kMaxValueLength) return bad(name, value, "value too long", "at most 200 bytes");
     if (!values.emplace(name, value).second) return bad(name, value, "given twice", "each parameter once");
   }

@@ -5,14 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
 
 #include "io/SizeChartFile.h"
 #include "serve/Catalogue.h"
 #include "serve/Digest.h"
+#include "serve/ExchangeServer.h"
 #include "serve/FitRequest.h"
 #include "serve/RedisStore.h"
 #include "serve/RenderRequest.h"
+#include "serve/Utf8Text.h"
 #include "serve/WebAssets.h"
 
 namespace figment::serve {
@@ -22,10 +27,17 @@ namespace {
 constexpr const char* kJson = "application/json";
 constexpr int kHttpThreads = 64;  // connections served at once; renders wait in the pool's bounded queue
 
+// JSON text that is UTF-8 whatever the value holds. What an answer echoes of a request goes
+// through Utf8Text::shown first; should anything else hold bytes that are not UTF-8, they
+// become U+FFFD here rather than an exception (nlohmann's default), which was a 500.
+std::string jsonText(const nlohmann::json& body) {
+  return body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 void sendJson(httplib::Response& response, int status, const nlohmann::json& body) {
   response.status = status;
   response.set_header("Cache-Control", "no-store");
-  response.set_content(body.dump(), kJson);
+  response.set_content(jsonText(body), kJson);
 }
 
 // Whether If-None-Match names `tag` (weak comparison, as RFC 9110 says for it).
@@ -43,9 +55,18 @@ bool matches(const std::string& ifNoneMatch, const std::string& tag) {
   return false;
 }
 
-std::string regexFor(std::string_view path) {
+// The regular expression cpp-httplib matches a route's path with: the path's text as it is
+// (its '.' escaped), and a "{name}" of the document one path segment.
+std::string patternOf(std::string_view path) {
   std::string pattern;
-  for (char c : path) pattern += (c == '.' ? std::string("\\.") : std::string(1, c));
+  for (size_t i = 0; i < path.size(); ++i) {
+    if (path[i] == '{' && path.find('}', i) != std::string_view::npos) {
+      pattern += "([^/]+)";
+      i = path.find('}', i);
+    } else {
+      pattern += (path[i] == '.' ? std::string("\\.") : std::string(1, path[i]));
+    }
+  }
   return pattern;
 }
 
@@ -64,6 +85,8 @@ const char* errorText(int status) {
       return "no such path";
     case 405:
       return "method not allowed";
+    case 411:
+      return "length required";
     case 413:
       return "request too large";
     case 414:
@@ -77,6 +100,54 @@ const char* errorText(int status) {
   }
 }
 
+// A path of the route table as the refusals need it.
+struct KnownPath {
+  std::regex pattern;
+  std::set<std::string> methods;  // GET, POST
+  std::string allow;              // as the Allow header says it
+};
+
+void refuseMethod(httplib::Response& response, const std::string& allow) {
+  response.set_header("Allow", allow);
+  sendJson(response, 405, {{"error", errorText(405)}, {"allowed", allow}});
+}
+
+// Why where a request's body ends is unclear, with the status that says so (400, or 411 for
+// a body without a length), or status 0. cpp-httplib 0.11.4 reads a body only for POST, PUT,
+// PATCH and DELETE: by the first Content-Length as strtoull reads it ("1e3" is 1); chunked,
+// or with no Content-Length until the client closes, both with no bound at all
+// (payload_max_length is not applied: 4 MB went into memory either way). What it does not
+// read stays on the connection and is read as the next request: behind a proxy that keeps
+// its connections to us open (deploy/nginx.conf) that next "request" is smuggled past the
+// proxy, and its answer goes to whoever's request the proxy sends next.
+std::pair<int, const char*> framingError(const httplib::Request& request) {
+  const bool readsBody =
+      request.method == "POST" || request.method == "PUT" || request.method == "PATCH" || request.method == "DELETE";
+  if (request.has_header("Transfer-Encoding"))
+    return readsBody ? std::pair(411, "a chunked body: a body is read to its stated length only")
+                     : std::pair(400, "a body on a request that takes none");
+  const size_t lengths = request.get_header_value_count("Content-Length");
+  if (lengths == 0 && readsBody && request.method != "DELETE")  // httplib takes a DELETE without one as empty
+    return {411, "no Content-Length: a body is read to its stated length only"};
+  for (size_t i = 0; i < lengths; ++i) {
+    const std::string length = request.get_header_value("Content-Length", i);
+    if (length.empty() || length.size() > 18 || length.find_first_not_of("0123456789") != std::string::npos ||
+        length != request.get_header_value("Content-Length"))
+      return {400, "a Content-Length that is not one whole number"};
+    if (!readsBody && length.find_first_not_of('0') != std::string::npos)
+      return {400, "a body on a request that takes none"};
+  }
+  return {0, nullptr};
+}
+
+// The refusal of a request whose end on its connection is unknown: with "Connection: close",
+// for the client and for a proxy (which then takes the connection out of its pool) must not
+// send another request on it. cpp-httplib itself reads on; what it answers there no one reads.
+void refuseAndClose(httplib::Response& response, int status, const char* error) {
+  response.set_header("Connection", "close");
+  sendJson(response, status, {{"error", error}});
+}
+
 }  // namespace
 
 HttpService::HttpService(const ServeOptions& options, const std::string& program)
@@ -84,7 +155,7 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
       build_(Digest::buildDigest()),
       images_(options.imageCacheBytes),
       rateLimit_(options.renderRate, options.renderBurst),
-      server_(std::make_unique<httplib::Server>()) {
+      server_(std::make_unique<ExchangeServer>()) {
   if (!options_.redisUrl.empty()) {
     RedisConnection::Options redis;
     redis.commandTimeout = 0.5;  // s: a request waits no longer on Redis than that, then goes on without it
@@ -120,47 +191,113 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
 
 HttpService::~HttpService() = default;
 
-const std::vector<std::string>& HttpService::routes() {
-  static const std::vector<std::string> paths = {"/",           "/app.js",       "/style.css",
-                                                 "/healthz",    "/openapi.json", "/api/catalogue",
-                                                 "/api/render", "/api/fit",      "/api/jobs/{id}"};
-  return paths;
+const std::vector<HttpService::Route>& HttpService::routes() {
+  static const std::vector<Route> table = [] {
+    std::vector<Route> all;
+    for (const WebAsset& asset : webAssets()) all.push_back({std::string(asset.path), "GET", &HttpService::asset});
+    const std::vector<Route> api = {
+        {"/healthz", "GET", &HttpService::health},    {"/api/catalogue", "GET", &HttpService::catalogue},
+        {"/api/render", "GET", &HttpService::render}, {"/api/render", "POST", &HttpService::submitJob},
+        {"/api/fit", "GET", &HttpService::fit},       {"/api/jobs/{id}", "GET", &HttpService::job}};
+    all.insert(all.end(), api.begin(), api.end());
+    return all;
+  }();
+  return table;
 }
 
 void HttpService::addRoutes() {
-  for (const WebAsset& asset : webAssets())
-    server_->Get(regexFor(asset.path), [&asset](const httplib::Request&, httplib::Response& response) {
-      response.set_header("Cache-Control", "no-cache");
-      const std::string type(asset.type);
-      response.set_content(std::string(asset.content), type.rfind("text/", 0) == 0 ? type + "; charset=utf-8" : type);
-    });
-  server_->Get("/healthz", [this](const httplib::Request&, httplib::Response& response) { health(response); });
-  server_->Get("/api/catalogue", [this](const httplib::Request&, httplib::Response& response) {
-    nlohmann::json catalogue = Catalogue::toJson();
-    catalogue["limits"] = limitsJson();
-    if (chart_) catalogue["fit"] = FitRequest::catalogueJson(*chart_);
-    response.set_header("Cache-Control", "public, max-age=300");
-    response.set_content(catalogue.dump(), kJson);
-  });
-  server_->Get("/api/render",
-               [this](const httplib::Request& request, httplib::Response& response) { render(request, response); });
-  server_->Post("/api/render",
-                [this](const httplib::Request& request, httplib::Response& response) { submitJob(request, response); });
-  server_->Get("/api/jobs/([^/]+)", [this](const httplib::Request& request, httplib::Response& response) {
-    jobStatus(request.matches[1], response);
-  });
-  server_->Get("/api/fit",
-               [this](const httplib::Request& request, httplib::Response& response) { fit(request, response); });
+  for (const Route& route : routes()) {
+    const auto handler = [this, handle = route.handle](const httplib::Request& request, httplib::Response& response) {
+      (this->*handle)(request, response);
+    };
+    if (route.method == "GET")
+      server_->Get(patternOf(route.path), handler);
+    else
+      server_->Post(patternOf(route.path), handler);
+  }
+  addRefusals();
   // Every refusal as JSON, httplib's own (404, 414, ...) included; a handler's JSON stays.
+  // httplib's 400 (a head or body it could not read), 413 (a body past the limit, left
+  // unread) and 414 (a request line past the limit) leave the connection at an unknown point
+  // of the request: it closes, as the framing refusals do.
   server_->set_error_handler([](const httplib::Request&, httplib::Response& response) {
-    if (response.body.empty()) sendJson(response, response.status, {{"error", errorText(response.status)}});
+    if (!response.body.empty()) return;
+    if (response.status == 400 || response.status == 413 || response.status == 414)
+      return refuseAndClose(response, response.status, errorText(response.status));
+    sendJson(response, response.status, {{"error", errorText(response.status)}});
+  });
+  // One Connection field, and no Keep-Alive beside "close": cpp-httplib adds its own from the
+  // request alone.
+  server_->set_post_routing_handler([](const httplib::Request&, httplib::Response& response) {
+    if (response.get_header_value("Connection") != "close") return;
+    response.headers.erase("Connection");
+    response.headers.erase("Keep-Alive");
+    response.set_header("Connection", "close");
   });
   server_->set_exception_handler([](const httplib::Request&, httplib::Response& response, std::exception_ptr) {
     sendJson(response, 500, {{"error", "server error"}});
   });
 }
 
-void HttpService::health(httplib::Response& response) const {
+void HttpService::addRefusals() {
+  std::map<std::string, std::set<std::string>> taken;  // each path's methods, from the table
+  for (const Route& route : routes()) taken[route.path].insert(route.method);
+  std::vector<KnownPath> known;
+  for (const auto& [path, methods] : taken) {
+    std::string allow = methods.count("GET") ? "GET, HEAD" : "";  // httplib answers HEAD as GET
+    if (methods.count("POST")) allow += allow.empty() ? "POST" : ", POST";
+    const auto refuse = [allow](const httplib::Request&, httplib::Response& response) {
+      refuseMethod(response, allow);
+    };
+    // As handlers, so cpp-httplib reads a refused request's body first (within the payload
+    // limit) and the connection goes on at the next request, not inside this one's body.
+    const std::string pattern = patternOf(path);
+    if (!methods.count("GET")) server_->Get(pattern, refuse);
+    if (!methods.count("POST")) server_->Post(pattern, refuse);
+    server_->Put(pattern, refuse);
+    server_->Patch(pattern, refuse);
+    server_->Delete(pattern, refuse);
+    server_->Options(pattern, refuse);
+    known.push_back({std::regex(pattern), methods, allow});
+  }
+  // Before routing, and before cpp-httplib reads any body: a request whose body's end is
+  // unclear is answered at once and its connection closed (405 still where its method is
+  // refused); TRACE and CONNECT, which cpp-httplib has no handlers for (it answered them 400),
+  // are judged by the same table.
+  server_->set_pre_routing_handler([known](const httplib::Request& request, httplib::Response& response) {
+    const auto [status, error] = framingError(request);
+    if (status == 0 && request.method != "TRACE" && request.method != "CONNECT")
+      return httplib::Server::HandlerResponse::Unhandled;
+    const auto path = std::find_if(known.begin(), known.end(),
+                                   [&](const KnownPath& p) { return std::regex_match(request.path, p.pattern); });
+    if (status != 0) response.set_header("Connection", "close");
+    if (path != known.end() && !path->methods.count(request.method == "HEAD" ? "GET" : request.method))
+      refuseMethod(response, path->allow);
+    else if (status != 0)
+      sendJson(response, status, {{"error", error}});
+    else
+      sendJson(response, 404, {{"error", errorText(404)}});
+    return httplib::Server::HandlerResponse::Handled;
+  });
+}
+
+void HttpService::asset(const httplib::Request& request, httplib::Response& response) {
+  const WebAsset* asset = findWebAsset(request.path);
+  if (!asset) return sendJson(response, 404, {{"error", errorText(404)}});  // routes() holds only assets' paths
+  response.set_header("Cache-Control", "no-cache");
+  const std::string type(asset->type);
+  response.set_content(std::string(asset->content), type.rfind("text/", 0) == 0 ? type + "; charset=utf-8" : type);
+}
+
+void HttpService::catalogue(const httplib::Request&, httplib::Response& response) {
+  nlohmann::json catalogue = Catalogue::toJson();
+  catalogue["limits"] = limitsJson();
+  if (chart_) catalogue["fit"] = FitRequest::catalogueJson(*chart_);
+  response.set_header("Cache-Control", "public, max-age=300");
+  response.set_content(jsonText(catalogue), kJson);
+}
+
+void HttpService::health(const httplib::Request&, httplib::Response& response) {
   const WorkerPool::Load load = pool_->load();
   sendJson(response, 200,
            {{"status", "ok"},
@@ -222,7 +359,8 @@ bool HttpService::made(const std::string& canonical, const std::string& tag, con
     return false;
   }
   if (result->status != 200) {
-    sendJson(response, result->status, nlohmann::json::parse(result->body, nullptr, false));
+    const nlohmann::json error = nlohmann::json::parse(result->body, nullptr, false);
+    sendJson(response, result->status, error.is_object() ? error : nlohmann::json{{"error", "the render failed"}});
     return false;
   }
   if (!result->keepable()) return true;  // a restless or torn drape is answered, never kept
@@ -282,9 +420,14 @@ void HttpService::submitJob(const httplib::Request& request, httplib::Response& 
   response.status = 202;
 }
 
+void HttpService::job(const httplib::Request& request, httplib::Response& response) {
+  jobStatus(request.matches[1], response);
+}
+
 void HttpService::jobStatus(const std::string& id, httplib::Response& response) const {
   const std::optional<RenderJobs::Status> job = jobs_->find(id);
-  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", utf8Prefix(id, 64)}});
+  // The id is the path's segment percent-decoded: any bytes; shown as text.
+  if (!job) return sendJson(response, 404, {{"error", "no such job"}, {"id", Utf8Text::shown(id, 64)}});
   nlohmann::json body = {{"status", job->state}, {"result", "/api/render?" + job->canonical}};
   if (!job->error.empty()) body["error"] = job->error;
   sendJson(response, 200, body);
@@ -296,6 +439,10 @@ std::shared_ptr<const std::string> HttpService::keptImage(const std::string& tag
   std::shared_ptr<const std::string> image = sharedImages_->find(tag.substr(1, tag.size() - 2));  // unquoted
   if (image) images_.store(tag, image);
   return image;
+}
+
+std::vector<std::string> HttpService::exchange(std::string_view bytes, const std::string& remoteAddress) {
+  return server_->exchange(bytes, remoteAddress);
 }
 
 int HttpService::bind(std::string& error) {

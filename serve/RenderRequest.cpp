@@ -9,6 +9,7 @@
 
 #include "serve/FitRequest.h"
 #include "serve/MeasuredPoses.h"
+#include "serve/Utf8Text.h"
 #include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
@@ -20,7 +21,7 @@ const char* const kNames[] = {"stature", "bust",  "chest", "waist", "hips",   "s
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
-  return {error, parameter, utf8Prefix(value, 64), accepted};
+  return {error, parameter, Utf8Text::shown(value, 64), accepted};
 }
 
 std::string formatted(const char* pattern, double a, double b = 0) {
@@ -110,16 +111,16 @@ std::optional<ParameterError> outfitItem(const std::string& value, const std::st
   const std::string accepted = acceptedItems(names);
   const size_t a = item.find(':'), b = a == std::string::npos ? a : item.find(':', a + 1);
   if (a == std::string::npos)
-    return bad("outfit", value, "a garment without a size: " + utf8Prefix(item, 32), accepted);
+    return bad("outfit", value, "a garment without a size: " + Utf8Text::shown(item, 32), accepted);
   out.style = item.substr(0, a);
   out.size = item.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
   if (names.chart ? !findStyle(out.style) : !Catalogue::style(out.style))
-    return bad("outfit", value, "no style named " + utf8Prefix(out.style, 32), accepted);
+    return bad("outfit", value, "no style named " + Utf8Text::shown(out.style, 32), accepted);
   if (names.chart ? names.chart->find(names.sex, out.size) < 0 : !Catalogue::size(out.size))
-    return bad("outfit", value, "no size named " + utf8Prefix(out.size, 32), accepted);
+    return bad("outfit", value, "no size named " + Utf8Text::shown(out.size, 32), accepted);
   if (names.chart) out.size = names.chart->sizes(names.sex)[size_t(names.chart->find(names.sex, out.size))].name;
   out.colour = b == std::string::npos ? defaultColour(out.style) : lower(item.substr(b + 1));
-  if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + utf8Prefix(out.colour, 32), accepted);
+  if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + Utf8Text::shown(out.colour, 32), accepted);
   return std::nullopt;
 }
 
@@ -202,8 +203,9 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Re
   const std::vector<std::string> known(std::begin(kNames), std::end(kNames));
   if (int(parameters.size()) > RequestLimits::kMaxParameters) return bad("", "", "too many parameters", "at most 16");
   for (const auto& [name, value] : parameters) {
+    if (auto error = RenderRequest::textError(name, value)) return *error;
     if (std::find(known.begin(), known.end(), name) == known.end())
-      return bad(utf8Prefix(name, 64), value, "unknown parameter", namesOf(known));
+      return bad(Utf8Text::shown(name, 64), value, "unknown parameter", namesOf(known));
     if (value.size() > RequestLimits::kMaxValueLength) return bad(name, value, "value too long", "at most 200 bytes");
     if (!values.emplace(name, value).second) return bad(name, value, "given twice", "each parameter once");
   }
@@ -324,6 +326,14 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameter
 
 std::vector<std::string> RenderRequest::parameterNames() {
   return {std::begin(kNames), std::end(kNames)};
+}
+
+std::optional<ParameterError> RenderRequest::textError(const std::string& name, const std::string& value) {
+  const std::string accepted = "UTF-8 text (its bytes percent-encoded in the URL)";
+  if (!Utf8Text::valid(name))
+    return bad(Utf8Text::shown(name, 64), value, "a parameter name that is not UTF-8", accepted);
+  if (!Utf8Text::valid(value)) return bad(name, value, "not UTF-8", accepted);
+  return std::nullopt;
 }
 
 std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,

@@ -72,6 +72,11 @@ class RenderRequest {
   // Parses canonical text back (the worker's side of the pipe).
   static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text,
                                                                     const SizeChart* chart = nullptr);
+  // The refusal of a parameter whose name or value is not UTF-8 (a query is percent-decoded
+  // into bytes, any bytes): the answer is JSON, UTF-8 text, so it names the parameter and
+  // shows the value percent-encoded (serve/Utf8Text.h); nullopt when both are text. Both
+  // parsers (this and FitRequest) ask it first.
+  static std::optional<ParameterError> textError(const std::string& name, const std::string& value);
 
   // The picture's anti-aliasing (session/SceneRenderer.h's k x k samples a pixel):
   // figment-view's 3, fewer where the drawn image would pass four times the largest

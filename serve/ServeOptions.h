@@ -8,7 +8,7 @@ namespace figment::serve {
 struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8080;                     // 0: any free port (the one taken is printed)
-  int workers = 1;                     // worker processes
+  int workers = 1;                     // worker processes; 0: none, every render refused (503)
   int queue = 0;                       // requests waiting at most; 0: four per worker
   double timeLimit = 60;               // s per render
   std::string cacheFolder;             // drapes kept on disk; "" for none

@@ -26,7 +26,7 @@ PoolOptions workerPoolOptions(const ServeOptions& options, const std::string& pr
   if (!options.redisUrl.empty())
     pool.arguments.insert(pool.arguments.end(),
                           {"--redis", options.redisUrl, "--redis-ttl", std::to_string(options.redisTtl)});
-  pool.workers = std::max(1, options.workers);
+  pool.workers = std::max(0, options.workers);  // 0: none (the command line asks for 1 or more)
   pool.queue = options.queue > 0 ? options.queue : 4 * pool.workers;
   pool.timeLimit = options.timeLimit;
   return pool;
@@ -51,7 +51,8 @@ std::shared_ptr<const RenderResult> WorkerPool::render(const std::string& canoni
   if (auto it = inFlight_.find(canonical); it != inFlight_.end()) {
     job = it->second;  // single flight: the same picture is being made
   } else {
-    if (int(queue_.size()) >= options_.queue || stopping_) return nullptr;
+    // A pool without workers takes nothing: no one would ever answer it.
+    if (options_.workers == 0 || int(queue_.size()) >= options_.queue || stopping_) return nullptr;
     job = std::make_shared<Job>();
     job->canonical = canonical;
     queue_.push_back(job);

@@ -36,7 +36,7 @@ struct ClothEngine::Impl {
   RunStats stats;
   int evaluations = 0;
   std::shared_ptr<const figment::DrapeContext> givenContext;  // null: drape as with `none`
-  const figment::DrapeContext none;                           // no cache, no observers
+  const figment::DrapeContext none{};                         // no cache, no observers
 
   const figment::DrapeContext& drapeContext() const { return givenContext ? *givenContext : none; }
 
