@@ -61,9 +61,20 @@ class HostileClient(ServerCase):
     def query_routes(self):
         """(path, method, first query parameter's name) of every operation that takes a query."""
         routes = []
-        for path, item in self.document()["paths"].items():
+        document = self.document()
+
+        def resolved(parameter):  # a shared parameter is a "$ref" into components
+            if "$ref" not in parameter:
+                return parameter
+            node = document
+            for key in parameter["$ref"].lstrip("#/").split("/"):
+                node = node[key]
+            return node
+
+        for path, item in document["paths"].items():
             for method, operation in item.items():
-                names = [p["name"] for p in operation.get("parameters", []) if p.get("in") == "query"]
+                parameters = [resolved(p) for p in operation.get("parameters", [])]
+                names = [p["name"] for p in parameters if p.get("in") == "query"]
                 if method.upper() in METHODS and names:
                     routes.append((path, method.upper(), names[0]))
         return routes
