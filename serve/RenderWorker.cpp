@@ -134,7 +134,7 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
     }
     OutfitScene::paintFitMaps(fitMaps_);
     sceneFromCache_ = true;
-    for (const session::EngineDrape& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.run.fromCache;
+    for (const session::EngineDrape& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.report.fromCache;
     sceneKey_ = request.sceneKey();
     sceneDrape_ = drapeState(drapes);
     Answer answer = drawView(request);

@@ -192,7 +192,7 @@ SizeDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCol
   const GarmentDrape drape = drapeGarment(request);
   SizeDrape out;
   out.positions = drape.positions;
-  out.run = drape.run;
+  out.run = drape.report.run;
   if (drape.sewing) {
     out.run.iterations += drape.sewing->run.iterations;
     out.run.wallSeconds += drape.sewing->run.wallSeconds;

@@ -35,6 +35,7 @@
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
 #include "viewer/OffscreenContext.h"
+#include "sim/drape/DrapeReport.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -236,11 +237,11 @@ TEST_F(DefaultScene, DressComesToRestWithoutError) {
   const ClothEngine* engine = engines_.front();
   EXPECT_EQ(engine->lastError(), "");
   EXPECT_EQ(engine->evaluationCount(), 1);
-  const ClothEngine::RunStats& run = engine->lastRun();
-  EXPECT_TRUE(run.atRest) << "simulated " << run.simulatedSeconds << " s";
+  const figment::DrapeReport& run = engine->lastRun();
+  EXPECT_TRUE(run.run.atRest) << "simulated " << run.run.simulatedTime << " s";
   EXPECT_GT(run.triangles, 1300);
   EXPECT_LT(run.triangles, 1700);
-  EXPECT_LT(run.simulatedSeconds, engine->maxTime.getValue());
+  EXPECT_LT(run.run.simulatedTime, engine->maxTime.getValue());
 }
 
 TEST_F(DefaultScene, NoGarmentVertexInsideTheBody) {
@@ -416,7 +417,7 @@ double drapeDefaultDress(const std::function<void(ClothEngine&)>& adjust) {
   adjust(*engine);
   engine->positions[0]->evaluate();
   EXPECT_EQ(engine->lastError(), "");
-  EXPECT_TRUE(engine->lastRun().atRest);
+  EXPECT_TRUE(engine->lastRun().run.atRest);
   const double worst = worstEdgeStrain(*engine);
   scene->unref();
   return worst;

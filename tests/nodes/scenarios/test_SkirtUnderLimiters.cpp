@@ -12,6 +12,7 @@
 #include <set>
 
 #include "support/ShippedGarmentScene.h"
+#include "sim/drape/DrapeReport.h"
 
 using namespace figment::test;
 
@@ -53,7 +54,7 @@ TEST(SkirtUnderLimiters, TheClampAtTenOrThirtyGNoLongerTearsTheSkirt) {
     positions.connectFrom(&engine.positions);
     positions.evaluate();
     ASSERT_EQ(engine.lastError(), "");
-    EXPECT_GT(engine.lastRun().limitedNodeShare, 0.0) << "the clamp must be at work";
+    EXPECT_GT(engine.lastRun().run.limitedNodeShare, 0.0) << "the clamp must be at work";
     EXPECT_LT(maxEdgeStrain(engine, positions), 0.10);
   }
 }

@@ -16,6 +16,7 @@
 #include "sim/collision/Collider.h"
 #include "support/IoTestSupport.h"
 #include "support/ShippedGarmentScene.h"
+#include "sim/drape/DrapeReport.h"
 
 using namespace figment::test;
 
@@ -36,7 +37,7 @@ std::vector<SbVec3f> drape(ClothEngine& engine) {
   return {positions.getValues(0), positions.getValues(0) + positions.getNum()};
 }
 
-class ToleranceChoice : public ::testing::Test {
+class ToleranceEngine : public ::testing::Test {
  protected:
   TempDir dir_;
   ScopedEnvironment table_{"FIGMENT_TRADEOFF_TABLE", dir_.file("table.csv", kTable)};
@@ -44,7 +45,7 @@ class ToleranceChoice : public ::testing::Test {
 
 }  // namespace
 
-TEST_F(ToleranceChoice, DrapesByTheFastestMeasuredWithinItAndSaysWhich) {
+TEST_F(ToleranceEngine, DrapesByTheFastestMeasuredWithinItAndSaysWhich) {
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
   engine.tolerance = 1.0;
@@ -53,24 +54,24 @@ TEST_F(ToleranceChoice, DrapesByTheFastestMeasuredWithinItAndSaysWhich) {
   EXPECT_EQ(engine.lastRun().picked, "implicit:0.05, volumes, progressive 0:3000");
   EXPECT_DOUBLE_EQ(engine.lastRun().pickedDeviation, 0.7);
   EXPECT_GT(engine.lastRun().levels, 0);  // draped progressively, from a mesh made for it
-  EXPECT_TRUE(engine.lastRun().atRest);
+  EXPECT_TRUE(engine.lastRun().run.atRest);
 
   engine.tolerance = 0.65;
   engine.timeStep = 0.1;  // the pick's step replaces the field's
   drape(engine);
   ASSERT_EQ(engine.lastError(), "");
-  const ClothEngine::RunStats& run = engine.lastRun();
+  const figment::DrapeReport& run = engine.lastRun();
   EXPECT_EQ(run.picked, "implicit:0.05, triangles, progressive off");
   EXPECT_EQ(run.levels, 0);
   // The method that ran is the pick's, not the fields' (what --stats reports).
   EXPECT_EQ(run.pickedBody, "triangles");
-  EXPECT_EQ(run.integrator, "IMPLICIT");
-  EXPECT_DOUBLE_EQ(run.timeStep, 0.05);
-  EXPECT_NEAR(run.simulatedSeconds, run.iterations * 0.05, 1e-9);
+  EXPECT_EQ(figment::fieldName(run.method.integrator), "IMPLICIT");
+  EXPECT_DOUBLE_EQ(run.method.timeStep, 0.05);
+  EXPECT_NEAR(run.run.simulatedTime, run.run.iterations * 0.05, 1e-9);
   EXPECT_EQ(run.passedOver, "");  // nothing faster within 0.65 % was refused
 }
 
-TEST_F(ToleranceChoice, AToleranceNothingMeetsOrANegativeOneIsOneLineNamingIt) {
+TEST_F(ToleranceEngine, AToleranceNothingMeetsOrANegativeOneIsOneLineNamingIt) {
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
   engine.tolerance = 0.01;
@@ -83,23 +84,23 @@ TEST_F(ToleranceChoice, AToleranceNothingMeetsOrANegativeOneIsOneLineNamingIt) {
   EXPECT_NE(engine.lastError().find("-1"), std::string::npos) << engine.lastError();
 }
 
-TEST_F(ToleranceChoice, WithoutAToleranceNothingIsPicked) {
+TEST_F(ToleranceEngine, WithoutAToleranceNothingIsPicked) {
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
   drape(engine);
   ASSERT_EQ(engine.lastError(), "");
-  const ClothEngine::RunStats& run = engine.lastRun();
+  const figment::DrapeReport& run = engine.lastRun();
   EXPECT_EQ(run.picked, "");
   // The scene's own method ran: its implicit steps of 1/20 s (a pick would step 0.02 s
   // or 1.5e-4 s) on the garment's own sections (a pick may decimate them).
-  EXPECT_GT(run.iterations, 0);
-  EXPECT_EQ(run.implicitSteps, run.iterations);
-  EXPECT_NEAR(run.simulatedSeconds, run.iterations * engine.timeStep.getValue(), 1e-9);
+  EXPECT_GT(run.run.iterations, 0);
+  EXPECT_EQ(run.run.implicitCosts.steps, run.run.iterations);
+  EXPECT_NEAR(run.run.simulatedTime, run.run.iterations * engine.timeStep.getValue(), 1e-9);
   EXPECT_DOUBLE_EQ(engine.timeStep.getValue(), 0.05);
   EXPECT_EQ(run.triangles, engine.coordIndex.getNum() / 4);
 }
 
-TEST(ToleranceChoiceMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles) {
+TEST(ToleranceEngineMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles) {
   TempDir dir;
   const ScopedEnvironment table{"FIGMENT_TRADEOFF_TABLE",
                                 dir.file("table.csv",
@@ -123,7 +124,7 @@ TEST(ToleranceChoiceMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles
   const std::vector<SbVec3f> posed = drape(engine);
   ASSERT_EQ(engine.lastError(), "");
   EXPECT_EQ(engine.lastRun().picked, "implicit:0.05, mix, progressive off");
-  EXPECT_TRUE(engine.lastRun().atRest);
+  EXPECT_TRUE(engine.lastRun().run.atRest);
   // The faster triangles were passed over, and the run says why.
   EXPECT_EQ(
       engine.lastRun().passedOver,
@@ -137,7 +138,7 @@ TEST(ToleranceChoiceMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles
   EXPECT_EQ(inside, 0);
 }
 
-TEST(ToleranceChoiceCommittedTable, TheDressPickedAtHalfAPercentLandsWithinItOfAConvergedDrape) {
+TEST(ToleranceEngineCommittedTable, TheDressPickedAtHalfAPercentLandsWithinItOfAConvergedDrape) {
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
   engine.tolerance = 0.5;
@@ -155,7 +156,7 @@ TEST(ToleranceChoiceCommittedTable, TheDressPickedAtHalfAPercentLandsWithinItOfA
   engine.timeStep = 1e-4;
   const std::vector<SbVec3f> reference = drape(engine);
   ASSERT_EQ(engine.lastError(), "");
-  ASSERT_TRUE(engine.lastRun().atRest);
+  ASSERT_TRUE(engine.lastRun().run.atRest);
   float low = 1e9f, high = -1e9f;
   for (int i = 0; i < engine.restPoints.getNum(); ++i)
     low = std::min(low, engine.restPoints[i][1]), high = std::max(high, engine.restPoints[i][1]);
