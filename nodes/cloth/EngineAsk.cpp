@@ -39,11 +39,12 @@ std::string poseOrSize(const Mannequin& m) {
 void offerMannequinsBodies(const Mannequin& mannequin, DrapeBody& body) {
   body.jointed = true;
   body.poseOrSize = poseOrSize(mannequin);
-  body.withExactParts = [&mannequin](const std::vector<int>& parts) { return mannequin.colliderWithExactParts(parts); };
+  const Mannequin* m = &mannequin;
+  body.withExactParts = [m](const std::vector<int>& parts) { return m->colliderWithExactParts(parts); };
   if (!mannequin.body.getValue()) return;
   body.trianglesDescription = describe(mannequin.body.getValue());
-  body.triangles = [&mannequin] {
-    const CollisionBody* exact = asCollisionBody(mannequin.body.getValue());
+  body.triangles = [m] {
+    const CollisionBody* exact = asCollisionBody(m->body.getValue());
     if (!exact) throw std::runtime_error("tolerance: the Mannequin's body is no mesh to collide with");
     return exact->bodyCollider();
   };

@@ -57,10 +57,10 @@ std::optional<double> readNumber(const std::string& text) {
   return used == text.size() ? std::optional<double>(value) : std::nullopt;
 }
 
-// The shortest text that reads back as `value`.
+// The shortest text that reads back as `value`, as %g would write it ("0.00015", "1e-05").
 std::string shortest(double value) {
   char text[32];
-  const auto [end, error] = std::to_chars(text, text + sizeof text, value);
+  const auto [end, error] = std::to_chars(text, text + sizeof text, value, std::chars_format::general);
   return error == std::errc() ? std::string(text, end) : std::to_string(value);
 }
 

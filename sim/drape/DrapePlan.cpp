@@ -16,8 +16,8 @@ namespace {
 // its progressive mesh (made now, at the study's share of the sections) and schedule.
 void planForTolerance(const DrapeAsk& ask, DrapePlan& plan) {
   if (!ask.table) throw std::invalid_argument("tolerance: no tradeoff table to choose from");
-  const MethodChoice choice = chooseMethod(*ask.table, ask.tolerance, ask.body, ask.garment.vertices);
-  DrapeRequest& request = plan.request;
+  DrapeRequest& request = plan.request;  // holds the garment now
+  const MethodChoice choice = chooseMethod(*ask.table, ask.tolerance, ask.body, request.garment.vertices);
   DrapeMethod::parse(choice.picked.method).applyTo(request.parameters);
   request.parameters.validate();
   request.body = choice.body;

@@ -5,8 +5,11 @@
 
 #include <stdexcept>
 
+#include "sim/collision/CollisionVolume.h"
 #include "sim/collision/MeshCollider.h"
+#include "sim/collision/VolumeSetCollider.h"
 #include "sim/drape/DrapePlan.h"
+#include "support/TestCapsules.h"
 #include "support/TestMeshes.h"
 
 using namespace figment;
@@ -90,4 +93,29 @@ TEST(DrapePlan, WhatCannotBePlannedNamesTheParameter) {
   sewn.tolerance = 0.5;
   sewn.sewing = DrapeSewing{};
   EXPECT_EQ(invalidArgument(sewn), "tolerance: a sewn garment drapes by the engine's own fields (tolerance 0)");
+}
+
+TEST(DrapePlan, MixAsksForThePartsTheGarmentStartsNear) {
+  // Two parts: 7 under the sheet, 9 a metre away; the mix asks part 7 alone by its triangles.
+  DrapeAsk ask = sheetOnBall();
+  const auto capsule = [](const Vec3& a, const Vec3& b) { return makeVolume(test::segmentCapsule(a, b, 0.05)); };
+  ask.body.collider = std::make_shared<VolumeSetCollider>(std::vector<PosedCollisionVolume>{
+      {7, capsule(Vec3(-0.2, 0.12, 0.0), Vec3(0.2, 0.12, 0.0)), Eigen::Affine3d::Identity()},
+      {9, capsule(Vec3(-0.2, 0.1, 1.0), Vec3(0.2, 0.1, 1.0)), Eigen::Affine3d::Identity()}});
+  ask.body.jointed = true;
+  ask.body.description = {"mannequin", {{"radial_volumes", 2}}};
+  ask.body.triangles = [] { return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 16, 8)); };
+  std::vector<int> asked{-1};
+  const auto mixed = std::make_shared<MeshCollider>(meshes::sphere(kRadius, 12, 6));
+  ask.body.withExactParts = [&](const std::vector<int>& parts) {
+    asked = parts;
+    return mixed;
+  };
+  const MethodTable table{"t.csv", {{"implicit:0.05", "mix", "off", 1.0, 3, 0.4, 1.0}}};
+  ask.tolerance = 0.5;
+  ask.table = &table;
+  const DrapePlan plan = planDrape(ask);
+  EXPECT_EQ(asked, std::vector<int>{7});
+  EXPECT_EQ(plan.request.body, mixed);
+  EXPECT_EQ(plan.request.garment.vertices, ask.garment.vertices);  // the garment as asked
 }

@@ -19,7 +19,7 @@ MethodTable table() {
            {"implicit:0.05", "volumes", "off", 1.0, 3, 0.4, 2.0},
            {"implicit:0.05", "capsules", "off", 1.0, 3, 0.4, 0.5},
            {"implicit:0.01", "mix", "off", 1.0, 3, 0.2, 3.0},
-           {"implicit:0.1", "volumes", "off", 2.0, 3, 0.1, 0.1}}};
+           {"implicit:0.1", "volumes", "off", 2.0, 3, 0.5, 0.1}}};
 }
 
 // A jointed body of radial volumes whose own triangles are a ball; `made` counts the
