@@ -25,13 +25,16 @@ void report(const std::string& method, bool broadPhase, int run, const session::
   const double perSecond = stats.run.iterations / stats.wallSeconds;
   const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
   csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ','
-      << stats.run.iterations << ',' << stats.run.simulatedTime << ',' << stats.wallSeconds << ',' << (stats.run.atRest ? 1 : 0)
-      << ',' << perSecond << ',' << (stats.verdict.empty() ? 1 : 0) << ',' << stats.run.maxStretch << ','
-      << stats.run.implicitCosts.halvedSteps << ',' << stats.run.implicitCosts.failedSteps << '\n';
+      << stats.run.iterations << ',' << stats.run.simulatedTime << ',' << stats.wallSeconds << ','
+      << (stats.run.atRest ? 1 : 0) << ',' << perSecond << ',' << (stats.verdict.empty() ? 1 : 0) << ','
+      << stats.run.maxStretch << ',' << stats.run.implicitCosts.halvedSteps << ','
+      << stats.run.implicitCosts.failedSteps << '\n';
   std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " "
             << stats.triangles << " triangles, " << stats.run.iterations << " iterations, " << stats.run.simulatedTime
             << " s simulated in " << stats.wallSeconds << " s" << (stats.run.atRest ? ", at rest" : ", not at rest")
-            << (stats.run.implicitCosts.halvedSteps > 0 ? ", " + std::to_string(stats.run.implicitCosts.halvedSteps) + " steps halved" : "")
+            << (stats.run.implicitCosts.halvedSteps > 0
+                    ? ", " + std::to_string(stats.run.implicitCosts.halvedSteps) + " steps halved"
+                    : "")
             << (stats.verdict.empty() ? ", clean" : "; not clean: " + stats.verdict) << "\n";
 }
 

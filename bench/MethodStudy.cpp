@@ -74,17 +74,19 @@ void report(const std::string& scene, const Method& m, const RepeatedDrape& o, c
                 m.drape.limiter == AccelerationLimiter::None ? 0.0 : m.drape.limit.value_or(0.0), m.text.c_str(),
                 m.drape.timeStep, o.report.run.iterations, o.report.run.simulatedTime, o.report.run.atRest ? 1 : 0,
                 o.medianWall, s.meanDeviation, 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
-                s.topHeight, c.run.implicitCosts.solverIterations / steps, 1000 * c.run.implicitCosts.assemblySeconds / steps,
-                1000 * c.run.implicitCosts.solveSeconds / steps, 1000 * c.run.implicitCosts.contactSeconds / steps);
+                s.topHeight, c.run.implicitCosts.solverIterations / steps,
+                1000 * c.run.implicitCosts.assemblySeconds / steps, 1000 * c.run.implicitCosts.solveSeconds / steps,
+                1000 * c.run.implicitCosts.contactSeconds / steps);
   csv << line;
   csv.flush();
   std::printf("%-24s %6d steps %6.3f s sim %7.3f s wall %-6s dev %6.3f %% strain %5.3f inside %3d top %.3f m",
-              m.text.c_str(), o.report.run.iterations, o.report.run.simulatedTime, o.medianWall, o.report.run.atRest ? "rest" : "moving",
-              100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside, s.topHeight);
+              m.text.c_str(), o.report.run.iterations, o.report.run.simulatedTime, o.medianWall,
+              o.report.run.atRest ? "rest" : "moving", 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
+              s.topHeight);
   if (c.run.implicitCosts.steps > 0)
     std::printf("  | step: %.0f PCG its, %.2f ms forces+matrix, %.2f ms solve, %.2f ms contacts",
-                c.run.implicitCosts.solverIterations / steps, 1000 * c.run.implicitCosts.assemblySeconds / steps, 1000 * c.run.implicitCosts.solveSeconds / steps,
-                1000 * c.run.implicitCosts.contactSeconds / steps);
+                c.run.implicitCosts.solverIterations / steps, 1000 * c.run.implicitCosts.assemblySeconds / steps,
+                1000 * c.run.implicitCosts.solveSeconds / steps, 1000 * c.run.implicitCosts.contactSeconds / steps);
   std::printf("\n");
 }
 
@@ -97,15 +99,15 @@ std::string studyScene(const std::string& scene, const MethodStudyOptions& optio
   if (!reference.error.empty()) return scene + ": the reference " + options.reference + ": " + reference.error;
   const double garmentHeight = garment.height();
   std::printf("%s: reference %s, %d steps, %.3f s simulated, %s\n", scene.c_str(), options.reference.c_str(),
-              reference.report.run.iterations, reference.report.run.simulatedTime, reference.report.run.atRest ? "at rest" : "moving");
+              reference.report.run.iterations, reference.report.run.simulatedTime,
+              reference.report.run.atRest ? "at rest" : "moving");
   for (const std::string& text : options.methods) {
     const Method m = parseMethod(text);
     const RepeatedDrape o = drape(garment, m, options.repeat);
     if (!o.error.empty()) {
       std::printf("%-26s failed: %s\n", text.c_str(), o.error.c_str());
-      csv << scene << ',' << fieldName(m.drape.integrator) << ',' << fieldName(m.drape.limiter) << ",,\"" << text << "\","
-          << m.drape.timeStep
-          << ",,,,,,,,,,,,,\n";
+      csv << scene << ',' << fieldName(m.drape.integrator) << ',' << fieldName(m.drape.limiter) << ",,\"" << text
+          << "\"," << m.drape.timeStep << ",,,,,,,,,,,,,\n";
       continue;
     }
     report(scene, m, o, measure(garment, o.positions, reference.positions), garmentHeight, csv);

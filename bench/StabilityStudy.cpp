@@ -108,8 +108,8 @@ std::pair<bool, Deviation> runOne(SceneGarment& garment, const StabilityStudyOpt
   char line[512];
   std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g,%.4g,%.4g\n",
                 integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), dt, stable ? 1 : 0,
-                report.run.atRest ? 1 : 0, report.wallSeconds, d.mean, d.max, reference.height, strain, report.run.iterations,
-                report.run.simulatedTime, c.strainClamp ? options.strainLimit : 0.0,
+                report.run.atRest ? 1 : 0, report.wallSeconds, d.mean, d.max, reference.height, strain,
+                report.run.iterations, report.run.simulatedTime, c.strainClamp ? options.strainLimit : 0.0,
                 c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit, report.run.clampedSectionShare,
                 report.run.limitedNodeShare);
   csv << line;

@@ -20,9 +20,9 @@
 #include "nodes/body/CollisionBody.h"
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
-#include "sim/drape/MethodChoice.h"
 #include "sim/body/Skeleton.h"
 #include "sim/collision/Collider.h"
+#include "sim/drape/MethodChoice.h"
 #include "sim/progressive/Resampling.h"
 #include "sim/progressive/RestCorrespondence.h"
 
@@ -167,8 +167,8 @@ std::optional<Reference> drapeReference(SceneGarment& garment, const Bodies& bod
     std::tie(halfMean, halfMax) = deviation(toVec3(half.positions), reference.positions, reference.height);
     std::printf("  at half its step it moves %.3f %% mean, %.3f %% max of the garment's height\n", halfMean, halfMax);
   }
-  csv << options.reference << ',' << run.report.run.iterations << ',' << run.report.run.simulatedTime << ',' << run.report.run.atRest
-      << ',' << reference.height << ',' << halfMean << ',' << halfMax << '\n';
+  csv << options.reference << ',' << run.report.run.iterations << ',' << run.report.run.simulatedTime << ','
+      << run.report.run.atRest << ',' << reference.height << ',' << halfMean << ',' << halfMax << '\n';
   return reference;
 }
 

@@ -61,9 +61,9 @@ bool run(Io& io, Report& r) {
 // false when a read ran out of bytes or read a value its field cannot hold.
 template <class Io, class Report>
 bool eachField(Io& io, Report& r) {
-  return method(io, r) && io.text(r.picked) && io.template number<double>(r.pickedDeviation) &&
-         io.text(r.pickedBody) && io.text(r.passedOver) && body(io, r) && io.template number<std::int32_t>(r.triangles) &&
-         run(io, r) && io.template number<std::int32_t>(r.level) && io.template number<std::int32_t>(r.levels) &&
+  return method(io, r) && io.text(r.picked) && io.template number<double>(r.pickedDeviation) && io.text(r.pickedBody) &&
+         io.text(r.passedOver) && body(io, r) && io.template number<std::int32_t>(r.triangles) && run(io, r) &&
+         io.template number<std::int32_t>(r.level) && io.template number<std::int32_t>(r.levels) &&
          io.template number<std::int32_t>(r.sections) && io.template number<double>(r.settling.arrival) &&
          io.template number<double>(r.settling.meanMove) && io.template number<double>(r.settling.maxMove) &&
          io.flag(r.fromCache) && io.template number<double>(r.wallSeconds) && io.text(r.garmentWarning) &&

@@ -95,7 +95,8 @@ void SceneSession::checkShapes() {
 std::vector<std::string> SceneSession::verdicts() const {
   std::vector<std::string> lines;
   for (const EngineDrape& drape : drapes_)
-    if (drape.error.empty() && !drape.report.verdict.empty()) lines.push_back(drape.label + ": " + drape.report.verdict);
+    if (drape.error.empty() && !drape.report.verdict.empty())
+      lines.push_back(drape.label + ": " + drape.report.verdict);
   return lines;
 }
 

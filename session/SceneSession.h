@@ -13,8 +13,8 @@
 #include "nodes/body/CollisionBody.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/DrapeContext.h"
-#include "sim/drape/DrapeReport.h"
 #include "session/SessionOptions.h"
+#include "sim/drape/DrapeReport.h"
 
 class SoSeparator;
 

@@ -80,8 +80,9 @@ std::string statsJson(const figment::GarmentDrape& drape, const figment::DrapeVe
                 "  \"triangles\": %zu,\n  \"clean\": %s\n}\n",
                 verdict.run.atRest ? "true" : "false", sewing.seamGap, inside, verdict.run.maxStretch,
                 sewing.run.iterations + verdict.run.iterations, sewing.run.wallSeconds + verdict.run.wallSeconds,
-                sewing.run.iterations, sewing.run.wallSeconds, verdict.run.iterations, sewing.closedGap, sewing.openPairs,
-                cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes, cut.placed.triangles.size(),
+                sewing.run.iterations, sewing.run.wallSeconds, verdict.run.iterations, sewing.closedGap,
+                sewing.openPairs, cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes,
+                cut.placed.triangles.size(),
                 verdict.clean() && inside == 0 && sewing.openPairs == 0 ? "true" : "false");
   return text;
 }

@@ -73,11 +73,16 @@ std::string writeStatsJson(const std::string& path, const std::string& scene,
   nlohmann::json garments = nlohmann::json::array();
   for (const session::EngineDrape& drape : drapes) {
     const DrapeReport& report = drape.report;
-    nlohmann::json garment = {{"name", drape.name},           {"triangles", report.triangles},
-                              {"iterations", report.run.iterations}, {"simulated_s", report.run.simulatedTime},
-                              {"wall_s", report.wallSeconds},    {"at_rest", report.run.atRest},
-                              {"verdict", verdict(report)},      {"cached", report.fromCache},
-                              {"method", method(report)},     {"body", body(report.body)}};
+    nlohmann::json garment = {{"name", drape.name},
+                              {"triangles", report.triangles},
+                              {"iterations", report.run.iterations},
+                              {"simulated_s", report.run.simulatedTime},
+                              {"wall_s", report.wallSeconds},
+                              {"at_rest", report.run.atRest},
+                              {"verdict", verdict(report)},
+                              {"cached", report.fromCache},
+                              {"method", method(report)},
+                              {"body", body(report.body)}};
     // With a tolerance: what the engine picked and the deviation measured for it.
     if (!report.picked.empty())
       garment["picked"] = {{"configuration", report.picked},

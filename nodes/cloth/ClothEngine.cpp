@@ -169,17 +169,6 @@ figment::ClothParameters ClothEngine::clothParameters() const {
   return figment::parametersFromFields(*this);
 }
 
-namespace {
-
-// coordIndex for triangles, each ended by -1.
-std::vector<int32_t> faceIndices(const std::vector<figment::Triangle>& triangles) {
-  std::vector<int32_t> indices;
-  for (const figment::Triangle& t : triangles) indices.insert(indices.end(), {t[0], t[1], t[2], -1});
-  return indices;
-}
-
-}  // namespace
-
 figment::GarmentDrape ClothEngine::Impl::simulate(const ClothEngine& engine) {
   const auto start = std::chrono::steady_clock::now();  // planning and the solver's set-up count too
   const figment::DrapeContext& context = drapeContext();
@@ -189,8 +178,7 @@ figment::GarmentDrape ClothEngine::Impl::simulate(const ClothEngine& engine) {
   figment::DrapePlan plan = figment::planDrape(std::move(ask));
   // Before any step: a garment in another unit or on its side is an error, one partly
   // inside the body or wound clockwise a warning in the verdict's line.
-  plan.report.garmentWarning =
-      figment::garmentStartWarning(engine, plan.request.garment, plan.request.body.get());
+  plan.report.garmentWarning = figment::garmentStartWarning(engine, plan.request.garment, plan.request.body.get());
   const double maxTime = plan.request.parameters.maxTime;
   figment::DrapeObservers observers;
   if (context.stepObserver)
@@ -216,11 +204,7 @@ void ClothEngine::evaluate() {
   ++d.evaluations;
   d.error.clear();
   d.cacheMessage.clear();
-  d.report = {};
-  d.report.method = figment::methodFromFields(*this);
-  d.report.strainLimit = strainLimit.getValue();
-  d.report.maxTime = maxTime.getValue();
-  d.report.body = figment::describeBodyField(body);
+  d.report = figment::reportBeforeDrape(*this);
   // Until a simulation succeeds the output is the rest shape and the given faces.
   const int numRest = restPoints.getNum();
   figment::EngineOutput out{{restPoints.getValues(0), restPoints.getValues(0) + numRest}, {}};
@@ -237,10 +221,7 @@ void ClothEngine::evaluate() {
   } else {
     try {
       figment::GarmentDrape drape = d.simulate(*this);
-      for (size_t i = 0; i < drape.positions.size() && i < out.positions.size(); ++i)
-        out.positions[i].setValue(float(drape.positions[i].x()), float(drape.positions[i].y()),
-                                  float(drape.positions[i].z()));
-      out.indices = faceIndices(drape.sections);
+      out.take(drape);
       d.report = std::move(drape.report);
       cache.keep(key, out, d.report, d.cacheMessage);
     } catch (const std::exception& e) {

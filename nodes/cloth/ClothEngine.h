@@ -31,9 +31,9 @@ struct TriangleMesh;
   Only a translator: the fields become a drape's ask (nodes/cloth/ClothEngineInputs.h:
   sim/cloth/ClothParameters.h, the garment, the body), sim/drape/DrapePlan.h plans and runs
   the drape from the rest shape until the cloth is at rest or maxTime has been simulated
-  (or the drape cache has it), and the final node positions come out of `positions`. Like every Coin engine it is lazy: it simulates when its output is read
-  after an input changed (on the first render, or when a bounding box is asked for),
-  never once per render.
+  (or the drape cache has it), and the final node positions come out of `positions`. Like every Coin engine it is lazy:
+  it simulates when its output is read after an input changed (on the first render, or when a bounding box is asked
+  for), never once per render.
 
   Errors never escape: a field out of range, a coordIndex that does not index
   restPoints, a body that is not a collision body, or a simulation that blows up is
@@ -236,7 +236,6 @@ class ClothEngine : public SoEngine {
   // The sections simulated last, as coordIndex (each ended by -1; SoMFInt32): with a
   // progressive script, the level the drape reached; without, the garment's triangles.
   SoEngineOutput levelCoordIndex;
-
 
   // Reported about once per second of wall time while a simulation runs
   // (DrapeContext::progress).

@@ -59,8 +59,13 @@ std::string tradeoffTablePath() {
   return FIGMENT_TRADEOFF_TABLE_SOURCE;
 }
 
-BodyDescription describeBodyField(const SoSFNode& body) {
-  return describe(body.getValue());
+DrapeReport reportBeforeDrape(const ClothEngine& engine) {
+  DrapeReport report;
+  report.method = methodFromFields(engine);
+  report.strainLimit = engine.strainLimit.getValue();
+  report.maxTime = engine.maxTime.getValue();
+  report.body = describe(engine.body.getValue());
+  return report;
 }
 
 DrapeBody drapeBodyFromField(const SoSFNode& field) {

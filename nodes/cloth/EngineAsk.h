@@ -25,8 +25,10 @@ std::string tradeoffTablePath();
 // The functions it holds use the Mannequin node: plan and drape while it is alive.
 DrapeBody drapeBodyFromField(const SoSFNode& body);
 
-// What the node in `body` is (kind "none" for NULL or a node that is no collision body).
-BodyDescription describeBodyField(const SoSFNode& body);
+// What a report says before any drape was planned (the drape may fail first): the method,
+// strainLimit and maxTime the fields name, not validated, and what the body node is (kind
+// "none" for NULL or a node that is no collision body).
+DrapeReport reportBeforeDrape(const ClothEngine& engine);
 
 // The drape `engine`'s fields ask for: its garment, parameters, body, tolerance (with
 // `table`, read here when the tolerance is > 0), progressive script (looked up in

@@ -7,6 +7,15 @@
 
 namespace figment {
 
+void EngineOutput::take(const GarmentDrape& drape) {
+  for (size_t i = 0; i < drape.positions.size() && i < positions.size(); ++i) {
+    const Vec3& x = drape.positions[i];
+    positions[i].setValue(float(x.x()), float(x.y()), float(x.z()));
+  }
+  indices.clear();
+  for (const Triangle& t : drape.sections) indices.insert(indices.end(), {t[0], t[1], t[2], -1});
+}
+
 std::optional<DrapeReport> EngineCache::read(const std::string& key, int numRest, EngineOutput& out,
                                              std::string& message) const {
   if (!cache_ || key.empty()) return std::nullopt;

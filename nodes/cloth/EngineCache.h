@@ -1,7 +1,7 @@
 #pragma once
-// Internal to figment_nodes (not installed): a ClothEngine's side of the drape cache
-// (io/DrapeCache.h): its output read from an entry, or kept in one, with the drape's report
-// as a record beside it (io/DrapeReportRecord.h).
+// Internal to figment_nodes (not installed): a ClothEngine's output, from a drape or from
+// the drape cache (io/DrapeCache.h): read from an entry, or kept in one, with the drape's
+// report as a record beside it (io/DrapeReportRecord.h).
 
 #include <Inventor/SbVec3f.h>
 
@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/drape/DrapeReport.h"
+#include "sim/drape/GarmentDrape.h"
 
 namespace figment {
 
@@ -20,6 +21,10 @@ class DrapeCache;
 struct EngineOutput {
   std::vector<SbVec3f> positions;
   std::vector<std::int32_t> indices;
+
+  // `drape`'s positions (as floats, one per rest point) and its sections as coordIndex,
+  // each ended by -1.
+  void take(const GarmentDrape& drape);
 };
 
 class EngineCache {

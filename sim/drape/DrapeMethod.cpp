@@ -14,9 +14,9 @@ namespace figment {
 namespace {
 
 constexpr std::array<std::pair<Integrator, const char*>, 4> kIntegrators{{{Integrator::ExplicitEuler, "EULER"},
-                                                                         {Integrator::SymplecticEuler, "SYMPLECTIC"},
-                                                                         {Integrator::Heun, "HEUN"},
-                                                                         {Integrator::Implicit, "IMPLICIT"}}};
+                                                                          {Integrator::SymplecticEuler, "SYMPLECTIC"},
+                                                                          {Integrator::Heun, "HEUN"},
+                                                                          {Integrator::Implicit, "IMPLICIT"}}};
 constexpr std::array<std::pair<AccelerationLimiter, const char*>, 3> kLimiters{
     {{AccelerationLimiter::None, "NONE"}, {AccelerationLimiter::Clamp, "CLAMP"}, {AccelerationLimiter::Tanh, "TANH"}}};
 constexpr std::array<std::pair<ContactModel, const char*>, 2> kContactModels{
@@ -117,7 +117,8 @@ std::string DrapeMethod::text() const {
   std::string out = lower(fieldName(integrator));
   if (contacts != ContactModel::Constraints) out += "+" + lower(fieldName(contacts));
   out += ":" + shortest(timeStep);
-  if (limiter != AccelerationLimiter::None) out += ":" + lower(fieldName(limiter)) + ":" + shortest(limit.value_or(0.0));
+  if (limiter != AccelerationLimiter::None)
+    out += ":" + lower(fieldName(limiter)) + ":" + shortest(limit.value_or(0.0));
   return out;
 }
 

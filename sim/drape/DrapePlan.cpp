@@ -25,8 +25,9 @@ void planForTolerance(const DrapeAsk& ask, DrapePlan& plan) {
   request.schedule = {};
   if (choice.picked.progressive != "off") {
     const TriangleMesh& garment = request.garment;
-    request.progressive = decimate(garment, DecimationOptions{.targetFaces = static_cast<int>(std::lround(
-                                                                  kStudyCoarseShare * garment.triangles.size()))});
+    request.progressive = decimate(
+        garment,
+        DecimationOptions{.targetFaces = static_cast<int>(std::lround(kStudyCoarseShare * garment.triangles.size()))});
     const ScheduleText s = parseScheduleText(choice.picked.progressive);
     request.schedule = {static_cast<int>(std::lround(s.beginShare * request.progressive->levels())), -1, s.rate};
   }

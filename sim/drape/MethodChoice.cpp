@@ -41,8 +41,9 @@ std::string whyUnusable(const DrapeBody& body, const MeasuredConfiguration& c) {
   const bool radialOnly = radial > 0 && capsules == 0;
   if ((c.body == "triangles" || c.body == "mix") && !body.triangles) return "the Mannequin has no body mesh";
   if (c.body == "triangles")
-    return body.poseOrSize.empty() ? ""
-                                   : "the Mannequin's triangles are its rest pose and size, and it is " + body.poseOrSize;
+    return body.poseOrSize.empty()
+               ? ""
+               : "the Mannequin's triangles are its rest pose and size, and it is " + body.poseOrSize;
   if (c.body == "mix") return radialOnly ? "" : "the Mannequin's volumes are not all radial";
   if (c.body == "volumes") return radialOnly && exact == 0 ? "" : "the Mannequin's volumes are not all radial";
   if (c.body == "capsules")
@@ -64,8 +65,8 @@ MethodChoice chooseMethod(const MethodTable& table, double tolerance, const Drap
     choice.body = body.triangles();
     choice.bodyDescription = body.trianglesDescription;
   } else if (picked->body == "mix") {
-    choice.body = body.withExactParts(body.collider ? partsWhereGarmentMeets(*body.collider, garmentStart)
-                                                    : std::vector<int>{});
+    choice.body =
+        body.withExactParts(body.collider ? partsWhereGarmentMeets(*body.collider, garmentStart) : std::vector<int>{});
   }
   return choice;
 }

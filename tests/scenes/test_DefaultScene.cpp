@@ -32,10 +32,10 @@
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/VolumeSetCollider.h"
 #include "sim/core/DisplaySubdivision.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
 #include "viewer/OffscreenContext.h"
-#include "sim/drape/DrapeReport.h"
 
 using namespace figment::session;
 using namespace figment::viewer;

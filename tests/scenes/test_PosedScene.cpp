@@ -17,8 +17,8 @@
 #include "sim/collision/Collider.h"
 #include "sim/collision/VolumeSetCollider.h"
 #include "sim/core/TriangleMesh.h"
-#include "viewer/OffscreenContext.h"
 #include "sim/drape/DrapeReport.h"
+#include "viewer/OffscreenContext.h"
 
 using namespace figment::viewer;
 

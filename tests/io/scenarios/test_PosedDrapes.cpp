@@ -54,8 +54,9 @@ class PosedDrapes : public ::testing::Test {
     const GarmentDrape out = drapeGarment(request);
     std::printf(
         "pose motion %.2f s (%d keyframes), drape %.2f s simulated, %s (fastest %.4f m/s), stretch %.2f, %.1f s wall\n",
-        moving->duration(), moving->keyframes(), out.report.run.simulatedTime, out.report.run.atRest ? "at rest" : "NOT at rest",
-        out.report.run.maxSpeed, out.report.run.maxStretch, out.report.run.wallSeconds);
+        moving->duration(), moving->keyframes(), out.report.run.simulatedTime,
+        out.report.run.atRest ? "at rest" : "NOT at rest", out.report.run.maxSpeed, out.report.run.maxStretch,
+        out.report.run.wallSeconds);
     return out;
   }
   // Nodes inside the posed body (deeper than 1 mm).

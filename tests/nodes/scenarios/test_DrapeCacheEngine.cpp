@@ -14,11 +14,11 @@
 #include <memory>
 
 #include "io/DrapeCache.h"
+#include "io/DrapeReportRecord.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/DrapeContext.h"
 #include "nodes/cloth/DrapeKey.h"
-#include "io/DrapeReportRecord.h"
 #include "support/ShippedGarmentScene.h"
 #include "support/TempDir.h"
 

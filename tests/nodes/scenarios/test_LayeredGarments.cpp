@@ -15,9 +15,9 @@
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/cloth/GarmentSurface.h"
 #include "sim/collision/Collider.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/SceneTestSupport.h"
 #include "support/ShippedGarmentScene.h"
-#include "sim/drape/DrapeReport.h"
 
 using namespace figment::test;
 

@@ -19,8 +19,8 @@
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/HumanBody.h"
 #include "sim/collision/MeshCollider.h"
-#include "support/ShippedGarmentScene.h"
 #include "sim/drape/DrapeReport.h"
+#include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
 

@@ -13,8 +13,8 @@
 
 #include "nodes/body/CollisionBody.h"
 #include "sim/collision/Collider.h"
-#include "support/ShippedGarmentScene.h"
 #include "sim/drape/DrapeReport.h"
+#include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
 

@@ -11,8 +11,8 @@
 #include <cmath>
 #include <set>
 
-#include "support/ShippedGarmentScene.h"
 #include "sim/drape/DrapeReport.h"
+#include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
 

@@ -14,9 +14,9 @@
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "sim/collision/Collider.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/IoTestSupport.h"
 #include "support/ShippedGarmentScene.h"
-#include "sim/drape/DrapeReport.h"
 
 using namespace figment::test;
 

@@ -55,12 +55,15 @@ TEST(DrapeMethod, OfParametersIsWhatTheyDrapeBy) {
 }
 
 TEST(DrapeMethod, ABadTextNamesItselfAndWhatIsWrong) {
-  const std::pair<const char*, const char*> cases[] = {
-      {"heun", "wrong number of parts"},         {"heun:0", "the time step must be > 0"},
-      {"heun:x", "\"x\" is not a number"},       {"implicit+glue:0.05", "no contact model glue"},
-      {"heun:1e-4:clamp", "wrong number of parts"}, {"heun:1e-4:soft:3", "no limiter soft"},
-      {"verlet:0.05", "no integrator verlet"},   {"heun:1e-4:clamp:many", "\"many\" is not a number"},
-      {"heun:-1e-4", "the time step must be > 0"}};
+  const std::pair<const char*, const char*> cases[] = {{"heun", "wrong number of parts"},
+                                                       {"heun:0", "the time step must be > 0"},
+                                                       {"heun:x", "\"x\" is not a number"},
+                                                       {"implicit+glue:0.05", "no contact model glue"},
+                                                       {"heun:1e-4:clamp", "wrong number of parts"},
+                                                       {"heun:1e-4:soft:3", "no limiter soft"},
+                                                       {"verlet:0.05", "no integrator verlet"},
+                                                       {"heun:1e-4:clamp:many", "\"many\" is not a number"},
+                                                       {"heun:-1e-4", "the time step must be > 0"}};
   for (const auto& [text, why] : cases) {
     try {
       DrapeMethod::parse(text);

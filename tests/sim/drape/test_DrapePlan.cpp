@@ -47,8 +47,7 @@ TEST(DrapePlan, WithoutAToleranceThePlanIsWhatWasAskedAndDrapesAsDrapeGarment) {
   EXPECT_EQ(plan.report.triangles, static_cast<int>(ask.garment.triangles.size()));
   EXPECT_EQ(plan.report.picked, "");
   int observed = 0;
-  const GarmentDrape planned =
-      drape(plan, DrapeObservers{.step = [&observed](const ClothSolver&) { ++observed; }});
+  const GarmentDrape planned = drape(plan, DrapeObservers{.step = [&observed](const ClothSolver&) { ++observed; }});
   const GarmentDrape direct = drapeGarment(plan.request);
   ASSERT_TRUE(planned.report.run.atRest);
   EXPECT_EQ(planned.positions, direct.positions);  // bit for bit

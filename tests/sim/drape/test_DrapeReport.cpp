@@ -18,6 +18,7 @@ TEST(DrapeReport, TheVerdictJoinsTheGarmentsWarningAndTheRunsEnding) {
   EXPECT_EQ(verdictOf(report), "12 nodes start inside the body; not at rest after maxTime 5 s (max speed 0.31 m/s)");
   report.garmentWarning.clear();
   report.run.maxStretch = 2.02;
-  EXPECT_EQ(verdictOf(report),
-            "not at rest after maxTime 5 s (max speed 0.31 m/s); torn: an edge at 2.02 times its rest length (bound 1.5)");
+  EXPECT_EQ(
+      verdictOf(report),
+      "not at rest after maxTime 5 s (max speed 0.31 m/s); torn: an edge at 2.02 times its rest length (bound 1.5)");
 }

@@ -71,7 +71,8 @@ TEST(MethodChoice, TheFastestWithinThatTheBodyAllowsAndItsBody) {
   // Wider: the capsules are faster but this body has none; its volumes are next.
   const MethodChoice wider = chooseMethod(table(), 0.45, jointed.body(), {});
   EXPECT_EQ(wider.picked.body, "triangles");
-  EXPECT_EQ(wider.passedOver, "implicit:0.05, capsules, progressive off (the Mannequin's volumes are not all capsules)");
+  EXPECT_EQ(wider.passedOver,
+            "implicit:0.05, capsules, progressive off (the Mannequin's volumes are not all capsules)");
 }
 
 TEST(MethodChoice, APosedBodysTrianglesArePassedOverSayingWhy) {
