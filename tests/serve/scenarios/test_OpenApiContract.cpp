@@ -1,4 +1,4 @@
-// serve/openapi.json (as figment-serve embeds it) says what the server takes, checked here
+// serve/http/openapi.json (as figment-serve embeds it) says what the server takes, checked here
 // against the server's own constants, lists and parser, so that no bound can drift from
 // the code: each measurement's range without a sex (the Mannequin's catalogue) and with
 // each (the size advice's ranges of the shipped size chart), the parameters' names, every
@@ -16,12 +16,12 @@
 #include <set>
 
 #include "io/SizeChartFile.h"
-#include "serve/Catalogue.h"
-#include "serve/Digest.h"
-#include "serve/FitRequest.h"
-#include "serve/MeasuredPoses.h"
-#include "serve/RenderRequest.h"
-#include "serve/WebAssets.h"
+#include "serve/request/Catalogue.h"
+#include "serve/work/Digest.h"
+#include "serve/request/FitRequest.h"
+#include "serve/request/MeasuredPoses.h"
+#include "serve/request/RenderRequest.h"
+#include "serve/http/WebAssets.h"
 #include "sim/garment/GarmentStyle.h"
 
 using namespace figment::serve;
