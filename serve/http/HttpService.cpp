@@ -180,11 +180,11 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
   const PoolOptions poolOptions = workerPoolOptions(options_, program);
   jobs_ = std::make_unique<RenderJobs>(
       RenderJobs::Options{poolOptions.workers, poolOptions.queue, 1024},
-      [this](const std::string& canonical) { return pool_->render(canonical); },
-      [this](const std::string& id, const RenderResult& result) {
+      [this](const std::string& canonical) { return pool_->ask({JobKind::kRender, canonical}); },
+      [this](const std::string& id, const WorkResult& result) {
         if (!result.keepable()) return;  // a restless or torn drape: rendered again when asked
-        images_.store('"' + id + '"', std::make_shared<const std::string>(result.body));
-        if (sharedImages_) sharedImages_->store(id, result.body);
+        images_.store(JobKind::kRender, '"' + id + '"', std::make_shared<const std::string>(result.body));
+        if (sharedImages_) sharedImages_->store(JobKind::kRender, id, result.body);
       });
   addRoutes();
 }
@@ -319,9 +319,9 @@ void sendRefusal(httplib::Response& response, const ParameterError& error) {
       {{"error", error.error}, {"parameter", error.parameter}, {"value", error.value}, {"accepted", error.accepted}});
 }
 
-// The quoted strong ETag of `canonical` under build `build`.
-std::string tagOf(const std::string& canonical, const std::string& build) {
-  return '"' + Digest().add(canonical).add(build).hex() + '"';
+// The quoted strong ETag of `work` under build `build`.
+std::string tagOf(const WorkRequest& work, const std::string& build) {
+  return '"' + Digest().add(work.digestText()).add(build).hex() + '"';
 }
 
 // 304 when the client holds `tag` already.
@@ -345,14 +345,14 @@ void answer(httplib::Response& response, const std::string& tag, const std::stri
 
 }  // namespace
 
-bool HttpService::made(const std::string& canonical, const std::string& tag, const httplib::Request& request,
-                       httplib::Response& response, std::shared_ptr<const RenderResult>& result) {
+bool HttpService::made(const WorkRequest& work, const std::string& tag, const httplib::Request& request,
+                       httplib::Response& response, std::shared_ptr<const WorkResult>& result) {
   if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
     response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
     sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
     return false;
   }
-  result = pool_->render(canonical);
+  result = pool_->ask(work);
   if (!result) {
     response.set_header("Retry-After", "2");
     sendJson(response, 503, {{"error", "too many renders waiting; try again"}});
@@ -364,54 +364,56 @@ bool HttpService::made(const std::string& canonical, const std::string& tag, con
     return false;
   }
   if (!result->keepable()) return true;  // a restless or torn drape is answered, never kept
-  images_.store(tag, std::make_shared<const std::string>(result->body));
-  if (sharedImages_) sharedImages_->store(tag.substr(1, tag.size() - 2), result->body);
+  images_.store(work.kind, tag, std::make_shared<const std::string>(result->body));
+  if (sharedImages_) sharedImages_->store(work.kind, tag.substr(1, tag.size() - 2), result->body);
   return true;
 }
 
 void HttpService::render(const httplib::Request& request, httplib::Response& response) {
-  const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
+  const QueryParameters parameters(request.params.begin(), request.params.end());
   auto parsed = RenderRequest::parse(parameters, chart_.get());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
-  const std::string canonical = std::get<RenderRequest>(parsed).canonical();
+  const WorkRequest work{JobKind::kRender, std::get<RenderRequest>(parsed).canonical()};
   const char* type = std::get<RenderRequest>(parsed).format == "glb" ? "model/gltf-binary" : "image/png";
-  const std::string tag = tagOf(canonical, build_);
+  const std::string tag = tagOf(work, build_);
   if (notModified(request, response, tag)) return;
-  // Only drapes at rest are kept (RenderResult::keepable): a kept picture's drape is at rest.
-  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, type, true, "rest");
-  std::shared_ptr<const RenderResult> result;
-  if (made(canonical, tag, request, response, result))
+  // Only drapes at rest are kept (WorkResult::keepable): a kept picture's drape is at rest.
+  if (std::shared_ptr<const std::string> kept = keptAnswer(work.kind, tag))
+    return answer(response, tag, *kept, type, true, "rest");
+  std::shared_ptr<const WorkResult> result;
+  if (made(work, tag, request, response, result))
     answer(response, tag, result->body, type, result->drapeFromCache, result->drape);
 }
 
 void HttpService::fit(const httplib::Request& request, httplib::Response& response) {
   if (!chart_) return sendJson(response, 503, {{"error", "no size chart: size advice is off"}});
-  const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
+  const QueryParameters parameters(request.params.begin(), request.params.end());
   auto parsed = FitRequest::parse(parameters, *chart_);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
-  const std::string canonical = std::get<FitRequest>(parsed).canonical();
-  const std::string tag = tagOf(canonical, build_);
+  const WorkRequest work{JobKind::kFit, std::get<FitRequest>(parsed).canonical()};
+  const std::string tag = tagOf(work, build_);
   if (notModified(request, response, tag)) return;
-  if (std::shared_ptr<const std::string> kept = keptImage(tag)) return answer(response, tag, *kept, kJson, true);
-  std::shared_ptr<const RenderResult> result;
-  if (made(canonical, tag, request, response, result)) answer(response, tag, result->body, kJson, false);
+  if (std::shared_ptr<const std::string> kept = keptAnswer(work.kind, tag))
+    return answer(response, tag, *kept, kJson, true);
+  std::shared_ptr<const WorkResult> result;
+  if (made(work, tag, request, response, result)) answer(response, tag, result->body, kJson, false);
 }
 
 void HttpService::submitJob(const httplib::Request& request, httplib::Response& response) {
-  const RenderRequest::Parameters parameters(request.params.begin(), request.params.end());
+  const QueryParameters parameters(request.params.begin(), request.params.end());
   auto parsed = RenderRequest::parse(parameters, chart_.get());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
-  const std::string canonical = std::get<RenderRequest>(parsed).canonical();
-  const std::string tag = tagOf(canonical, build_);
+  const WorkRequest work{JobKind::kRender, std::get<RenderRequest>(parsed).canonical()};
+  const std::string tag = tagOf(work, build_);
   const std::string id = tag.substr(1, tag.size() - 2);  // unquoted: a path segment
-  const bool kept = keptImage(tag) != nullptr;
+  const bool kept = keptAnswer(work.kind, tag) != nullptr;
   if (!kept && !jobs_->find(id)) {  // a new job costs a render: the client's rate applies
     if (double wait = 0; !rateLimit_.take(request.remote_addr, ClientRateLimit::Clock::now(), wait)) {
       response.set_header("Retry-After", std::to_string(std::max(1, int(std::ceil(wait)))));
       return sendJson(response, 429, {{"error", "too many renders from this client; try again"}});
     }
   }
-  if (!jobs_->submit(id, canonical, kept)) {
+  if (!jobs_->submit(id, work.canonical, kept)) {
     response.set_header("Retry-After", "2");
     return sendJson(response, 503, {{"error", "too many renders waiting; try again"}});
   }
@@ -433,12 +435,12 @@ void HttpService::jobStatus(const std::string& id, httplib::Response& response) 
   sendJson(response, 200, body);
 }
 
-std::shared_ptr<const std::string> HttpService::keptImage(const std::string& tag) {
-  if (std::shared_ptr<const std::string> image = images_.find(tag)) return image;
+std::shared_ptr<const std::string> HttpService::keptAnswer(JobKind kind, const std::string& tag) {
+  if (std::shared_ptr<const std::string> kept = images_.find(kind, tag)) return kept;
   if (!sharedImages_) return nullptr;
-  std::shared_ptr<const std::string> image = sharedImages_->find(tag.substr(1, tag.size() - 2));  // unquoted
-  if (image) images_.store(tag, image);
-  return image;
+  std::shared_ptr<const std::string> kept = sharedImages_->find(kind, tag.substr(1, tag.size() - 2));  // unquoted
+  if (kept) images_.store(kind, tag, kept);
+  return kept;
 }
 
 std::vector<std::string> HttpService::exchange(std::string_view bytes, const std::string& remoteAddress) {

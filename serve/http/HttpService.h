@@ -74,12 +74,13 @@ class HttpService {
   void submitJob(const httplib::Request& request, httplib::Response& response);
   void job(const httplib::Request& request, httplib::Response& response);
   void jobStatus(const std::string& id, httplib::Response& response) const;
-  // A worker's answer for `canonical` (a render or a fit), kept by its ETag `tag` in memory
-  // and Redis; false when the response was made already (a refusal or an error).
-  bool made(const std::string& canonical, const std::string& tag, const httplib::Request& request,
-            httplib::Response& response, std::shared_ptr<const RenderResult>& result);
-  // The image for the quoted ETag `tag` from memory, else from Redis (then kept in memory).
-  std::shared_ptr<const std::string> keptImage(const std::string& tag);
+  // A worker's answer for `work` (a render or a fit), kept by its kind and ETag `tag` in
+  // memory and Redis; false when the response was made already (a refusal or an error).
+  bool made(const WorkRequest& work, const std::string& tag, const httplib::Request& request,
+            httplib::Response& response, std::shared_ptr<const WorkResult>& result);
+  // The answer of `kind` (an image, or a fit's advice) for the quoted ETag `tag` from
+  // memory, else from Redis (then kept in memory).
+  std::shared_ptr<const std::string> keptAnswer(JobKind kind, const std::string& tag);
 
   ServeOptions options_;
   std::string build_;                 // Digest::buildDigest()
@@ -87,7 +88,7 @@ class HttpService {
   std::unique_ptr<WorkerPool> pool_;
   ImageCache images_;
   std::shared_ptr<RedisConnection> redis_;      // null without --redis
-  std::unique_ptr<SharedImages> sharedImages_;  // images in Redis, below images_
+  std::unique_ptr<SharedImages> sharedImages_;  // answers in Redis, below images_
   ClientRateLimit rateLimit_;
   std::unique_ptr<ExchangeServer> server_;
   std::unique_ptr<RenderJobs> jobs_;  // last: its threads stop before the pool and caches they use go

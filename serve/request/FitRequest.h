@@ -1,40 +1,35 @@
 #pragma once
 // GET /api/fit's parameters, checked and made canonical: a sex, a style of the size chart's
 // garments (sim/garment/GarmentStyle.h) and the shopper's four measurements, each within
-// the range the chart's bodies span for that sex widened by two sizes. Like a render
-// request it is parameters only; its canonical text starts with kPrefix, so a worker tells
-// it from a render's and its digest (the ETag) never names a picture.
+// the range the chart's bodies span for that sex widened by two sizes
+// (serve/request/BodyMeasuresText.h). Like a render request it is parameters only; a worker
+// is told it is a fit by its job's kind (serve/work/JobKind.h), not by its text.
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <variant>
 #include <vector>
 
-#include "serve/request/RenderRequest.h"
+#include "serve/request/Catalogue.h"
+#include "serve/request/RequestParameters.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment::serve {
 
 class FitRequest {
  public:
-  static constexpr const char* kPrefix = "fit?";
-
   // The size chart of a scenes folder (scenes/sizes/chart.txt): the server's and its workers'.
   static std::string chartPath(const std::string& scenesFolder) { return scenesFolder + "/sizes/chart.txt"; }
-
-  // The accepted range of each measurement (stature, bust, waist, hips) for `sex`.
-  static std::vector<MeasureRange> ranges(const SizeChart& chart, Sex sex);
 
   // Every parameter the request takes (serve/http/openapi.json lists these; test_serve checks it).
   static std::vector<std::string> parameterNames();
 
   // Every parameter is required: sex, style, stature, bust, waist, hips.
-  static std::variant<FitRequest, ParameterError> parse(const RenderRequest::Parameters& parameters,
+  static std::variant<FitRequest, ParameterError> parse(const QueryParameters& parameters,
                                                         const SizeChart& chart);
-  // kPrefix and name=value&... in a fixed order, metres to the mm: parse gives it back.
+  // name=value&... in a fixed order, metres to the mm: parseCanonical gives it back.
   std::string canonical() const;
   static std::variant<FitRequest, ParameterError> parseCanonical(const std::string& text, const SizeChart& chart);
-  static bool isFit(const std::string& canonical);
 
   // /api/catalogue's "fit": each style with the chart's sizes per sex, and the ranges.
   static nlohmann::json catalogueJson(const SizeChart& chart);

@@ -7,7 +7,7 @@
 #include <map>
 #include <set>
 
-#include "serve/request/FitRequest.h"
+#include "serve/request/BodyMeasuresText.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/Utf8Text.h"
 #include "sim/garment/GarmentStyle.h"
@@ -21,21 +21,13 @@ const char* const kNames[] = {"stature", "bust",  "chest", "waist", "hips",   "s
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
-  return {error, parameter, Utf8Text::shown(value, 64), accepted};
+  return RequestParameters::refusal(parameter, value, error, accepted);
 }
 
 std::string formatted(const char* pattern, double a, double b = 0) {
   char text[64];
   std::snprintf(text, sizeof text, pattern, a, b);
   return text;
-}
-
-// A plain decimal number, nothing before or after it; no inf or nan.
-bool number(const std::string& text, double& value) {
-  if (text.empty() || text.size() > 32) return false;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value, std::chars_format::fixed);
-  return ec == std::errc() && ptr == end && std::isfinite(value);
 }
 
 bool isHex6(const std::string& text) {
@@ -61,18 +53,12 @@ std::string namesOf(const std::vector<T>& items) {
   return namesOf(names);
 }
 
-// `ranges`: a measured body's (its sex's, FitRequest::ranges); empty: the Mannequin's catalogue.
+// `ranges`: a measured body's (its sex's, BodyMeasuresText::ranges); empty: the Mannequin's catalogue.
 std::optional<ParameterError> measurement(const std::string& name, const std::string& value,
                                           const std::vector<MeasureRange>& ranges, double& out) {
   const std::string key = name == "chest" ? "bust" : name;
   const auto own = std::find_if(ranges.begin(), ranges.end(), [&](const MeasureRange& r) { return r.name == key; });
-  const MeasureRange& range = own != ranges.end() ? *own : Catalogue::measure(key);
-  const std::string accepted = formatted("%.2f to %.2f (metres)", range.minimum, range.maximum);
-  double v = 0;
-  if (!number(value, v)) return bad(name, value, "not a number", accepted);
-  if (v < range.minimum || v > range.maximum) return bad(name, value, "out of range", accepted);
-  out = std::round(v * 1000.0) / 1000.0;  // mm
-  return std::nullopt;
+  return BodyMeasuresText::read(name, value, own != ranges.end() ? *own : Catalogue::measure(key), out);
 }
 
 // A tone by its name as the catalogue writes it, or hex in any case, optionally after '#'.
@@ -169,7 +155,8 @@ std::optional<ParameterError> view(const std::string& value, double& azimuth, do
   if (auto it = named.find(value); it != named.end()) return azimuth = it->second, elevation = 0, std::nullopt;
   const size_t comma = value.find(',');
   double az = 0, el = 0;
-  if (comma == std::string::npos || !number(value.substr(0, comma), az) || !number(value.substr(comma + 1), el))
+  if (comma == std::string::npos || !RequestParameters::number(value.substr(0, comma), az) ||
+      !RequestParameters::number(value.substr(comma + 1), el))
     return bad("view", value, "not a view", accepted);
   if (std::abs(az) > 360 || el < -60 || el > 80) return bad("view", value, "out of range", accepted);
   az = std::round(az * 10.0) / 10.0;
@@ -198,12 +185,12 @@ std::optional<ParameterError> imageSize(const std::string& value, int& width, in
 }
 
 // The parameters as a map, each named once, each known.
-std::variant<std::map<std::string, std::string>, ParameterError> byName(const RenderRequest::Parameters& parameters) {
+std::variant<std::map<std::string, std::string>, ParameterError> byName(const QueryParameters& parameters) {
   std::map<std::string, std::string> values;
   const std::vector<std::string> known(std::begin(kNames), std::end(kNames));
   if (int(parameters.size()) > RequestLimits::kMaxParameters) return bad("", "", "too many parameters", "at most 16");
   for (const auto& [name, value] : parameters) {
-    if (auto error = RenderRequest::textError(name, value)) return *error;
+    if (auto error = RequestParameters::textError(name, value)) return *error;
     if (std::find(known.begin(), known.end(), name) == known.end())
       return bad(Utf8Text::shown(name, 64), value, "unknown parameter", namesOf(known));
     if (value.size() > RequestLimits::kMaxValueLength) return bad(name, value, "value too long", "at most 200 bytes");
@@ -275,7 +262,7 @@ std::optional<ParameterError> measuredBody(RenderRequest& request, const std::ma
   if (names.chart->sizes(names.sex).empty())
     return bad("sex", sex->second, "the size chart has no sizes for it", "female, male");
   // The measured body's ranges are the size advice's: MakeHuman's reach, not the Mannequin's.
-  names.ranges = FitRequest::ranges(*names.chart, names.sex);
+  names.ranges = BodyMeasuresText::ranges(*names.chart, names.sex);
   return std::nullopt;
 }
 
@@ -295,14 +282,7 @@ std::optional<ParameterError> posedOutfit(const RenderRequest& request) {
 
 }  // namespace
 
-std::string utf8Prefix(const std::string& text, size_t bytes) {
-  if (text.size() <= bytes) return text;
-  size_t end = bytes;
-  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;  // text[end] continues a character
-  return text.substr(0, end);
-}
-
-std::variant<RenderRequest, ParameterError> RenderRequest::parse(const Parameters& parameters, const SizeChart* chart) {
+std::variant<RenderRequest, ParameterError> RenderRequest::parse(const QueryParameters& parameters, const SizeChart* chart) {
   auto values = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&values)) return *error;
   const auto& named = std::get<std::map<std::string, std::string>>(values);
@@ -328,29 +308,9 @@ std::vector<std::string> RenderRequest::parameterNames() {
   return {std::begin(kNames), std::end(kNames)};
 }
 
-std::optional<ParameterError> RenderRequest::textError(const std::string& name, const std::string& value) {
-  const std::string accepted = "UTF-8 text (its bytes percent-encoded in the URL)";
-  if (!Utf8Text::valid(name))
-    return bad(Utf8Text::shown(name, 64), value, "a parameter name that is not UTF-8", accepted);
-  if (!Utf8Text::valid(value)) return bad(name, value, "not UTF-8", accepted);
-  return std::nullopt;
-}
-
 std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,
                                                                           const SizeChart* chart) {
-  return parse(splitCanonical(text), chart);
-}
-
-RenderRequest::Parameters RenderRequest::splitCanonical(const std::string& text, size_t start) {
-  Parameters parameters;
-  while (start < text.size()) {
-    const size_t amp = std::min(text.find('&', start), text.size());
-    const std::string pair = text.substr(start, amp - start);
-    const size_t eq = pair.find('=');
-    parameters.emplace_back(pair.substr(0, eq), eq == std::string::npos ? "" : pair.substr(eq + 1));
-    start = amp + 1;
-  }
-  return parameters;
+  return parse(RequestParameters::split(text), chart);
 }
 
 std::string RenderRequest::drapeKey() const {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "serve/request/Catalogue.h"
+#include "serve/request/RequestParameters.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment::serve {
@@ -23,36 +24,13 @@ struct OutfitItem {
   std::string colour;  // rrggbb, lower case
 };
 
-// What is wrong with a request, as the 400 answer's JSON says it.
-struct ParameterError {
-  std::string error;      // one line
-  std::string parameter;  // the parameter's name ("" for the request as a whole)
-  std::string value;      // what was given (cut to 64 bytes)
-  std::string accepted;   // what is accepted
-};
-
-// At most `bytes` bytes of `text`, cut before a UTF-8 character that would not fit whole:
-// what a refusal quotes of a value stays the UTF-8 it was (the answer is JSON).
-std::string utf8Prefix(const std::string& text, size_t bytes);
-
-// Limits on what one request may ask (docs/service.md).
-struct RequestLimits {
-  static constexpr int kMinSide = 64, kMaxSide = 1600;  // pixels
-  static constexpr int kMaxPixels = 1600 * 1200;
-  static constexpr int kMaxGarments = 3;
-  static constexpr int kMaxParameters = 16;
-  static constexpr size_t kMaxValueLength = 200;  // bytes
-};
-
 class RenderRequest {
  public:
-  using Parameters = std::vector<std::pair<std::string, std::string>>;
-
   // The request from decoded query parameters; absent ones take the defaults (the default
   // body, in the dress, studio light, from the front, 800x600). With `sex` the body is
   // MakeHuman's made to the measurements and the outfit's sizes are `chart`'s (graded
   // garments of sim/garment/GarmentStyle.h's styles); without a chart `sex` is refused.
-  static std::variant<RenderRequest, ParameterError> parse(const Parameters& parameters,
+  static std::variant<RenderRequest, ParameterError> parse(const QueryParameters& parameters,
                                                            const SizeChart* chart = nullptr);
 
   // Every parameter the request takes (serve/http/openapi.json lists these; test_serve checks it).
@@ -66,18 +44,9 @@ class RenderRequest {
   std::string drapeKey() const;
   // The part that shapes the scene (all but view and size).
   std::string sceneKey() const;
-  // Splits canonical text ("a=1&b=2", as canonical() writes it: nothing to decode) into its
-  // pairs; the fit request's parser shares it.
-  static Parameters splitCanonical(const std::string& text, size_t start = 0);
   // Parses canonical text back (the worker's side of the pipe).
   static std::variant<RenderRequest, ParameterError> parseCanonical(const std::string& text,
                                                                     const SizeChart* chart = nullptr);
-  // The refusal of a parameter whose name or value is not UTF-8 (a query is percent-decoded
-  // into bytes, any bytes): the answer is JSON, UTF-8 text, so it names the parameter and
-  // shows the value percent-encoded (serve/request/Utf8Text.h); nullopt when both are text. Both
-  // parsers (this and FitRequest) ask it first.
-  static std::optional<ParameterError> textError(const std::string& name, const std::string& value);
-
   // The picture's anti-aliasing (session/SceneRenderer.h's k x k samples a pixel):
   // figment-view's 3, fewer where the drawn image would pass four times the largest
   // picture's pixels (1600 x 1200 takes 2), so a worker's off-screen buffers stay within

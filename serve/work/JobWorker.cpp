@@ -16,7 +16,7 @@ namespace figment::serve {
 namespace {
 
 // A worker's JSON error as one line.
-std::string errorLine(const RenderResult& result) {
+std::string errorLine(const WorkResult& result) {
   const nlohmann::json body = nlohmann::json::parse(result.body, nullptr, false);
   std::string line = body.is_object() ? body.value("error", "") : "";
   if (line.empty()) line = "the render failed";
@@ -85,11 +85,11 @@ void JobWorker::handle(JobQueue& queue, const SharedImages& images, const RedisS
   }
   const std::string canonical = std::get<RenderRequest>(parsed).canonical();
   const std::string tag = Digest().add(canonical).add(build_).hex();
-  if (store.contains(SharedImages::nameOf(tag))) {  // made already (delivered twice, or added again)
+  if (store.contains(SharedImages::nameOf(JobKind::kRender, tag))) {  // made already (delivered twice, or added again)
     queue.complete(job, tag, false);
     return;
   }
-  const std::shared_ptr<const RenderResult> result = pool_->render(canonical);
+  const std::shared_ptr<const WorkResult> result = pool_->ask({JobKind::kRender, canonical});
   if (!result) return;  // stopping: left pending
   if (result->status == 200 && !result->keepable()) {
     // Only drapes at rest are kept (an instance answers a kept image as one): this one is
@@ -97,7 +97,7 @@ void JobWorker::handle(JobQueue& queue, const SharedImages& images, const RedisS
     queue.fail(job, "the drape did not come to rest: " + result->drape);
   } else if (result->status == 200) {
     // Acknowledged only once the image is kept: Redis away, the job stays pending.
-    if (images.store(tag, result->body)) queue.complete(job, tag, true);
+    if (images.store(JobKind::kRender, tag, result->body)) queue.complete(job, tag, true);
   } else if (result->status == 400 || result->status == 500) {
     queue.fail(job, errorLine(*result));
   }  // 502, 504: the worker died or ran too long; pending, to be taken over and tried again

@@ -31,8 +31,8 @@ std::string decoded(const std::string& text) {
   return out;
 }
 
-RenderRequest::Parameters parametersOf(const std::string& query) {
-  RenderRequest::Parameters parameters;
+QueryParameters parametersOf(const std::string& query) {
+  QueryParameters parameters;
   std::stringstream in(query);
   for (std::string pair; std::getline(in, pair, '&');) {
     if (pair.empty()) continue;
@@ -43,7 +43,7 @@ RenderRequest::Parameters parametersOf(const std::string& query) {
 }
 
 // The canonical text of `parameters`, or the error as "parameter=value: error (accepted)".
-std::variant<std::string, std::string> canonicalOf(const RenderRequest::Parameters& parameters) {
+std::variant<std::string, std::string> canonicalOf(const QueryParameters& parameters) {
   auto parsed = RenderRequest::parse(parameters);
   if (const auto* error = std::get_if<ParameterError>(&parsed))
     return std::variant<std::string, std::string>(
@@ -85,7 +85,7 @@ std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogu
   Requests requests;
   std::set<std::string> seen;
   for (const std::string& body : bodies) {
-    RenderRequest::Parameters measures;
+    QueryParameters measures;
     std::stringstream in(body);
     for (const char* name : {"stature", "bust", "waist", "hips"})
       if (std::string value; std::getline(in, value, ',')) measures.emplace_back(name, value);
@@ -94,7 +94,7 @@ std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogu
       for (const GarmentSize& size : Catalogue::sizes())
         for (const std::string& pose : poses)
           for (const std::string& view : views) {
-            RenderRequest::Parameters parameters = measures;
+            QueryParameters parameters = measures;
             parameters.insert(parameters.end(), {{"outfit", style.name + ":" + size.name + ":" + style.defaultColour},
                                                  {"pose", pose},
                                                  {"view", view},

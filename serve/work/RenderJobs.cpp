@@ -8,7 +8,7 @@ namespace figment::serve {
 namespace {
 
 // The one-line error of a failed render (the worker's JSON error, else its status).
-std::string errorOf(const std::shared_ptr<const RenderResult>& result) {
+std::string errorOf(const std::shared_ptr<const WorkResult>& result) {
   if (!result) return "too many renders waiting; try again";
   const nlohmann::json body = nlohmann::json::parse(result->body, nullptr, false);
   if (body.is_object() && body.contains("error") && body["error"].is_string()) return body["error"];
@@ -79,7 +79,7 @@ void RenderJobs::run() {
     job.state = "running";
     const std::string canonical = job.canonical;
     lock.unlock();
-    std::shared_ptr<const RenderResult> result = render_(canonical);
+    std::shared_ptr<const WorkResult> result = render_(canonical);
     const bool made = result && result->status == 200;
     if (made) keep_(id, *result);
     lock.lock();

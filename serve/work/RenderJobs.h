@@ -23,9 +23,9 @@ namespace figment::serve {
 class RenderJobs {
  public:
   // Renders a canonical text (null: the pool's queue was full).
-  using Render = std::function<std::shared_ptr<const RenderResult>(const std::string& canonical)>;
+  using Render = std::function<std::shared_ptr<const WorkResult>(const std::string& canonical)>;
   // Keeps a finished render's answer by its id.
-  using Keep = std::function<void(const std::string& id, const RenderResult& result)>;
+  using Keep = std::function<void(const std::string& id, const WorkResult& result)>;
 
   struct Options {
     int threads = 1;     // renders asked of the pool at once

@@ -82,19 +82,27 @@ RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& c
 }
 
 void RenderWorker::serve(const FrameChannel& channel) {
-  std::string canonical;
-  while (channel.receive(canonical, FrameChannel::Clock::time_point::max()) == FrameChannel::Result::kOk) {
-    Answer answer;
+  constexpr auto kNever = FrameChannel::Clock::time_point::max();
+  std::string kindName, canonical;
+  // Two frames a request: its kind, then its canonical text (WorkerPool::makeOn sends them so).
+  while (channel.receive(kindName, kNever) == FrameChannel::Result::kOk &&
+         channel.receive(canonical, kNever) == FrameChannel::Result::kOk) {
+    Answer made;
     try {
-      answer = render(canonical);
+      const std::optional<JobKind> kind = jobKindNamed(kindName);
+      made = kind ? answer({*kind, canonical}) : failure(400, "no such job kind: " + kindName);
     } catch (const std::exception& e) {
-      answer = failure(500, e.what());
+      made = failure(500, e.what());
       sceneKey_.clear();  // the scene may be half made: build it again next time
     }
     const nlohmann::json header = {
-        {"status", answer.status}, {"drapeCache", answer.drapeFromCache ? "hit" : "miss"}, {"drape", answer.drape}};
-    if (!channel.send(header.dump()) || !channel.send(answer.body)) return;
+        {"status", made.status}, {"drapeCache", made.drapeFromCache ? "hit" : "miss"}, {"drape", made.drape}};
+    if (!channel.send(header.dump()) || !channel.send(made.body)) return;
   }
+}
+
+RenderWorker::Answer RenderWorker::answer(const WorkRequest& request) {
+  return request.kind == JobKind::kFit ? advise(request.canonical) : render(request.canonical);
 }
 
 RenderWorker::Answer RenderWorker::advise(const std::string& canonical) {
@@ -106,7 +114,6 @@ RenderWorker::Answer RenderWorker::advise(const std::string& canonical) {
 }
 
 RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
-  if (FitRequest::isFit(canonical)) return advise(canonical);
   auto parsed = RenderRequest::parseCanonical(canonical, fit_ ? &fit_->chart() : nullptr);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
   const RenderRequest& request = std::get<RenderRequest>(parsed);

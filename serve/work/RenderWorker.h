@@ -1,9 +1,10 @@
 #pragma once
-// A worker process's loop: reads a request's canonical text from the server, builds its
+// A worker process's loop: reads a request's kind and canonical text from the server
+// (serve/work/JobKind.h), and for a render builds its
 // scene (OutfitScene), drapes it with the worker's own SceneSession and DrapeContext
 // (the drape cache on disk, shared with the other workers), renders the view and sends
 // back a JSON header and the PNG. The scene of the last request is kept: another view
-// or size of it renders without building or draping again. A fit request (serve/request/FitRequest.h)
+// or size of it renders without building or draping again. A fit (serve/request/FitRequest.h)
 // goes to the worker's FitWorker instead and answers JSON.
 
 #include <memory>
@@ -13,6 +14,7 @@
 #include "serve/work/FitWorker.h"
 #include "serve/scene/OutfitScene.h"
 #include "serve/scene/Wardrobe.h"
+#include "serve/work/JobKind.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
 
@@ -40,9 +42,11 @@ class RenderWorker {
     bool drapeFromCache = false;
     std::string drape;  // a render's: drapeState() of its scene (serve/scene/DrapeState.h); "" else
   };
-  Answer render(const std::string& canonical);
+  // The answer to `request`: a render's picture or a fit's advice.
+  Answer answer(const WorkRequest& request);
 
  private:
+  Answer render(const std::string& canonical);
   Answer advise(const std::string& canonical);
   // The request's image (or GLB) of the scene the session holds, draped.
   Answer drawView(const RenderRequest& request);

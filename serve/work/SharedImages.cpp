@@ -34,16 +34,16 @@ std::shared_ptr<const std::string> SharedImages::decode(const std::string& tag, 
   return image;
 }
 
-std::shared_ptr<const std::string> SharedImages::find(const std::string& tag) const {
-  const std::optional<std::string> entry = store_->get(nameOf(tag));
+std::shared_ptr<const std::string> SharedImages::find(JobKind kind, const std::string& tag) const {
+  const std::optional<std::string> entry = store_->get(nameOf(kind, tag));
   if (!entry) return nullptr;
   std::shared_ptr<const std::string> image = decode(tag, *entry);
-  if (!image) store_->remove(nameOf(tag));  // damaged or foreign: made again and stored anew
+  if (!image) store_->remove(nameOf(kind, tag));  // damaged or foreign: made again and stored anew
   return image;
 }
 
-bool SharedImages::store(const std::string& tag, const std::string& image) const {
-  return store_->put(nameOf(tag), encode(tag, image));
+bool SharedImages::store(JobKind kind, const std::string& tag, const std::string& image) const {
+  return store_->put(nameOf(kind, tag), encode(tag, image));
 }
 
 }  // namespace figment::serve

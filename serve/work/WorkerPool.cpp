@@ -6,14 +6,14 @@
 namespace figment::serve {
 
 struct WorkerPool::Job {
-  std::string canonical;
-  std::shared_ptr<const RenderResult> result;  // set once, under the pool's mutex
+  WorkRequest request;
+  std::shared_ptr<const WorkResult> result;  // set once, under the pool's mutex
   std::condition_variable done;
 };
 
 namespace {
 
-RenderResult failure(int status, const std::string& error) {
+WorkResult failure(int status, const std::string& error) {
   return {status, nlohmann::json{{"error", error}}.dump(), false, ""};
 }
 
@@ -45,28 +45,30 @@ WorkerPool::~WorkerPool() {
   for (std::thread& thread : threads_) thread.join();
 }
 
-std::shared_ptr<const RenderResult> WorkerPool::render(const std::string& canonical) {
+std::shared_ptr<const WorkResult> WorkerPool::ask(const WorkRequest& request) {
   std::unique_lock lock(mutex_);
   std::shared_ptr<Job> job;
-  if (auto it = inFlight_.find(canonical); it != inFlight_.end()) {
+  if (auto it = inFlight_.find(request); it != inFlight_.end()) {
     job = it->second;  // single flight: the same picture is being made
   } else {
     // A pool without workers takes nothing: no one would ever answer it.
     if (options_.workers == 0 || int(queue_.size()) >= options_.queue || stopping_) return nullptr;
     job = std::make_shared<Job>();
-    job->canonical = canonical;
+    job->request = request;
     queue_.push_back(job);
-    inFlight_[canonical] = job;
+    inFlight_[request] = job;
     queued_.notify_one();
   }
   // The worker's time limit bounds this wait: its thread always finishes the job.
+  ++waiting_;
   job->done.wait(lock, [&job] { return job->result != nullptr; });
+  --waiting_;
   return job->result;
 }
 
 WorkerPool::Load WorkerPool::load() const {
   std::lock_guard lock(mutex_);
-  return {options_.workers, busy_, int(queue_.size()), restarts_};
+  return {options_.workers, busy_, int(queue_.size()), waiting_, restarts_};
 }
 
 std::shared_ptr<WorkerPool::Job> WorkerPool::next() {
@@ -79,11 +81,11 @@ std::shared_ptr<WorkerPool::Job> WorkerPool::next() {
   return job;
 }
 
-void WorkerPool::finish(const std::shared_ptr<Job>& job, RenderResult result) {
+void WorkerPool::finish(const std::shared_ptr<Job>& job, WorkResult result) {
   std::lock_guard lock(mutex_);
   --busy_;
-  job->result = std::make_shared<const RenderResult>(std::move(result));
-  inFlight_.erase(job->canonical);
+  job->result = std::make_shared<const WorkResult>(std::move(result));
+  inFlight_.erase(job->request);
   job->done.notify_all();
 }
 
@@ -92,22 +94,25 @@ void WorkerPool::run(int) {
   worker.start();  // at once, so the first request finds it ready
   while (std::shared_ptr<Job> job = next()) {
     if (!worker.running()) worker.start();
-    finish(job, renderOn(worker, job->canonical));
+    finish(job, makeOn(worker, job->request));
   }
   // Jobs left at shutdown are answered, so no request thread waits forever.
   std::lock_guard lock(mutex_);
   for (const std::shared_ptr<Job>& job : queue_) {
-    job->result = std::make_shared<const RenderResult>(failure(503, "the server is stopping"));
+    job->result = std::make_shared<const WorkResult>(failure(503, "the server is stopping"));
     job->done.notify_all();
   }
   queue_.clear();
 }
 
-RenderResult WorkerPool::renderOn(WorkerProcess& worker, const std::string& canonical) {
+WorkResult WorkerPool::makeOn(WorkerProcess& worker, const WorkRequest& request) {
   const auto deadline =
       FrameChannel::Clock::now() + std::chrono::milliseconds(static_cast<long long>(options_.timeLimit * 1000.0));
   std::string header, body;
-  FrameChannel::Result r = worker.channel().send(canonical) ? FrameChannel::Result::kOk : FrameChannel::Result::kClosed;
+  // Two frames: the kind, then the request's text (RenderWorker::serve reads them so).
+  const bool sent =
+      worker.channel().send(std::string(jobKindName(request.kind))) && worker.channel().send(request.canonical);
+  FrameChannel::Result r = sent ? FrameChannel::Result::kOk : FrameChannel::Result::kClosed;
   if (r == FrameChannel::Result::kOk) r = worker.channel().receive(header, deadline);
   if (r == FrameChannel::Result::kOk) r = worker.channel().receive(body, deadline);
   if (r != FrameChannel::Result::kOk) {

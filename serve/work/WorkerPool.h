@@ -1,6 +1,8 @@
 #pragma once
 // The server's render workers: N worker processes, each fed by a thread of its own from
-// one bounded queue. Identical requests in flight (one canonical text) are rendered once
+// one bounded queue of typed requests (serve/work/JobKind.h: a render or a fit), the kind
+// sent to the worker beside the request. Identical requests in flight (one kind and
+// canonical text) are made once
 // and answered alike (single flight); a full queue refuses at once (the server answers
 // 503); each render has a time limit, past which its worker is killed; a worker that
 // dies or is killed fails only the request it had, and is started again.
@@ -14,13 +16,14 @@
 #include <thread>
 #include <vector>
 
+#include "serve/work/JobKind.h"
 #include "serve/work/ServeOptions.h"
 #include "serve/work/WorkerProcess.h"
 
 namespace figment::serve {
 
 // What a worker answered (or what became of its request).
-struct RenderResult {
+struct WorkResult {
   int status = 500;             // HTTP status: 200, 400 (a request the worker refused), 500, 502, 504
   std::string body;             // the PNG, or a JSON error
   bool drapeFromCache = false;  // every drape of the scene came from the drape cache (or was kept)
@@ -50,12 +53,13 @@ class WorkerPool {
   WorkerPool(const WorkerPool&) = delete;
   WorkerPool& operator=(const WorkerPool&) = delete;
 
-  // Renders `canonical` (a RenderRequest's canonical text) and waits for it; null when
-  // the queue is full. A request already in flight is joined, not queued again.
-  std::shared_ptr<const RenderResult> render(const std::string& canonical);
+  // Has a worker make `request` (a render or a fit) and waits for it; null when the queue
+  // is full. A request already in flight is joined, not queued again.
+  std::shared_ptr<const WorkResult> ask(const WorkRequest& request);
 
   struct Load {
     int workers = 0, busy = 0, queued = 0;
+    int waiting = 0;    // asks waiting for an answer: those queued or making, and those joining them
     long restarts = 0;  // workers started again after dying or being killed
   };
   Load load() const;
@@ -64,15 +68,16 @@ class WorkerPool {
   struct Job;
   void run(int slot);
   std::shared_ptr<Job> next();
-  RenderResult renderOn(WorkerProcess& worker, const std::string& canonical);
-  void finish(const std::shared_ptr<Job>& job, RenderResult result);
+  WorkResult makeOn(WorkerProcess& worker, const WorkRequest& request);
+  void finish(const std::shared_ptr<Job>& job, WorkResult result);
 
   PoolOptions options_;
   mutable std::mutex mutex_;
   std::condition_variable queued_;
   std::deque<std::shared_ptr<Job>> queue_;
-  std::map<std::string, std::shared_ptr<Job>> inFlight_;  // by canonical text
+  std::map<WorkRequest, std::shared_ptr<Job>> inFlight_;
   int busy_ = 0;
+  int waiting_ = 0;
   long restarts_ = 0;
   bool stopping_ = false;
   std::vector<std::thread> threads_;

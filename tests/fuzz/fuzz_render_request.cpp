@@ -12,8 +12,8 @@
 
 namespace {
 
-figment::serve::RenderRequest::Parameters split(const std::string& query) {
-  figment::serve::RenderRequest::Parameters parameters;
+figment::serve::QueryParameters split(const std::string& query) {
+  figment::serve::QueryParameters parameters;
   size_t start = 0;
   while (start <= query.size()) {
     size_t amp = query.find('&', start);

@@ -12,13 +12,13 @@ using namespace figment::serve;
 
 namespace {
 
-RenderRequest ok(const RenderRequest::Parameters& parameters) {
+RenderRequest ok(const QueryParameters& parameters) {
   auto parsed = RenderRequest::parse(parameters);
   if (auto* error = std::get_if<ParameterError>(&parsed)) ADD_FAILURE() << error->parameter << ": " << error->error;
   return std::holds_alternative<RenderRequest>(parsed) ? std::get<RenderRequest>(parsed) : RenderRequest{};
 }
 
-ParameterError refused(const RenderRequest::Parameters& parameters) {
+ParameterError refused(const QueryParameters& parameters) {
   auto parsed = RenderRequest::parse(parameters);
   EXPECT_TRUE(std::holds_alternative<ParameterError>(parsed)) << "accepted";
   return std::holds_alternative<ParameterError>(parsed) ? std::get<ParameterError>(parsed) : ParameterError{};
@@ -60,7 +60,7 @@ TEST(RenderRequest, ColoursLightAndViewShareTheDrape) {
 
 TEST(RenderRequest, EveryClassOfBadParameterNamesItsParameterValueAndRange) {
   struct Case {
-    RenderRequest::Parameters parameters;
+    QueryParameters parameters;
     std::string parameter, error;
   };
   const std::vector<Case> cases = {
@@ -136,7 +136,7 @@ TEST(RenderRequest, ASexMakesTheBodyMeasuredAndTheSizesTheCharts) {
 
 TEST(RenderRequest, AMeasuredBodyRefusesWhatItCannotWear) {
   const SizeChart chart = womensChart();
-  const auto refusedWith = [&chart](const RenderRequest::Parameters& parameters, const SizeChart* given) {
+  const auto refusedWith = [&chart](const QueryParameters& parameters, const SizeChart* given) {
     auto parsed = RenderRequest::parse(parameters, given);
     EXPECT_TRUE(std::holds_alternative<ParameterError>(parsed));
     return std::holds_alternative<ParameterError>(parsed) ? std::get<ParameterError>(parsed) : ParameterError{};
@@ -158,7 +158,7 @@ TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
   // MakeHuman's reach, as GET /api/fit accepts it: the chart's bodies widened by 8 cm each
   // side (here bust 0.76 to 0.96) and stature 1.45 to 1.95; not the Mannequin's ranges.
   const SizeChart chart = womensChart();
-  const auto parsed = [&chart](const RenderRequest::Parameters& parameters) {
+  const auto parsed = [&chart](const QueryParameters& parameters) {
     return RenderRequest::parse(parameters, &chart);
   };
   auto bust = parsed({{"sex", "female"}, {"bust", "1.00"}});
@@ -176,7 +176,7 @@ TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
 
 TEST(RenderRequest, APosedMeasuredBodyWearsOneGarmentAndSitsOnlyInATshirt) {
   const SizeChart chart = womensChart();
-  const auto parsed = [&chart](const RenderRequest::Parameters& parameters) {
+  const auto parsed = [&chart](const QueryParameters& parameters) {
     return RenderRequest::parse(parameters, &chart);
   };
   for (const char* pose : {"rest", "arms-down", "arm-raised", "walking", "sitting"}) {
@@ -242,7 +242,7 @@ TEST(RenderRequest, ARefusalQuotesWholeCharacters) {
   std::string euros;
   for (int i = 0; i < 22; ++i) euros += "\xe2\x82\xac";
   for (const auto& [name, value] :
-       RenderRequest::Parameters{{"skin", euros}, {"outfit", "dress:" + euros}, {euros, "1"}}) {
+       QueryParameters{{"skin", euros}, {"outfit", "dress:" + euros}, {euros, "1"}}) {
     const ParameterError error = refused({{name, value}});
     EXPECT_EQ(error.value.size() % 3, name == euros ? 1u : 0u) << name;  // whole euros ("1" for the name's)
     EXPECT_LE(error.value.size(), 64u);

@@ -18,6 +18,7 @@
 #include "io/SizeChartFile.h"
 #include "serve/request/Catalogue.h"
 #include "serve/work/Digest.h"
+#include "serve/request/BodyMeasuresText.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/RenderRequest.h"
@@ -58,7 +59,7 @@ const char* const kConditions[] = {"none", "female", "male"};  // x-figment-by-s
 // Whether a render of `name`=`value` is taken, without a sex or with `sex`. A pose is
 // asked in a tshirt: a sitting measured body wears nothing else (a rule between them).
 bool takes(const std::string& sex, const std::string& name, const std::string& value) {
-  RenderRequest::Parameters parameters = {{name, value}};
+  QueryParameters parameters = {{name, value}};
   if (sex != "none") parameters.push_back({"sex", sex});
   if (name == "pose") parameters.push_back({"outfit", "tshirt:M"});
   return std::holds_alternative<RenderRequest>(RenderRequest::parse(parameters, &chart()));
@@ -67,7 +68,7 @@ bool takes(const std::string& sex, const std::string& name, const std::string& v
 MeasureRange rangeFor(const std::string& sex, const std::string& name) {
   if (sex == "none") return Catalogue::measure(name);
   for (const MeasureRange& range :
-       FitRequest::ranges(chart(), sex == "male" ? figment::Sex::Male : figment::Sex::Female))
+       BodyMeasuresText::ranges(chart(), sex == "male" ? figment::Sex::Male : figment::Sex::Female))
     if (range.name == name) return range;
   throw std::runtime_error("no range " + name);
 }

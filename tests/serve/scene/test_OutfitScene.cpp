@@ -63,7 +63,7 @@ class OutfitSceneTest : public ::testing::Test {
   static void TearDownTestSuite() { delete wardrobe_; }
 
   // The scene for `parameters`, referenced; its engines in scene order.
-  static SoSeparator* scene(const RenderRequest::Parameters& parameters, std::vector<ClothEngine*>& engines) {
+  static SoSeparator* scene(const QueryParameters& parameters, std::vector<ClothEngine*>& engines) {
     auto parsed = RenderRequest::parse(parameters);
     EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed));
     SoSeparator* root = OutfitScene::build(std::get<RenderRequest>(parsed), *wardrobe_);
@@ -82,7 +82,7 @@ class OutfitSceneTest : public ::testing::Test {
   // service's answer would be. The colour is under test, not the drape: each engine takes
   // one step (the garment stays about where it was cut, round the mannequin), not the
   // seconds of a full drape.
-  Image picture(const RenderRequest::Parameters& parameters) const {
+  Image picture(const QueryParameters& parameters) const {
     auto parsed = RenderRequest::parse(parameters);
     EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed));
     if (!std::holds_alternative<RenderRequest>(parsed)) return {};

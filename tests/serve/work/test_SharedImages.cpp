@@ -40,12 +40,12 @@ std::string someImage() {
 TEST(SharedImages, GivesBackWhatWasStoredUnderItsTagOnly) {
   const auto store = std::make_shared<MemoryStore>();
   const SharedImages images(store);
-  ASSERT_TRUE(images.store(kTag, someImage()));
-  ASSERT_EQ(store->entries.count(SharedImages::nameOf(kTag)), 1u);
-  const std::shared_ptr<const std::string> back = images.find(kTag);
+  ASSERT_TRUE(images.store(JobKind::kRender, kTag, someImage()));
+  ASSERT_EQ(store->entries.count(SharedImages::nameOf(JobKind::kRender, kTag)), 1u);
+  const std::shared_ptr<const std::string> back = images.find(JobKind::kRender, kTag);
   ASSERT_NE(back, nullptr);
   EXPECT_EQ(*back, someImage());
-  EXPECT_EQ(images.find(kOtherTag), nullptr);
+  EXPECT_EQ(images.find(JobKind::kRender, kOtherTag), nullptr);
   EXPECT_EQ(store->entries.size(), 1u);  // a miss drops nothing
 }
 
@@ -63,17 +63,29 @@ TEST(SharedImages, ADamagedEntryIsDroppedNeverAnswered) {
 
   const auto store = std::make_shared<MemoryStore>();
   const SharedImages images(store);
-  store->entries[SharedImages::nameOf(kTag)] = entry.substr(0, entry.size() - 5);
-  EXPECT_EQ(images.find(kTag), nullptr);
+  store->entries[SharedImages::nameOf(JobKind::kRender, kTag)] = entry.substr(0, entry.size() - 5);
+  EXPECT_EQ(images.find(JobKind::kRender, kTag), nullptr);
   EXPECT_TRUE(store->entries.empty());
 }
 
 TEST(SharedImages, AForeignEntryIsDroppedNeverAnswered) {
   const auto store = std::make_shared<MemoryStore>();
   const SharedImages images(store);
-  ASSERT_TRUE(images.store(kOtherTag, someImage()));
-  store->entries[SharedImages::nameOf(kTag)] = store->entries.at(SharedImages::nameOf(kOtherTag));
-  EXPECT_EQ(images.find(kTag), nullptr);
-  EXPECT_EQ(store->entries.count(SharedImages::nameOf(kTag)), 0u);
-  EXPECT_NE(images.find(kOtherTag), nullptr);
+  ASSERT_TRUE(images.store(JobKind::kRender, kOtherTag, someImage()));
+  store->entries[SharedImages::nameOf(JobKind::kRender, kTag)] = store->entries.at(SharedImages::nameOf(JobKind::kRender, kOtherTag));
+  EXPECT_EQ(images.find(JobKind::kRender, kTag), nullptr);
+  EXPECT_EQ(store->entries.count(SharedImages::nameOf(JobKind::kRender, kTag)), 0u);
+  EXPECT_NE(images.find(JobKind::kRender, kOtherTag), nullptr);
+}
+
+// A fit's advice is kept in an entry of its own kind, never as an image.
+TEST(SharedImages, AFitsAdviceIsNotAnImage) {
+  const auto store = std::make_shared<MemoryStore>();
+  const SharedImages images(store);
+  ASSERT_TRUE(images.store(JobKind::kFit, kTag, "{}"));
+  EXPECT_EQ(store->entries.count("fit:" + kTag), 1u);
+  EXPECT_EQ(store->entries.count("image:" + kTag), 0u);
+  EXPECT_EQ(images.find(JobKind::kRender, kTag), nullptr);
+  ASSERT_NE(images.find(JobKind::kFit, kTag), nullptr);
+  EXPECT_EQ(*images.find(JobKind::kFit, kTag), "{}");
 }
