@@ -11,14 +11,14 @@
 #include <set>
 
 #include "io/SizeChartFile.h"
-#include "serve/request/Catalogue.h"
-#include "serve/work/Digest.h"
 #include "serve/http/ExchangeServer.h"
+#include "serve/http/WebAssets.h"
+#include "serve/request/Catalogue.h"
 #include "serve/request/FitRequest.h"
-#include "serve/work/RedisStore.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/request/Utf8Text.h"
-#include "serve/http/WebAssets.h"
+#include "serve/work/Digest.h"
+#include "serve/work/RedisStore.h"
 
 namespace figment::serve {
 
@@ -180,7 +180,9 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
   const PoolOptions poolOptions = workerPoolOptions(options_, program);
   jobs_ = std::make_unique<RenderJobs>(
       RenderJobs::Options{poolOptions.workers, poolOptions.queue, 1024},
-      [this](const std::string& canonical) { return pool_->ask({JobKind::kRender, canonical}); },
+      [this](const std::string& canonical) {
+        return pool_->ask({JobKind::kRender, canonical});
+      },
       [this](const std::string& id, const WorkResult& result) {
         if (!result.keepable()) return;  // a restless or torn drape: rendered again when asked
         images_.store(JobKind::kRender, '"' + id + '"', std::make_shared<const std::string>(result.body));

@@ -6,13 +6,13 @@
 
 #include <cstddef>
 #include <list>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <utility>
 
 #include "serve/work/JobKind.h"
-#include <map>
 
 namespace figment::serve {
 

@@ -31,7 +31,8 @@ std::optional<ParameterError> BodyMeasuresText::read(const std::string& paramete
   char accepted[96];
   std::snprintf(accepted, sizeof accepted, "%.2f to %.2f (metres)", range.minimum, range.maximum);
   double v = 0;
-  if (!RequestParameters::number(value, v)) return RequestParameters::refusal(parameter, value, "not a number", accepted);
+  if (!RequestParameters::number(value, v))
+    return RequestParameters::refusal(parameter, value, "not a number", accepted);
   if (v < range.minimum || v > range.maximum)
     return RequestParameters::refusal(parameter, value, "out of range", accepted);
   out = rounded(v);

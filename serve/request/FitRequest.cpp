@@ -39,8 +39,7 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Qu
 
 }  // namespace
 
-std::variant<FitRequest, ParameterError> FitRequest::parse(const QueryParameters& parameters,
-                                                           const SizeChart& chart) {
+std::variant<FitRequest, ParameterError> FitRequest::parse(const QueryParameters& parameters, const SizeChart& chart) {
   auto parsed = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return *error;
   const auto& values = std::get<std::map<std::string, std::string>>(parsed);

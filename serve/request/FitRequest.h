@@ -25,8 +25,7 @@ class FitRequest {
   static std::vector<std::string> parameterNames();
 
   // Every parameter is required: sex, style, stature, bust, waist, hips.
-  static std::variant<FitRequest, ParameterError> parse(const QueryParameters& parameters,
-                                                        const SizeChart& chart);
+  static std::variant<FitRequest, ParameterError> parse(const QueryParameters& parameters, const SizeChart& chart);
   // name=value&... in a fixed order, metres to the mm: parseCanonical gives it back.
   std::string canonical() const;
   static std::variant<FitRequest, ParameterError> parseCanonical(const std::string& text, const SizeChart& chart);

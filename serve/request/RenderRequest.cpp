@@ -282,7 +282,8 @@ std::optional<ParameterError> posedOutfit(const RenderRequest& request) {
 
 }  // namespace
 
-std::variant<RenderRequest, ParameterError> RenderRequest::parse(const QueryParameters& parameters, const SizeChart* chart) {
+std::variant<RenderRequest, ParameterError> RenderRequest::parse(const QueryParameters& parameters,
+                                                                 const SizeChart* chart) {
   auto values = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&values)) return *error;
   const auto& named = std::get<std::map<std::string, std::string>>(values);

@@ -2,8 +2,9 @@
 // A worker's size advice (GET /api/fit): figment-size's recommendation made in the worker
 // process, with what it needs kept between requests. MakeHuman's model is read on the first
 // fit request (a render-only worker never pays for it), and one SizeFitter per style keeps
-// its graded sizes (each size's chart body, garment and fit-model drape, about 1 s each),
-// so a later request for another body in that style only drapes its candidates.
+// its graded sizes (each size's chart body and garment) and, once a fit needs them, their
+// fit-model drapes (about 1 s each), so a later request for another body in that style only
+// drapes its candidates. A render of a measured outfit takes the graded garment alone: no drape.
 
 #include <map>
 #include <memory>

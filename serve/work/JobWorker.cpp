@@ -5,10 +5,10 @@
 #include <thread>
 #include <vector>
 
+#include "serve/request/RenderRequest.h"
 #include "serve/work/Digest.h"
 #include "serve/work/JobQueue.h"
 #include "serve/work/RedisStore.h"
-#include "serve/request/RenderRequest.h"
 #include "serve/work/SharedImages.h"
 
 namespace figment::serve {

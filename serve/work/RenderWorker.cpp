@@ -8,12 +8,12 @@
 #include "io/DrapeCache.h"
 #include "io/PngFile.h"
 #include "io/SizeChartFile.h"
-#include "serve/scene/DrapeState.h"
 #include "serve/request/FitRequest.h"
-#include "serve/work/FrameChannel.h"
-#include "serve/scene/OutfitScene.h"
-#include "serve/work/RedisStore.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/scene/DrapeState.h"
+#include "serve/scene/OutfitScene.h"
+#include "serve/work/FrameChannel.h"
+#include "serve/work/RedisStore.h"
 #include "session/SceneExport.h"
 
 namespace figment::serve {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "serve/work/FitWorker.h"
 #include "serve/scene/OutfitScene.h"
 #include "serve/scene/Wardrobe.h"
+#include "serve/work/FitWorker.h"
 #include "serve/work/JobKind.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"

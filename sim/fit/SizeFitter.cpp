@@ -229,13 +229,12 @@ std::vector<RegionFit> SizeFitter::fitOn(const MeshCollider& collider, const std
 }
 
 SizeFit SizeFitter::fitSize(const Graded& graded, const std::vector<RegionFit>& own, const std::string& name,
-                            const MeshCollider& collider,
-                            const std::vector<FitRegion>& regions, SizeDrape drape) const {
+                            const MeshCollider& collider, const std::vector<FitRegion>& regions,
+                            SizeDrape drape) const {
   SizeFit fit;
   fit.size = name;
   fit.regions = fitOn(collider, regions, graded, drape.positions);
-  for (size_t r = 0; r < fit.regions.size(); ++r)
-    fit.verdicts.push_back(judge(fit.regions[r], own[r], rule()));
+  for (size_t r = 0; r < fit.regions.size(); ++r) fit.verdicts.push_back(judge(fit.regions[r], own[r], rule()));
   fit.text = shopperText(fit.regions, own, fit.verdicts, rule());
   fit.drape = std::move(drape);
   return fit;
@@ -268,8 +267,7 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
       start = warmStart(graded.garment, grade(sex, candidates[from]).garment, out.sizes[from].drape.positions,
                         *collider, parameters_.clearance);
     out.sizes[k] = fitSize(graded, ownFit(sex, candidates[k]), chart_.sizes(sex)[candidates[k]].name, *collider,
-                           regions,
-                           drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
+                           regions, drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
   }
   out.allTight = true;
   for (const SizeFit& fit : out.sizes)

@@ -4,6 +4,7 @@
 // answers: the constructor polls for that, with no clock of its own (ctest's TIMEOUT bounds
 // a Redis that never comes).
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,13 +21,15 @@ namespace figment::test {
 class RedisServer {
  public:
   explicit RedisServer(const std::string& program) : socket_((dir_.path() / "redis.sock").string()) {
-    std::vector<std::string> arguments = {program,         "--port", "0",  "--unixsocket", socket_, "--save", "",
+    std::vector<std::string> arguments = {program,        "--port", "0",     "--unixsocket",      socket_, "--save", "",
                                           "--appendonly", "no",     "--dir", dir_.path().string()};
     std::vector<char*> argv;
     for (std::string& argument : arguments) argv.push_back(argument.data());
     argv.push_back(nullptr);
     pid_ = ::fork();
     if (pid_ == 0) {
+      const int quiet = ::open("/dev/null", O_WRONLY);  // its start-up banner is not the test's
+      ::dup2(quiet, STDOUT_FILENO);
       ::execv(program.c_str(), argv.data());
       ::_exit(127);
     }

@@ -6,7 +6,7 @@ an answer two, a JSON header then the body) and does what the request's text say
 
   echo:TEXT   200, "KIND:TEXT" (the kind the frames carried)
   count       200, how many requests this process has answered, this one included
-  wait:PATH   reads one line from the FIFO at PATH (blocks until the test writes it), then 200
+  wait:PATH   reads one 3-byte token from the FIFO at PATH (blocks until the test writes one), then 200
   refuse      400 with a JSON error
   hang        never answers
   die         exits at once, answering nothing
@@ -44,8 +44,11 @@ def answer(kind, text, answered):
     if text == "count":
         return 200, str(answered)
     if text.startswith("wait:"):
-        with open(text[5:]) as fifo:
-            fifo.readline()
+        fifo = os.open(text[5:], os.O_RDONLY)
+        try:
+            os.read(fifo, 3)  # one token ("go\n"): one request through
+        finally:
+            os.close(fifo)
         return 200, "released"
     if text == "refuse":
         return 400, json.dumps({"error": "refused"})

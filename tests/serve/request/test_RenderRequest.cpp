@@ -158,9 +158,7 @@ TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
   // MakeHuman's reach, as GET /api/fit accepts it: the chart's bodies widened by 8 cm each
   // side (here bust 0.76 to 0.96) and stature 1.45 to 1.95; not the Mannequin's ranges.
   const SizeChart chart = womensChart();
-  const auto parsed = [&chart](const QueryParameters& parameters) {
-    return RenderRequest::parse(parameters, &chart);
-  };
+  const auto parsed = [&chart](const QueryParameters& parameters) { return RenderRequest::parse(parameters, &chart); };
   auto bust = parsed({{"sex", "female"}, {"bust", "1.00"}});
   ASSERT_TRUE(std::holds_alternative<ParameterError>(bust));
   EXPECT_EQ(std::get<ParameterError>(bust).parameter, "bust");
@@ -176,9 +174,7 @@ TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
 
 TEST(RenderRequest, APosedMeasuredBodyWearsOneGarmentAndSitsOnlyInATshirt) {
   const SizeChart chart = womensChart();
-  const auto parsed = [&chart](const QueryParameters& parameters) {
-    return RenderRequest::parse(parameters, &chart);
-  };
+  const auto parsed = [&chart](const QueryParameters& parameters) { return RenderRequest::parse(parameters, &chart); };
   for (const char* pose : {"rest", "arms-down", "arm-raised", "walking", "sitting"}) {
     auto one = parsed({{"sex", "female"}, {"pose", pose}, {"outfit", "tshirt:M"}});
     ASSERT_TRUE(std::holds_alternative<RenderRequest>(one)) << pose;
@@ -241,8 +237,7 @@ TEST(RenderRequest, ARefusalQuotesWholeCharacters) {
   // throw and the client get 500. "€" is 3 bytes: 22 of them cut at 64 bytes fall mid-character.
   std::string euros;
   for (int i = 0; i < 22; ++i) euros += "\xe2\x82\xac";
-  for (const auto& [name, value] :
-       QueryParameters{{"skin", euros}, {"outfit", "dress:" + euros}, {euros, "1"}}) {
+  for (const auto& [name, value] : QueryParameters{{"skin", euros}, {"outfit", "dress:" + euros}, {euros, "1"}}) {
     const ParameterError error = refused({{name, value}});
     EXPECT_EQ(error.value.size() % 3, name == euros ? 1u : 0u) << name;  // whole euros ("1" for the name's)
     EXPECT_LE(error.value.size(), 64u);

@@ -16,13 +16,13 @@
 #include <set>
 
 #include "io/SizeChartFile.h"
-#include "serve/request/Catalogue.h"
-#include "serve/work/Digest.h"
+#include "serve/http/WebAssets.h"
 #include "serve/request/BodyMeasuresText.h"
+#include "serve/request/Catalogue.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/RenderRequest.h"
-#include "serve/http/WebAssets.h"
+#include "serve/work/Digest.h"
 #include "sim/garment/GarmentStyle.h"
 
 using namespace figment::serve;

@@ -7,8 +7,8 @@
 #include <set>
 
 #include "serve/request/Catalogue.h"
-#include "serve/work/PrecomputePlan.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/work/PrecomputePlan.h"
 
 using namespace figment::serve;
 

@@ -72,7 +72,8 @@ TEST(SharedImages, AForeignEntryIsDroppedNeverAnswered) {
   const auto store = std::make_shared<MemoryStore>();
   const SharedImages images(store);
   ASSERT_TRUE(images.store(JobKind::kRender, kOtherTag, someImage()));
-  store->entries[SharedImages::nameOf(JobKind::kRender, kTag)] = store->entries.at(SharedImages::nameOf(JobKind::kRender, kOtherTag));
+  store->entries[SharedImages::nameOf(JobKind::kRender, kTag)] =
+      store->entries.at(SharedImages::nameOf(JobKind::kRender, kOtherTag));
   EXPECT_EQ(images.find(JobKind::kRender, kTag), nullptr);
   EXPECT_EQ(store->entries.count(SharedImages::nameOf(JobKind::kRender, kTag)), 0u);
   EXPECT_NE(images.find(JobKind::kRender, kOtherTag), nullptr);
