@@ -2,10 +2,10 @@
 // The server's render workers: N worker processes, each fed by a thread of its own from
 // one bounded queue of typed requests (serve/work/JobKind.h: a render or a fit), the kind
 // sent to the worker beside the request. Identical requests in flight (one kind and
-// canonical text) are made once
-// and answered alike (single flight); a full queue refuses at once (the server answers
-// 503); each render has a time limit, past which its worker is killed; a worker that
-// dies or is killed fails only the request it had, and is started again.
+// canonical text) are made once and answered alike (single flight); a full queue refuses
+// at once (the server answers 503); each request has a time limit, past which its worker
+// is killed; a worker that dies or is killed fails only the request it had, and is
+// started again.
 
 #include <condition_variable>
 #include <deque>
@@ -25,7 +25,7 @@ namespace figment::serve {
 // What a worker answered (or what became of its request).
 struct WorkResult {
   int status = 500;             // HTTP status: 200, 400 (a request the worker refused), 500, 502, 504
-  std::string body;             // the PNG, or a JSON error
+  std::string body;             // the PNG or GLB, a fit's JSON advice, or a JSON error
   bool drapeFromCache = false;  // every drape of the scene came from the drape cache (or was kept)
   std::string drape;            // a render's: rest, restless or torn (RenderWorker::drapeState); "" else
   // Whether the answer may be kept for another request (the image caches, Redis): a fit's,

@@ -1,12 +1,11 @@
 // A fit request's parameters: every one required, canonical text that reads back to itself
-// (its kind travels beside it, never in it), ranges taken from the size chart, and every class of bad
-// parameter refused with the parameter, its value and what is accepted.
+// (its kind travels beside it, never in it), and every class of bad parameter refused with
+// the parameter, its value and what is accepted.
 
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "serve/request/BodyMeasuresText.h"
 #include "serve/request/FitRequest.h"
 #include "support/SmallSizeChart.h"
 
@@ -54,15 +53,6 @@ TEST(FitRequest, ARendersCanonicalTextIsNotAFit) {
   EXPECT_TRUE(std::holds_alternative<ParameterError>(
       FitRequest::parseCanonical("stature=1.659&bust=0.891&waist=0.696&hips=0.939&skin=cc9473", chart())));
   EXPECT_TRUE(std::holds_alternative<ParameterError>(FitRequest::parseCanonical("stature=1.659", chart())));
-}
-
-TEST(FitRequest, RangesAreTheChartsWidenedByTwoSizes) {
-  const std::vector<MeasureRange> men = BodyMeasuresText::ranges(chart(), Sex::Male);
-  ASSERT_EQ(men.size(), 4u);
-  EXPECT_EQ(men[1].name, "bust");
-  EXPECT_NEAR(men[1].minimum, 0.88, 1e-9);
-  EXPECT_NEAR(men[1].maximum, 1.08, 1e-9);
-  EXPECT_NEAR(men[3].maximum, 1.12, 1e-9);
 }
 
 TEST(FitRequest, RefusesEachBadParameterNamingItAndTheAcceptedRange) {
