@@ -5,9 +5,7 @@
 // text, so its digest names the image (the ETag) and identical requests in flight drape
 // once.
 
-#include <optional>
 #include <string>
-#include <utility>
 #include <variant>
 #include <vector>
 
