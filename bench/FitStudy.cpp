@@ -25,7 +25,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 int steps(const Recommendation& r) {
   int sum = 0;
-  for (const SizeFit& fit : r.sizes) sum += fit.drape.run.iterations;
+  for (const SizeFit& fit : r.sizes) sum += fit.drape.report.run.iterations;
   return sum;
 }
 

@@ -63,9 +63,9 @@ std::string recommendationJson(const Recommendation& r) {
   for (size_t s = 0; s < r.sizes.size(); ++s) {
     const SizeFit& fit = r.sizes[s];
     out += (s ? ", " : "") + quoted(fit.size) + ": {\"text\": " + quoted(fit.text) +
-           ", \"steps\": " + std::to_string(fit.drape.run.iterations) +
-           ", \"warm\": " + (fit.drape.warm ? "true" : "false") +
-           ", \"at_rest\": " + (fit.drape.run.atRest ? "true" : "false") + ", \"regions\": " + regionsJson(fit) + "}";
+           ", \"steps\": " + std::to_string(fit.drape.report.run.iterations) +
+           ", \"warm\": " + (fit.drape.report.warm ? "true" : "false") +
+           ", \"at_rest\": " + (fit.drape.report.run.atRest ? "true" : "false") + ", \"regions\": " + regionsJson(fit) + "}";
   }
   return out + "}}";
 }
@@ -74,7 +74,7 @@ std::vector<std::string> unrestedSizeLines(const Recommendation& recommendation,
                                            double maxTime) {
   std::vector<std::string> lines;
   for (const SizeFit& fit : recommendation.sizes)
-    if (!fit.drape.run.atRest)
+    if (!fit.drape.report.run.atRest)
       lines.push_back(style + " size " + fit.size + " was not at rest after " + formatted("%g", maxTime, 0, 0, 0, 0) +
                       " s: its fit may still change");
   return lines;

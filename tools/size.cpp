@@ -41,8 +41,8 @@ void printText(const figment::Recommendation& r, const std::string& style) {
     std::printf("%s: recommended size %s%s\n", style.c_str(), r.recommended.c_str(),
                 r.allTight ? " (every candidate is tight somewhere: the largest)" : "");
   for (const figment::SizeFit& fit : r.sizes) {
-    std::printf("\n%s: %s (%d steps%s, %.2f s)\n", fit.size.c_str(), fit.text.c_str(), fit.drape.run.iterations,
-                fit.drape.warm ? ", warm start" : "", fit.drape.run.wallSeconds);
+    std::printf("\n%s: %s (%d steps%s, %.2f s)\n", fit.size.c_str(), fit.text.c_str(), fit.drape.report.run.iterations,
+                fit.drape.report.warm ? ", warm start" : "", fit.drape.report.run.wallSeconds);
     std::printf("  %-11s %9s %8s %8s %10s %9s  %s\n", "region", "stretch%", "max%", "ease mm", "girth ease", "kPa",
                 "verdict");
     for (size_t i = 0; i < fit.regions.size(); ++i) {

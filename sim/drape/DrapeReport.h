@@ -37,6 +37,9 @@ struct DrapeReport {
   int level = 0, levels = 0, sections = 0;
   EndLevelSettling settling;
 
+  // It started from an earlier drape's shape (another size's, sim/fit/SizeFitter.h), not
+  // from the garment's rest shape.
+  bool warm = false;
   // The drape came from a drape cache: the report is the run that made it, but
   // wallSeconds, which is then the time to find and read it.
   bool fromCache = false;

@@ -177,19 +177,19 @@ const std::vector<RegionFit>& SizeFitter::ownFit(Sex sex, int size) {
   if (const auto found = ownFits_.find(key); found != ownFits_.end()) return found->second;
   const Graded& made = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(made.body);
-  const SizeDrape own = drapeSize(made, sex, size, collider, nullptr);
+  const GarmentDrape own = drapeSize(made, sex, size, collider, nullptr);
   return ownFits_
       .emplace(key,
                fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, regions_), made, own.positions))
       .first->second;
 }
 
-SizeDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
+GarmentDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
                                 const std::shared_ptr<const MeshCollider>& body, const std::vector<Vec3>* start) const {
   return sewn_ ? sew(sex, size, body) : drape(graded.garment, body, start);
 }
 
-SizeDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const {
+GarmentDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const {
   const SizePattern& pattern = patternOf(sex, size);
   const UnsewnGarment cut =
       cutPattern(placed(pattern.pattern, placementOn(body->surface(), pattern.madeForStature)), sewn_->spacing);
@@ -199,24 +199,22 @@ SizeDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCol
   request.body = body;
   request.sewing = DrapeSewing{cut.flat, cut.seams, {}};
   const GarmentDrape drape = drapeGarment(request);
-  SizeDrape out;
-  out.positions = drape.positions;
-  out.run = drape.report.run;
+  GarmentDrape out = drape;
   if (drape.sewing) {
-    out.run.iterations += drape.sewing->run.iterations;
-    out.run.wallSeconds += drape.sewing->run.wallSeconds;
+    out.report.run.iterations += drape.sewing->run.iterations;
+    out.report.run.wallSeconds += drape.sewing->run.wallSeconds;
   }
   return out;
 }
 
-SizeDrape SizeFitter::drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
+GarmentDrape SizeFitter::drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
                             const std::vector<Vec3>* start) const {
   ClothSolver solver(garment, parameters_, body);
   if (start) solver.resume(*start, std::vector<Vec3>(start->size(), Vec3::Zero()), 0.0, 0);
-  SizeDrape out;
-  out.run = solver.run();
+  GarmentDrape out;
+  out.report.run = solver.run();
   out.positions = solver.positions();
-  out.warm = start != nullptr;
+  out.report.warm = start != nullptr;
   return out;
 }
 
@@ -230,7 +228,7 @@ std::vector<RegionFit> SizeFitter::fitOn(const MeshCollider& collider, const std
 
 SizeFit SizeFitter::fitSize(const Graded& graded, const std::vector<RegionFit>& own, const std::string& name,
                             const MeshCollider& collider, const std::vector<FitRegion>& regions,
-                            SizeDrape drape) const {
+                            GarmentDrape drape) const {
   SizeFit fit;
   fit.size = name;
   fit.regions = fitOn(collider, regions, graded, drape.positions);

@@ -28,6 +28,7 @@
 #include "sim/garment/GarmentStyle.h"
 #include "sim/garment/SizeChart.h"
 #include "sim/pattern/SewingPattern.h"
+#include "sim/drape/GarmentDrape.h"
 
 namespace figment {
 
@@ -50,19 +51,15 @@ struct SewnStyle {
   double spacing = 0.02;                             // m: the cloth's node spacing (sim/pattern/PatternCutting.h)
 };
 
-// A drape of one garment on one body, and what it cost.
-struct SizeDrape {
-  std::vector<Vec3> positions;  // per rest point (a sewn garment: per panel node)
-  DrapeResult run;              // a sewn garment's: the drape's, its wallSeconds and iterations the sewing's too
-  bool warm = false;            // started from an earlier size's drape
-};
-
 struct SizeFit {
   std::string size;
   std::vector<RegionFit> regions;  // of the body's regions, as measureFit gives them
   std::vector<Verdict> verdicts;   // one per region
   std::string text;                // shopperText
-  SizeDrape drape;
+  // Its drape (sim/drape/GarmentDrape.h): positions per rest point (a sewn garment: per
+  // panel node); a sewn garment's run counts the sewing's steps and wall time too; warm
+  // when it started from an earlier size's drape.
+  GarmentDrape drape;
 };
 
 struct Recommendation {
@@ -105,10 +102,10 @@ class SizeFitter {
   bool hasOwnFit(Sex sex, int size) const { return ownFits_.count({static_cast<int>(sex), size}) > 0; }
 
   // Drapes `garment` on `body` (its collider), cold or from `start`.
-  SizeDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
+  GarmentDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
                   const std::vector<Vec3>* start = nullptr) const;
   // A sewn style's size: its pattern placed on `body`, cut, sewn and draped.
-  SizeDrape sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const;
+  GarmentDrape sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const;
 
   // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
   // without warm starts) drapes every size cold.
@@ -128,9 +125,9 @@ class SizeFitter {
   std::vector<RegionFit> fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
                                const Graded& graded, const std::vector<Vec3>& positions) const;
   SizeFit fitSize(const Graded& graded, const std::vector<RegionFit>& own, const std::string& name,
-                  const MeshCollider& collider, const std::vector<FitRegion>& regions, SizeDrape drape) const;
+                  const MeshCollider& collider, const std::vector<FitRegion>& regions, GarmentDrape drape) const;
 
-  SizeDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
+  GarmentDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
                       const std::vector<Vec3>* start) const;
   const SizePattern& patternOf(Sex sex, int size) const;
 

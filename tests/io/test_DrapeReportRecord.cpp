@@ -42,6 +42,7 @@ DrapeReport everyFieldSet() {
   s.levels = 3000;
   s.sections = 2884;
   s.settling = {1.875, 1e-4, 2e-3};
+  s.warm = true;
   s.fromCache = true;
   s.wallSeconds = std::nextafter(16.9, 17.0);
   s.garmentWarning = "12 nodes start inside the body";
@@ -85,6 +86,7 @@ void expectSame(const DrapeReport& a, const DrapeReport& b) {
   EXPECT_EQ(a.settling.arrival, b.settling.arrival);
   EXPECT_EQ(a.settling.meanMove, b.settling.meanMove);
   EXPECT_EQ(a.settling.maxMove, b.settling.maxMove);
+  EXPECT_EQ(a.warm, b.warm);
   EXPECT_EQ(a.fromCache, b.fromCache);
   EXPECT_EQ(a.wallSeconds, b.wallSeconds);
   EXPECT_EQ(a.garmentWarning, b.garmentWarning);

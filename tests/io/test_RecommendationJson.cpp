@@ -10,7 +10,7 @@ namespace {
 SizeFit sizeNamed(std::string name, bool atRest) {
   SizeFit fit;
   fit.size = std::move(name);
-  fit.drape.run.atRest = atRest;
+  fit.drape.report.run.atRest = atRest;
   return fit;
 }
 

@@ -59,7 +59,7 @@ class SewnSizeRecommendation : public ::testing::Test {
         for (const RegionFit& region : fit.regions)
           EXPECT_NE(std::find(sewn.regions.begin(), sewn.regions.end(), region.name), sewn.regions.end())
               << region.name;
-        if (rests) EXPECT_TRUE(fit.drape.run.atRest) << name << " " << fit.size << " on " << sizes[i].name;
+        if (rests) EXPECT_TRUE(fit.drape.report.run.atRest) << name << " " << fit.size << " on " << sizes[i].name;
       }
     }
   }
