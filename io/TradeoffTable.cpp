@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sim/core/ParameterChecks.h"
+
 namespace figment {
 
 namespace {
@@ -15,20 +17,8 @@ std::vector<std::string> splitCsv(const std::string& line) {
   return out;
 }
 
-// The whole of `text` as a number, if it is one.
-std::optional<double> readNumber(const std::string& text) {
-  size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  return used == text.size() ? std::optional<double>(value) : std::nullopt;
-}
-
 double number(const std::string& text, const std::string& where) {
-  const std::optional<double> value = readNumber(text);
+  const std::optional<double> value = wholeNumber(text);
   if (!value) throw std::runtime_error(where + ": \"" + text + "\" is not a number");
   return *value;
 }

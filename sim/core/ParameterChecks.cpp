@@ -6,6 +6,17 @@
 
 namespace figment {
 
+std::optional<double> wholeNumber(const std::string& text) {
+  size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  return used == text.size() ? std::optional<double>(value) : std::nullopt;
+}
+
 std::string formatNumber(double value) {
   char buffer[64];
   auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "sim/core/ParameterChecks.h"
+
 namespace figment {
 
 namespace {
@@ -45,18 +47,6 @@ std::string lower(const char* name) {
   return s;
 }
 
-// The whole of `text` as a number, if it is one.
-std::optional<double> readNumber(const std::string& text) {
-  size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  return used == text.size() ? std::optional<double>(value) : std::nullopt;
-}
-
 // The shortest text that reads back as `value`, as %g would write it ("0.00015", "1e-05").
 std::string shortest(double value) {
   char text[32];
@@ -86,7 +76,7 @@ DrapeMethod DrapeMethod::parse(const std::string& text) {
   if (!c) throw bad("no contact model " + contacts);
   m.contacts = *c;
   const auto number = [&](const std::string& part) {
-    const std::optional<double> value = readNumber(part);
+    const std::optional<double> value = wholeNumber(part);
     if (!value) throw bad("\"" + part + "\" is not a number");
     return *value;
   };
