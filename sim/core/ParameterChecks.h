@@ -12,7 +12,7 @@ void requireNonNegative(const char* field, double value);
 void requireOpenRange(const char* field, double value, double low, double high);
 void requireFinite(const char* field, double value);
 
-// Shortest text that reads back as `value` ("0.0005", "-1e-05").
+// Shortest text that reads back as `value` ("0.001", "5e-04", "-1e-05").
 std::string formatNumber(double value);
 
 }  // namespace figment
