@@ -21,17 +21,20 @@ namespace {
 
 // One CSV row and one line on stdout for a drape.
 void report(const std::string& method, bool broadPhase, int run, const session::EngineDrape& drape, std::ostream& csv) {
-  const ClothEngine::RunStats& stats = drape.run;
-  const double perSecond = stats.iterations / stats.wallSeconds;
+  const figment::DrapeReport& stats = drape.report;
+  const double perSecond = stats.run.iterations / stats.wallSeconds;
   const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
   csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ','
-      << stats.iterations << ',' << stats.simulatedSeconds << ',' << stats.wallSeconds << ',' << (stats.atRest ? 1 : 0)
-      << ',' << perSecond << ',' << (stats.verdict.empty() ? 1 : 0) << ',' << stats.maxStretch << ','
-      << stats.halvedSteps << ',' << stats.failedSteps << '\n';
+      << stats.run.iterations << ',' << stats.run.simulatedTime << ',' << stats.wallSeconds << ','
+      << (stats.run.atRest ? 1 : 0) << ',' << perSecond << ',' << (stats.verdict.empty() ? 1 : 0) << ','
+      << stats.run.maxStretch << ',' << stats.run.implicitCosts.halvedSteps << ','
+      << stats.run.implicitCosts.failedSteps << '\n';
   std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " "
-            << stats.triangles << " triangles, " << stats.iterations << " iterations, " << stats.simulatedSeconds
-            << " s simulated in " << stats.wallSeconds << " s" << (stats.atRest ? ", at rest" : ", not at rest")
-            << (stats.halvedSteps > 0 ? ", " + std::to_string(stats.halvedSteps) + " steps halved" : "")
+            << stats.triangles << " triangles, " << stats.run.iterations << " iterations, " << stats.run.simulatedTime
+            << " s simulated in " << stats.wallSeconds << " s" << (stats.run.atRest ? ", at rest" : ", not at rest")
+            << (stats.run.implicitCosts.halvedSteps > 0
+                    ? ", " + std::to_string(stats.run.implicitCosts.halvedSteps) + " steps halved"
+                    : "")
             << (stats.verdict.empty() ? ", clean" : "; not clean: " + stats.verdict) << "\n";
 }
 
@@ -49,8 +52,8 @@ void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOpti
         return;
       }
       report(method, broadPhase, run, drape, csv);
-      wall.push_back(drape.run.wallSeconds);
-      rate.push_back(drape.run.iterations / drape.run.wallSeconds);
+      wall.push_back(drape.report.wallSeconds);
+      rate.push_back(drape.report.run.iterations / drape.report.wallSeconds);
     }
   }
   session.context().broadPhase = true;

@@ -1,26 +1,27 @@
 #pragma once
-// A drape method as the studies name it, "INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G]" in the
-// ClothEngine fields' spelling (case free): "heun:1.5e-4", "heun:1.5e-4:clamp:30",
-// "implicit:0.05", "implicit+penalty:0.05" (contactModel PENALTY).
+// The studies' command-line methods and schedules: a method is sim/drape/DrapeMethod.h's
+// INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G] ("heun:1.5e-4:clamp:30", "implicit+penalty:0.05"),
+// kept with the text as given; a schedule sim/drape/MethodTable.h's BEGIN_SHARE:RATE.
 
 #include <functional>
 #include <string>
 
 #include "nodes/cloth/ClothEngine.h"
+#include "sim/drape/DrapeMethod.h"
 
 namespace figment::bench {
 
 struct Method {
   std::string text;  // as given
-  std::string integrator, limiter = "NONE", contactModel = "CONSTRAINTS";
-  double timeStep = 0.0, limit = 30.0;
+  DrapeMethod drape;
 };
 
 // Throws std::invalid_argument naming the text.
 Method parseMethod(const std::string& text);
 
-// Sets the engine's method fields; "" or what is wrong.
-std::string configure(ClothEngine& engine, const Method& m);
+// Sets the engine's method fields (integrator, contactModel, accelerationLimiter, timeStep
+// and, when the method gives one, accelerationLimit).
+void configure(ClothEngine& engine, const Method& m);
 
 // A progressive schedule as the studies name it, "BEGIN_SHARE:RATE": the begin level as
 // a share of the script's levels, splits per simulated second (0: all at once when the

@@ -23,8 +23,7 @@ namespace {
 
 // What one method's drape came to: an error in its fields, or the drapes'.
 RepeatedDrape drape(SceneGarment& garment, const Method& m, int repeat) {
-  const std::string error = configure(*garment.engine, m);
-  if (!error.empty()) return RepeatedDrape{{}, 0.0, {}, error};
+  configure(*garment.engine, m);
   return garment.drapeRepeatedly(repeat);
 }
 
@@ -67,24 +66,27 @@ Measures measure(const SceneGarment& garment, const std::vector<SbVec3f>& x, con
 void report(const std::string& scene, const Method& m, const RepeatedDrape& o, const Measures& s, double garmentHeight,
             std::ostream& csv) {
   // One step's breakdown (the implicit integrator's; zeros for the explicit ones), ms.
-  const ClothEngine::RunStats& c = o.run;
-  const double steps = std::max(1L, c.implicitSteps);
+  const figment::DrapeReport& c = o.report;
+  const double steps = std::max(1L, c.run.implicitCosts.steps);
   char line[640];
   std::snprintf(line, sizeof line, "%s,%s,%s,%g,%s,%g,%d,%.5g,%d,%.4f,%.6g,%.4f,%.4g,%d,%.4f,%.1f,%.4f,%.4f,%.4f\n",
-                scene.c_str(), m.integrator.c_str(), m.limiter.c_str(), m.limiter == "NONE" ? 0.0 : m.limit,
-                m.text.c_str(), m.timeStep, o.run.iterations, o.run.simulatedSeconds, o.run.atRest ? 1 : 0,
+                scene.c_str(), fieldName(m.drape.integrator), fieldName(m.drape.limiter),
+                m.drape.limiter == AccelerationLimiter::None ? 0.0 : m.drape.limit.value_or(0.0), m.text.c_str(),
+                m.drape.timeStep, o.report.run.iterations, o.report.run.simulatedTime, o.report.run.atRest ? 1 : 0,
                 o.medianWall, s.meanDeviation, 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
-                s.topHeight, c.solverIterations / steps, 1000 * c.assemblySeconds / steps,
-                1000 * c.solveSeconds / steps, 1000 * c.contactSeconds / steps);
+                s.topHeight, c.run.implicitCosts.solverIterations / steps,
+                1000 * c.run.implicitCosts.assemblySeconds / steps, 1000 * c.run.implicitCosts.solveSeconds / steps,
+                1000 * c.run.implicitCosts.contactSeconds / steps);
   csv << line;
   csv.flush();
   std::printf("%-24s %6d steps %6.3f s sim %7.3f s wall %-6s dev %6.3f %% strain %5.3f inside %3d top %.3f m",
-              m.text.c_str(), o.run.iterations, o.run.simulatedSeconds, o.medianWall, o.run.atRest ? "rest" : "moving",
-              100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside, s.topHeight);
-  if (c.implicitSteps > 0)
+              m.text.c_str(), o.report.run.iterations, o.report.run.simulatedTime, o.medianWall,
+              o.report.run.atRest ? "rest" : "moving", 100.0 * s.meanDeviation / garmentHeight, s.maxStrain, s.inside,
+              s.topHeight);
+  if (c.run.implicitCosts.steps > 0)
     std::printf("  | step: %.0f PCG its, %.2f ms forces+matrix, %.2f ms solve, %.2f ms contacts",
-                c.solverIterations / steps, 1000 * c.assemblySeconds / steps, 1000 * c.solveSeconds / steps,
-                1000 * c.contactSeconds / steps);
+                c.run.implicitCosts.solverIterations / steps, 1000 * c.run.implicitCosts.assemblySeconds / steps,
+                1000 * c.run.implicitCosts.solveSeconds / steps, 1000 * c.run.implicitCosts.contactSeconds / steps);
   std::printf("\n");
 }
 
@@ -97,14 +99,15 @@ std::string studyScene(const std::string& scene, const MethodStudyOptions& optio
   if (!reference.error.empty()) return scene + ": the reference " + options.reference + ": " + reference.error;
   const double garmentHeight = garment.height();
   std::printf("%s: reference %s, %d steps, %.3f s simulated, %s\n", scene.c_str(), options.reference.c_str(),
-              reference.run.iterations, reference.run.simulatedSeconds, reference.run.atRest ? "at rest" : "moving");
+              reference.report.run.iterations, reference.report.run.simulatedTime,
+              reference.report.run.atRest ? "at rest" : "moving");
   for (const std::string& text : options.methods) {
     const Method m = parseMethod(text);
     const RepeatedDrape o = drape(garment, m, options.repeat);
     if (!o.error.empty()) {
       std::printf("%-26s failed: %s\n", text.c_str(), o.error.c_str());
-      csv << scene << ',' << m.integrator << ',' << m.limiter << ",,\"" << text << "\"," << m.timeStep
-          << ",,,,,,,,,,,,,\n";
+      csv << scene << ',' << fieldName(m.drape.integrator) << ',' << fieldName(m.drape.limiter) << ",,\"" << text
+          << "\"," << m.drape.timeStep << ",,,,,,,,,,,,,\n";
       continue;
     }
     report(scene, m, o, measure(garment, o.positions, reference.positions), garmentHeight, csv);

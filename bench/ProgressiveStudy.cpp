@@ -28,7 +28,7 @@ int countLevels(SceneGarment& garment, const std::string& script, std::string& e
   const RepeatedDrape probe = garment.drapeRepeatedly(1);
   engine.maxTime = maxTime;
   error = probe.error;
-  return probe.run.levels;
+  return probe.report.levels;
 }
 
 // Drapes with the engine's fields at each of the time steps; medians over them.
@@ -47,13 +47,13 @@ Drapes drapeAtEachStep(SceneGarment& garment, double timeStep, const std::vector
     const RepeatedDrape run = garment.drapeRepeatedly(1);
     if (!(out.error = run.error).empty()) break;
     out.positions.push_back(run.positions);
-    out.wall.push_back(run.medianWall), out.steps.push_back(run.run.iterations);
-    out.simulated.push_back(run.run.simulatedSeconds);
-    out.rested += run.run.atRest;
-    out.levels = run.run.levels;
-    out.endLevelAt.push_back(run.run.endLevelSeconds);
-    out.meanMoveAfter.push_back(run.run.meanMoveAfterEndLevel);
-    out.maxMoveAfter.push_back(run.run.maxMoveAfterEndLevel);
+    out.wall.push_back(run.medianWall), out.steps.push_back(run.report.run.iterations);
+    out.simulated.push_back(run.report.run.simulatedTime);
+    out.rested += run.report.run.atRest;
+    out.levels = run.report.levels;
+    out.endLevelAt.push_back(run.report.settling.arrival);
+    out.meanMoveAfter.push_back(run.report.settling.meanMove);
+    out.maxMoveAfter.push_back(run.report.settling.maxMove);
   }
   garment.engine->timeStep = timeStep;
   return out;
@@ -81,9 +81,9 @@ double floorOf(const SceneGarment& garment, const Drapes& full) {
 // One method: the full garment, then each schedule; "" or the error.
 std::string studyMethod(SceneGarment& garment, const std::string& script, int levels, const Method& method,
                         const ProgressiveStudyOptions& options, std::ostream& csv) {
-  if (std::string error = configure(*garment.engine, method); !error.empty()) return error;
+  configure(*garment.engine, method);
   garment.engine->progressiveScript = "";
-  const Drapes full = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
+  const Drapes full = drapeAtEachStep(garment, method.drape.timeStep, options.stepFactors);
   if (!full.error.empty()) return method.text + ", full garment: " + full.error;
   const double fullWall = median(full.wall), floor = floorOf(garment, full);
   const size_t runs = options.stepFactors.size();
@@ -95,7 +95,7 @@ std::string studyMethod(SceneGarment& garment, const std::string& script, int le
     garment.engine->splitRate = s.rate;
     garment.engine->endLevel = -1;
     garment.engine->beginLevel = static_cast<int>(std::lround(s.beginShare * levels));
-    const Drapes run = drapeAtEachStep(garment, method.timeStep, options.stepFactors);
+    const Drapes run = drapeAtEachStep(garment, method.drape.timeStep, options.stepFactors);
     csv << options.scene << ',' << method.text << ',' << runs << ',' << garment.engine->beginLevel.getValue() << ','
         << levels << ',' << s.rate << ',';
     if (!run.error.empty()) {  // a failed configuration is a result too (a blow-up, say)

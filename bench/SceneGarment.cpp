@@ -104,8 +104,8 @@ RepeatedDrape SceneGarment::drapeRepeatedly(int repeat) {
     engine->restPoints.touch();  // simulate again
     out.positions = drape();
     out.error = engine->lastError();
-    out.run = engine->lastRun();
-    wall.push_back(out.run.wallSeconds);
+    out.report = engine->lastRun();
+    wall.push_back(out.report.wallSeconds);
   }
   if (out.error.empty()) out.medianWall = median(wall);
   return out;

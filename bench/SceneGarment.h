@@ -18,7 +18,7 @@ namespace figment::bench {
 // What `repeat` drapes with the same fields came to: the last one's statistics and
 // positions, the median wall time, or the first error.
 struct RepeatedDrape {
-  ClothEngine::RunStats run;
+  figment::DrapeReport report;
   double medianWall = 0.0;
   std::vector<SbVec3f> positions;
   std::string error;

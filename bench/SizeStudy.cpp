@@ -52,8 +52,8 @@ Drapes drapeAtEachStep(SceneGarment& garment, const SizedGarment& sized, double 
                                                : "";
     if (!out.failure.empty()) break;
     out.fullWall.push_back(full.medianWall), out.wall.push_back(progressive.medianWall);
-    out.fullSteps.push_back(full.run.iterations), out.steps.push_back(progressive.run.iterations);
-    out.fullRested += full.run.atRest, out.rested += progressive.run.atRest;
+    out.fullSteps.push_back(full.report.run.iterations), out.steps.push_back(progressive.report.run.iterations);
+    out.fullRested += full.report.run.atRest, out.rested += progressive.report.run.atRest;
     const auto [mean, largest] = garment.deviationPercent(progressive.positions, full.positions);
     out.meanDev.push_back(mean), out.maxDev.push_back(largest);
     whole.push_back(full.positions);
@@ -107,10 +107,7 @@ int runSizeStudy(const SizeStudyOptions& options) {
   SceneGarment garment;
   if (!garment.loadOrReport(options.scene)) return 1;
   std::string error;
-  if (error = configure(*garment.engine, method); !error.empty()) {
-    std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
-    return 1;
-  }
+  configure(*garment.engine, method);
   garment.engine->maxTime = options.maxTime;
   const TriangleMesh base = garment.engine->restGarment();
   std::filesystem::create_directories(options.outDir);
@@ -121,7 +118,7 @@ int runSizeStudy(const SizeStudyOptions& options) {
            "full_rested,steps,median_wall_s,rested,speed_up,mean_dev_pct_height,max_dev_pct_height,"
            "floor_mean_dev_pct_height,preparation_s,failure\n";
     for (int sections : options.sizes)
-      if (std::string e = studySize(garment, base, sections, method.timeStep, options, csv); !e.empty()) return e;
+      if (std::string e = studySize(garment, base, sections, method.drape.timeStep, options, csv); !e.empty()) return e;
     return "";
   });
   if (!written) return 1;

@@ -100,7 +100,7 @@ std::pair<bool, Deviation> runOne(SceneGarment& garment, const StabilityStudyOpt
   ClothEngine& engine = *garment.engine;
   configure(engine, options, c, dt);
   const std::vector<SbVec3f> draped = garment.drape();
-  const ClothEngine::RunStats& run = engine.lastRun();
+  const figment::DrapeReport& report = engine.lastRun();
   const bool failed = !engine.lastError().empty();
   const double strain = failed ? std::numeric_limits<double>::infinity() : garment.maxEdgeStrain(draped);
   const bool stable = !failed && strain < 0.2;
@@ -108,10 +108,10 @@ std::pair<bool, Deviation> runOne(SceneGarment& garment, const StabilityStudyOpt
   char line[512];
   std::snprintf(line, sizeof line, "%s,%d,%s,%g,%d,%d,%.4f,%.6g,%.6g,%.4f,%.4g,%d,%.4f,%g,%g,%.4g,%.4g\n",
                 integratorKey(c.integrator), c.strainClamp ? 1 : 0, limiterKey(c.limiter), dt, stable ? 1 : 0,
-                run.atRest ? 1 : 0, run.wallSeconds, d.mean, d.max, reference.height, strain, run.iterations,
-                run.simulatedSeconds, c.strainClamp ? options.strainLimit : 0.0,
-                c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit, run.clampedSectionShare,
-                run.limitedNodeShare);
+                report.run.atRest ? 1 : 0, report.wallSeconds, d.mean, d.max, reference.height, strain,
+                report.run.iterations, report.run.simulatedTime, c.strainClamp ? options.strainLimit : 0.0,
+                c.limiter == ClothEngine::NONE ? 0.0 : options.accelerationLimit, report.run.clampedSectionShare,
+                report.run.limitedNodeShare);
   csv << line;
   csv.flush();
   return {stable, d};
@@ -158,7 +158,7 @@ int runStabilityStudy(const StabilityStudyOptions& options) {
     std::cerr << "figment-bench: the reference run failed: " << engine.lastError() << "\n";
     return 1;
   }
-  std::cout << "reference: Heun at dt " << steps.front() << " s, " << engine.lastRun().simulatedSeconds
+  std::cout << "reference: Heun at dt " << steps.front() << " s, " << engine.lastRun().run.simulatedTime
             << " s simulated, " << engine.lastRun().wallSeconds << " s wall\n";
 
   std::filesystem::create_directories(options.outDir);

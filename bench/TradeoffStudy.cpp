@@ -20,9 +20,9 @@
 #include "nodes/body/CollisionBody.h"
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
-#include "nodes/cloth/ToleranceChoice.h"
 #include "sim/body/Skeleton.h"
 #include "sim/collision/Collider.h"
+#include "sim/drape/MethodChoice.h"
 #include "sim/progressive/Resampling.h"
 #include "sim/progressive/RestCorrespondence.h"
 
@@ -108,13 +108,13 @@ class Bodies {
 
  private:
   // The radial volumes with the parts the garment starts near on their own triangles, as
-  // ClothEngine.tolerance builds it (ToleranceChoice.h), as Mannequin.exactParts.
+  // ClothEngine.tolerance builds it (sim/drape/MethodChoice.h), as Mannequin.exactParts.
   static SoNode* mixFor(SoNode* root, const TradeoffStudyOptions& options, const std::vector<Vec3>& garmentStart,
                         std::string& error) {
     SoNode* node = bodyFor(options.volumesFile, root, error);
     if (!node) return nullptr;
     auto* mannequin = static_cast<Mannequin*>(node);
-    const std::vector<int> parts = partsWhereGarmentMeets(*mannequin, garmentStart);
+    const std::vector<int> parts = partsWhereGarmentMeets(*mannequin->collider(), garmentStart);
     mannequin->exactParts.setNum(0);
     for (int part : parts) {
       const std::string& name = mannequin->skeleton().parts[part].name;
@@ -150,25 +150,25 @@ std::optional<Reference> drapeReference(SceneGarment& garment, const Bodies& bod
                                         const TradeoffStudyOptions& options, std::ostream& csv, std::string& error) {
   ClothEngine& engine = *garment.engine;
   const Method method = parseMethod(options.reference);
-  if (error = configure(engine, method); !error.empty()) return std::nullopt;
+  configure(engine, method);
   engine.body = bodies["triangles"];
   engine.progressiveScript = "";
   const RepeatedDrape run = garment.drapeRepeatedly(1);
   if (!(error = run.error).empty()) return std::nullopt;
   Reference reference{toVec3(run.positions), garment.height()};
   std::printf("reference %s on the body's triangles: %d steps, %.3f s simulated, %s, %.1f s wall\n",
-              options.reference.c_str(), run.run.iterations, run.run.simulatedSeconds,
-              run.run.atRest ? "at rest" : "moving", run.medianWall);
+              options.reference.c_str(), run.report.run.iterations, run.report.run.simulatedTime,
+              run.report.run.atRest ? "at rest" : "moving", run.medianWall);
   double halfMean = NAN, halfMax = NAN;
   if (options.checkReference) {
-    engine.timeStep = 0.5 * method.timeStep;
+    engine.timeStep = 0.5 * method.drape.timeStep;
     const RepeatedDrape half = garment.drapeRepeatedly(1);
     if (!(error = half.error).empty()) return std::nullopt;
     std::tie(halfMean, halfMax) = deviation(toVec3(half.positions), reference.positions, reference.height);
     std::printf("  at half its step it moves %.3f %% mean, %.3f %% max of the garment's height\n", halfMean, halfMax);
   }
-  csv << options.reference << ',' << run.run.iterations << ',' << run.run.simulatedSeconds << ',' << run.run.atRest
-      << ',' << reference.height << ',' << halfMean << ',' << halfMax << '\n';
+  csv << options.reference << ',' << run.report.run.iterations << ',' << run.report.run.simulatedTime << ','
+      << run.report.run.atRest << ',' << reference.height << ',' << halfMean << ',' << halfMax << '\n';
   return reference;
 }
 
@@ -177,7 +177,7 @@ std::string failureOf(const RepeatedDrape& run, double maxStrain) {
   if (!run.error.empty()) return run.error.find("blew up") != std::string::npos ? "blew up" : "error: " + run.error;
   std::string failure;
   if (maxStrain > kTornStrain) failure = "tore";
-  if (!run.run.atRest) failure += failure.empty() ? "never rested" : "; never rested";
+  if (!run.report.run.atRest) failure += failure.empty() ? "never rested" : "; never rested";
   return failure;
 }
 
@@ -209,10 +209,7 @@ Row drapeOne(SceneGarment& garment, const Bodies& bodies, const Reference& refer
   Row row;
   row.method = method.text, row.body = body, row.schedule = schedule;
   row.resolution = resolution.factor, row.sections = static_cast<int>(resolution.mesh.triangles.size());
-  if (std::string error = configure(engine, method); !error.empty()) {
-    row.failure = "error: " + error;
-    return row;
-  }
+  configure(engine, method);
   engine.body = bodies[body];
   engine.progressiveScript = "";
   if (schedule != "off") {
@@ -228,8 +225,8 @@ Row drapeOne(SceneGarment& garment, const Bodies& bodies, const Reference& refer
     row.failure = failureOf(run, 0.0);
     return row;
   }
-  row.steps = run.run.iterations, row.wall = run.medianWall, row.simulated = run.run.simulatedSeconds;
-  row.rested = run.run.atRest ? options.repeat : 0;  // the same fields drape the same way every time
+  row.steps = run.report.run.iterations, row.wall = run.medianWall, row.simulated = run.report.run.simulatedTime;
+  row.rested = run.report.run.atRest ? options.repeat : 0;  // the same fields drape the same way every time
   const std::vector<Vec3> x = toVec3(run.positions);
   const std::vector<Vec3> carried = resolution.correspondence ? resolution.correspondence->carry(x) : x;
   std::tie(row.meanDev, row.maxDev) = deviation(carried, reference.positions, reference.height);

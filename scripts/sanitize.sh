@@ -37,7 +37,7 @@ targets=()
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]}" | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
 # Whole-garment drapes that take minutes under the sanitizers (1-7 s in Release): their code runs
 # in the job's shorter drapes. FIGMENT_SANITIZE_EXCLUDE='' runs them too.
-exclude=${FIGMENT_SANITIZE_EXCLUDE-'SkirtUnderLimiters|ProgressiveClothEngine.TheDressSplitAllAtOnce|ToleranceChoice.DrapesByTheFastest|ToleranceChoiceCommittedTable|LayeredGarments.TheSkirtOverTheTShirtsHem'}
+exclude=${FIGMENT_SANITIZE_EXCLUDE-'SkirtUnderLimiters|ProgressiveClothEngine.TheDressSplitAllAtOnce|ToleranceEngine.DrapesByTheFastest|ToleranceEngineCommittedTable|LayeredGarments.TheSkirtOverTheTShirtsHem'}
 # One implicit-solver thread per test: the tests run side by side instead.
 OMP_NUM_THREADS=1 ctest --test-dir "$build" -L "$labels" ${exclude:+-E "$exclude"} -j "$(nproc)" \
   --output-on-failure --timeout 600

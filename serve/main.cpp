@@ -19,12 +19,12 @@
 
 #include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
-#include "serve/FrameChannel.h"
-#include "serve/HttpService.h"
-#include "serve/JobWorker.h"
-#include "serve/RedisConnection.h"
-#include "serve/RenderWorker.h"
-#include "serve/WorkerProcess.h"
+#include "serve/http/HttpService.h"
+#include "serve/work/FrameChannel.h"
+#include "serve/work/JobWorker.h"
+#include "serve/work/RedisConnection.h"
+#include "serve/work/RenderWorker.h"
+#include "serve/work/WorkerProcess.h"
 
 namespace {
 

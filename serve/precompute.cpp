@@ -15,9 +15,9 @@
 #include <iterator>
 #include <thread>
 
-#include "serve/JobQueue.h"
-#include "serve/PrecomputePlan.h"
-#include "serve/RedisConnection.h"
+#include "serve/work/JobQueue.h"
+#include "serve/work/PrecomputePlan.h"
+#include "serve/work/RedisConnection.h"
 
 namespace {
 

@@ -159,7 +159,7 @@ void measureRegions(EngineFit& fit, const std::vector<std::string>* told) {
 void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& chart, MakeHumanSession& human) {
   if (human.dir().empty()) return;
   SizeFitter fitter(human.model(), chart, *item.style);
-  const std::vector<RegionFit>& own = fitter.graded(item.sex, item.size).ownFit;
+  const std::vector<RegionFit>& own = fitter.ownFit(item.sex, item.size);
   std::vector<RegionFit> intended;
   for (const RegionFit& region : fit.regions) {
     const auto match = std::find_if(own.begin(), own.end(), [&](const RegionFit& o) { return o.name == region.name; });

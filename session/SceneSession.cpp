@@ -5,7 +5,6 @@
 
 #include "guard/Guard.h"
 #include "nodes/SceneSearch.h"
-#include "nodes/body/Mannequin.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/SceneStaging.h"
 
@@ -13,50 +12,13 @@ namespace figment::session {
 
 namespace {
 
-// A field's value as the .iv file spells it (enum names, numbers).
-std::string fieldText(SoField& field) {
-  SbString text;
-  field.get(text);
-  return text.getString();
-}
-
-CollisionBody::Description describe(SoNode* body) {
-  const CollisionBody* collisionBody = asCollisionBody(body);
-  return collisionBody ? collisionBody->describeBody() : CollisionBody::Description{"none", {}};
-}
-
-// The method that ran (with a tolerance, the picked one's), else (nothing ran) the fields'.
-DrapeMethod methodOf(ClothEngine& engine, const ClothEngine::RunStats& run) {
-  if (!run.integrator.empty())
-    return {run.integrator,        run.timeStep,     run.strainLimit, run.accelerationLimiter,
-            run.accelerationLimit, run.contactModel, run.maxTime};
-  return {fieldText(engine.integrator),
-          engine.timeStepSeconds(),
-          engine.strainLimit.getValue(),
-          fieldText(engine.accelerationLimiter),
-          engine.accelerationLimit.getValue(),
-          fieldText(engine.contactModel),
-          engine.maxTime.getValue()};
-}
-
-// What the garment collided with: with a tolerance that picked the body's triangles,
-// those (the Mannequin's body mesh); else the engine's body.
-CollisionBody::Description bodyOf(ClothEngine& engine, const ClothEngine::RunStats& run) {
-  SoNode* body = engine.body.getValue();
-  const auto* mannequin = body && body->isOfType(Mannequin::getClassTypeId()) ? static_cast<Mannequin*>(body) : nullptr;
-  if (run.pickedBody == "triangles" && mannequin) return describe(mannequin->body.getValue());
-  return describe(body);
-}
-
 EngineDrape resultOf(ClothEngine& engine) {
   EngineDrape drape;
   drape.engine = &engine;
   drape.name = engine.getName().getString();
   drape.label = engine.label();
-  drape.run = engine.lastRun();
+  drape.report = engine.lastRun();
   drape.error = engine.lastError();
-  drape.method = methodOf(engine, drape.run);
-  drape.body = bodyOf(engine, drape.run);
   return drape;
 }
 
@@ -133,7 +95,8 @@ void SceneSession::checkShapes() {
 std::vector<std::string> SceneSession::verdicts() const {
   std::vector<std::string> lines;
   for (const EngineDrape& drape : drapes_)
-    if (drape.error.empty() && !drape.run.verdict.empty()) lines.push_back(drape.label + ": " + drape.run.verdict);
+    if (drape.error.empty() && !drape.report.verdict.empty())
+      lines.push_back(drape.label + ": " + drape.report.verdict);
   return lines;
 }
 

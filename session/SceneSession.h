@@ -14,34 +14,22 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/DrapeContext.h"
 #include "session/SessionOptions.h"
+#include "sim/drape/DrapeReport.h"
 
 class SoSeparator;
 
 namespace figment::session {
-
-// How an engine integrated its drape: the method that ran (with a tolerance, the picked
-// one, not the fields it replaced; the fields when nothing ran).
-struct DrapeMethod {
-  std::string integrator;           // EULER, SYMPLECTIC, HEUN or IMPLICIT, as the .iv file spells it
-  double timeStep = 0.0;            // s
-  double strainLimit = 0.0;         // 0 = no strain clamping
-  std::string accelerationLimiter;  // NONE, CLAMP or TANH
-  double accelerationLimit = 0.0;   // multiples of |g|
-  std::string contactModel;         // CONSTRAINTS or PENALTY (IMPLICIT's)
-  double maxTime = 0.0;             // s
-};
 
 // One engine's drape, kept by the session.
 struct EngineDrape {
   ClothEngine* engine = nullptr;  // held through the session's scene
   std::string name;               // its DEF name; "" when unnamed
   std::string label;              // how messages name it: "ClothEngine 'Drape'"
-  ClothEngine::RunStats run;      // zeros when it failed before simulating; run.verdict: "" when clean
-  std::string error;              // one line; "" when it succeeded
-  DrapeMethod method;
-  // What it collided with (with a tolerance that picked the Mannequin's triangles, its
-  // body mesh); kind "none" when it has no body (or not a usable one).
-  CollisionBody::Description body;
+  // What it draped and how (sim/drape/DrapeReport.h): the method that ran (with a
+  // tolerance, the picked one; the fields' when it failed first), what it collided with,
+  // the run; report.verdict "" when clean.
+  DrapeReport report;
+  std::string error;  // one line; "" when it succeeded
 };
 
 // The session holds the scene (and, once staged, the staged root) until it is cleared or
@@ -87,7 +75,7 @@ class SceneSession {
   // (ClothingLayer::fieldProblem), else one line ("ClothingLayer 'Layer': coordIndex[3] = ...").
   const std::string& shapeError() const { return shapeError_; }
   // The drapes of the last drape() that succeeded but are not clean (not at rest, torn,
-  // limited at the end, failed implicit steps: ClothEngine::RunStats::verdict), one line
+  // limited at the end, failed implicit steps: DrapeReport::verdict), one line
   // each naming the engine, in scene order: "ClothEngine 'Dress': not at rest after
   // maxTime 10 s (max speed 0.31 m/s)". A front end says them (figment-view on stderr)
   // or, strict, refuses the drape.

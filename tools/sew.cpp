@@ -78,24 +78,18 @@ std::string statsJson(const figment::GarmentDrape& drape, const figment::DrapeVe
                 "  \"sewing_wall_s\": %.3f,\n  \"drape_steps\": %d,\n  \"closed_gap_m\": %.6f,\n"
                 "  \"open_seam_pairs\": %d,\n  \"panels\": %zu,\n  \"nodes\": %zu,\n  \"sewn_nodes\": %d,\n"
                 "  \"triangles\": %zu,\n  \"clean\": %s\n}\n",
-                drape.run.atRest ? "true" : "false", sewing.seamGap, inside, drape.run.maxStretch,
-                sewing.run.iterations + drape.run.iterations, sewing.run.wallSeconds + drape.run.wallSeconds,
-                sewing.run.iterations, sewing.run.wallSeconds, drape.run.iterations, sewing.closedGap, sewing.openPairs,
-                cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes, cut.placed.triangles.size(),
+                verdict.run.atRest ? "true" : "false", sewing.seamGap, inside, verdict.run.maxStretch,
+                sewing.run.iterations + verdict.run.iterations, sewing.run.wallSeconds + verdict.run.wallSeconds,
+                sewing.run.iterations, sewing.run.wallSeconds, verdict.run.iterations, sewing.closedGap,
+                sewing.openPairs, cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes,
+                cut.placed.triangles.size(),
                 verdict.clean() && inside == 0 && sewing.openPairs == 0 ? "true" : "false");
   return text;
 }
 
 // What the drape's end says of it (sim/cloth/DrapeVerdict.h).
-figment::DrapeVerdict verdictOf(const figment::GarmentDrape& drape, const figment::ClothParameters& parameters) {
-  figment::DrapeVerdict verdict;
-  verdict.atRest = drape.run.atRest;
-  verdict.maxTime = parameters.maxTime;
-  verdict.maxSpeed = drape.run.maxSpeed;
-  verdict.maxStretch = drape.run.maxStretch;
-  verdict.halvedSteps = drape.run.implicitCosts.halvedSteps;
-  verdict.failedSteps = drape.run.implicitCosts.failedSteps;
-  return verdict;
+figment::DrapeVerdict verdictOf(const figment::GarmentDrape& drape) {
+  return {drape.report.run, drape.report.maxTime};
 }
 
 // The stitches whose pairs stayed open, by their panels and edges: "stitch 3 (skirt_front
@@ -130,7 +124,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   drapeRequest.sewing = figment::DrapeSewing{cut.flat, cut.seams, {}};
   const figment::GarmentDrape drape = figment::drapeGarment(drapeRequest);
 
-  const figment::DrapeVerdict verdict = verdictOf(drape, parameters);
+  const figment::DrapeVerdict verdict = verdictOf(drape);
   const int inside = nodesInside(*collider, drape.positions);
 
   std::vector<figment::ColouredMesh> meshes;

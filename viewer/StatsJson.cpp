@@ -13,30 +13,30 @@ namespace figment::viewer {
 namespace {
 // How the drape was integrated (the method that ran: with a tolerance, the picked one)
 // and how often the paper's stability measures engaged.
-nlohmann::json method(const session::EngineDrape& drape) {
-  const session::DrapeMethod& m = drape.method;
-  const bool limited = m.accelerationLimiter != "NONE";
-  return {{"integrator", m.integrator},
+nlohmann::json method(const DrapeReport& report) {
+  const DrapeMethod& m = report.method;
+  const bool limited = m.limiter != AccelerationLimiter::None;
+  return {{"integrator", fieldName(m.integrator)},
           {"time_step_s", m.timeStep},
-          {"max_time_s", m.maxTime},
-          {"contact_model", m.contactModel},
-          {"strain_limit", m.strainLimit},
-          {"clamped_section_share", drape.run.clampedSectionShare},
-          {"acceleration_limiter", m.accelerationLimiter},
-          {"acceleration_limit_g", limited ? m.accelerationLimit : 0.0},
-          {"limited_node_share", drape.run.limitedNodeShare}};
+          {"max_time_s", report.maxTime},
+          {"contact_model", fieldName(m.contacts)},
+          {"strain_limit", report.strainLimit},
+          {"clamped_section_share", report.run.clampedSectionShare},
+          {"acceleration_limiter", fieldName(m.limiter)},
+          {"acceleration_limit_g", limited ? m.limit.value_or(0.0) : 0.0},
+          {"limited_node_share", report.run.limitedNodeShare}};
 }
-// How the drape ended (ClothEngine::RunStats): its verdict ("" when clean) and the
+// How the drape ended (DrapeReport): its verdict ("" when clean) and the
 // figures it is made of.
-nlohmann::json verdict(const ClothEngine::RunStats& run) {
-  return {{"clean", run.verdict.empty()},
-          {"text", run.verdict},
-          {"max_speed_m_s", run.maxSpeed},
-          {"max_edge_stretch", run.maxStretch},
-          {"clamped_section_share_at_end", run.clampedSectionShareAtEnd},
-          {"limited_node_share_at_end", run.limitedNodeShareAtEnd},
-          {"halved_steps", run.halvedSteps},
-          {"failed_steps", run.failedSteps}};
+nlohmann::json verdict(const DrapeReport& report) {
+  return {{"clean", report.verdict.empty()},
+          {"text", report.verdict},
+          {"max_speed_m_s", report.run.maxSpeed},
+          {"max_edge_stretch", report.run.maxStretch},
+          {"clamped_section_share_at_end", report.run.clampedSectionShareAtEnd},
+          {"limited_node_share_at_end", report.run.limitedNodeShareAtEnd},
+          {"halved_steps", report.run.implicitCosts.halvedSteps},
+          {"failed_steps", report.run.implicitCosts.failedSteps}};
 }
 // What the garment collided with: its kind (mesh, mannequin or none) and its parts.
 nlohmann::json body(const CollisionBody::Description& description) {
@@ -72,26 +72,31 @@ std::string writeStatsJson(const std::string& path, const std::string& scene,
                            double renderWallSeconds, const ImageSize& size) {
   nlohmann::json garments = nlohmann::json::array();
   for (const session::EngineDrape& drape : drapes) {
-    const ClothEngine::RunStats& run = drape.run;
-    nlohmann::json garment = {{"name", drape.name},           {"triangles", run.triangles},
-                              {"iterations", run.iterations}, {"simulated_s", run.simulatedSeconds},
-                              {"wall_s", run.wallSeconds},    {"at_rest", run.atRest},
-                              {"verdict", verdict(run)},      {"cached", run.fromCache},
-                              {"method", method(drape)},      {"body", body(drape.body)}};
+    const DrapeReport& report = drape.report;
+    nlohmann::json garment = {{"name", drape.name},
+                              {"triangles", report.triangles},
+                              {"iterations", report.run.iterations},
+                              {"simulated_s", report.run.simulatedTime},
+                              {"wall_s", report.wallSeconds},
+                              {"at_rest", report.run.atRest},
+                              {"verdict", verdict(report)},
+                              {"cached", report.fromCache},
+                              {"method", method(report)},
+                              {"body", body(report.body)}};
     // With a tolerance: what the engine picked and the deviation measured for it.
-    if (!run.picked.empty())
-      garment["picked"] = {{"configuration", run.picked},
-                           {"measured_worst_mean_dev_pct_height", run.pickedDeviation},
-                           {"passed_over", run.passedOver}};
+    if (!report.picked.empty())
+      garment["picked"] = {{"configuration", report.picked},
+                           {"measured_worst_mean_dev_pct_height", report.pickedDeviation},
+                           {"passed_over", report.passedOver}};
     // A progressive drape (paper §4): the level it reached, of how many, and its sections.
     // When the end level arrived and how far the garment moved after it (m).
-    if (run.levels > 0)
-      garment["progressive"] = {{"level", run.level},
-                                {"levels", run.levels},
-                                {"sections", run.sections},
-                                {"end_level_s", run.endLevelSeconds},
-                                {"moved_after_end_level_mean_m", run.meanMoveAfterEndLevel},
-                                {"moved_after_end_level_max_m", run.maxMoveAfterEndLevel}};
+    if (report.levels > 0)
+      garment["progressive"] = {{"level", report.level},
+                                {"levels", report.levels},
+                                {"sections", report.sections},
+                                {"end_level_s", report.settling.arrival},
+                                {"moved_after_end_level_mean_m", report.settling.meanMove},
+                                {"moved_after_end_level_max_m", report.settling.maxMove}};
     for (const session::EngineFit& fit : fits)
       if (fit.engine == drape.engine && !fit.regions.empty()) garment["fit"] = fitJson(fit);
     garments.push_back(std::move(garment));

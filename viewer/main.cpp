@@ -137,17 +137,17 @@ void reportProgress(figment::viewer::ProgressBar& bar, const ClothEngine& engine
 }
 
 // A drape that is not clean says so in one line, however long it took (its verdict,
-// ClothEngine::RunStats::verdict); a clean one only when it took a second or more.
+// figment::DrapeReport::verdict); a clean one only when it took a second or more.
 void reportFinished(const std::string& scene, const EngineDrape& drape) {
-  const ClothEngine::RunStats& run = drape.run;
-  if (!run.verdict.empty()) {
-    std::cerr << "figment-view: " << figment::viewer::printableLine(scene + ": " + drape.label + ": " + run.verdict)
+  const figment::DrapeReport& report = drape.report;
+  if (!report.verdict.empty()) {
+    std::cerr << "figment-view: " << figment::viewer::printableLine(scene + ": " + drape.label + ": " + report.verdict)
               << "\n";
     return;
   }
-  if (run.wallSeconds < 1.0) return;  // short clean runs stay quiet
+  if (report.wallSeconds < 1.0) return;  // short clean runs stay quiet
   std::fprintf(stderr, "figment-view: %s: at rest after %.3g s simulated (%d steps, %.1f s)\n", drape.label.c_str(),
-               run.simulatedSeconds, run.iterations, run.wallSeconds);
+               report.run.simulatedTime, report.run.iterations, report.wallSeconds);
 }
 
 // Before anything simulates: a Mannequin's fields feed the engines that use it.

@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "sim/drape/DrapeBody.h"
+
 class SoNode;
 
 namespace figment {
@@ -26,10 +28,7 @@ class CollisionBody {
 
   // What figment-view --stats says about the body: its kind ("mesh", "mannequin") and,
   // by name, how many of each kind of part it is made of (e.g. "capsule_volumes").
-  struct Description {
-    std::string kind;
-    std::vector<std::pair<std::string, int>> counts;
-  };
+  using Description = BodyDescription;
   virtual Description describeBody() const = 0;
 };
 

@@ -112,7 +112,7 @@ class Mannequin : public SoGroup, public figment::CollisionBody {
   // and the value when the data or the fields are unusable.
   std::shared_ptr<const figment::Collider> collider() const;
   // The same with the parts in `alsoExact` (skeleton part indices) colliding with their
-  // own triangles too (a tolerance's per-part mix, nodes/cloth/ToleranceChoice.h); built
+  // own triangles too (a tolerance's per-part mix, sim/drape/MethodChoice.h); built
   // anew on each call. Throws as collider(), and when `body` is NULL.
   std::shared_ptr<const figment::Collider> colliderWithExactParts(const std::vector<int>& alsoExact) const;
   // As a ClothEngine's body (figment::CollisionBody): collider(). Described as kind

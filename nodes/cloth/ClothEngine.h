@@ -19,6 +19,7 @@
 namespace figment {
 class ClothSolver;
 struct DrapeContext;
+struct DrapeReport;
 struct ClothParameters;
 struct TriangleMesh;
 }  // namespace figment
@@ -27,12 +28,12 @@ struct TriangleMesh;
   \class ClothEngine nodes/cloth/ClothEngine.h
   \brief Simulates a garment until it rests on a body; outputs the draped positions.
 
-  Only a translator: the fields become FIGMENT's simulation parameters (sim/cloth/Material.h,
-  sim/cloth/ClothParameters.h), a ClothSolver runs from the rest shape until the cloth is at
-  rest or maxTime has been simulated, and the final node positions come out of
-  `positions`. Like every Coin engine it is lazy: it simulates when its output is read
-  after an input changed (on the first render, or when a bounding box is asked for),
-  never once per render.
+  Only a translator: the fields become a drape's ask (nodes/cloth/ClothEngineInputs.h:
+  sim/cloth/ClothParameters.h, the garment, the body), sim/drape/DrapePlan.h plans and runs
+  the drape from the rest shape until the cloth is at rest or maxTime has been simulated
+  (or the drape cache has it), and the final node positions come out of `positions`. Like every Coin engine it is lazy:
+  it simulates when its output is read after an input changed (on the first render, or when a bounding box is asked
+  for), never once per render.
 
   Errors never escape: a field out of range, a coordIndex that does not index
   restPoints, a body that is not a collision body, or a simulation that blows up is
@@ -81,6 +82,7 @@ struct TriangleMesh;
         clearance 0.003
         strainRateDamping 0.0001
         integrator IMPLICIT
+        contactModel CONSTRAINTS
         strainLimit 0
         accelerationLimiter NONE
         accelerationLimit 20
@@ -93,6 +95,7 @@ struct TriangleMesh;
         beginLevel 0
         endLevel -1
         splitRate 0
+        tolerance 0
     }
   \endcode
 */
@@ -217,7 +220,7 @@ class ClothEngine : public SoEngine {
   // converged one, % of the garment's height; the engine then drapes by the fastest
   // configuration the speed-against-accuracy study measured within it on every garment
   // it studied (integrator and step, limiter, contacts, collision body, progressive
-  // schedule; nodes/cloth/ToleranceChoice.h), in place of those fields. 0 = the fields
+  // schedule; sim/drape/MethodChoice.h), in place of those fields. 0 = the fields
   // as they are. Default 0. Must be >= 0.
   SoSFDouble tolerance;
 
@@ -234,59 +237,6 @@ class ClothEngine : public SoEngine {
   // progressive script, the level the drape reached; without, the garment's triangles.
   SoEngineOutput levelCoordIndex;
 
-  // What the last simulation did.
-  struct RunStats {
-    int triangles = 0;
-    int iterations = 0;
-    double simulatedSeconds = 0.0;
-    double wallSeconds = 0.0;
-    bool atRest = false;
-    double clampedSectionShare = 0.0;  // of section evaluations whose strain was clamped
-    double limitedNodeShare = 0.0;     // of node accelerations the limiter cut
-    // IMPLICIT's steps: linear-solver iterations, and seconds spent assembling the
-    // forces and matrix, solving, and on contacts (zeros for the other integrators).
-    long implicitSteps = 0, solverIterations = 0;
-    double assemblySeconds = 0.0, solveSeconds = 0.0, contactSeconds = 0.0;
-    // With a progressive script: the level reached, of how many, and its sections;
-    // when the end level arrived (simulated s, -1 if never) and how far the garment
-    // moved from there to the end of the run (mean and largest, m).
-    int level = 0, levels = 0, sections = 0;
-    double endLevelSeconds = -1.0, meanMoveAfterEndLevel = 0.0, maxMoveAfterEndLevel = 0.0;
-    // The drape came from the drape cache (DrapeContext::cache): the statistics are the
-    // run that made it, but wallSeconds, which is the time to find and read it.
-    bool fromCache = false;
-    // With a tolerance: the configuration picked ("" without) and its measured worst
-    // deviation, % of the garment's height; the body it collided with, as the study names
-    // it (triangles, volumes, capsules or mix); the faster configurations within the
-    // tolerance that this engine could not use, and why ("" when none).
-    std::string picked;
-    double pickedDeviation = 0.0;
-    std::string pickedBody;
-    std::string passedOver;
-    // The method that ran: the fields' or, with a tolerance, the picked configuration's,
-    // spelt as the fields are (integrator, contactModel, accelerationLimiter; timeStep s,
-    // strainLimit, accelerationLimit multiples of |g|, maxTime s).
-    std::string integrator, contactModel, accelerationLimiter;
-    double timeStep = 0.0, strainLimit = 0.0, accelerationLimit = 0.0, maxTime = 0.0;
-    // How it ended, for its verdict (sim/cloth/DrapeVerdict.h; the session's
-    // EngineDrape::verdict): the fastest node (m/s), the most stretched edge (length over
-    // rest length), the shares of the sections clamped and of the nodes limited in the
-    // last step, and the implicit step control's steps taken again as halves and steps
-    // that failed at its smallest step.
-    double maxSpeed = 0.0, maxStretch = 1.0;
-    double clampedSectionShareAtEnd = 0.0, limitedNodeShareAtEnd = 0.0;
-    long halvedSteps = 0, failedSteps = 0;
-    // The verdict on those: "" when the drape is clean (at rest, no edge past 1.5 times
-    // its rest length, no limiter acting in the last step, no failed implicit step), else what
-    // happened with its figures, one line without the engine's label ("not at rest after
-    // maxTime 5 s (max speed 0.31 m/s); torn: an edge at 2.02 times its rest length
-    // (bound 1.5)"). Set by every drape, a cached one too; "" when none was made.
-    std::string verdict;
-    // The check of the garment against its body before the drape (nodes/cloth/
-    // GarmentStartCheck.h) where it may make the drape wrong: nodes starting inside the
-    // body, faces wound clockwise ("" when none). Part of the verdict's line.
-    std::string garmentWarning;
-  };
   // Reported about once per second of wall time while a simulation runs
   // (DrapeContext::progress).
   struct Progress {
@@ -315,8 +265,10 @@ class ClothEngine : public SoEngine {
 
   // The last evaluation's error, one line; empty when it succeeded.
   const std::string& lastError() const;
-  // Statistics of the last evaluation (zeros when it failed before simulating).
-  const RunStats& lastRun() const;
+  // What the last evaluation draped and how (sim/drape/DrapeReport.h: the method that ran
+  // and why, the body, the run, its verdict; the method of the fields and zeros for the
+  // rest when it failed before simulating). Include sim/drape/DrapeReport.h to read it.
+  const figment::DrapeReport& lastRun() const;
   // How many times this engine has evaluated (each evaluation is one simulation).
   int evaluationCount() const;
   // The step the fields give, s: timeStep as written; left unwritten, IMPLICIT's 0.05 (or

@@ -20,30 +20,29 @@ namespace figment {
 
 namespace {
 
-// One row per method: the engine field's value, the simulation's method, and the value's name
-// as a scene writes it. Both directions (field to method, method to name for RunStats) read
-// the same table, so a method added to one cannot be missed by the other.
+// One row per method: the engine field's value and the simulation's method (the value's name
+// as a scene writes it is sim/drape/DrapeMethod.h's fieldName, which test_ClothEngineInputs
+// checks against the field's enum names).
 template <typename Method>
 struct MethodRow {
   int field;
   Method method;
-  const char* name;
 };
 
 constexpr MethodRow<Integrator> kIntegrators[] = {
-    {ClothEngine::EULER, Integrator::ExplicitEuler, "EULER"},
-    {ClothEngine::SYMPLECTIC, Integrator::SymplecticEuler, "SYMPLECTIC"},
-    {ClothEngine::HEUN, Integrator::Heun, "HEUN"},
-    {ClothEngine::IMPLICIT, Integrator::Implicit, "IMPLICIT"},
+    {ClothEngine::EULER, Integrator::ExplicitEuler},
+    {ClothEngine::SYMPLECTIC, Integrator::SymplecticEuler},
+    {ClothEngine::HEUN, Integrator::Heun},
+    {ClothEngine::IMPLICIT, Integrator::Implicit},
 };
 constexpr MethodRow<AccelerationLimiter> kLimiters[] = {
-    {ClothEngine::NONE, AccelerationLimiter::None, "NONE"},
-    {ClothEngine::CLAMP, AccelerationLimiter::Clamp, "CLAMP"},
-    {ClothEngine::TANH, AccelerationLimiter::Tanh, "TANH"},
+    {ClothEngine::NONE, AccelerationLimiter::None},
+    {ClothEngine::CLAMP, AccelerationLimiter::Clamp},
+    {ClothEngine::TANH, AccelerationLimiter::Tanh},
 };
 constexpr MethodRow<ContactModel> kContactModels[] = {
-    {ClothEngine::CONSTRAINTS, ContactModel::Constraints, "CONSTRAINTS"},
-    {ClothEngine::PENALTY, ContactModel::Penalty, "PENALTY"},
+    {ClothEngine::CONSTRAINTS, ContactModel::Constraints},
+    {ClothEngine::PENALTY, ContactModel::Penalty},
 };
 
 // The method of a field's value; `fallback` for a value outside the table.
@@ -52,13 +51,6 @@ Method methodOfField(const MethodRow<Method> (&table)[N], int field, Method fall
   for (const MethodRow<Method>& row : table)
     if (row.field == field) return row.method;
   return fallback;
-}
-
-template <typename Method, std::size_t N>
-const char* nameOfMethod(const MethodRow<Method> (&table)[N], Method method) {
-  for (const MethodRow<Method>& row : table)
-    if (row.method == method) return row.name;
-  return "";
 }
 
 std::string at(int index, int value) {
@@ -142,23 +134,19 @@ Material materialFromFields(const ClothEngine& engine) {
   return m;
 }
 
-const char* fieldName(Integrator integrator) {
-  return nameOfMethod(kIntegrators, integrator);
-}
-
-const char* fieldName(AccelerationLimiter limiter) {
-  return nameOfMethod(kLimiters, limiter);
-}
-
-const char* fieldName(ContactModel contacts) {
-  return nameOfMethod(kContactModels, contacts);
+DrapeMethod methodFromFields(const ClothEngine& engine) {
+  return {methodOfField(kIntegrators, engine.integrator.getValue(), Integrator::Heun),
+          methodOfField(kContactModels, engine.contactModel.getValue(), ContactModel::Constraints),
+          engine.timeStepSeconds(),
+          methodOfField(kLimiters, engine.accelerationLimiter.getValue(), AccelerationLimiter::None),
+          engine.accelerationLimit.getValue()};
 }
 
 ClothParameters parametersFromFields(const ClothEngine& engine) {
   // The double fields hold what the scene wrote (see FieldValues.h); gravity is float.
   ClothParameters p;
   p.material = materialFromFields(engine);
-  p.timeStep = engine.timeStepSeconds();
+  methodFromFields(engine).applyTo(p);
   p.maxTime = engine.maxTime.getValue();
   p.rest.speedThreshold = engine.restSpeed.getValue();
   p.rest.window = engine.restWindow.getValue();
@@ -168,11 +156,7 @@ ClothParameters parametersFromFields(const ClothEngine& engine) {
   p.friction = engine.friction.getValue();
   p.clearance = engine.clearance.getValue();
   p.strainRateDamping = engine.strainRateDamping.getValue();
-  p.integrator = methodOfField(kIntegrators, engine.integrator.getValue(), Integrator::Heun);
-  p.implicitSolver.contacts = methodOfField(kContactModels, engine.contactModel.getValue(), ContactModel::Constraints);
   p.strainLimit = engine.strainLimit.getValue();
-  p.accelerationLimiter = methodOfField(kLimiters, engine.accelerationLimiter.getValue(), AccelerationLimiter::None);
-  p.accelerationLimit = engine.accelerationLimit.getValue();
   const SbVec3f& w = engine.windDirection.getValue();
   p.wind.direction = Vec3(writtenValue(w[0]), writtenValue(w[1]), writtenValue(w[2]));
   p.wind.amplitude = engine.windAmplitude.getValue();

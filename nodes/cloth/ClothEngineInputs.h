@@ -9,6 +9,7 @@
 #include "sim/cloth/ClothParameters.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/DrapeMethod.h"
 #include "sim/drape/GarmentDrape.h"
 
 class ClothEngine;
@@ -34,11 +35,9 @@ std::optional<DrapeSewing> sewingFromFields(const SoMFVec2f& panelPoints, const 
 // wrote over it, or those four fields alone. Throws for an unknown preset.
 Material materialFromFields(const ClothEngine& engine);
 
-// The name a scene writes a method's field value with ("IMPLICIT", "CLAMP", "PENALTY"), as
-// RunStats reports it.
-const char* fieldName(Integrator integrator);
-const char* fieldName(AccelerationLimiter limiter);
-const char* fieldName(ContactModel contacts);
+// The method the fields name, not validated: what a report says before any drape was
+// planned (the drape failed first).
+DrapeMethod methodFromFields(const ClothEngine& engine);
 
 // Material and run parameters from the engine's fields, validated.
 ClothParameters parametersFromFields(const ClothEngine& engine);

@@ -28,7 +28,7 @@
 #include "io/Fnv1a.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/cloth/ClothEngine.h"
-#include "nodes/cloth/ToleranceChoice.h"
+#include "nodes/cloth/EngineAsk.h"
 #include "sim/core/TriangleMesh.h"
 
 namespace figment {

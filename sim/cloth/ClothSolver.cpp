@@ -237,15 +237,10 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
       }
     }
   }
-  DrapeResult result;
+  DrapeResult result = ending();
   result.iterations = iterations_ - firstIteration;
   result.simulatedTime = time_;
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-  result.atRest = atRest();
-  result.maxSpeed = maxSpeed();
-  result.maxStretch = maxStretch();
-  result.clampedSectionShareAtEnd = lastStepClampedShare_;
-  result.limitedNodeShareAtEnd = lastStepLimitedShare_;
   if (implicit_) result.implicitCosts = implicit_->costs().since(costsBefore);
   const ClothModel::LimiterCounts& after = model_->limiterCounts();
   const double evaluations = static_cast<double>(after.evaluations - before.evaluations);
@@ -254,6 +249,16 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
         (after.clampedSections - before.clampedSections) / (evaluations * model_->sections().size());
     result.limitedNodeShare = (after.limitedNodes - before.limitedNodes) / (evaluations * model_->nodeCount());
   }
+  return result;
+}
+
+DrapeResult ClothSolver::ending() const {
+  DrapeResult result;
+  result.atRest = atRest();
+  result.maxSpeed = maxSpeed();
+  result.maxStretch = maxStretch();
+  result.clampedSectionShareAtEnd = lastStepClampedShare_;
+  result.limitedNodeShareAtEnd = lastStepLimitedShare_;
   return result;
 }
 

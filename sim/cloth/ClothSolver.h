@@ -31,8 +31,8 @@
 
 #include "sim/cloth/ClothModel.h"
 #include "sim/cloth/ClothParameters.h"
+#include "sim/cloth/DrapeResult.h"
 #include "sim/cloth/EdgeStretch.h"
-#include "sim/cloth/implicit/ImplicitStepCosts.h"
 #include "sim/collision/BroadPhaseCollider.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
@@ -45,27 +45,6 @@ struct DrapeProgress {
   int iterations;
   double simulatedTime;  // s
   double maxSpeed;       // m/s, fastest node now
-};
-
-struct DrapeResult {
-  int iterations = 0;
-  double simulatedTime = 0.0;  // s
-  double wallSeconds = 0.0;
-  bool atRest = false;
-  // Share of section force evaluations whose strain was clamped, and of node
-  // accelerations the limiter cut (sim/cloth/ClothModel.h), over this run.
-  double clampedSectionShare = 0.0;
-  double limitedNodeShare = 0.0;
-  ImplicitStepCosts implicitCosts;  // Integrator::Implicit's steps; zeros for the others
-  // At the run's end: the fastest node (m/s), the largest edge stretch (length over rest
-  // length, EdgeStretch.h), and the shares of the sections whose strain was clamped and
-  // of the nodes whose acceleration the limiter cut in the last step (the explicit
-  // integrators'; the shape it ended in is then held by a stability measure, not by the
-  // model's forces alone).
-  double maxSpeed = 0.0;
-  double maxStretch = 1.0;
-  double clampedSectionShareAtEnd = 0.0;
-  double limitedNodeShareAtEnd = 0.0;
 };
 
 // Thrown when the simulation blows up (non-finite values): names step, dt and method.
@@ -117,6 +96,10 @@ class ClothSolver {
   double time() const;
   int iterations() const;
   double maxSpeed() const;
+  // How the cloth is now, as a run ends: at rest or not, the fastest node, the most stretched
+  // edge, the shares the stability measures held in the last step (the rest of a
+  // DrapeResult, the run's own counts, is zero).
+  DrapeResult ending() const;
   // The largest edge stretch now (EdgeStretch::largest).
   double maxStretch() const { return edges_.largest(x_); }
   // The shares of the sections clamped and of the nodes limited in the last step (per

@@ -19,23 +19,19 @@
 
 #include <string>
 
+#include "sim/cloth/DrapeResult.h"
+
 namespace figment {
 
 struct DrapeVerdict {
   static constexpr double kTearStretch = 1.5;  // edge length over rest length
 
-  bool atRest = false;
-  double maxTime = 0.0;                   // s, the run's bound
-  double maxSpeed = 0.0;                  // m/s, the fastest node at the end
-  double maxStretch = 1.0;                // the most stretched edge at the end, length over rest length
-  double clampedSectionShareAtEnd = 0.0;  // of the sections, in the last step
-  double limitedNodeShareAtEnd = 0.0;     // of the nodes, in the last step
-  long halvedSteps = 0;                   // implicit steps the control took again as halves
-  long failedSteps = 0;                   // ... and steps it kept though they failed at its smallest step
+  DrapeResult run;       // how the run ended (sim/cloth/DrapeResult.h)
+  double maxTime = 0.0;  // s, the run's bound
 
-  bool tore() const { return maxStretch > kTearStretch; }
-  bool limited() const { return clampedSectionShareAtEnd > 0.0 || limitedNodeShareAtEnd > 0.0; }
-  bool clean() const { return atRest && !tore() && !limited() && failedSteps == 0; }
+  bool tore() const { return run.maxStretch > kTearStretch; }
+  bool limited() const { return run.clampedSectionShareAtEnd > 0.0 || run.limitedNodeShareAtEnd > 0.0; }
+  bool clean() const { return run.atRest && !tore() && !limited() && run.implicitCosts.failedSteps == 0; }
   // "" when clean; else what happened, with its figures, as one line without a period:
   // "not at rest after maxTime 10 s (max speed 0.31 m/s); torn: an edge at 2.02 times its
   // rest length (bound 1.5); limited: the acceleration limiter cut 3.5 % of the nodes in

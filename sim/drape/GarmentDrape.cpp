@@ -19,7 +19,7 @@ GarmentDrape drapeWhole(const DrapeRequest& request) {
   else if (request.stepObserver)
     solver.setStepObserver(request.stepObserver);
   GarmentDrape out;
-  out.run = solver.run(request.progress, request.progressInterval);
+  out.report.run = solver.run(request.progress, request.progressInterval);
   out.positions = solver.positions();
   out.sections = request.garment.triangles;
   return out;
@@ -64,10 +64,10 @@ GarmentDrape drapeSewn(const DrapeRequest& request) {
                      SeamPull{sewn.openSeams, sewing.parameters.rate * sewn.strength});
   if (request.stepObserver) solver.setStepObserver(request.stepObserver);
   GarmentDrape out;
-  out.run = solver.run(request.progress, request.progressInterval);
-  out.run.iterations += steps;
-  out.run.simulatedTime += time;
-  out.run.wallSeconds += wall;
+  out.report.run = solver.run(request.progress, request.progressInterval);
+  out.report.run.iterations += steps;
+  out.report.run.simulatedTime += time;
+  out.report.run.wallSeconds += wall;
   out.positions = panelPositions(sewn, solver.positions());
   out.sections = request.garment.triangles;
   outcome.seamGap = largestSeamGap(panels, out.positions);
@@ -82,12 +82,12 @@ GarmentDrape drapeSewn(const DrapeRequest& request) {
 GarmentDrape drapeProgressively(const DrapeRequest& request) {
   ProgressiveDrape drape(*request.progressive, request.parameters, request.body, request.schedule);
   GarmentDrape out;
-  out.run = drape.run(request.progress, request.progressInterval);
+  out.report.run = drape.run(request.progress, request.progressInterval);
   out.positions = drape.fullPositions();
   out.sections = drape.levelTriangles();
-  out.level = drape.level();
-  out.levels = request.progressive->levels();
-  out.settling = drape.endLevelSettling();
+  out.report.level = drape.level();
+  out.report.levels = request.progressive->levels();
+  out.report.settling = drape.endLevelSettling();
   return out;
 }
 
@@ -99,9 +99,16 @@ GarmentDrape drapeGarment(const DrapeRequest& request) {
   if (request.sewing) {
     if (request.progressive) throw std::invalid_argument("a sewn garment drapes whole, not progressively");
     if (request.bodyClock) throw std::invalid_argument("a sewn garment drapes on a body already in its pose");
-    return drapeSewn(request);
   }
-  return request.progressive ? drapeProgressively(request) : drapeWhole(request);
+  GarmentDrape out = request.sewing        ? drapeSewn(request)
+                     : request.progressive ? drapeProgressively(request)
+                                           : drapeWhole(request);
+  out.report.method = DrapeMethod::of(request.parameters);
+  out.report.strainLimit = request.parameters.strainLimit;
+  out.report.maxTime = request.parameters.maxTime;
+  out.report.triangles = static_cast<int>(request.garment.triangles.size());
+  out.report.sections = static_cast<int>(out.sections.size());
+  return out;
 }
 
 }  // namespace figment

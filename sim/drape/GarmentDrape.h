@@ -15,6 +15,7 @@
 #include "sim/cloth/ClothSolver.h"
 #include "sim/collision/Collider.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/DrapeReport.h"
 #include "sim/pattern/Sewing.h"
 #include "sim/progressive/ProgressiveDrape.h"
 #include "sim/progressive/ProgressiveMesh.h"
@@ -63,11 +64,11 @@ struct DrapeRequest {
 };
 
 struct GarmentDrape {
-  DrapeResult run;
-  std::vector<Vec3> positions;          // every rest point's
-  std::vector<Triangle> sections;       // those simulated last, in the garment's numbering
-  int level = 0, levels = 0;            // progressive only: the level reached, of how many
-  EndLevelSettling settling;            // progressive only: after the full detail arrived
+  std::vector<Vec3> positions;     // every rest point's
+  std::vector<Triangle> sections;  // those simulated last, in the garment's numbering
+  // The run, its triangles and sections, a progressive drape's levels and settling; what
+  // chose the method is the plan's to add (sim/drape/DrapePlan.h).
+  DrapeReport report;
   std::optional<SewingOutcome> sewing;  // sewn only
 };
 

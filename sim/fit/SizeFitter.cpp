@@ -169,10 +169,19 @@ const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
     }
     made.flat = RestShape::flatPieces(cut.placed.triangles, std::move(corners), cut.placed.vertices.size());
   }
+  return graded_.emplace(key, std::move(made)).first->second;
+}
+
+const std::vector<RegionFit>& SizeFitter::ownFit(Sex sex, int size) {
+  const auto key = std::make_pair(static_cast<int>(sex), size);
+  if (const auto found = ownFits_.find(key); found != ownFits_.end()) return found->second;
+  const Graded& made = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(made.body);
   const SizeDrape own = drapeSize(made, sex, size, collider, nullptr);
-  made.ownFit = fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, regions_), made, own.positions);
-  return graded_.emplace(key, std::move(made)).first->second;
+  return ownFits_
+      .emplace(key,
+               fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, regions_), made, own.positions))
+      .first->second;
 }
 
 SizeDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
@@ -192,7 +201,7 @@ SizeDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCol
   const GarmentDrape drape = drapeGarment(request);
   SizeDrape out;
   out.positions = drape.positions;
-  out.run = drape.run;
+  out.run = drape.report.run;
   if (drape.sewing) {
     out.run.iterations += drape.sewing->run.iterations;
     out.run.wallSeconds += drape.sewing->run.wallSeconds;
@@ -219,14 +228,14 @@ std::vector<RegionFit> SizeFitter::fitOn(const MeshCollider& collider, const std
   return measureFit(input, regions);
 }
 
-SizeFit SizeFitter::fitSize(const Graded& graded, const std::string& name, const MeshCollider& collider,
-                            const std::vector<FitRegion>& regions, SizeDrape drape) const {
+SizeFit SizeFitter::fitSize(const Graded& graded, const std::vector<RegionFit>& own, const std::string& name,
+                            const MeshCollider& collider, const std::vector<FitRegion>& regions,
+                            SizeDrape drape) const {
   SizeFit fit;
   fit.size = name;
   fit.regions = fitOn(collider, regions, graded, drape.positions);
-  for (size_t r = 0; r < fit.regions.size(); ++r)
-    fit.verdicts.push_back(judge(fit.regions[r], graded.ownFit[r], rule()));
-  fit.text = shopperText(fit.regions, graded.ownFit, fit.verdicts, rule());
+  for (size_t r = 0; r < fit.regions.size(); ++r) fit.verdicts.push_back(judge(fit.regions[r], own[r], rule()));
+  fit.text = shopperText(fit.regions, own, fit.verdicts, rule());
   fit.drape = std::move(drape);
   return fit;
 }
@@ -235,7 +244,7 @@ SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
   const Graded& graded = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(body);
   const std::vector<FitRegion> regions = styleRegions(body, measureBody(body), sex, regions_);
-  return fitSize(graded, chart_.sizes(sex).at(size).name, *collider, regions,
+  return fitSize(graded, ownFit(sex, size), chart_.sizes(sex).at(size).name, *collider, regions,
                  drapeSize(graded, sex, size, collider, nullptr));
 }
 
@@ -257,8 +266,8 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
     if (const int from = k > centre ? k - 1 : k + 1; warm && warmStarts_ && k != centre)
       start = warmStart(graded.garment, grade(sex, candidates[from]).garment, out.sizes[from].drape.positions,
                         *collider, parameters_.clearance);
-    out.sizes[k] = fitSize(graded, chart_.sizes(sex)[candidates[k]].name, *collider, regions,
-                           drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
+    out.sizes[k] = fitSize(graded, ownFit(sex, candidates[k]), chart_.sizes(sex)[candidates[k]].name, *collider,
+                           regions, drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
   }
   out.allTight = true;
   for (const SizeFit& fit : out.sizes)

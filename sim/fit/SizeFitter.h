@@ -89,15 +89,20 @@ class SizeFitter {
   // without a pattern when asked to fit it.
   SizeFitter(const HumanModel& model, const SizeChart& chart, const SewnStyle& style);
 
-  // A size's chart body (made to its four dimensions) and its garment, made once.
+  // A size's chart body (made to its four dimensions) and its garment, made once. Grading
+  // drapes nothing: a caller that wants only the garment (a render of a size) pays for no drape.
   struct Graded {
     // A sewn style's garment is its panels cut and placed around the chart body, unsewn:
     // its triangles are the same on every body, `flat` (its flat panels) its rest shape.
     TriangleMesh body, garment;
     std::optional<RestShape> flat;
-    std::vector<RegionFit> ownFit;  // the garment draped on its own chart body: the intended fit
   };
   const Graded& graded(Sex sex, int size);
+  // The size's garment draped on its own chart body, measured by the style's regions: the
+  // intended fit a drape on another body is judged against. Draped on the first ask, then kept.
+  const std::vector<RegionFit>& ownFit(Sex sex, int size);
+  // Whether that drape has been made (a later ownFit costs nothing).
+  bool hasOwnFit(Sex sex, int size) const { return ownFits_.count({static_cast<int>(sex), size}) > 0; }
 
   // Drapes `garment` on `body` (its collider), cold or from `start`.
   SizeDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
@@ -122,8 +127,8 @@ class SizeFitter {
   const Graded& grade(Sex sex, int size);
   std::vector<RegionFit> fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
                                const Graded& graded, const std::vector<Vec3>& positions) const;
-  SizeFit fitSize(const Graded& graded, const std::string& name, const MeshCollider& collider,
-                  const std::vector<FitRegion>& regions, SizeDrape drape) const;
+  SizeFit fitSize(const Graded& graded, const std::vector<RegionFit>& own, const std::string& name,
+                  const MeshCollider& collider, const std::vector<FitRegion>& regions, SizeDrape drape) const;
 
   SizeDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
                       const std::vector<Vec3>* start) const;
@@ -137,7 +142,8 @@ class SizeFitter {
   std::vector<std::string> regions_;
   bool warmStarts_ = false;
   ClothParameters parameters_;
-  std::map<std::pair<int, int>, Graded> graded_;  // (sex, size index) -> made
+  std::map<std::pair<int, int>, Graded> graded_;                   // (sex, size index) -> made
+  std::map<std::pair<int, int>, std::vector<RegionFit>> ownFits_;  // (sex, size index) -> its own fit
 };
 
 }  // namespace figment

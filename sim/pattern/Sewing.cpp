@@ -154,11 +154,10 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
 
   SewnGarment out = mergeSeams(garment, solver.positions(), sewing.snapGap);
   out.strength = strength;
+  out.sewing = solver.ending();
   out.sewing.iterations = solver.iterations();
   out.sewing.simulatedTime = solver.time();
   out.sewing.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  out.sewing.maxSpeed = solver.maxSpeed();
-  out.sewing.maxStretch = solver.maxStretch();
   out.sewing.implicitCosts = solver.implicitCosts();
   return out;
 }

@@ -189,15 +189,11 @@ DrapeResult ProgressiveDrape::run(const std::function<void(const DrapeProgress&)
       lastReport = Clock::now();
     }
   }
-  DrapeResult result;
+  DrapeResult result = solver_->ending();  // its stretch: the level's sections
   result.iterations = solver_->iterations();
   result.simulatedTime = solver_->time();
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   result.atRest = atRest();
-  result.maxSpeed = solver_->maxSpeed();
-  result.maxStretch = solver_->maxStretch();  // the level's sections
-  result.clampedSectionShareAtEnd = solver_->lastStepClampedShare();
-  result.limitedNodeShareAtEnd = solver_->lastStepLimitedShare();
   result.implicitCosts = retiredCosts_;
   result.implicitCosts += solver_->implicitCosts();
   return result;

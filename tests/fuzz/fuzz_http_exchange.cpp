@@ -24,7 +24,7 @@
 #include <string>
 #include <string_view>
 
-#include "serve/HttpService.h"
+#include "serve/http/HttpService.h"
 #include "tests/support/HttpAnswer.h"
 
 namespace {

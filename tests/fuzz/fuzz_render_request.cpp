@@ -1,4 +1,4 @@
-// libFuzzer target: figment-serve's request parser (serve/RenderRequest.cpp) on any query
+// libFuzzer target: figment-serve's request parser (serve/request/RenderRequest.cpp) on any query
 // string, split as the server splits one (name=value pairs at '&'). A request it accepts
 // must read back from its canonical text to the same text (the ETag and the worker rely
 // on that); a refusal must name what it refused within the bounds the 400 answer has.
@@ -8,12 +8,12 @@
 #include <cstdlib>
 #include <string>
 
-#include "serve/RenderRequest.h"
+#include "serve/request/RenderRequest.h"
 
 namespace {
 
-figment::serve::RenderRequest::Parameters split(const std::string& query) {
-  figment::serve::RenderRequest::Parameters parameters;
+figment::serve::QueryParameters split(const std::string& query) {
+  figment::serve::QueryParameters parameters;
   size_t start = 0;
   while (start <= query.size()) {
     size_t amp = query.find('&', start);

@@ -33,6 +33,7 @@
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/VolumeSetCollider.h"
 #include "sim/core/DisplaySubdivision.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
 
@@ -235,11 +236,11 @@ TEST_F(DefaultScene, DressComesToRestWithoutError) {
   const ClothEngine* engine = engines_.front();
   EXPECT_EQ(engine->lastError(), "");
   EXPECT_EQ(engine->evaluationCount(), 1);
-  const ClothEngine::RunStats& run = engine->lastRun();
-  EXPECT_TRUE(run.atRest) << "simulated " << run.simulatedSeconds << " s";
+  const figment::DrapeReport& run = engine->lastRun();
+  EXPECT_TRUE(run.run.atRest) << "simulated " << run.run.simulatedTime << " s";
   EXPECT_GT(run.triangles, 1300);
   EXPECT_LT(run.triangles, 1700);
-  EXPECT_LT(run.simulatedSeconds, engine->maxTime.getValue());
+  EXPECT_LT(run.run.simulatedTime, engine->maxTime.getValue());
 }
 
 TEST_F(DefaultScene, NoGarmentVertexInsideTheBody) {
@@ -415,7 +416,7 @@ double drapeDefaultDress(const std::function<void(ClothEngine&)>& adjust) {
   adjust(*engine);
   engine->positions[0]->evaluate();
   EXPECT_EQ(engine->lastError(), "");
-  EXPECT_TRUE(engine->lastRun().atRest);
+  EXPECT_TRUE(engine->lastRun().run.atRest);
   const double worst = worstEdgeStrain(*engine);
   scene->unref();
   return worst;

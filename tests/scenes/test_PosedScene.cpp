@@ -18,6 +18,7 @@
 #include "sim/collision/Collider.h"
 #include "sim/collision/VolumeSetCollider.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/DrapeReport.h"
 
 namespace {
 
@@ -97,7 +98,7 @@ TEST_F(PosedScene, TheDressComesToRestOutsideThePosedVolumes) {
   draped.connectFrom(&engine->positions);
   ASSERT_GT(draped.getNum(), 0);
   ASSERT_EQ(engine->lastError(), "");
-  EXPECT_TRUE(engine->lastRun().atRest) << "simulated " << engine->lastRun().simulatedSeconds << " s";
+  EXPECT_TRUE(engine->lastRun().run.atRest) << "simulated " << engine->lastRun().run.simulatedTime << " s";
   const auto volumes = std::static_pointer_cast<const figment::VolumeSetCollider>(model_->collider());
   int inside = 0;
   double top = -1e9;

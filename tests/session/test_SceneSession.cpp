@@ -73,10 +73,10 @@ TEST_F(SceneSessionTest, DrapesEveryEngineOnceInSceneOrderWithItsOwnResult) {
   EXPECT_EQ(drapes[0].name, "First");
   EXPECT_EQ(drapes[0].label, "ClothEngine 'First'");
   EXPECT_EQ(drapes[0].error, "");
-  EXPECT_GT(drapes[0].run.iterations, 0);
-  EXPECT_EQ(drapes[0].run.triangles, 2);
-  EXPECT_EQ(drapes[0].method.integrator, "HEUN");
-  EXPECT_EQ(drapes[0].body.kind, "none");
+  EXPECT_GT(drapes[0].report.run.iterations, 0);
+  EXPECT_EQ(drapes[0].report.triangles, 2);
+  EXPECT_EQ(figment::fieldName(drapes[0].report.method.integrator), std::string("HEUN"));
+  EXPECT_EQ(drapes[0].report.body.kind, "none");
   EXPECT_EQ(drapes[1].name, "Second");
   EXPECT_NE(drapes[1].error.find("thickness = -0.001 must be > 0"), std::string::npos) << drapes[1].error;
   EXPECT_EQ(session.firstError(), drapes[1].error);
@@ -100,15 +100,15 @@ TEST_F(SceneSessionTest, SaysWhichDrapesAreNotCleanInOneLineEach) {
   ASSERT_TRUE(session.load(scene)) << session.loadError();
   const std::vector<EngineDrape>& drapes = session.drape();
   ASSERT_EQ(drapes.size(), 4u);
-  EXPECT_EQ(drapes[1].run.verdict, "");
-  EXPECT_TRUE(drapes[1].run.atRest);
-  EXPECT_EQ(drapes[1].method.maxTime, 1.0);  // the method that ran, its bound included
+  EXPECT_EQ(drapes[1].report.verdict, "");
+  EXPECT_TRUE(drapes[1].report.run.atRest);
+  EXPECT_EQ(drapes[1].report.maxTime, 1.0);  // the method that ran, its bound included
   const std::vector<std::string> lines = session.verdicts();
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].rfind("ClothEngine 'Falling': not at rest after maxTime 0.01 s (max speed 0.09", 0), 0u)
       << lines[0];
   EXPECT_EQ(lines[1].rfind("ClothEngine 'AlsoFalling': not at rest after maxTime 0.01 s", 0), 0u) << lines[1];
-  EXPECT_NEAR(drapes[0].run.maxStretch, 1.0, 1e-6);  // a falling square keeps its shape
+  EXPECT_NEAR(drapes[0].report.run.maxStretch, 1.0, 1e-6);  // a falling square keeps its shape
 }
 
 TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) {
@@ -122,7 +122,7 @@ TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) 
   EXPECT_EQ(session.engines()[0]->evaluationCount(), 1);
   EXPECT_EQ(session.engines()[1]->evaluationCount(), 2);
   EXPECT_EQ(drapes[1].error, "");
-  EXPECT_GT(drapes[1].run.iterations, 0);
+  EXPECT_GT(drapes[1].report.run.iterations, 0);
 }
 
 // The guard's draw-side check runs in the session, so every program that stages through it
@@ -251,7 +251,7 @@ TEST_F(SceneSessionTest, TwoSessionsInOneProcessKeepTheirOwnCachesAndObservers) 
     ASSERT_TRUE(alone.load(scene)) << alone.loadError();
     ASSERT_EQ(alone.drape().front().error, "");
     *positions = drapedPositions(alone);
-    *steps = alone.drapes().front().run.iterations;
+    *steps = alone.drapes().front().report.run.iterations;
   }
   ASSERT_FALSE(sameBits(aloneA, aloneB));
   ASSERT_GE(stepsA, 128);  // enough for progress reports
@@ -332,7 +332,7 @@ TEST_F(SceneSessionTest, AdoptsAGraphBuiltInCodeAsALoadedOne) {
   const std::vector<EngineDrape>& drapes = session.drape();
   ASSERT_EQ(drapes.size(), 1u);
   EXPECT_EQ(drapes.front().error, "");
-  EXPECT_GT(drapes.front().run.iterations, 0);  // it simulated
+  EXPECT_GT(drapes.front().report.run.iterations, 0);  // it simulated
   EXPECT_NE(session.stage(ImageSize{64, 48}, ViewDirection{}), nullptr);
   engine->ref();
   session.clear();

@@ -18,18 +18,17 @@ namespace {
 session::EngineDrape dressDrape() {
   session::EngineDrape drape;
   drape.name = "Dress";
-  drape.run.triangles = 1200;
-  drape.run.iterations = 80;
-  drape.run.simulatedSeconds = 4.0;
-  drape.run.atRest = true;
-  drape.run.maxStretch = 1.05;
-  drape.run.verdict = "";
-  drape.method.integrator = "IMPLICIT";
-  drape.method.timeStep = 0.05;
-  drape.method.accelerationLimiter = "NONE";
-  drape.method.accelerationLimit = 3.0;  // not in force: written as 0
-  drape.method.contactModel = "CONSTRAINTS";
-  drape.body = {"mannequin", {{"capsules", 12}}};
+  DrapeReport& report = drape.report;
+  report.triangles = 1200;
+  report.run.iterations = 80;
+  report.run.simulatedTime = 4.0;
+  report.run.atRest = true;
+  report.run.maxStretch = 1.05;
+  report.method.integrator = Integrator::Implicit;
+  report.method.timeStep = 0.05;
+  report.method.limiter = AccelerationLimiter::None;
+  report.method.limit = 3.0;  // not in force: written as 0
+  report.body = {"mannequin", {{"capsules", 12}}};
   return drape;
 }
 
@@ -61,9 +60,9 @@ TEST(StatsJson, AProgressiveDrapeSaysItsLevels) {
   const test::TempDir dir;
   const std::string path = (dir.path() / "stats.json").string();
   session::EngineDrape drape = dressDrape();
-  drape.run.levels = 5;
-  drape.run.level = 5;
-  drape.run.sections = 900;
+  drape.report.levels = 5;
+  drape.report.level = 5;
+  drape.report.sections = 900;
   ASSERT_EQ(viewer::writeStatsJson(path, "dress.iv", {drape}, {}, 0.0, {10, 10}), "");
   const nlohmann::json garment = nlohmann::json::parse(std::ifstream(path))["garments"][0];
   EXPECT_EQ(garment["progressive"]["levels"], 5);

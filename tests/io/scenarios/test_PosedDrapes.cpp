@@ -54,8 +54,9 @@ class PosedDrapes : public ::testing::Test {
     const GarmentDrape out = drapeGarment(request);
     std::printf(
         "pose motion %.2f s (%d keyframes), drape %.2f s simulated, %s (fastest %.4f m/s), stretch %.2f, %.1f s wall\n",
-        moving->duration(), moving->keyframes(), out.run.simulatedTime, out.run.atRest ? "at rest" : "NOT at rest",
-        out.run.maxSpeed, out.run.maxStretch, out.run.wallSeconds);
+        moving->duration(), moving->keyframes(), out.report.run.simulatedTime,
+        out.report.run.atRest ? "at rest" : "NOT at rest", out.report.run.maxSpeed, out.report.run.maxStretch,
+        out.report.run.wallSeconds);
     return out;
   }
   // Nodes inside the posed body (deeper than 1 mm).
@@ -91,8 +92,8 @@ TEST_F(PosedDrapes, TheRaisedArmCarriesTheSleeveUpAndTheShirtRestsWithNoNodeInsi
   const RigPose pose = presetPose(PosePreset::ArmRaised, *rig, placed);
   const GarmentDrape out = drape(shirt.mesh, pose);
   const std::vector<Vec3>& x = out.positions;
-  EXPECT_TRUE(out.run.atRest);
-  EXPECT_LT(out.run.maxStretch, 1.5);  // not torn at the armpit as the arm rose (DrapeVerdict)
+  EXPECT_TRUE(out.report.run.atRest);
+  EXPECT_LT(out.report.run.maxStretch, 1.5);  // not torn at the armpit as the arm rose (DrapeVerdict)
   EXPECT_EQ(nodesInside(x, pose), 0);
   // The left sleeve: the nodes beyond the rest shoulder joint, round the upper arm.
   const int upper = rig->require("upperarm01.L");
@@ -126,8 +127,8 @@ TEST_F(PosedDrapes, SittingWithTheSkirtRestsWithNoNodeInside) {
   const RigPose pose = presetPose(PosePreset::Sitting, *rig, placed);
   // Slowly: its hem creeps over the knees at 1 to 4 cm/s for some 20 s (docs/bodies.md).
   const GarmentDrape out = drape(skirt.mesh, pose, 30.0);
-  EXPECT_TRUE(out.run.atRest);
-  EXPECT_LT(out.run.maxStretch, 1.5);
+  EXPECT_TRUE(out.report.run.atRest);
+  EXPECT_LT(out.report.run.maxStretch, 1.5);
   EXPECT_EQ(nodesInside(out.positions, pose), 0);
 }
 
@@ -136,7 +137,7 @@ TEST_F(PosedDrapes, AKneeBent60DegreesWithTheSkirtRestsWithNoNodeInside) {
   RigPose pose;
   pose.set(rig->require("lowerleg01.L"), Eigen::Quaterniond(Eigen::AngleAxisd(M_PI / 3, Vec3::UnitX())));
   const GarmentDrape out = drape(skirt.mesh, pose);
-  EXPECT_TRUE(out.run.atRest);
-  EXPECT_LT(out.run.maxStretch, 1.5);
+  EXPECT_TRUE(out.report.run.atRest);
+  EXPECT_LT(out.report.run.maxStretch, 1.5);
   EXPECT_EQ(nodesInside(out.positions, pose), 0);
 }

@@ -78,8 +78,8 @@ TEST_P(SewnPatterns, SewsClosedAndRestsOnItsSizesChartBody) {
   ASSERT_TRUE(drape.sewing.has_value());
   EXPECT_EQ(drape.sewing->openPairs, 0);
   EXPECT_LE(drape.sewing->seamGap, 0.002);  // m: the bound on any seam's gap at rest
-  EXPECT_TRUE(drape.run.atRest);
-  EXPECT_LT(drape.run.maxStretch, DrapeVerdict::kTearStretch);
+  EXPECT_TRUE(drape.report.run.atRest);
+  EXPECT_LT(drape.report.run.maxStretch, DrapeVerdict::kTearStretch);
   int inside = 0;
   for (const Vec3& x : drape.positions) {
     Contact contact;

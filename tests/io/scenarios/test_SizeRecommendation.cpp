@@ -64,6 +64,30 @@ TEST_F(SizeRecommendation, EachWomensChartBodyGetsItsOwnPencilSkirt) {
   }
 }
 
+// Grading a size makes its chart body and garment and drapes nothing: the garment a render
+// of that size wears costs no drape. The garment's own fit on its chart body is draped when
+// a fit first needs it, and the garment is the same either way.
+TEST_F(SizeRecommendation, GradingASizeDrapesNothing) {
+  SizeFitter fitter(model(), chart(), *findStyle("pencil"));
+  const int m = index(Sex::Female, "M");
+  const SizeFitter::Graded& graded = fitter.graded(Sex::Female, m);
+  EXPECT_FALSE(fitter.hasOwnFit(Sex::Female, m));
+  ASSERT_FALSE(graded.garment.vertices.empty());
+  const std::vector<Vec3> garment = graded.garment.vertices;
+  EXPECT_FALSE(fitter.ownFit(Sex::Female, m).empty());
+  EXPECT_TRUE(fitter.hasOwnFit(Sex::Female, m));
+  EXPECT_EQ(fitter.graded(Sex::Female, m).garment.vertices, garment);
+  // Its own fit is the one pencil_'s recommendation judged M against (the same drape).
+  const std::vector<RegionFit>& own = fitter.ownFit(Sex::Female, m);
+  const std::vector<RegionFit>& shared = pencil_->ownFit(Sex::Female, m);
+  ASSERT_EQ(own.size(), shared.size());
+  for (size_t r = 0; r < own.size(); ++r) {
+    EXPECT_EQ(own[r].name, shared[r].name);
+    EXPECT_EQ(own[r].meanStrain, shared[r].meanStrain) << own[r].name;
+    EXPECT_EQ(own[r].ease, shared[r].ease) << own[r].name;
+  }
+}
+
 TEST_F(SizeRecommendation, EachMensChartBodyGetsItsOwnTShirt) {
   SizeFitter tshirt(model(), chart(), *findStyle("tshirt"));
   const std::vector<ChartSize>& sizes = chart().sizes(Sex::Male);

@@ -121,7 +121,7 @@ TEST_F(ClothEngineTest, SimulatesOncePerChangeOfItsInputs) {
   EXPECT_LT(first[1], 1.0f) << "the cloth fell";
   EXPECT_EQ(engine->lastError(), "");
   EXPECT_EQ(engine->lastRun().triangles, 162);
-  EXPECT_GT(engine->lastRun().iterations, 0);
+  EXPECT_GT(engine->lastRun().run.iterations, 0);
 
   // Traversals read the coordinates without simulating again.
   const SbViewportRegion viewport(100, 100);
@@ -308,7 +308,7 @@ TEST(ClothEngineStability, FieldsReachTheSimulation) {
   auto* engine = static_cast<ClothEngine*>(SoBase::getNamedBase("Drape", ClothEngine::getClassTypeId()));
   find<SoCoordinate3>(root.get(), "Cloth")->point.getNum();
   EXPECT_EQ(engine->lastError(), "");
-  EXPECT_GT(engine->lastRun().iterations, 0);
+  EXPECT_GT(engine->lastRun().run.iterations, 0);
 }
 
 TEST(ClothEngineMaterial, APresetFillsWhatTheSceneDidNotWrite) {

@@ -14,11 +14,11 @@
 #include <memory>
 
 #include "io/DrapeCache.h"
+#include "io/DrapeReportRecord.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/DrapeContext.h"
 #include "nodes/cloth/DrapeKey.h"
-#include "nodes/cloth/RunStatsRecord.h"
 #include "support/ShippedGarmentScene.h"
 #include "support/TempDir.h"
 
@@ -153,11 +153,11 @@ TEST(DrapeCacheEngine, ASecondDrapeIsReadBitForBitWithoutSimulating) {
   const std::vector<SbVec3f> first = drape(engine);
   ASSERT_EQ(engine.lastError(), "");
   EXPECT_FALSE(engine.lastRun().fromCache);
-  const int steps = engine.lastRun().iterations;
+  const int steps = engine.lastRun().run.iterations;
   engine.restPoints.touch();  // evaluate again, same inputs
   const std::vector<SbVec3f> second = drape(engine);
   EXPECT_TRUE(engine.lastRun().fromCache);
-  EXPECT_EQ(engine.lastRun().iterations, steps);  // the statistics of the run that made it
+  EXPECT_EQ(engine.lastRun().run.iterations, steps);  // the statistics of the run that made it
   EXPECT_TRUE(sameBits(first, second));
   EXPECT_EQ(engine.lastCacheMessage(), "");
 }
@@ -194,7 +194,7 @@ TEST(DrapeCacheEngine, ARecordOfAnotherVersionIsDroppedSaidAndMadeAgain) {
   std::optional<figment::CachedDrape> entry = cache.cache().find(key, problem);
   ASSERT_TRUE(entry) << problem;
   // A sound entry (its checksum matches) whose record says it is of a later version.
-  const std::uint32_t later = figment::kRunStatsRecordVersion + 1;
+  const std::uint32_t later = figment::kDrapeReportRecordVersion + 1;
   std::memcpy(entry->stats.data(), &later, sizeof later);
   ASSERT_EQ(cache.cache().store(key, *entry), "");
   engine.restPoints.touch();

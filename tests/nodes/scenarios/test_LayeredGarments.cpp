@@ -15,6 +15,7 @@
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/cloth/GarmentSurface.h"
 #include "sim/collision/Collider.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/SceneTestSupport.h"
 #include "support/ShippedGarmentScene.h"
 
@@ -71,8 +72,8 @@ struct DrapedOutfit {
     ASSERT_TRUE(shirt && outer && surface && volumes);
     ASSERT_EQ(outer->lastError(), "");
     EXPECT_EQ(shirt->evaluationCount(), 1) << "the T-shirt drapes once, before the outer garment";
-    EXPECT_TRUE(shirt->lastRun().atRest);
-    EXPECT_TRUE(outer->lastRun().atRest) << outer->lastRun().iterations << " steps";
+    EXPECT_TRUE(shirt->lastRun().run.atRest);
+    EXPECT_TRUE(outer->lastRun().run.atRest) << outer->lastRun().run.iterations << " steps";
     ASSERT_EQ(shirtAtRest.size(), static_cast<size_t>(shirt->restPoints.getNum()));
     EXPECT_EQ(deeperThan(*surface->bodyCollider(), outerAtRest, thickness() - 0.001), 0);
     EXPECT_EQ(deeperThan(*volumes, outerAtRest, 0.001), 0);

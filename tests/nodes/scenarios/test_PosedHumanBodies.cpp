@@ -19,6 +19,7 @@
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/HumanBody.h"
 #include "sim/collision/MeshCollider.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
@@ -78,10 +79,10 @@ TEST_P(PosedHumanBodies, DrapeIntoThePoseWithNoNodeInside) {
   positions.connectFrom(&engine.positions);
   positions.evaluate();
   ASSERT_EQ(engine.lastError(), "");
-  EXPECT_EQ(engine.lastRun().atRest, GetParam().rests) << "t = " << engine.lastRun().simulatedSeconds << " s";
+  EXPECT_EQ(engine.lastRun().run.atRest, GetParam().rests) << "t = " << engine.lastRun().run.simulatedTime << " s";
   // The shipped drapes end with their most stretched edge at 1.03 to 1.14 times its rest
   // length (sim/cloth/DrapeVerdict.h); a garment the pose cut through ends past 1.4.
-  EXPECT_LT(engine.lastRun().maxStretch, 1.25);
+  EXPECT_LT(engine.lastRun().run.maxStretch, 1.25);
   HumanBody* body = humanBodyOf(engine);
   ASSERT_NE(body, nullptr);
   const std::shared_ptr<const figment::MeshCollider> posed = body->collider();  // the body as drawn

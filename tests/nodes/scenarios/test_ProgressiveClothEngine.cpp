@@ -78,7 +78,7 @@ TEST(ProgressiveClothEngine, DrapesFromTheCoarsestLevelToTheFullGarment) {
   drape.engine->splitRate = 5000.0;  // every split due by the second step
   drape.positions.evaluate();
   ASSERT_EQ(drape.engine->lastError(), "");
-  const ClothEngine::RunStats& run = drape.engine->lastRun();
+  const figment::DrapeReport& run = drape.engine->lastRun();
   EXPECT_GT(run.levels, 50);
   EXPECT_EQ(run.level, run.levels);
   EXPECT_EQ(faces(drape.sections), 2 * 11 * 11);
@@ -144,8 +144,8 @@ TEST(ProgressiveClothEngine, TheDressSplitAllAtOnceOnThePapersPathDoesNotBlowUp)
   positions.connectFrom(&engine.positions);
   positions.evaluate();
   EXPECT_EQ(engine.lastError(), "");
-  const ClothEngine::RunStats& run = engine.lastRun();
-  ASSERT_EQ(run.level, run.levels) << "the coarsest level did not rest by " << run.simulatedSeconds << " s";
-  EXPECT_LT(run.endLevelSeconds, 1.8);
-  EXPECT_LT(run.maxMoveAfterEndLevel, 0.1);
+  const figment::DrapeReport& run = engine.lastRun();
+  ASSERT_EQ(run.level, run.levels) << "the coarsest level did not rest by " << run.run.simulatedTime << " s";
+  EXPECT_LT(run.settling.arrival, 1.8);
+  EXPECT_LT(run.settling.maxMove, 0.1);
 }

@@ -13,6 +13,7 @@
 
 #include "nodes/body/CollisionBody.h"
 #include "sim/collision/Collider.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
@@ -41,7 +42,7 @@ TEST_P(ShippedDrapes, ComeToRestOnTheVolumesWithNoNodeInside) {
   positions.connectFrom(&engine.positions);
   positions.evaluate();
   ASSERT_EQ(engine.lastError(), "");
-  EXPECT_TRUE(engine.lastRun().atRest) << "t = " << engine.lastRun().simulatedSeconds << " s";
+  EXPECT_TRUE(engine.lastRun().run.atRest) << "t = " << engine.lastRun().run.simulatedTime << " s";
   const figment::CollisionBody* body = figment::asCollisionBody(engine.body.getValue());
   ASSERT_NE(body, nullptr);
   const std::shared_ptr<const figment::Collider> volumes = body->bodyCollider();

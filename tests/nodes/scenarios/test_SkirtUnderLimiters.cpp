@@ -11,6 +11,7 @@
 #include <cmath>
 #include <set>
 
+#include "sim/drape/DrapeReport.h"
 #include "support/ShippedGarmentScene.h"
 
 using namespace figment::test;
@@ -53,7 +54,7 @@ TEST(SkirtUnderLimiters, TheClampAtTenOrThirtyGNoLongerTearsTheSkirt) {
     positions.connectFrom(&engine.positions);
     positions.evaluate();
     ASSERT_EQ(engine.lastError(), "");
-    EXPECT_GT(engine.lastRun().limitedNodeShare, 0.0) << "the clamp must be at work";
+    EXPECT_GT(engine.lastRun().run.limitedNodeShare, 0.0) << "the clamp must be at work";
     EXPECT_LT(maxEdgeStrain(engine, positions), 0.10);
   }
 }

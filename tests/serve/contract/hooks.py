@@ -1,6 +1,6 @@
 """Schemathesis hooks for figment-serve's contract test (tests/serve/scenarios/test_contract.py).
 
-Each parameter's schema in serve/openapi.json says what the server takes for it whatever
+Each parameter's schema in serve/http/openapi.json says what the server takes for it whatever
 the other parameters are: the union over a request without `sex` (the Mannequin) and one
 with each sex. The rules between parameters, which OpenAPI 3 cannot state, are in the
 parameters' descriptions and, where they are data, in the document's own extensions

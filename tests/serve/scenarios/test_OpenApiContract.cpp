@@ -1,4 +1,4 @@
-// serve/openapi.json (as figment-serve embeds it) says what the server takes, checked here
+// serve/http/openapi.json (as figment-serve embeds it) says what the server takes, checked here
 // against the server's own constants, lists and parser, so that no bound can drift from
 // the code: each measurement's range without a sex (the Mannequin's catalogue) and with
 // each (the size advice's ranges of the shipped size chart), the parameters' names, every
@@ -16,12 +16,13 @@
 #include <set>
 
 #include "io/SizeChartFile.h"
-#include "serve/Catalogue.h"
-#include "serve/Digest.h"
-#include "serve/FitRequest.h"
-#include "serve/MeasuredPoses.h"
-#include "serve/RenderRequest.h"
-#include "serve/WebAssets.h"
+#include "serve/http/WebAssets.h"
+#include "serve/request/BodyMeasuresText.h"
+#include "serve/request/Catalogue.h"
+#include "serve/request/FitRequest.h"
+#include "serve/request/MeasuredPoses.h"
+#include "serve/request/RenderRequest.h"
+#include "serve/work/Digest.h"
 #include "sim/garment/GarmentStyle.h"
 
 using namespace figment::serve;
@@ -58,7 +59,7 @@ const char* const kConditions[] = {"none", "female", "male"};  // x-figment-by-s
 // Whether a render of `name`=`value` is taken, without a sex or with `sex`. A pose is
 // asked in a tshirt: a sitting measured body wears nothing else (a rule between them).
 bool takes(const std::string& sex, const std::string& name, const std::string& value) {
-  RenderRequest::Parameters parameters = {{name, value}};
+  QueryParameters parameters = {{name, value}};
   if (sex != "none") parameters.push_back({"sex", sex});
   if (name == "pose") parameters.push_back({"outfit", "tshirt:M"});
   return std::holds_alternative<RenderRequest>(RenderRequest::parse(parameters, &chart()));
@@ -67,7 +68,7 @@ bool takes(const std::string& sex, const std::string& name, const std::string& v
 MeasureRange rangeFor(const std::string& sex, const std::string& name) {
   if (sex == "none") return Catalogue::measure(name);
   for (const MeasureRange& range :
-       FitRequest::ranges(chart(), sex == "male" ? figment::Sex::Male : figment::Sex::Female))
+       BodyMeasuresText::ranges(chart(), sex == "male" ? figment::Sex::Male : figment::Sex::Female))
     if (range.name == name) return range;
   throw std::runtime_error("no range " + name);
 }

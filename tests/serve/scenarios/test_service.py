@@ -154,7 +154,7 @@ class Endpoints(ServerCase):
     def test_unknown_and_traversal_paths_are_404_json_and_read_nothing(self):
         for path in ["/nothing", "/../../../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/..%2f..%2fetc%2fpasswd",
                      "/api/../../etc/passwd", "/app.js/../../etc/passwd", "//etc/passwd", "/%2fetc%2fpasswd",
-                     "/style.css%00.png", "/appxjs", "/api/render/../../../etc/passwd", "/serve/web/index.html"]:
+                     "/style.css%00.png", "/appxjs", "/api/render/../../../etc/passwd", "/serve/http/web/index.html"]:
             status, headers, body = self.server.request(path)
             self.assertEqual(status, 404, path)
             self.assertEqual(json.loads(body)["error"], "no such path", path)

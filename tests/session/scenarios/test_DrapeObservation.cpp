@@ -71,7 +71,7 @@ TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead
   session_.context().cache = std::make_shared<figment::DrapeCache>(dir_.path() / "cache", 1u << 20);
   load(fallingSquare(0.05));
   ASSERT_EQ(session_.drape().front().error, "");
-  ASSERT_FALSE(session_.drapes().front().run.fromCache);
+  ASSERT_FALSE(session_.drapes().front().report.fromCache);
   SceneSession again(session_.sharedContext());  // the same cache
   ASSERT_TRUE(again.load(dir_.file("scene.iv", fallingSquare(0.05))));
   std::vector<double> times;
@@ -81,7 +81,7 @@ TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead
     steps.push_back(solver.iterations());
   };
   ASSERT_EQ(again.drape().front().error, "");
-  EXPECT_FALSE(again.drapes().front().run.fromCache);
+  EXPECT_FALSE(again.drapes().front().report.fromCache);
   ASSERT_EQ(times.size(), 51u);  // before the first step, then after each of 50
   for (size_t i = 0; i < times.size(); ++i) {
     EXPECT_EQ(steps[i], int(i));

@@ -41,10 +41,10 @@ TEST(GarmentDrape, AWholeDrapeIsTheSolversAndReportsEveryStep) {
   int observed = 0;
   request.stepObserver = [&observed](const ClothSolver&) { ++observed; };
   const GarmentDrape drape = drapeGarment(request);
-  ASSERT_TRUE(drape.run.atRest);
-  EXPECT_EQ(observed, drape.run.iterations + 1);  // before the first step and after each
+  ASSERT_TRUE(drape.report.run.atRest);
+  EXPECT_EQ(observed, drape.report.run.iterations + 1);  // before the first step and after each
   EXPECT_EQ(drape.sections.size(), request.garment.triangles.size());
-  EXPECT_EQ(drape.levels, 0);
+  EXPECT_EQ(drape.report.levels, 0);
   expectRestsOnTheBall(drape.positions);
 
   ClothSolver solver(request.garment, request.parameters, request.body);
@@ -61,11 +61,11 @@ TEST(GarmentDrape, AProgressiveDrapeEndsAtItsFullLevelWithEveryRestPoint) {
   request.stepObserver = [&observed](const ClothSolver&) { ++observed; };
   const GarmentDrape drape = drapeGarment(request);
   EXPECT_EQ(observed, 0);  // its solver changes with the level: not observed
-  EXPECT_GT(drape.levels, 0);
-  EXPECT_EQ(drape.level, drape.levels);
+  EXPECT_GT(drape.report.levels, 0);
+  EXPECT_EQ(drape.report.level, drape.report.levels);
   EXPECT_EQ(drape.sections.size(), request.garment.triangles.size());
   ASSERT_EQ(drape.positions.size(), request.garment.vertices.size());
-  EXPECT_GE(drape.settling.arrival, 0.0);
+  EXPECT_GE(drape.report.settling.arrival, 0.0);
   expectRestsOnTheBall(drape.positions);
 }
 

@@ -1,0 +1,356 @@
+#include "serve/scene/OutfitScene.h"
+
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoMaterialBinding.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShapeHints.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
+
+#include "nodes/body/CollisionGroup.h"
+#include "nodes/body/HumanBody.h"
+#include "nodes/body/Mannequin.h"
+#include "nodes/body/MannequinSkin.h"
+#include "nodes/body/MeshFile.h"
+#include "nodes/cloth/ClothEngine.h"
+#include "nodes/cloth/GarmentSurface.h"
+#include "nodes/render/ClothingLayer.h"
+#include "serve/request/MeasuredPoses.h"
+#include "serve/scene/Wardrobe.h"
+#include "sim/collision/MeshCollider.h"
+#include "sim/fit/FitMap.h"
+#include "sim/fit/SizeFitter.h"
+#include "sim/garment/GarmentStyle.h"
+
+namespace figment::serve {
+
+namespace {
+
+SbColor colourOf(const std::string& hex) {
+  const long value = std::strtol(hex.c_str(), nullptr, 16);
+  return SbColor(float((value >> 16) & 0xff) / 255.f, float((value >> 8) & 0xff) / 255.f, float(value & 0xff) / 255.f);
+}
+
+SoMaterial* material(const SbColor& diffuse, float specular, float shininess) {
+  auto* node = new SoMaterial;
+  node->diffuseColor = diffuse;
+  node->specularColor = SbColor(specular, specular, specular + (shininess > 0.25f ? 0.05f : 0.f));
+  node->shininess = shininess;
+  return node;
+}
+
+SoShapeHints* hints(bool solid) {
+  auto* node = new SoShapeHints;
+  node->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+  node->shapeType = solid ? SoShapeHints::SOLID : SoShapeHints::UNKNOWN_SHAPE_TYPE;
+  node->creaseAngle = 1.0f;
+  return node;
+}
+
+void addLights(SoSeparator* root, const LightPreset& preset) {
+  for (const LightPreset::Light& light : preset.lights) {
+    auto* node = new SoDirectionalLight;
+    node->direction = SbVec3f(float(light.direction[0]), float(light.direction[1]), float(light.direction[2]));
+    node->intensity = float(light.intensity);
+    node->color = SbColor(float(light.colour[0]), float(light.colour[1]), float(light.colour[2]));
+    root->addChild(node);
+  }
+}
+
+Mannequin* mannequin(const RenderRequest& request, const Wardrobe& wardrobe) {
+  auto* model = new Mannequin;
+  model->body = wardrobe.body();
+  const Pose& pose = *Catalogue::pose(request.pose);
+  for (size_t i = 0; i < pose.joints.size(); ++i) {
+    const auto& r = pose.rotations[i];
+    model->rotatedJoints.set1Value(int(i), pose.joints[i].c_str());
+    model->rotations.set1Value(int(i), SbRotation(SbVec3f(float(r[0]), float(r[1]), float(r[2])), float(r[3])));
+  }
+  const BodyFactors factors = Catalogue::bodyFactors(request.body);
+  model->height = float(factors.height);
+  model->chest = float(factors.chest);
+  model->waist = float(factors.waist);
+  model->hips = float(factors.hips);
+  model->addChild(wardrobe.volumes());
+  return model;
+}
+
+// The pattern's rest shape on this body at a size. Until patterns are graded, a pattern
+// follows the body's stature as the Mannequin's height scales the body (uniformly about
+// `origin`, so straps stay on the shoulders: a dress made for 1.66 m tangled on a 1.82 m
+// body), and its size widens or narrows it about its own vertical axis (the middle of its
+// extent in x and z), heights kept.
+void restShape(ClothEngine* engine, const MeshFile* pattern, const SbVec3f& origin, double height, double girth) {
+  const int n = pattern->point.getNum();
+  const SbVec3f* points = pattern->point.getValues(0);
+  std::vector<SbVec3f> shape(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) shape[size_t(i)] = origin + float(height) * (points[i] - origin);
+  float lo[2] = {shape[0][0], shape[0][2]}, hi[2] = {lo[0], lo[1]};
+  for (const SbVec3f& p : shape)
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = std::min(lo[k], p[2 * k]);
+      hi[k] = std::max(hi[k], p[2 * k]);
+    }
+  const float cx = 0.5f * (lo[0] + hi[0]), cz = 0.5f * (lo[1] + hi[1]), g = float(girth);
+  for (SbVec3f& p : shape) p = SbVec3f(cx + g * (p[0] - cx), p[1], cz + g * (p[2] - cz));
+  engine->restPoints.setValues(0, n, shape.data());
+}
+
+// Cotton jersey as the shipped scenes drape it: backward Euler at 1/20 s.
+ClothEngine* engineFor(const GarmentStyle& style, bool layered, SoNode* body) {
+  auto* engine = new ClothEngine;
+  engine->body = body;
+  engine->thickness = 0.0006;
+  engine->density = 300;
+  engine->youngsModulus = 1e6;
+  engine->poissonRatio = 0.3;
+  engine->integrator.set("IMPLICIT");
+  if (layered || style.penaltyContacts) engine->contactModel.set("PENALTY");
+  engine->timeStep = 0.05;
+  engine->maxTime = style.maxTime;
+  engine->restSpeed = 0.01;
+  engine->restWindow = 0.25;
+  engine->friction = 0.5;
+  engine->clearance = 0.006;
+  return engine;
+}
+
+struct Draped {
+  ClothEngine* engine;
+  const SoMFInt32* coordIndex;  // the garment's triangles
+};
+
+// What the next garment out collides with: the mannequin and every garment beneath.
+SoNode* bodyUnder(SoNode* model, const std::vector<Draped>& beneath) {
+  if (beneath.empty()) return model;
+  auto* group = new CollisionGroup;
+  group->body = model;
+  for (size_t i = 0; i < beneath.size(); ++i) {
+    auto* surface = new GarmentSurface;
+    surface->point.connectFrom(&beneath[i].engine->positions);
+    surface->coordIndex.connectFrom(const_cast<SoMFInt32*>(beneath[i].coordIndex));
+    surface->thickness = 0.002f;
+    group->layers.set1Value(int(i), surface);
+  }
+  return group;
+}
+
+// Where a garment's fit map goes (null: none) and what it is measured against.
+struct FitMapTarget {
+  std::vector<OutfitScene::FitMapGarment>* garments = nullptr;
+  std::string fabric;  // whose limits colour it
+  std::string kind;
+  const MeshFile* skin = nullptr;  // a measured body
+  ClothParameters parameters;
+};
+
+// The garment in its colour, drawn by a ClothingLayer; or with a fit map an IndexedFaceSet
+// coloured per vertex once draped (a ClothingLayer draws one material).
+SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt32* coordIndex,
+                     const FitMapTarget& fitMap) {
+  auto* separator = new SoSeparator;
+  SoMaterial* colour = material(colourOf(item.colour), 0.15f, 0.3f);
+  separator->addChild(colour);
+  separator->addChild(hints(false));  // cloth is seen from both sides
+  auto* coordinates = new SoCoordinate3;
+  coordinates->point.connectFrom(&engine->positions);
+  separator->addChild(coordinates);
+  if (fitMap.garments) {
+    // One colour a point from the start (the session checks the shapes before they are
+    // painted): the garment's own until paintFitMaps.
+    const std::vector<SbColor> plain(size_t(engine->restPoints.getNum()), colourOf(item.colour));
+    colour->diffuseColor.setValues(0, int(plain.size()), plain.data());
+    auto* binding = new SoMaterialBinding;
+    binding->value = SoMaterialBinding::PER_VERTEX_INDEXED;
+    separator->addChild(binding);
+    auto* faces = new SoIndexedFaceSet;
+    faces->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
+    separator->addChild(faces);
+    fitMap.garments->push_back(
+        {engine, coordinates, colour, fitMap.fabric, fitMap.kind, fitMap.skin, fitMap.parameters});
+    return separator;
+  }
+  auto* layer = new ClothingLayer;
+  layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
+  // Drawn smooth (issue 29), as the shipped scenes are: hems read as curves at the drape's
+  // cost. The ETag follows, since the build digest covers this program.
+  layer->displaySubdivision = OutfitScene::kDisplaySubdivision;
+  separator->addChild(layer);
+  return separator;
+}
+
+// The size advice's drape (sim/fit/SizeFitter.h: sizeDrapeParameters) as a ClothEngine's.
+ClothEngine* gradedEngine(const figment::GarmentStyle& style, bool layered, SoNode* body) {
+  const ClothParameters p = sizeDrapeParameters(style);
+  auto* engine = new ClothEngine;
+  engine->body = body;
+  engine->material = style.fabric;
+  engine->integrator.set("IMPLICIT");
+  if (layered) engine->contactModel.set("PENALTY");
+  engine->timeStep = p.timeStep;
+  engine->maxTime = p.maxTime;
+  engine->restSpeed = p.rest.speedThreshold;
+  engine->restWindow = p.rest.window;
+  engine->friction = p.friction;
+  engine->clearance = p.clearance;
+  return engine;
+}
+
+void setMesh(ClothEngine* engine, const TriangleMesh& mesh) {
+  std::vector<SbVec3f> points;
+  for (const Vec3& v : mesh.vertices) points.emplace_back(float(v.x()), float(v.y()), float(v.z()));
+  std::vector<int32_t> index;
+  for (const auto& t : mesh.triangles) index.insert(index.end(), {int32_t(t[0]), int32_t(t[1]), int32_t(t[2]), -1});
+  engine->restPoints.setValues(0, int(points.size()), points.data());
+  engine->coordIndex.setValues(0, int(index.size()), index.data());
+}
+
+// The body made once, with every field set: a HumanBody makes itself again on each field
+// changed, so setting five fields one by one made it five times (a second and more).
+HumanBody* measuredBody(const RenderRequest& request) {
+  auto* body = new HumanBody;
+  body->ref();
+  const std::pair<SoSFFloat*, double> quiet[] = {{&body->gender, request.sex == "male" ? 1.0 : 0.0},
+                                                 {&body->stature, request.body.stature},
+                                                 {&body->bustGirth, request.body.bust},
+                                                 {&body->waistGirth, request.body.waist}};
+  for (const auto& [field, value] : quiet) {
+    field->enableNotify(false);
+    field->setValue(float(value));
+    field->enableNotify(true);
+  }
+  // HumanBody's Pose lists the presets in PosePreset's order.
+  body->pose.enableNotify(false);
+  body->pose = int(MeasuredPoses::find(request.pose)->preset);
+  body->pose.enableNotify(true);
+  body->hipGirth = float(request.body.hips);  // the one change that makes it
+  if (body->point.getNum() == 0) {
+    body->unref();
+    throw OutfitScene::BodyNotMade("the measured body could not be made");
+  }
+  body->unrefNoDelete();
+  return body;
+}
+
+// A measured body and its graded garments (the class comment).
+void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request,
+                   const OutfitScene::GradedGarment& graded, std::vector<OutfitScene::FitMapGarment>* fitMaps) {
+  HumanBody* body = measuredBody(request);
+  skin->addChild(body);
+  const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
+  std::vector<Draped> beneath;
+  for (const OutfitItem& item : request.outfit) {
+    const figment::GarmentStyle& style = *findStyle(item.style);
+    ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
+    setMesh(engine, graded(item, sex));
+    const FitMapTarget fitMap{fitMaps, style.fabric, request.fitMap, body, sizeDrapeParameters(style)};
+    root->addChild(garment(item, engine, &engine->coordIndex, fitMap));
+    beneath.push_back({engine, &engine->coordIndex});
+  }
+}
+
+}  // namespace
+
+SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const GradedGarment& graded,
+                                std::vector<FitMapGarment>* fitMaps) {
+  if (request.fitMap.empty()) fitMaps = nullptr;
+  auto* root = new SoSeparator;
+  addLights(root, *Catalogue::light(request.light));
+  auto* body = new SoSeparator;
+  body->addChild(material(colourOf(request.skin), 0.1f, 0.2f));
+  body->addChild(hints(true));
+  if (!request.sex.empty()) {
+    root->ref();
+    root->addChild(body);
+    try {
+      dressMeasured(root, body, request, graded, fitMaps);
+    } catch (...) {
+      root->unref();  // the half-made scene goes
+      throw;
+    }
+    root->unrefNoDelete();
+    return root;
+  }
+  Mannequin* model = mannequin(request, wardrobe);
+  body->addChild(model);
+  auto* skin = new MannequinSkin;
+  skin->mannequin = model;
+  body->addChild(skin);
+  root->addChild(body);
+  std::vector<Draped> beneath;
+  for (const OutfitItem& item : request.outfit) {
+    const GarmentStyle& style = *Catalogue::style(item.style);
+    const MeshFile* pattern = wardrobe.pattern(item.style);
+    ClothEngine* engine = engineFor(style, !beneath.empty(), bodyUnder(model, beneath));
+    restShape(engine, pattern, wardrobe.heightOrigin(), Catalogue::bodyFactors(request.body).height,
+              Catalogue::size(item.size)->girth);
+    engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
+    root->addChild(garment(item, engine, &pattern->coordIndex,
+                           {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}}));  // cotton jersey
+    beneath.push_back({engine, &pattern->coordIndex});
+  }
+  return root;
+}
+
+namespace {
+
+// A garment as cut: the engine's rest points and its faces fan-triangulated.
+TriangleMesh restMesh(const ClothEngine& engine) {
+  TriangleMesh rest;
+  for (int i = 0; i < engine.restPoints.getNum(); ++i) {
+    const SbVec3f& p = engine.restPoints[i];
+    rest.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<int> face;
+  for (int i = 0; i <= engine.coordIndex.getNum(); ++i) {
+    const int v = i < engine.coordIndex.getNum() ? engine.coordIndex[i] : -1;
+    if (v >= 0) {
+      face.push_back(v);
+      continue;
+    }
+    for (size_t k = 2; k < face.size(); ++k) rest.triangles.push_back({face[0], face[k - 1], face[k]});
+    face.clear();
+  }
+  return rest;
+}
+
+}  // namespace
+
+void OutfitScene::paintFitMaps(const std::vector<FitMapGarment>& fitMaps) {
+  for (const FitMapGarment& garment : fitMaps) {
+    const TriangleMesh rest = restMesh(*garment.engine);
+    std::vector<Vec3> positions;
+    for (int i = 0; i < garment.coordinates->point.getNum(); ++i) {
+      const SbVec3f& p = garment.coordinates->point[i];
+      positions.emplace_back(p[0], p[1], p[2]);
+    }
+    if (positions.size() != rest.vertices.size())
+      throw std::runtime_error("fit map: the drape has " + std::to_string(positions.size()) + " points, the garment " +
+                               std::to_string(rest.vertices.size()));
+    FitInput input;
+    input.rest = &rest;
+    input.positions = &positions;
+    const FitMapKind kind = fitMapKind(garment.kind);
+    std::shared_ptr<const MeshCollider> skin;
+    if (kind != FitMapKind::Stretch) {
+      skin = garment.skin ? garment.skin->collider() : nullptr;
+      if (!skin) throw std::runtime_error("fit map " + garment.kind + ": no skin to measure from");
+      input.body = skin.get();
+      input.parameters = garment.parameters;
+    }
+    const FabricLimits limits = fabricLimits(garment.fabric);
+    std::vector<SbColor> colours;
+    for (const int band : fitMapBands(input, kind, limits)) {
+      const Vec3 c = fitMapColour(band);
+      colours.emplace_back(float(c.x()), float(c.y()), float(c.z()));
+    }
+    garment.material->diffuseColor.setValues(0, int(colours.size()), colours.data());
+  }
+}
+
+}  // namespace figment::serve

@@ -1,0 +1,71 @@
+#pragma once
+// A render request's scene, built in code from FIGMENT's nodes (never from text a
+// request holds): the lights of its preset; the default mannequin sized by the request's
+// measurements (Catalogue::bodyFactors) and posed; its skin; and each garment of the
+// outfit, innermost first, draped by a ClothEngine on the mannequin and on the draped
+// surfaces of the garments under it, as scenes/outfit-layers.iv drapes its two. The
+// same nodes and settings as the shipped scenes, so the same request drapes as a scene
+// file would.
+//
+// A request with a sex has MakeHuman's body instead (a HumanBody made to its measurements,
+// in its rest pose), and each garment is its style's graded garment of the chart's size
+// (what GET /api/fit drapes for that size), draped with the size advice's settings.
+
+#include <functional>
+#include <stdexcept>
+#include <vector>
+
+#include "serve/request/RenderRequest.h"
+#include "sim/cloth/ClothParameters.h"
+#include "sim/core/TriangleMesh.h"
+
+class ClothEngine;
+class MeshFile;
+class SoCoordinate3;
+class SoMaterial;
+class SoSeparator;
+
+namespace figment::serve {
+
+class Wardrobe;
+
+class OutfitScene {
+ public:
+  // Levels of display mesh each garment's ClothingLayer draws (its displaySubdivision), as
+  // the shipped scenes' do: one, each triangle as four on a smooth surface. A fit map is
+  // drawn on the simulation's faces (a ClothingLayer draws one material).
+  static constexpr int kDisplaySubdivision = 1;
+
+  // A style's garment graded to a size of the chart, for a measured body; throws when it
+  // cannot be made.
+  using GradedGarment = std::function<const TriangleMesh&(const OutfitItem& item, Sex sex)>;
+
+  // A measured body MakeHuman did not make (measurements out of its reach, or its data
+  // missing): the worker asks why (FitWorker::unreachable).
+  class BodyNotMade : public std::runtime_error {
+   public:
+    using std::runtime_error::runtime_error;
+  };
+
+  // A garment drawn as its fit map (RenderRequest::fitMap): an IndexedFaceSet coloured per
+  // vertex by `material`, painted once the drape is done. Nodes of the built scene.
+  struct FitMapGarment {
+    ClothEngine* engine;         // its restPoints and coordIndex: the garment as cut
+    SoCoordinate3* coordinates;  // the drape's positions
+    SoMaterial* material;        // one colour per vertex
+    std::string fabric;          // a material preset (sim/cloth/MaterialPresets.h): its limits
+    std::string kind;            // stretch, ease or pressure (RenderRequest::fitMap)
+    const MeshFile* skin;        // for ease and pressure: the measured body; else null
+    ClothParameters parameters;  // for ease and pressure: the drape's (clearance, material)
+  };
+
+  // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
+  // only for a request with a sex. With a fit map, its garments go to `fitMaps`. Throws
+  // BodyNotMade.
+  static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
+                            const GradedGarment& graded = nullptr, std::vector<FitMapGarment>* fitMaps = nullptr);
+  // Colours each garment by the bands of its fit map (sim/fit/FitMap.h) after the drape.
+  static void paintFitMaps(const std::vector<FitMapGarment>& fitMaps);
+};
+
+}  // namespace figment::serve

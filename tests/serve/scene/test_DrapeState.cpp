@@ -1,0 +1,47 @@
+// How a scene's drapes ended, as the X-Figment-Drape header says it: sim's DrapeVerdict
+// read from each drape's run statistics, the worst of the garments winning.
+
+#include <gtest/gtest.h>
+
+#include "serve/scene/DrapeState.h"
+
+using figment::serve::drapeState;
+using figment::session::EngineDrape;
+
+namespace {
+
+// A drape that came to rest whole, as the drape cache records one.
+EngineDrape atRest() {
+  EngineDrape drape;
+  drape.report.run.atRest = true;
+  drape.report.run.maxStretch = 1.08;  // the shipped drapes end at 1.03 to 1.14
+  return drape;
+}
+
+}  // namespace
+
+TEST(DrapeState, DrapesAtRestAreRest) {
+  EXPECT_EQ(drapeState({}), "rest");  // the body alone
+  EXPECT_EQ(drapeState({atRest(), atRest()}), "rest");
+}
+
+TEST(DrapeState, ADrapeStillMovingOrHeldByALimiterIsRestless) {
+  EngineDrape moving = atRest(), clamped = atRest(), limited = atRest();
+  moving.report.run.atRest = false;
+  clamped.report.run.clampedSectionShareAtEnd = 0.01;
+  limited.report.run.limitedNodeShareAtEnd = 0.02;
+  for (const EngineDrape& drape : {moving, clamped, limited}) EXPECT_EQ(drapeState({atRest(), drape}), "restless");
+}
+
+TEST(DrapeState, AnEdgePastTheTearStretchOrAFailedStepIsTorn) {
+  EngineDrape stretched = atRest(), failed = atRest(), restlessToo = atRest();
+  stretched.report.run.maxStretch = 1.51;  // DrapeVerdict::kTearStretch 1.5
+  failed.report.run.implicitCosts.failedSteps = 1;
+  restlessToo.report.run.atRest = false;
+  EXPECT_EQ(drapeState({stretched}), "torn");
+  EXPECT_EQ(drapeState({atRest(), failed}), "torn");
+  EXPECT_EQ(drapeState({restlessToo, stretched}), "torn");  // the worse of the two
+  EngineDrape atTheBound = atRest();
+  atTheBound.report.run.maxStretch = 1.5;  // not past it
+  EXPECT_EQ(drapeState({atTheBound}), "rest");
+}
