@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <optional>
+#include <utility>
 
 #include "io/UpAxis.h"
 
@@ -10,28 +11,14 @@ using namespace figment;
 
 namespace {
 
-const UpAxis kAxes[] = {UpAxis::X, UpAxis::Y, UpAxis::Z, UpAxis::NegX, UpAxis::NegY, UpAxis::NegZ};
-
-Vec3 direction(UpAxis up) {
-  switch (up) {
-    case UpAxis::X:
-      return Vec3::UnitX();
-    case UpAxis::Z:
-      return Vec3::UnitZ();
-    case UpAxis::NegX:
-      return -Vec3::UnitX();
-    case UpAxis::NegY:
-      return -Vec3::UnitY();
-    case UpAxis::NegZ:
-      return -Vec3::UnitZ();
-    default:
-      return Vec3::UnitY();
-  }
-}
+// Each axis and its direction in the file's coordinates, written out.
+const std::pair<UpAxis, Vec3> kAxes[] = {{UpAxis::X, Vec3::UnitX()},     {UpAxis::Y, Vec3::UnitY()},
+                                         {UpAxis::Z, Vec3::UnitZ()},     {UpAxis::NegX, -Vec3::UnitX()},
+                                         {UpAxis::NegY, -Vec3::UnitY()}, {UpAxis::NegZ, -Vec3::UnitZ()}};
 
 TEST(UpAxis, EachRotationTakesItsAxisUpAndKeepsHandedness) {
-  for (UpAxis up : kAxes) {
-    EXPECT_EQ(toYUp(direction(up), up), Vec3::UnitY()) << upAxisName(up);
+  for (const auto& [up, direction] : kAxes) {
+    EXPECT_EQ(toYUp(direction, up), Vec3::UnitY()) << upAxisName(up);
     Eigen::Matrix3d m;
     for (int c = 0; c < 3; ++c) m.col(c) = toYUp(Vec3::Unit(c), up);
     EXPECT_DOUBLE_EQ(m.determinant(), 1.0) << upAxisName(up);
@@ -40,7 +27,7 @@ TEST(UpAxis, EachRotationTakesItsAxisUpAndKeepsHandedness) {
 }
 
 TEST(UpAxis, NamesReadBackInAnyCaseAndNothingElseReads) {
-  for (UpAxis up : kAxes) EXPECT_EQ(parseUpAxis(upAxisName(up)), up) << upAxisName(up);
+  for (const auto& [up, direction] : kAxes) EXPECT_EQ(parseUpAxis(upAxisName(up)), up) << upAxisName(up);
   EXPECT_EQ(upAxisName(UpAxis::NegZ), "NEG_Z");
   EXPECT_EQ(parseUpAxis("neg_x"), UpAxis::NegX);
   EXPECT_EQ(parseUpAxis("-X"), std::nullopt);
@@ -51,8 +38,8 @@ TEST(UpAxis, FileUpAxisFindsTheFileAxisThatEndedUp) {
   // Imported as Z up: what stands along +y was the file's +z; what stands along +z was -y.
   EXPECT_EQ(fileUpAxis(Vec3::UnitY(), UpAxis::Z), UpAxis::Z);
   EXPECT_EQ(fileUpAxis(Vec3::UnitZ(), UpAxis::Z), UpAxis::NegY);
-  for (UpAxis applied : kAxes)
-    for (UpAxis up : kAxes) EXPECT_EQ(fileUpAxis(toYUp(direction(up), applied), applied), up);
+  for (const auto& [applied, unused] : kAxes)
+    for (const auto& [up, direction] : kAxes) EXPECT_EQ(fileUpAxis(toYUp(direction, applied), applied), up);
   EXPECT_EQ(fileUpAxis(Vec3(1, 1, 0).normalized(), UpAxis::Y), std::nullopt);
 }
 

@@ -8,6 +8,7 @@
 
 #include "nodes/body/CollisionGroup.h"
 #include "sim/collision/Collider.h"
+#include "support/Refusal.h"
 #include "support/SceneTestSupport.h"
 #include "support/TempDir.h"
 
@@ -35,12 +36,7 @@ class CollisionGroupTest : public testing::Test {
  protected:
   void SetUp() override { initCoin(); }
   static std::string refusal(const CollisionGroup& group) {
-    try {
-      group.bodyCollider();
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+    return figment::test::refusal([&] { group.bodyCollider(); });
   }
 };
 

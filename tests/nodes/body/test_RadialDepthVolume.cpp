@@ -9,6 +9,7 @@
 #include "nodes/body/RadialDepthVolume.h"
 #include "sim/collision/CollisionVolume.h"
 #include "sim/collision/RadialDepth.h"
+#include "support/Refusal.h"
 #include "support/SceneTestSupport.h"
 
 using namespace figment::test;
@@ -22,12 +23,7 @@ class RadialDepthVolumeTest : public testing::Test {
     SceneRoot root =
         readString(std::string("#Inventor V2.1 ascii\nSeparator { DEF Thigh RadialDepthVolume { ") + fields + " } }\n");
     EXPECT_TRUE(root);
-    try {
-      find<RadialDepthVolume>(root.get())->parameters();
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+    return figment::test::refusal([&] { find<RadialDepthVolume>(root.get())->parameters(); });
   }
 };
 

@@ -7,6 +7,7 @@
 
 #include "nodes/body/SkeletonJoints.h"
 #include "sim/body/Skeleton.h"
+#include "support/Refusal.h"
 #include "support/SceneTestSupport.h"
 
 using namespace figment::test;
@@ -22,12 +23,7 @@ class SkeletonJointsTest : public testing::Test {
   }
   void TearDown() override { joints_->unref(); }
   std::string refusal() const {
-    try {
-      joints_->skeleton();
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
+    return figment::test::refusal([&] { joints_->skeleton(); });
   }
   SkeletonJoints* joints_ = nullptr;
 };

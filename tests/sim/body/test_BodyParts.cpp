@@ -6,20 +6,14 @@
 #include <vector>
 
 #include "sim/body/BodyParts.h"
+#include "support/ArmSkeleton.h"
 #include "support/BoxFigure.h"
 
 using namespace figment;
 
 namespace {
 
-// Bones shoulder (0) - elbow (1 m) - wrist (2 m) along x; a box round each, 0.2 m apart.
-Skeleton arm() {
-  Skeleton s;
-  s.joints = {{"shoulder", -1, Vec3(0, 0, 0)}, {"elbow", 0, Vec3(1, 0, 0)}, {"wrist", 1, Vec3(2, 0, 0)}};
-  s.parts = {{"upperArm", 0, 1}, {"forearm", 1, 2}};
-  return s;
-}
-
+// A box round each bone of test::armSkeleton(), 0.2 m apart.
 TriangleMesh twoBoxes() {
   TriangleMesh mesh;
   mannequin::appendBox(mesh, {{0.1, -0.1, -0.1}, {0.9, 0.1, 0.1}});  // 12 triangles round the upper arm
@@ -28,7 +22,7 @@ TriangleMesh twoBoxes() {
 }
 
 TEST(BodyParts, EachTriangleGoesToTheBoneItSurrounds) {
-  const std::vector<int> parts = assignTriangles(twoBoxes(), arm());
+  const std::vector<int> parts = assignTriangles(twoBoxes(), test::armSkeleton());
   ASSERT_EQ(parts.size(), 24u);
   for (size_t t = 0; t < parts.size(); ++t) EXPECT_EQ(parts[t], t < 12 ? 0 : 1) << t;
 }
@@ -47,7 +41,7 @@ TEST(BodyParts, VerticesTakeTheirTrianglesPart) {
 }
 
 TEST(BodyParts, SplitNamesEachPartWithItsBoneAndTriangles) {
-  const std::vector<PartMesh> parts = splitIntoParts(twoBoxes(), arm());
+  const std::vector<PartMesh> parts = splitIntoParts(twoBoxes(), test::armSkeleton());
   ASSERT_EQ(parts.size(), 2u);
   EXPECT_EQ(parts[0].name, "upperArm");
   EXPECT_EQ(parts[1].name, "forearm");

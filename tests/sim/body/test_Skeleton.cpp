@@ -6,21 +6,14 @@
 #include <vector>
 
 #include "sim/body/Skeleton.h"
+#include "support/ArmSkeleton.h"
 
 using namespace figment;
 
 namespace {
 
-// A two-bone arm along +x: shoulder (0) -> elbow (1 m) -> wrist (2 m).
-Skeleton arm() {
-  Skeleton s;
-  s.joints = {{"shoulder", -1, Vec3(0, 0, 0)}, {"elbow", 0, Vec3(1, 0, 0)}, {"wrist", 1, Vec3(2, 0, 0)}};
-  s.parts = {{"upperArm", 0, 1}, {"forearm", 1, 2}};
-  return s;
-}
-
 TEST(Skeleton, FindsAJointByNameAndRefusesAnUnknownOneNamingIt) {
-  const Skeleton s = arm();
+  const Skeleton s = test::armSkeleton();
   EXPECT_EQ(s.joint("elbow"), 1);
   EXPECT_EQ(s.joint("knee"), -1);
   EXPECT_EQ(s["wrist"].position, Vec3(2, 0, 0));
@@ -33,7 +26,8 @@ TEST(Skeleton, FindsAJointByNameAndRefusesAnUnknownOneNamingIt) {
 }
 
 TEST(Skeleton, AssignsEachVertexToItsNearestBone) {
-  const std::vector<int> part = assignParts(arm(), {{0.5, 0.1, 0}, {1.6, -0.2, 0}, {-1, 0, 0}, {3, 0, 0}});
+  const std::vector<int> part =
+      assignParts(test::armSkeleton(), {{0.5, 0.1, 0}, {1.6, -0.2, 0}, {-1, 0, 0}, {3, 0, 0}});
   EXPECT_EQ(part, (std::vector<int>{0, 1, 0, 1}));  // beyond an end: the bone that ends there
 }
 

@@ -8,21 +8,12 @@
 #include <string>
 
 #include "sim/core/ParameterChecks.h"
+#include "support/Refusal.h"
 
 using namespace figment;
+using figment::test::refusal;
 
 namespace {
-
-// The message a check throws, or "" when it accepts.
-template <typename Check>
-std::string refusal(Check check) {
-  try {
-    check();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 TEST(ParameterChecks, PositiveRefusesZeroAndNamesFieldAndValue) {
   EXPECT_EQ(refusal([] { requirePositive("thickness", 0.001); }), "");

@@ -9,6 +9,7 @@
 
 #include "sim/garment/FlaredSkirt.h"
 #include "support/BoxFigure.h"
+#include "support/Refusal.h"
 
 using namespace figment;
 
@@ -36,14 +37,7 @@ TEST(FlaredSkirt, RingsRoundTheWaistDownToTheHem) {
 }
 
 TEST(FlaredSkirt, RefusesEachBadOptionNamingIt) {
-  const auto refusal = [](FlaredSkirtOptions options) -> std::string {
-    try {
-      options.validate();
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
-  };
+  const auto refusal = [](const FlaredSkirtOptions& options) { return test::refusal([&] { options.validate(); }); };
   EXPECT_EQ(refusal({}), "");
   EXPECT_EQ(refusal({.length = 0}), "length = 0 must be > 0");
   EXPECT_EQ(refusal({.flare = -0.1}), "flare = -0.1 must be >= 0");

@@ -6,18 +6,14 @@
 #include <string>
 
 #include "sim/garment/TShirt.h"
+#include "support/Refusal.h"
 
 using namespace figment;
 
 namespace {
 
 std::string refusal(const TShirtOptions& options) {
-  try {
-    options.validate();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
+  return test::refusal([&] { options.validate(); });
 }
 
 TEST(TShirt, RefusesEachBadOptionNamingIt) {
