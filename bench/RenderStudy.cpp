@@ -20,7 +20,6 @@
 #include "session/SceneSession.h"
 #include "session/SceneStaging.h"
 #include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
 
 namespace figment::bench {
 
@@ -126,7 +125,6 @@ std::string studyScene(const std::string& scenePath, const RenderStudyOptions& o
 }  // namespace
 
 int runRenderStudy(const RenderStudyOptions& options) {
-  viewer::initHeadless();
   std::filesystem::create_directories(options.outDir);
   const bool written = writeCsv(options.outDir + "/render.csv", [&](std::ostream& csv) -> std::string {
     csv << "scene,mode,view,width,height,cloth_triangles,renders,median_ms,overhead_pct\n";

@@ -15,8 +15,7 @@
 #include "SizeStudy.h"
 #include "StabilityStudy.h"
 #include "TradeoffStudy.h"
-#include "nodes/Init.h"
-#include "viewer/CoinMessages.h"
+#include "headless/InitHeadless.h"
 
 namespace {
 
@@ -225,9 +224,9 @@ CLI::App* addFitCommand(CLI::App& app, FitStudyOptions& fit) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Coin's messages as one-line warnings; a ClothEngine's error is reported by the study
-  figment::init();
-  figment::viewer::CoinMessages::install("figment-bench");
+  // Off-screen Coin (the render study), its messages as one-line warnings (a ClothEngine's
+  // error is reported by the study) and the node kit
+  figment::initHeadless("figment-bench: warning: ");
   CLI::App app{"FIGMENT benchmarks: studies that write CSV"};
   app.require_subcommand(1);
   DrapeStudyOptions drape;

@@ -3,12 +3,12 @@
 
 namespace figment {
 
-// Registers every FIGMENT node and engine class (MeshFile, ClothEngine, ClothingLayer)
+// Registers every FIGMENT node and engine class (nodes/NodeTypes.h: the one list)
 // with Coin's type system, so .iv files naming them can be read. Calls SoDB::init()
 // first when nobody has yet. Safe to call more than once.
 //
 // A program that renders off-screen must register its GL context callbacks before
-// the first SoDB::init() (see viewer/OffscreenContext.h), that is before this call.
+// the first SoDB::init() (headless/InitHeadless.h does it all), that is before this call.
 void init();
 
 }  // namespace figment

@@ -9,9 +9,6 @@
 // Renders run in worker processes: this program again, in its worker mode (--worker,
 // given by the server only), each with Coin, OSMesa and a drape context to itself.
 
-#include <Inventor/SoDB.h>
-#include <Inventor/errors/SoDebugError.h>
-#include <Inventor/errors/SoReadError.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -20,9 +17,8 @@
 #include <filesystem>
 #include <thread>
 
-#include "headless/OsmesaForCoin.h"
+#include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
-#include "nodes/Init.h"
 #include "serve/http/HttpService.h"
 #include "serve/work/FrameChannel.h"
 #include "serve/work/JobWorker.h"
@@ -32,24 +28,10 @@
 
 namespace {
 
-// Coin's messages in a worker: one line each on the server's stderr, without the noise of
-// a headless program (Coin asks GLX about a context OSMesa made) or a ClothEngine's error
-// (the answer carries it).
-void onCoinMessage(const SoError* error, void*) {
-  std::string text = error->getDebugString().getString();
-  if (text.find("glxglue_isdirect") != std::string::npos || text.find("ClothEngine::evaluate") != std::string::npos)
-    return;
-  for (char& c : text)
-    if (c == '\n' || c == '\r') c = ' ';
-  std::fprintf(stderr, "figment-serve: worker: %s\n", text.c_str());
-}
-
 int runWorker(const figment::serve::ServeOptions& options) {
-  figment::useOsmesaForCoin();
-  SoDB::init();
-  SoDebugError::setHandlerCallback(onCoinMessage, nullptr);
-  SoReadError::setHandlerCallback(onCoinMessage, nullptr);
-  figment::init();
+  // Coin's messages one line each on the server's stderr (a ClothEngine's error is left to the
+  // answer, which carries it).
+  figment::initHeadless("figment-serve: worker: ");
   figment::serve::RenderWorker worker(options.scenesFolder, options.cacheFolder, options.redisUrl, options.redisTtl);
   if (!worker.startError().empty()) {
     std::fprintf(stderr, "figment-serve: worker: %s\n", worker.startError().c_str());

@@ -39,7 +39,7 @@ nlohmann::json verdict(const DrapeReport& report) {
           {"failed_steps", report.run.implicitCosts.failedSteps}};
 }
 // What the garment collided with: its kind (mesh, mannequin or none) and its parts.
-nlohmann::json body(const CollisionBody::Description& description) {
+nlohmann::json body(const BodyDescription& description) {
   nlohmann::json out = {{"kind", description.kind}};
   for (const auto& [name, count] : description.counts) out[name] = count;
   return out;

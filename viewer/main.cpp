@@ -33,6 +33,7 @@
 #include <utility>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
 #include "io/MakeHumanSession.h"
 #include "nodes/Init.h"
@@ -51,7 +52,6 @@
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/ImagePlan.h"
 #include "viewer/NodeCatalog.h"
-#include "viewer/OffscreenContext.h"
 #include "viewer/PrintableLine.h"
 #include "viewer/ProgressBar.h"
 #include "viewer/StatsJson.h"
@@ -332,7 +332,7 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
   using namespace figment::session;
   using namespace figment::viewer;
   const ImagePlan plan = images.value_or(ImagePlan{});  // no -o: an export alone
-  initHeadless();
+  figment::initHeadless();
   SceneSession session;
   if (!session.load(options.scene)) return fail(options.scene, session.loadError());
   if (options.showVolumes) showVolumes(session.scene());

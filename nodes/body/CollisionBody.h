@@ -6,8 +6,6 @@
 #include <utility>
 #include <vector>
 
-#include "sim/drape/DrapeBody.h"
-
 class SoNode;
 
 namespace figment {
@@ -28,7 +26,12 @@ class CollisionBody {
 
   // What figment-view --stats says about the body: its kind ("mesh", "mannequin") and,
   // by name, how many of each kind of part it is made of (e.g. "capsule_volumes").
-  using Description = BodyDescription;
+  // (sim/drape/DrapeBody.h's BodyDescription holds the same for a drape's report; node
+  // headers stay free of sim/ types.)
+  struct Description {
+    std::string kind;
+    std::vector<std::pair<std::string, int>> counts;
+  };
   virtual Description describeBody() const = 0;
 };
 

@@ -321,7 +321,7 @@ SbBool Mannequin::readInstance(SoInput* in, unsigned short flags) {
     model();
     for (const VolumeEntry& v : model().volumes)
       if (!v.node->isOfType(ExactVolume::getClassTypeId())) v.node->makeVolume({});
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::exception& e) {  // any, not only bad fields: none escapes a read
     SoReadError::post(in, "%s", e.what());
     return FALSE;
   }
@@ -348,7 +348,7 @@ void Mannequin::traverseVolumes(SoAction* action) {
   const Model* m = nullptr;
   try {
     m = &model();
-  } catch (const std::invalid_argument&) {
+  } catch (const std::exception&) {
     return;  // reported where the mannequin is used (ClothEngine, MannequinSkin)
   }
   SoState* state = action->getState();

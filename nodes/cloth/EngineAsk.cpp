@@ -19,7 +19,9 @@ namespace {
 
 BodyDescription describe(const SoNode* body) {
   const CollisionBody* collisionBody = asCollisionBody(body);
-  return collisionBody ? collisionBody->describeBody() : BodyDescription{};
+  if (!collisionBody) return {};
+  CollisionBody::Description d = collisionBody->describeBody();
+  return {std::move(d.kind), std::move(d.counts)};
 }
 
 // The Mannequin's own triangles stand for it only in its rest pose and size: they are

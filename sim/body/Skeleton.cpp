@@ -14,7 +14,7 @@ int Skeleton::joint(const std::string& name) const {
 
 const Joint& Skeleton::operator[](const std::string& name) const {
   const int i = joint(name);
-  if (i < 0) throw std::out_of_range("no joint named " + name);
+  if (i < 0) throw std::invalid_argument("Skeleton: no joint named \"" + name + "\"");
   return joints[i];
 }
 

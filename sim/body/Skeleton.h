@@ -27,7 +27,7 @@ struct Skeleton {
   std::vector<BodyPart> parts;
 
   int joint(const std::string& name) const;                // index, or -1
-  const Joint& operator[](const std::string& name) const;  // throws std::out_of_range
+  const Joint& operator[](const std::string& name) const;  // throws std::invalid_argument naming it
 };
 
 // The humanoid skeleton FIGMENT uses: 25 joints (pelvis at the root; pelvis floor (the

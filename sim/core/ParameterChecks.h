@@ -17,7 +17,7 @@ void requireFinite(const char* field, double value);
 // "0.05s".
 std::optional<double> wholeNumber(const std::string& text);
 
-// Shortest text that reads back as `value` ("0.0005", "-1e-05").
+// Shortest text that reads back as `value` ("0.001", "5e-04", "-1e-05").
 std::string formatNumber(double value);
 
 }  // namespace figment

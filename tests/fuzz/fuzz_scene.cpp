@@ -20,10 +20,10 @@
 #include <memory>
 
 #include "FuzzTempDir.h"
+#include "headless/InitHeadless.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
-#include "viewer/OffscreenContext.h"
 
 namespace {
 
@@ -65,7 +65,7 @@ void boundEngines(const std::vector<ClothEngine*>& engines) {
 }  // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  figment::viewer::initHeadless();
+  figment::initHeadless();
   figment::fuzz::enterTempDir("figment-fuzz-scene");
   writeMeshes();
   copyVolumes();

@@ -3,7 +3,6 @@
 // body dimensions of a size chart (docs/bodies.md) and a set out of reach. Skipped when the
 // data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
-#include <zlib.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -12,11 +11,13 @@
 #include "io/MeshExport.h"
 #include "io/TargetLibrary.h"
 #include "sim/body/BodyFit.h"
+#include "support/GzipFile.h"
 #include "support/IoTestSupport.h"
 
 using namespace figment;
 using figment::test::ScopedEnvironment;
 using figment::test::TempDir;
+using figment::test::writeGzip;
 
 namespace {
 
@@ -37,13 +38,6 @@ class MakeHumanData : public ::testing::Test {
   std::unique_ptr<TargetLibrary> library_;
   std::unique_ptr<HumanModel> model_;
 };
-
-void writeGzip(const std::string& path, const std::string& text) {
-  gzFile file = gzopen(path.c_str(), "wb");
-  ASSERT_NE(file, nullptr);
-  gzwrite(file, text.data(), unsigned(text.size()));
-  gzclose(file);
-}
 
 // One size of a chart: stature, bust (men: chest), waist and hip girths, m.
 struct ChartSize {

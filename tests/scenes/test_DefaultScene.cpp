@@ -21,6 +21,7 @@
 #include <limits>
 
 #include "guard/SceneFile.h"
+#include "headless/InitHeadless.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
@@ -35,10 +36,8 @@
 #include "sim/drape/DrapeReport.h"
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 
 namespace {
 
@@ -46,7 +45,7 @@ namespace {
 class DefaultScene : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    initHeadless();
+    figment::initHeadless();
     std::string error;
     scene_ = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
     ASSERT_NE(scene_, nullptr) << error;
@@ -405,7 +404,7 @@ double worstEdgeStrain(ClothEngine& engine) {
 
 // Drapes scenes/dress.iv after `adjust` changed its engine; returns the worst edge strain.
 double drapeDefaultDress(const std::function<void(ClothEngine&)>& adjust) {
-  initHeadless();
+  figment::initHeadless();
   std::string error;
   SoSeparator* scene = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv", error);
   EXPECT_NE(scene, nullptr) << error;

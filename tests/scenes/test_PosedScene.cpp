@@ -8,6 +8,7 @@
 #include <string>
 
 #include "guard/SceneFile.h"
+#include "headless/InitHeadless.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
@@ -18,16 +19,13 @@
 #include "sim/collision/VolumeSetCollider.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/drape/DrapeReport.h"
-#include "viewer/OffscreenContext.h"
-
-using namespace figment::viewer;
 
 namespace {
 
 class PosedScene : public ::testing::Test {
  protected:
   void SetUp() override {
-    initHeadless();
+    figment::initHeadless();
     std::string error;
     scene_ = figment::guard::readScene(std::string(FIGMENT_SOURCE_DIR) + "/scenes/posed.iv", error);
     ASSERT_NE(scene_, nullptr) << error;

@@ -9,12 +9,12 @@
 #include <sstream>
 #include <string>
 
+#include "headless/InitHeadless.h"
 #include "io/MeshExport.h"
 #include "session/EngineFit.h"
 #include "session/SceneSession.h"
 #include "support/FitTubes.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 
@@ -47,7 +47,7 @@ std::string scene(const std::string& shape, const std::string& body, const std::
 class EngineFitTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    figment::viewer::initHeadless();
+    figment::initHeadless();
     figment::exportObj(figment::test::cylinder(kBody), (dir_.path() / "cylinder.obj").string());
   }
   // The fits of the scene, draped.

@@ -15,13 +15,13 @@
 #include <sstream>
 #include <string>
 
+#include "headless/InitHeadless.h"
 #include "io/MeshExport.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/FitMapDrawing.h"
 #include "session/SceneSession.h"
 #include "support/FitTubes.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 
@@ -52,7 +52,7 @@ T* findIn(SoNode* root) {
 
 // The tube draped round the cylinder in `dir`, and its one garment's fit.
 void drapeTube(const figment::test::TempDir& dir, SceneSession& session, std::vector<EngineFit>& fits) {
-  figment::viewer::initHeadless();
+  figment::initHeadless();
   figment::exportObj(figment::test::cylinder(kBody), (dir.path() / "cylinder.obj").string());
   ASSERT_TRUE(session.load(dir.file("scene.iv", tubeScene()))) << session.loadError();
   session.drape();

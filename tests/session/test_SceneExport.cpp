@@ -23,11 +23,11 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "io/MeshImport.h"
 #include "session/SceneExport.h"
 #include "session/SceneSession.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 
@@ -40,7 +40,7 @@ class SceneExportTest : public ::testing::Test {
   // The default dress, draped once for every test that exports it (an export changes
   // nothing in the scene); none when the default body is not installed.
   static void SetUpTestSuite() {
-    figment::viewer::initHeadless();
+    figment::initHeadless();
     if (figment::findModelFile("human.zae").empty()) return;
     dress_ = new SceneSession;
     ASSERT_TRUE(dress_->load(kDress)) << dress_->loadError();
@@ -51,7 +51,7 @@ class SceneExportTest : public ::testing::Test {
     delete dress_;
     dress_ = nullptr;
   }
-  void SetUp() override { figment::viewer::initHeadless(); }
+  void SetUp() override { figment::initHeadless(); }
   std::string path(const std::string& name) const { return (dir_.path() / name).string(); }
 
   static SceneSession* dress_;

@@ -13,8 +13,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "headless/InitHeadless.h"
 #include "session/SceneRenderer.h"
-#include "viewer/OffscreenContext.h"
 
 using figment::session::ImageSize;
 using figment::session::SceneRenderer;
@@ -79,7 +79,7 @@ EdgeCount countEdge(const SceneRenderer& renderer) {
 }
 
 EdgeCount renderTriangle(int supersample) {
-  figment::viewer::initHeadless();
+  figment::initHeadless();
   SoSeparator* scene = redTriangle();
   SceneRenderer renderer(kSize, supersample);
   EXPECT_EQ(renderer.render(scene), "");

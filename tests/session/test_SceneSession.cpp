@@ -17,15 +17,14 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
 #include "nodes/cloth/DrapeKey.h"
 #include "session/SceneSession.h"
 #include "sim/cloth/ClothSolver.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 
 namespace {
 
@@ -44,7 +43,7 @@ std::string cloth(const std::string& name, const std::string& fields) {
 
 class SceneSessionTest : public ::testing::Test {
  protected:
-  void SetUp() override { initHeadless(); }
+  void SetUp() override { figment::initHeadless(); }
   figment::test::TempDir dir_;
 };
 

@@ -11,11 +11,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "headless/InitHeadless.h"
 #include "session/SceneStaging.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 
 namespace {
 
@@ -46,7 +45,7 @@ void expectInView(SoPerspectiveCamera* camera, const SbBox3f& box, float aspect,
 }  // namespace
 
 TEST(SceneStaging, FramingCameraSeesTheWholeBoxFromEveryDirection) {
-  initHeadless();
+  figment::initHeadless();
   const SbBox3f box(SbVec3f(-0.5f, 0.0f, -0.2f), SbVec3f(0.5f, 1.7f, 0.3f));  // a body-like box
   for (float aspect : {4.0f / 3.0f, 0.75f, 1.0f})
     for (const ViewDirection view :
@@ -62,7 +61,7 @@ TEST(SceneStaging, FramingCameraSeesTheWholeBoxFromEveryDirection) {
 TEST(SceneStaging, AFramingCameraKeepsADistanceItIsGiven) {
   // The views of a turntable share the largest of their framing distances: the camera
   // then sits that far from the box's centre, and the box still fits every view.
-  initHeadless();
+  figment::initHeadless();
   const SbBox3f box(SbVec3f(-0.8f, 0.0f, -0.1f), SbVec3f(0.8f, 1.7f, 0.1f));  // arms out
   const float front = framingDistance(box, {0, 0}, 0.75f), side = framingDistance(box, {90, 0}, 0.75f);
   // In a portrait picture the arms pointing at the camera need it farther away.
@@ -82,7 +81,7 @@ TEST(SceneStaging, AFramingCameraKeepsADistanceItIsGiven) {
 }
 
 TEST(SceneStaging, CameraSitsInTheAskedDirection) {
-  initHeadless();
+  figment::initHeadless();
   const SbBox3f box(SbVec3f(-1, -1, -1), SbVec3f(1, 1, 1));
   const struct {
     ViewDirection view;
@@ -106,7 +105,7 @@ TEST(SceneStaging, CameraSitsInTheAskedDirection) {
 }
 
 TEST(SceneStaging, AddsALightOnlyWhenTheSceneHasNone) {
-  initHeadless();
+  figment::initHeadless();
   const auto countLights = [](SoSeparator* root) {
     int lights = 0;
     for (int i = 0; i < root->getNumChildren(); ++i)
@@ -135,7 +134,7 @@ TEST(SceneStaging, AddsALightOnlyWhenTheSceneHasNone) {
 }
 
 TEST(SceneStaging, KeepsTheScenesCameraUnlessAViewIsAsked) {
-  initHeadless();
+  figment::initHeadless();
   auto* scene = new SoSeparator;
   scene->ref();
   auto* own = new SoPerspectiveCamera;

@@ -63,6 +63,17 @@ inline TriangleMesh figure() {
   return mesh;
 }
 
+// The fewest boxes that stand as sim/body/BodyStance reads a standing body, 1.75 m tall along
+// +y: two narrow legs 20 cm apart (each foot's corners within 4 % of the stature of each other, the
+// feet farther apart) under a torso, and a head narrower than that gap at the top.
+inline TriangleMesh stanceFigure() {
+  TriangleMesh mesh;
+  for (const Box& box : {Box{{-0.15, 0.0, -0.03}, {-0.1, 0.8, 0.03}}, Box{{0.1, 0.0, -0.03}, {0.15, 0.8, 0.03}},
+                         Box{{-0.2, 0.8, -0.1}, {0.2, 1.5, 0.1}}, Box{{-0.03, 1.5, -0.03}, {0.03, 1.75, 0.03}}})
+    appendBox(mesh, box);
+  return mesh;
+}
+
 // Distance from p to the figure, 0 inside it.
 inline double distanceToFigure(const Vec3& p) {
   double nearest = 1e9;

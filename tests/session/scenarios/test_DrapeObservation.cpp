@@ -11,16 +11,15 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
 #include "session/DrapeRecorder.h"
 #include "session/FrameDisplay.h"
 #include "session/SceneSession.h"
 #include "sim/cloth/ClothSolver.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 
 namespace {
 
@@ -36,7 +35,7 @@ std::string fallingSquare(double seconds, const std::string& fields = "") {
 
 class DrapeObservation : public ::testing::Test {
  protected:
-  void SetUp() override { initHeadless(); }
+  void SetUp() override { figment::initHeadless(); }
   // Loads `text` into the session; its one engine.
   ClothEngine& load(const std::string& text) {
     EXPECT_TRUE(session_.load(dir_.file("scene.iv", text))) << session_.loadError();

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "io/MakeHumanFiles.h"
 #include "session/EngineFit.h"
 #include "session/FitMapDrawing.h"
@@ -23,7 +24,6 @@
 #include "sim/fit/FitVerdict.h"
 #include "support/SceneText.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment;
 using namespace figment::session;
@@ -57,7 +57,7 @@ class PosedBodyFit : public ::testing::Test {
  protected:
   void SetUp() override {
     if (findMakeHumanData().empty()) GTEST_SKIP() << "MakeHuman's data not found";
-    viewer::initHeadless();
+    figment::initHeadless();
   }
   // The shipped scene `name` (its body in pose `shipped`, its garment the OBJ `garment`)
   // with the body in `pose`, draped and measured.

@@ -5,17 +5,16 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 
+#include "headless/InitHeadless.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneStaging.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 
 TEST(ClothEngineRendering, RenderingAgainDoesNotSimulateAgain) {
-  initHeadless();
+  figment::initHeadless();
   const std::string text =
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  Coordinate3 { point = DEF Drape ClothEngine {\n"

@@ -13,22 +13,21 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/SceneStaging.h"
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
 #include "support/TestMeshes.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 using figment::test::Image;
 
 namespace {
 
 class DisplayMesh : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { initHeadless(); }
+  static void SetUpTestSuite() { figment::initHeadless(); }
 };
 
 // A coarse ball (12 vertices round its equator) as a blue ClothingLayer in flat colour.

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "guard/SceneFile.h"
+#include "headless/InitHeadless.h"
 #include "io/MakeHumanFiles.h"
 #include "nodes/body/HumanBody.h"
 #include "session/SceneRenderer.h"
@@ -16,10 +17,8 @@
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 using figment::test::Image;
 using figment::test::Rgb;
 
@@ -31,7 +30,7 @@ class HumanBodySkinTone : public ::testing::Test {
  protected:
   void SetUp() override {
     if (figment::findMakeHumanData().empty()) GTEST_SKIP() << "MakeHuman's data not found";
-    initHeadless();
+    figment::initHeadless();
     std::string error;
     scene_ = figment::guard::readScene(dir_.file("tone.iv",
                                                  "#Inventor V2.1 ascii\n"

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "io/MakeHumanFiles.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/render/ClothingLayer.h"
@@ -34,7 +35,6 @@
 #include "support/RenderedImage.h"
 #include "support/SceneText.h"
 #include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -90,7 +90,7 @@ std::vector<std::string> garmentScenes() {
 
 class HybridNeverHidesCloth : public ::testing::TestWithParam<std::string> {
  protected:
-  static void SetUpTestSuite() { initHeadless(); }
+  static void SetUpTestSuite() { figment::initHeadless(); }
 };
 
 TEST_P(HybridNeverHidesCloth, EveryClothPixelOfTheDepthBufferAloneStays) {
@@ -164,7 +164,7 @@ TEST(HybridWinding, AClockwiseSkirtIsDrawnAsItsCounterClockwiseSelf) {
   // COUNTERCLOCKWISE. Before, the hybrid nodes took its inside for its outside and drew
   // the inside of the back wall over the belly, above the waistband. Now the layer's
   // shape says which side is out, and the picture is the counter-clockwise skirt's.
-  initHeadless();
+  figment::initHeadless();
   SceneSession session;
   ASSERT_TRUE(session.load(std::string(FIGMENT_SOURCE_DIR) + "/scenes/skirt.iv")) << session.loadError();
   for (ClothEngine* engine : session.engines()) engine->maxTime = 0.05;  // on the hips or not: drawn alike
@@ -214,7 +214,7 @@ std::vector<bool> clothInside(const Image& image, int margin) {
 // does not push the cloth into the body: drawn by the depth buffer alone, where the
 // simulation's mesh showed cloth (away from its outline) the display mesh shows no skin.
 TEST(HybridDisplayMesh, KeepsEveryClothPixelAndShowsNoSkinThroughTheDress) {
-  initHeadless();
+  figment::initHeadless();
   SceneSession session;
   ASSERT_TRUE(session.load(std::string(FIGMENT_SOURCE_DIR) + "/scenes/dress.iv")) << session.loadError();
   session.drape();

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "guard/SceneFile.h"
+#include "headless/InitHeadless.h"
 #include "nodes/render/ClothingLayer.h"
 #include "nodes/render/DepthSortedGroup.h"
 #include "nodes/render/StencilRule.h"
@@ -24,7 +25,6 @@
 #include "support/RenderedImage.h"
 #include "support/TempDir.h"
 #include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -104,7 +104,7 @@ class View {
 
 class HybridRendering : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { initHeadless(); }
+  static void SetUpTestSuite() { figment::initHeadless(); }
 };
 
 const std::vector<double> kEightAzimuths = {0, 45, 90, 135, 180, 225, 270, 315};

@@ -10,12 +10,11 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 
+#include "headless/InitHeadless.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneStaging.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 
 namespace {
 
@@ -23,7 +22,7 @@ constexpr int kWidth = 400, kHeight = 300;
 
 // An orthographic view 4 x 3 units wide, 100 pixels per unit, looking down -z.
 SoSeparator* flatRedScene() {
-  initHeadless();
+  figment::initHeadless();
   auto* root = new SoSeparator;
   auto* camera = new SoOrthographicCamera;
   camera->position.setValue(0.0f, 0.0f, 5.0f);
@@ -72,7 +71,7 @@ int countRed(const SceneRenderer& renderer) {
 }
 
 int render(SoSeparator* scene) {
-  initHeadless();
+  figment::initHeadless();
   scene->ref();
   SceneRenderer renderer({kWidth, kHeight});
   const std::string error = renderer.render(scene);
@@ -98,7 +97,7 @@ TEST(OffscreenRendering, LargeFlatFaceSetCoversItsPixels) {
 }
 
 TEST(OffscreenRendering, BackgroundIsNeutralGrey) {
-  initHeadless();
+  figment::initHeadless();
   SoSeparator* scene = flatRedScene();
   scene->ref();
   SceneRenderer renderer({kWidth, kHeight});

@@ -26,13 +26,13 @@
 #include <string>
 #include <vector>
 
+#include "headless/InitHeadless.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
 #include "support/Pixels.h"
 #include "support/RenderedImage.h"
 #include "viewer/DepthBufferOnly.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
 using namespace figment::viewer;
@@ -145,7 +145,7 @@ struct OutfitCase {
 
 class OutfitPixels : public ::testing::TestWithParam<OutfitCase> {
  protected:
-  static void SetUpTestSuite() { initHeadless(); }
+  static void SetUpTestSuite() { figment::initHeadless(); }
 };
 
 }  // namespace

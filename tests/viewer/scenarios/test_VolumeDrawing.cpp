@@ -8,6 +8,7 @@
 #include <string>
 
 #include "guard/SceneFile.h"
+#include "headless/InitHeadless.h"
 #include "nodes/body/Mannequin.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneStaging.h"
@@ -15,10 +16,8 @@
 #include "support/RenderedImage.h"
 #include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
-#include "viewer/OffscreenContext.h"
 
 using namespace figment::session;
-using namespace figment::viewer;
 using figment::test::Image;
 
 namespace {
@@ -43,7 +42,7 @@ const std::string kScene = std::string(
 class VolumeDrawing : public ::testing::Test {
  protected:
   void SetUp() override {
-    initHeadless();
+    figment::initHeadless();
     std::string error;
     scene_ = figment::guard::readScene(dir_.file("volumes.iv", kScene), error);
     ASSERT_NE(scene_, nullptr) << error;
