@@ -13,11 +13,13 @@
 #include <map>
 
 #include "io/DrapeCache.h"
-#include "io/SharedCacheStore.h"
 #include "support/IoTestSupport.h"
+#include "support/MemoryStore.h"
 
 using namespace figment;
 using namespace figment::test;
+
+using figment::test::MemoryStore;
 
 namespace {
 CachedDrape someDrape(int n) {
@@ -28,20 +30,6 @@ CachedDrape someDrape(int n) {
   return d;
 }
 
-// A shared store in memory, as two programs over one Redis see it.
-class MemoryStore : public SharedCacheStore {
- public:
-  std::optional<std::string> get(const std::string& name) const override {
-    auto it = entries.find(name);
-    return it == entries.end() ? std::nullopt : std::optional<std::string>(it->second);
-  }
-  bool put(const std::string& name, const std::string& bytes) const override {
-    entries[name] = bytes;
-    return true;
-  }
-  void remove(const std::string& name) const override { entries.erase(name); }
-  mutable std::map<std::string, std::string> entries;
-};
 }  // namespace
 
 TEST(DrapeCache, GivesBackWhatWasStoredBitForBitAndOnlyUnderItsKey) {

@@ -7,24 +7,13 @@
 #include <map>
 
 #include "serve/work/SharedImages.h"
+#include "support/MemoryStore.h"
 
 using namespace figment::serve;
 
-namespace {
+using figment::test::MemoryStore;
 
-class MemoryStore : public figment::SharedCacheStore {
- public:
-  std::optional<std::string> get(const std::string& name) const override {
-    auto it = entries.find(name);
-    return it == entries.end() ? std::nullopt : std::optional<std::string>(it->second);
-  }
-  bool put(const std::string& name, const std::string& bytes) const override {
-    entries[name] = bytes;
-    return true;
-  }
-  void remove(const std::string& name) const override { entries.erase(name); }
-  mutable std::map<std::string, std::string> entries;
-};
+namespace {
 
 const std::string kTag = "0123456789abcdef0123456789abcdef";
 const std::string kOtherTag = "fedcba9876543210fedcba9876543210";
