@@ -1,6 +1,6 @@
 #pragma once
 // A store of cache entries that several programs, or machines, share (figment-serve keeps
-// one in Redis: serve/work/RedisStore.h), below a cache that keeps its entries locally first
+// one in Redis: serve/workers/RedisStore.h), below a cache that keeps its entries locally first
 // (DrapeCache's folder, the server's memory). Entries are named by the content they hold
 // (digests of their keys) and carry their own checks: the store keeps bytes, the cache
 // above it verifies what it reads back and drops what is damaged or foreign.

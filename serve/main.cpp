@@ -20,11 +20,11 @@
 #include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
 #include "serve/http/HttpService.h"
-#include "serve/work/FrameChannel.h"
-#include "serve/work/JobWorker.h"
-#include "serve/work/RedisConnection.h"
-#include "serve/work/RenderWorker.h"
-#include "serve/work/WorkerProcess.h"
+#include "serve/workers/FrameChannel.h"
+#include "serve/workers/JobWorker.h"
+#include "serve/workers/RedisConnection.h"
+#include "serve/workers/RenderWorker.h"
+#include "serve/workers/WorkerProcess.h"
 
 namespace {
 

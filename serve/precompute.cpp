@@ -15,9 +15,9 @@
 #include <iterator>
 #include <thread>
 
-#include "serve/work/JobQueue.h"
-#include "serve/work/PrecomputePlan.h"
-#include "serve/work/RedisConnection.h"
+#include "serve/workers/JobQueue.h"
+#include "serve/workers/PrecomputePlan.h"
+#include "serve/workers/RedisConnection.h"
 
 namespace {
 

@@ -17,8 +17,8 @@
 #include "serve/request/FitRequest.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/request/Utf8Text.h"
-#include "serve/work/Digest.h"
-#include "serve/work/RedisStore.h"
+#include "serve/workers/Digest.h"
+#include "serve/workers/RedisStore.h"
 
 namespace figment::serve {
 

@@ -1,7 +1,7 @@
 #pragma once
 // figment-serve's HTTP side (cpp-httplib): the routes, their headers and errors, the
 // in-memory image cache in front of the worker pool, and with --redis the images every
-// instance made (serve/work/SharedImages.h) below it. Every answer but a PNG, the page and
+// instance made (serve/workers/SharedImages.h) below it. Every answer but a PNG, the page and
 // a 304 is JSON; an unknown path is 404 JSON and reads no file.
 
 #include <memory>
@@ -11,11 +11,11 @@
 
 #include "serve/http/ClientRateLimit.h"
 #include "serve/http/ImageCache.h"
-#include "serve/work/RedisConnection.h"
-#include "serve/work/RenderJobs.h"
-#include "serve/work/ServeOptions.h"
-#include "serve/work/SharedImages.h"
-#include "serve/work/WorkerPool.h"
+#include "serve/workers/RedisConnection.h"
+#include "serve/workers/RenderJobs.h"
+#include "serve/workers/ServeOptions.h"
+#include "serve/workers/SharedImages.h"
+#include "serve/workers/WorkerPool.h"
 #include "sim/garment/SizeChart.h"
 
 namespace httplib {

@@ -1,7 +1,7 @@
 #pragma once
 // Workers' answers kept in the server's memory by their kind and ETag, the least recently
 // used dropped past a byte bound: a repeated request is answered without a worker. Each
-// entry is typed by its job kind (serve/work/JobKind.h): a rendered image (PNG or GLB) or a
+// entry is typed by its job kind (serve/workers/JobKind.h): a rendered image (PNG or GLB) or a
 // fit's advice (JSON); a lookup of one kind never finds the other's.
 
 #include <cstddef>
@@ -12,7 +12,7 @@
 #include <string>
 #include <utility>
 
-#include "serve/work/JobKind.h"
+#include "serve/workers/JobKind.h"
 
 namespace figment::serve {
 

@@ -3,7 +3,7 @@
 // garments (sim/garment/GarmentStyle.h) and the shopper's four measurements, each within
 // the range the chart's bodies span for that sex widened by two sizes
 // (serve/request/BodyMeasuresText.h). Like a render request it is parameters only; a worker
-// is told it is a fit by its job's kind (serve/work/JobKind.h), not by its text.
+// is told it is a fit by its job's kind (serve/workers/JobKind.h), not by its text.
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>

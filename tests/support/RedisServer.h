@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "serve/work/RedisConnection.h"
+#include "serve/workers/RedisConnection.h"
 #include "support/TempDir.h"
 
 namespace figment::test {

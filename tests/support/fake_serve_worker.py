@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """A stand-in for figment-serve --worker in the worker pool's unit tests
-(tests/serve/work/test_WorkerPool.cpp): it speaks the pool's frames on fd 3 (each a 4-byte
+(tests/serve/workers/test_WorkerPool.cpp): it speaks the pool's frames on fd 3 (each a 4-byte
 little-endian length and that many bytes; a request is two frames, its kind then its text;
 an answer two, a JSON header then the body) and does what the request's text says:
 

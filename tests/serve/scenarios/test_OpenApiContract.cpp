@@ -22,7 +22,7 @@
 #include "serve/request/FitRequest.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/RenderRequest.h"
-#include "serve/work/Digest.h"
+#include "serve/workers/Digest.h"
 #include "sim/garment/GarmentStyle.h"
 
 using namespace figment::serve;

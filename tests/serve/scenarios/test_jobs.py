@@ -129,7 +129,7 @@ class WorkQueue(unittest.TestCase):
         self.redis.command("XADD", "figment:jobs", "*", "key", "handmade", "request", "garbage=1&outfit=dress:M")
         self.redis.command("XADD", "figment:jobs", "*", "key", "norequest")
         # A claim time of 1 ms: a job left unacknowledged is taken over by the worker's next
-        # claim, which comes first in every turn of its loop (serve/work/JobQueue.h's next()).
+        # claim, which comes first in every turn of its loop (serve/workers/JobQueue.h's next()).
         worker = JobWorker(EXECUTABLE, self.redis.url, "only", "--workers", "1", "--claim-after", "0.001")
         try:
             result = precompute(self.redis, "--requests", self.write_requests(["outfit=skirt:M&size=64x80"]))

@@ -1,4 +1,4 @@
-#include "serve/work/FitWorker.h"
+#include "serve/workers/FitWorker.h"
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>

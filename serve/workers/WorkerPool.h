@@ -1,6 +1,6 @@
 #pragma once
 // The server's render workers: N worker processes, each fed by a thread of its own from
-// one bounded queue of typed requests (serve/work/JobKind.h: a render or a fit), the kind
+// one bounded queue of typed requests (serve/workers/JobKind.h: a render or a fit), the kind
 // sent to the worker beside the request. Identical requests in flight (one kind and
 // canonical text) are made once and answered alike (single flight); a full queue refuses
 // at once (the server answers 503); each request has a time limit, past which its worker
@@ -16,9 +16,9 @@
 #include <thread>
 #include <vector>
 
-#include "serve/work/JobKind.h"
-#include "serve/work/ServeOptions.h"
-#include "serve/work/WorkerProcess.h"
+#include "serve/workers/JobKind.h"
+#include "serve/workers/ServeOptions.h"
+#include "serve/workers/WorkerProcess.h"
 
 namespace figment::serve {
 

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <thread>
 
-#include "serve/work/JobQueue.h"
+#include "serve/workers/JobQueue.h"
 #include "support/RedisServer.h"
 
 using namespace figment::serve;

@@ -1,4 +1,4 @@
-#include "serve/work/JobKind.h"
+#include "serve/workers/JobKind.h"
 
 namespace figment::serve {
 

@@ -8,7 +8,7 @@
 
 #include "serve/request/Catalogue.h"
 #include "serve/request/RenderRequest.h"
-#include "serve/work/PrecomputePlan.h"
+#include "serve/workers/PrecomputePlan.h"
 
 using namespace figment::serve;
 

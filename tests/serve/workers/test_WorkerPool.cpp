@@ -13,7 +13,7 @@
 #include <future>
 #include <thread>
 
-#include "serve/work/WorkerPool.h"
+#include "serve/workers/WorkerPool.h"
 #include "support/TempDir.h"
 
 using namespace figment::serve;

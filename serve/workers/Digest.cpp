@@ -1,4 +1,4 @@
-#include "serve/work/Digest.h"
+#include "serve/workers/Digest.h"
 
 #include <dlfcn.h>
 

@@ -1,4 +1,4 @@
-#include "serve/work/RenderWorker.h"
+#include "serve/workers/RenderWorker.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -12,8 +12,8 @@
 #include "serve/request/RenderRequest.h"
 #include "serve/scene/DrapeState.h"
 #include "serve/scene/OutfitScene.h"
-#include "serve/work/FrameChannel.h"
-#include "serve/work/RedisStore.h"
+#include "serve/workers/FrameChannel.h"
+#include "serve/workers/RedisStore.h"
 #include "session/SceneExport.h"
 
 namespace figment::serve {

@@ -6,7 +6,7 @@
 
 #include <map>
 
-#include "serve/work/SharedImages.h"
+#include "serve/workers/SharedImages.h"
 #include "support/MemoryStore.h"
 
 using namespace figment::serve;

@@ -1,8 +1,8 @@
 #pragma once
 // figment-serve --job-worker: takes render jobs from the work queue in Redis
-// (serve/work/JobQueue.h) instead of serving HTTP, renders each on the worker pool as a request
+// (serve/workers/JobQueue.h) instead of serving HTTP, renders each on the worker pool as a request
 // would be, keeps the image in Redis under the ETag an instance of this build gives it
-// (serve/work/SharedImages.h), and only then acknowledges the job. One thread per render
+// (serve/workers/SharedImages.h), and only then acknowledges the job. One thread per render
 // worker, each with its own Redis connection and consumer name (NAME/SLOT). A job whose
 // image is kept already is acknowledged without rendering; a bad request or a render the
 // worker refuses (400, 500) is recorded failed with its one-line error; a worker that died
@@ -14,8 +14,8 @@
 #include <mutex>
 #include <string>
 
-#include "serve/work/ServeOptions.h"
-#include "serve/work/WorkerPool.h"
+#include "serve/workers/ServeOptions.h"
+#include "serve/workers/WorkerPool.h"
 
 namespace figment::serve {
 

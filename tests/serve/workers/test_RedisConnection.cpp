@@ -6,7 +6,7 @@
 
 #include <filesystem>
 
-#include "serve/work/RedisConnection.h"
+#include "serve/workers/RedisConnection.h"
 #include "support/TempDir.h"
 
 using namespace figment::serve;

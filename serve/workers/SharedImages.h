@@ -1,5 +1,5 @@
 #pragma once
-// Rendered images (PNG or GLB) in a shared store (serve/work/RedisStore.h) by their ETag, so an
+// Rendered images (PNG or GLB) in a shared store (serve/workers/RedisStore.h) by their ETag, so an
 // image one figment-serve instance made is answered by every other without a worker; a
 // fit's advice is kept the same way in an entry of its own kind ("fit:", not "image:"). An
 // entry holds a header before the image: a magic line, the tag it was stored under, the
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "io/SharedCacheStore.h"
-#include "serve/work/JobKind.h"
+#include "serve/workers/JobKind.h"
 
 namespace figment::serve {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "serve/work/FrameChannel.h"
+#include "serve/workers/FrameChannel.h"
 
 namespace figment::serve {
 

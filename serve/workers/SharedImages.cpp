@@ -1,4 +1,4 @@
-#include "serve/work/SharedImages.h"
+#include "serve/workers/SharedImages.h"
 
 #include <cinttypes>
 #include <cstdio>

@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "serve/work/WorkerPool.h"
+#include "serve/workers/WorkerPool.h"
 
 namespace figment::serve {
 

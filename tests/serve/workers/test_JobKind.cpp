@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "serve/work/JobKind.h"
+#include "serve/workers/JobKind.h"
 
 using namespace figment::serve;
 

@@ -1,5 +1,5 @@
 #pragma once
-// What figment-precompute puts on the work queue (serve/work/JobQueue.h): render requests in
+// What figment-precompute puts on the work queue (serve/workers/JobQueue.h): render requests in
 // their canonical text, either one per line of a file (query strings as GET /api/render
 // takes them) or the catalogue's grid: every style in every size, in its default colour,
 // on each body, pose and view asked for. Each request is checked as the server checks

@@ -1,4 +1,4 @@
-#include "serve/work/JobWorker.h"
+#include "serve/workers/JobWorker.h"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "serve/request/RenderRequest.h"
-#include "serve/work/Digest.h"
-#include "serve/work/JobQueue.h"
-#include "serve/work/RedisStore.h"
-#include "serve/work/SharedImages.h"
+#include "serve/workers/Digest.h"
+#include "serve/workers/JobQueue.h"
+#include "serve/workers/RedisStore.h"
+#include "serve/workers/SharedImages.h"
 
 namespace figment::serve {
 

@@ -1,4 +1,4 @@
-#include "serve/work/RenderJobs.h"
+#include "serve/workers/RenderJobs.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>

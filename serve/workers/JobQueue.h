@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "serve/work/RedisConnection.h"
+#include "serve/workers/RedisConnection.h"
 
 namespace figment::serve {
 

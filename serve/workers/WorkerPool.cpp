@@ -1,4 +1,4 @@
-#include "serve/work/WorkerPool.h"
+#include "serve/workers/WorkerPool.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // A worker process's loop: reads a request's kind and canonical text from the server
-// (serve/work/JobKind.h), and for a render builds its
+// (serve/workers/JobKind.h), and for a render builds its
 // scene (OutfitScene), drapes it with the worker's own SceneSession and DrapeContext
 // (the drape cache on disk, shared with the other workers), renders the view and sends
 // back a JSON header and the PNG. The scene of the last request is kept: another view
@@ -13,8 +13,8 @@
 
 #include "serve/scene/OutfitScene.h"
 #include "serve/scene/Wardrobe.h"
-#include "serve/work/FitWorker.h"
-#include "serve/work/JobKind.h"
+#include "serve/workers/FitWorker.h"
+#include "serve/workers/JobKind.h"
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
 

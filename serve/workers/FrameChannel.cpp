@@ -1,4 +1,4 @@
-#include "serve/work/FrameChannel.h"
+#include "serve/workers/FrameChannel.h"
 
 #include <poll.h>
 #include <sys/socket.h>

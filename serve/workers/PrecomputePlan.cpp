@@ -1,4 +1,4 @@
-#include "serve/work/PrecomputePlan.h"
+#include "serve/workers/PrecomputePlan.h"
 
 #include <set>
 #include <sstream>

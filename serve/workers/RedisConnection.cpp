@@ -1,4 +1,4 @@
-#include "serve/work/RedisConnection.h"
+#include "serve/workers/RedisConnection.h"
 
 #include <hiredis.h>
 #include <sys/time.h>

@@ -1,4 +1,4 @@
-#include "serve/work/WorkerProcess.h"
+#include "serve/workers/WorkerProcess.h"
 
 #include <fcntl.h>
 #include <signal.h>

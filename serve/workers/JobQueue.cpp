@@ -1,9 +1,9 @@
-#include "serve/work/JobQueue.h"
+#include "serve/workers/JobQueue.h"
 
 #include <cmath>
 #include <cstdlib>
 
-#include "serve/work/Digest.h"
+#include "serve/workers/Digest.h"
 
 namespace figment::serve {
 

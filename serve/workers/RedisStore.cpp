@@ -1,4 +1,4 @@
-#include "serve/work/RedisStore.h"
+#include "serve/workers/RedisStore.h"
 
 namespace figment::serve {
 

@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "io/SharedCacheStore.h"
-#include "serve/work/RedisConnection.h"
+#include "serve/workers/RedisConnection.h"
 
 namespace figment::serve {
 
