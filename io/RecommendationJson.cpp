@@ -65,7 +65,8 @@ std::string recommendationJson(const Recommendation& r) {
     out += (s ? ", " : "") + quoted(fit.size) + ": {\"text\": " + quoted(fit.text) +
            ", \"steps\": " + std::to_string(fit.drape.report.run.iterations) +
            ", \"warm\": " + (fit.drape.report.warm ? "true" : "false") +
-           ", \"at_rest\": " + (fit.drape.report.run.atRest ? "true" : "false") + ", \"regions\": " + regionsJson(fit) + "}";
+           ", \"at_rest\": " + (fit.drape.report.run.atRest ? "true" : "false") + ", \"regions\": " + regionsJson(fit) +
+           "}";
   }
   return out + "}}";
 }

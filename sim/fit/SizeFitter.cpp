@@ -185,7 +185,8 @@ const std::vector<RegionFit>& SizeFitter::ownFit(Sex sex, int size) {
 }
 
 GarmentDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
-                                const std::shared_ptr<const MeshCollider>& body, const std::vector<Vec3>* start) const {
+                                   const std::shared_ptr<const MeshCollider>& body,
+                                   const std::vector<Vec3>* start) const {
   return sewn_ ? sew(sex, size, body) : drape(graded.garment, body, start);
 }
 
@@ -208,7 +209,7 @@ GarmentDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const Mesh
 }
 
 GarmentDrape SizeFitter::drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
-                            const std::vector<Vec3>* start) const {
+                               const std::vector<Vec3>* start) const {
   ClothSolver solver(garment, parameters_, body);
   if (start) solver.resume(*start, std::vector<Vec3>(start->size(), Vec3::Zero()), 0.0, 0);
   GarmentDrape out;

@@ -23,12 +23,12 @@
 #include "sim/cloth/ClothSolver.h"
 #include "sim/cloth/RestShape.h"
 #include "sim/collision/MeshCollider.h"
+#include "sim/drape/GarmentDrape.h"
 #include "sim/fit/FitVerdict.h"
 #include "sim/fit/GarmentFit.h"
 #include "sim/garment/GarmentStyle.h"
 #include "sim/garment/SizeChart.h"
 #include "sim/pattern/SewingPattern.h"
-#include "sim/drape/GarmentDrape.h"
 
 namespace figment {
 
@@ -103,7 +103,7 @@ class SizeFitter {
 
   // Drapes `garment` on `body` (its collider), cold or from `start`.
   GarmentDrape drape(const TriangleMesh& garment, const std::shared_ptr<const MeshCollider>& body,
-                  const std::vector<Vec3>* start = nullptr) const;
+                     const std::vector<Vec3>* start = nullptr) const;
   // A sewn style's size: its pattern placed on `body`, cut, sewn and draped.
   GarmentDrape sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const;
 
@@ -128,7 +128,7 @@ class SizeFitter {
                   const MeshCollider& collider, const std::vector<FitRegion>& regions, GarmentDrape drape) const;
 
   GarmentDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
-                      const std::vector<Vec3>* start) const;
+                         const std::vector<Vec3>* start) const;
   const SizePattern& patternOf(Sex sex, int size) const;
 
   const HumanModel& model_;
