@@ -61,9 +61,9 @@ int main(int argc, char** argv) {
       return 1;
     }
     points[i] = drapedPoints(session);
-    cached[i] = drapes.front().run.fromCache;
+    cached[i] = drapes.front().report.fromCache;
     std::printf("session %d: %s, %d steps, %zu points%s\n", i + 1, drapes.front().label.c_str(),
-                drapes.front().run.iterations, points[i].size(), cached[i] ? ", from the cache" : "");
+                drapes.front().report.run.iterations, points[i].size(), cached[i] ? ", from the cache" : "");
   }
   const bool same = !points[0].empty() && points[0].size() == points[1].size() &&
                     std::memcmp(points[0].data(), points[1].data(), points[0].size() * sizeof(SbVec3f)) == 0;
