@@ -35,7 +35,7 @@ struct EngineDrape {
 // The session holds the scene (and, once staged, the staged root) until it is cleared or
 // destroyed, and the drape context its engines drape with: its own drape cache (none
 // unless the front end sets one), observers and broad phase, shared with no other
-// session. Coin must be initialised first (viewer's initHeadless() to render;
+// session. Coin must be initialised first (figment::initHeadless(), headless/InitHeadless.h, to render;
 // figment::init() is enough to drape); read errors come as one line only after
 // initHeadless().
 class SceneSession {
