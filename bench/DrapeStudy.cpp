@@ -7,10 +7,12 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "BodyChoice.h"
 #include "CsvFile.h"
 #include "Statistics.h"
+#include "io/DrapeReportJson.h"
 #include "nodes/Init.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "session/SceneSession.h"
@@ -20,16 +22,19 @@ namespace figment::bench {
 namespace {
 
 // One CSV row and one line on stdout for a drape.
-void report(const std::string& method, bool broadPhase, int run, const session::EngineDrape& drape, std::ostream& csv) {
-  const figment::DrapeReport& stats = drape.report;
+void report(const std::string& method, bool broadPhase, int run, const ClothEngine& engine, std::ostream& csv) {
+  const figment::DrapeReport& stats = engine.lastRun();
+  // The figures figment-view --stats writes, by the same names (io/DrapeReportJson.h).
+  const nlohmann::json figures = nlohmann::json::parse(figment::drapeReportJson(stats));
   const double perSecond = stats.run.iterations / stats.wallSeconds;
-  const std::string garment = drape.name.empty() ? "unnamed" : drape.name;
+  const std::string name = engine.getName().getString();
+  const std::string garment = name.empty() ? "unnamed" : name;
   csv << method << ',' << (broadPhase ? 1 : 0) << ',' << run << ',' << garment << ',' << stats.triangles << ','
       << stats.run.iterations << ',' << stats.run.simulatedTime << ',' << stats.wallSeconds << ','
       << (stats.run.atRest ? 1 : 0) << ',' << perSecond << ',' << (stats.verdict.empty() ? 1 : 0) << ','
-      << stats.run.maxStretch << ',' << stats.run.implicitCosts.halvedSteps << ','
+      << figures["verdict"]["max_edge_stretch"].get<double>() << ',' << stats.run.implicitCosts.halvedSteps << ','
       << stats.run.implicitCosts.failedSteps << '\n';
-  std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << drape.label << " "
+  std::cout << method << (broadPhase ? "" : " (no broad phase)") << " run " << run << ": " << engine.label() << " "
             << stats.triangles << " triangles, " << stats.run.iterations << " iterations, " << stats.run.simulatedTime
             << " s simulated in " << stats.wallSeconds << " s" << (stats.run.atRest ? ", at rest" : ", not at rest")
             << (stats.run.implicitCosts.halvedSteps > 0
@@ -46,14 +51,14 @@ void timeDrapes(const std::string& method, bool broadPhase, const DrapeStudyOpti
   session.context().broadPhase = broadPhase;
   for (int run = 0; run < options.repeat; ++run) {
     for (ClothEngine* engine : session.engines()) engine->restPoints.touch();  // inputs changed: simulate again
-    for (const session::EngineDrape& drape : session.drape()) {
-      if (!drape.error.empty()) {
-        error = drape.error;
+    for (const ClothEngine* engine : session.drape()) {
+      if (!engine->lastError().empty()) {
+        error = engine->lastError();
         return;
       }
-      report(method, broadPhase, run, drape, csv);
-      wall.push_back(drape.report.wallSeconds);
-      rate.push_back(drape.report.run.iterations / drape.report.wallSeconds);
+      report(method, broadPhase, run, *engine, csv);
+      wall.push_back(engine->lastRun().wallSeconds);
+      rate.push_back(engine->lastRun().run.iterations / engine->lastRun().wallSeconds);
     }
   }
   session.context().broadPhase = true;

@@ -11,6 +11,7 @@
 
 #include "nodes/cloth/ClothEngine.h"
 #include "session/SceneSession.h"
+#include "sim/drape/DrapeReport.h"
 #include "sim/core/TriangleMesh.h"
 
 namespace figment::bench {

@@ -11,6 +11,7 @@
 #include <io/DrapeCache.h>
 #include <nodes/Init.h>
 #include <session/SceneSession.h>
+#include <sim/drape/DrapeReport.h>
 
 #include <cstdio>
 #include <cstring>
@@ -54,16 +55,17 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "session_drape: %s: %s\n", argv[1], session.loadError().c_str());
       return 1;
     }
-    const std::vector<figment::session::EngineDrape>& drapes = session.drape();
-    if (drapes.size() != 1 || !session.firstError().empty()) {
-      std::fprintf(stderr, "session_drape: %s: %zu engines; %s\n", argv[1], drapes.size(),
+    const std::vector<ClothEngine*>& engines = session.drape();
+    if (engines.size() != 1 || !session.firstError().empty()) {
+      std::fprintf(stderr, "session_drape: %s: %zu engines; %s\n", argv[1], engines.size(),
                    session.firstError().c_str());
       return 1;
     }
     points[i] = drapedPoints(session);
-    cached[i] = drapes.front().report.fromCache;
-    std::printf("session %d: %s, %d steps, %zu points%s\n", i + 1, drapes.front().label.c_str(),
-                drapes.front().report.run.iterations, points[i].size(), cached[i] ? ", from the cache" : "");
+    const figment::DrapeReport& report = engines.front()->lastRun();
+    cached[i] = report.fromCache;
+    std::printf("session %d: %s, %d steps, %zu points%s\n", i + 1, engines.front()->label().c_str(),
+                report.run.iterations, points[i].size(), cached[i] ? ", from the cache" : "");
   }
   const bool same = !points[0].empty() && points[0].size() == points[1].size() &&
                     std::memcmp(points[0].data(), points[1].data(), points[0].size() * sizeof(SbVec3f)) == 0;

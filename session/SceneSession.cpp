@@ -7,22 +7,9 @@
 #include "nodes/SceneSearch.h"
 #include "nodes/render/ClothingLayer.h"
 #include "session/SceneStaging.h"
+#include "sim/drape/DrapeReport.h"
 
 namespace figment::session {
-
-namespace {
-
-EngineDrape resultOf(ClothEngine& engine) {
-  EngineDrape drape;
-  drape.engine = &engine;
-  drape.name = engine.getName().getString();
-  drape.label = engine.label();
-  drape.report = engine.lastRun();
-  drape.error = engine.lastError();
-  return drape;
-}
-
-}  // namespace
 
 SceneSession::SceneSession() : SceneSession(std::make_shared<DrapeContext>()) {}
 
@@ -39,7 +26,6 @@ void SceneSession::clear() {
   if (scene_) scene_->unref();
   staged_ = scene_ = nullptr;
   engines_.clear();
-  drapes_.clear();
   shapeError_.clear();
   shapesChecked_ = false;
 }
@@ -62,7 +48,7 @@ void SceneSession::adopt(SoSeparator* scene) {
   for (ClothEngine* engine : engines_) engine->setDrapeContext(context_);
 }
 
-const std::vector<EngineDrape>& SceneSession::drape() {
+const std::vector<ClothEngine*>& SceneSession::drape() {
   std::vector<int> before;
   for (const ClothEngine* engine : engines_) before.push_back(engine->evaluationCount());
   for (size_t i = 0; i < engines_.size(); ++i) {
@@ -73,12 +59,10 @@ const std::vector<EngineDrape>& SceneSession::drape() {
     if (engine->evaluationCount() == before[i] && engine->positions.getNumConnections() > 0)
       engine->positions[0]->evaluate();
   }
-  drapes_.clear();
-  for (ClothEngine* engine : engines_) drapes_.push_back(resultOf(*engine));
   shapeError_.clear();
   shapesChecked_ = false;
   if (firstError().empty()) checkShapes();  // a failed drape is its own error, and stages nothing
-  return drapes_;
+  return engines_;
 }
 
 void SceneSession::checkShapes() {
@@ -94,15 +78,15 @@ void SceneSession::checkShapes() {
 
 std::vector<std::string> SceneSession::verdicts() const {
   std::vector<std::string> lines;
-  for (const EngineDrape& drape : drapes_)
-    if (drape.error.empty() && !drape.report.verdict.empty())
-      lines.push_back(drape.label + ": " + drape.report.verdict);
+  for (const ClothEngine* engine : engines_)
+    if (engine->lastError().empty() && !engine->lastRun().verdict.empty())
+      lines.push_back(engine->label() + ": " + engine->lastRun().verdict);
   return lines;
 }
 
 std::string SceneSession::firstError() const {
-  for (const EngineDrape& drape : drapes_)
-    if (!drape.error.empty()) return drape.error;
+  for (const ClothEngine* engine : engines_)
+    if (!engine->lastError().empty()) return engine->lastError();
   return shapeError_;
 }
 

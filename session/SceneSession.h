@@ -14,23 +14,10 @@
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/DrapeContext.h"
 #include "session/SessionOptions.h"
-#include "sim/drape/DrapeReport.h"
 
 class SoSeparator;
 
 namespace figment::session {
-
-// One engine's drape, kept by the session.
-struct EngineDrape {
-  ClothEngine* engine = nullptr;  // held through the session's scene
-  std::string name;               // its DEF name; "" when unnamed
-  std::string label;              // how messages name it: "ClothEngine 'Drape'"
-  // What it draped and how (sim/drape/DrapeReport.h): the method that ran (with a
-  // tolerance, the picked one; the fields' when it failed first), what it collided with,
-  // the run; report.verdict "" when clean.
-  DrapeReport report;
-  std::string error;  // one line; "" when it succeeded
-};
 
 // The session holds the scene (and, once staged, the staged root) until it is cleared or
 // destroyed, and the drape context its engines drape with: its own drape cache (none
@@ -68,8 +55,10 @@ class SceneSession {
   // each one's result. Again after an engine's input changed: simulates those again.
   // Then, when every drape succeeded, checks the shapes against the data they now draw
   // (guard::checkShapes): shapeError().
-  const std::vector<EngineDrape>& drape();
-  const std::vector<EngineDrape>& drapes() const { return drapes_; }
+  // Returns the engines, in scene order: each one's lastRun() says what it draped and how
+  // (sim/drape/DrapeReport.h: the method that ran, what it collided with, the run, the
+  // verdict), its lastError() why it failed ("" when it succeeded).
+  const std::vector<ClothEngine*>& drape();
   // The guard's check of the shapes after the last drape: "" when every shape indexes and
   // counts only the data it has, and every ClothingLayer's drawing fields are in range
   // (ClothingLayer::fieldProblem), else one line ("ClothingLayer 'Layer': coordIndex[3] = ...").
@@ -117,7 +106,6 @@ class SceneSession {
   bool shapesChecked_ = false;             // since the scene was loaded or last draped
   std::shared_ptr<DrapeContext> context_;  // never null
   std::vector<ClothEngine*> engines_;
-  std::vector<EngineDrape> drapes_;
 };
 
 }  // namespace figment::session

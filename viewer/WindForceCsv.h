@@ -14,7 +14,7 @@ namespace figment::viewer {
 // scene order:
 //   engine,time_s,pressure_Pa,phase_rad,force_x_N,force_y_N,force_z_N,force_N
 // (engine: its DEF name; force_N = |force|). Returns "" or the error.
-std::string writeWindForceCsv(const std::string& path, const std::vector<session::EngineDrape>& drapes,
+std::string writeWindForceCsv(const std::string& path, const std::vector<ClothEngine*>& engines,
                               const session::DrapeRecorder& recorder);
 
 }  // namespace figment::viewer

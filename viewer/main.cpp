@@ -49,6 +49,7 @@
 #include "session/SceneRenderer.h"
 #include "session/SceneSession.h"
 #include "session/SceneStaging.h"
+#include "sim/drape/DrapeReport.h"
 #include "viewer/DepthBufferOnly.h"
 #include "viewer/ImagePlan.h"
 #include "viewer/NodeCatalog.h"
@@ -61,7 +62,6 @@
 namespace {
 
 using figment::session::DrapeRecorder;
-using figment::session::EngineDrape;
 using figment::session::SceneRenderer;
 using figment::session::SceneSession;
 using figment::viewer::ImagePlan;
@@ -138,15 +138,15 @@ void reportProgress(figment::viewer::ProgressBar& bar, const ClothEngine& engine
 
 // A drape that is not clean says so in one line, however long it took (its verdict,
 // figment::DrapeReport::verdict); a clean one only when it took a second or more.
-void reportFinished(const std::string& scene, const EngineDrape& drape) {
-  const figment::DrapeReport& report = drape.report;
+void reportFinished(const std::string& scene, const ClothEngine& engine) {
+  const figment::DrapeReport& report = engine.lastRun();
   if (!report.verdict.empty()) {
-    std::cerr << "figment-view: " << figment::viewer::printableLine(scene + ": " + drape.label + ": " + report.verdict)
+    std::cerr << "figment-view: " << figment::viewer::printableLine(scene + ": " + engine.label() + ": " + report.verdict)
               << "\n";
     return;
   }
   if (report.wallSeconds < 1.0) return;  // short clean runs stay quiet
-  std::fprintf(stderr, "figment-view: %s: at rest after %.3g s simulated (%d steps, %.1f s)\n", drape.label.c_str(),
+  std::fprintf(stderr, "figment-view: %s: at rest after %.3g s simulated (%d steps, %.1f s)\n", engine.label().c_str(),
                report.run.simulatedTime, report.run.iterations, report.wallSeconds);
 }
 
@@ -193,15 +193,15 @@ std::string drapeAll(SceneSession& session, const std::string& scene) {
     reportProgress(bar, engine, p);
   };
   context.progressInterval = bar.shown() ? 0.2 : 1.0;
-  const std::vector<EngineDrape>& drapes = session.drape();
+  const std::vector<ClothEngine*>& engines = session.drape();
   context.progress = {};
   bar.clear();
-  for (const EngineDrape& drape : drapes)
-    if (!drape.error.empty()) return drape.error;
+  for (const ClothEngine* engine : engines)
+    if (!engine->lastError().empty()) return engine->lastError();
   // The guard's check of the draped shapes: its error is the one line, before any verdict.
   if (!session.shapeError().empty()) return session.shapeError();
-  for (const EngineDrape& drape : drapes) reportFinished(scene, drape);
-  for (ClothEngine* engine : session.engines())  // the cache's trouble is said, not fatal
+  for (const ClothEngine* engine : engines) reportFinished(scene, *engine);
+  for (ClothEngine* engine : engines)  // the cache's trouble is said, not fatal
     if (!engine->lastCacheMessage().empty())
       std::fprintf(stderr, "figment-view: %s: %s\n", engine->label().c_str(), engine->lastCacheMessage().c_str());
   return "";
@@ -376,11 +376,11 @@ int render(const Options& options, const std::optional<ImagePlan>& images) {
                                     : renderFrames(session, *recorder, plan, options, maps, outputs, renderWall, where);
   if (!error.empty()) return fail(where, error);
   if (!options.windForce.empty()) {
-    error = writeWindForceCsv(options.windForce, session.drapes(), *recorder);
+    error = writeWindForceCsv(options.windForce, session.engines(), *recorder);
     if (!error.empty()) return fail(options.windForce, error);
   }
   if (!options.stats.empty()) {
-    error = writeStatsJson(options.stats, options.scene, session.drapes(), fits, renderWall, plan.size);
+    error = writeStatsJson(options.stats, options.scene, session.engines(), fits, renderWall, plan.size);
     if (!error.empty()) return fail(options.stats, error);
   }
   outputs.keep();

@@ -6,13 +6,18 @@
 #include <string>
 #include <vector>
 
-#include "session/SceneSession.h"
+#include "sim/drape/DrapeReport.h"
+
+class ClothEngine;
 
 namespace figment::serve {
+
+// A scene's drapes, from its engines (in scene order).
+std::vector<DrapeReport> drapeReports(const std::vector<ClothEngine*>& engines);
 
 // "torn" when an edge of one drape ended past the tear stretch or an implicit step of it
 // failed at its smallest step; else "restless" when one still moved at its maxTime or was
 // held by a limiter in its last step; else "rest" (also for no garment at all).
-std::string drapeState(const std::vector<session::EngineDrape>& drapes);
+std::string drapeState(const std::vector<DrapeReport>& reports);
 
 }  // namespace figment::serve

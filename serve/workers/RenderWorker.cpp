@@ -133,7 +133,7 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
       const std::string why = fit_->unreachable(request.body, request.sex == "male" ? Sex::Male : Sex::Female);
       return why.empty() ? failure(500, error.what()) : unreachableBody(request, why);
     }
-    const std::vector<session::EngineDrape>& drapes = session_.drape();
+    const std::vector<DrapeReport> drapes = drapeReports(session_.drape());
     const std::string error = session_.firstError();
     if (!error.empty()) {
       session_.clear();
@@ -141,7 +141,7 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
     }
     OutfitScene::paintFitMaps(fitMaps_);
     sceneFromCache_ = true;
-    for (const session::EngineDrape& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.report.fromCache;
+    for (const DrapeReport& drape : drapes) sceneFromCache_ = sceneFromCache_ && drape.fromCache;
     sceneKey_ = request.sceneKey();
     sceneDrape_ = drapeState(drapes);
     Answer answer = drawView(request);

@@ -22,6 +22,7 @@
 #include "nodes/cloth/DrapeKey.h"
 #include "session/SceneSession.h"
 #include "sim/cloth/ClothSolver.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/TempDir.h"
 
 using namespace figment::session;
@@ -68,18 +69,18 @@ TEST_F(SceneSessionTest, DrapesEveryEngineOnceInSceneOrderWithItsOwnResult) {
   ASSERT_EQ(session.engines().size(), 2u);
   EXPECT_EQ(session.engines()[0]->evaluationCount(), 0) << "loading simulates nothing";
 
-  const std::vector<EngineDrape>& drapes = session.drape();
+  const std::vector<ClothEngine*>& drapes = session.drape();
   ASSERT_EQ(drapes.size(), 2u);
-  EXPECT_EQ(drapes[0].name, "First");
-  EXPECT_EQ(drapes[0].label, "ClothEngine 'First'");
-  EXPECT_EQ(drapes[0].error, "");
-  EXPECT_GT(drapes[0].report.run.iterations, 0);
-  EXPECT_EQ(drapes[0].report.triangles, 2);
-  EXPECT_EQ(figment::fieldName(drapes[0].report.method.integrator), std::string("HEUN"));
-  EXPECT_EQ(drapes[0].report.body.kind, "none");
-  EXPECT_EQ(drapes[1].name, "Second");
-  EXPECT_NE(drapes[1].error.find("thickness = -0.001 must be > 0"), std::string::npos) << drapes[1].error;
-  EXPECT_EQ(session.firstError(), drapes[1].error);
+  EXPECT_EQ(drapes[0]->getName().getString(), std::string("First"));
+  EXPECT_EQ(drapes[0]->label(), "ClothEngine 'First'");
+  EXPECT_EQ(drapes[0]->lastError(), "");
+  EXPECT_GT(drapes[0]->lastRun().run.iterations, 0);
+  EXPECT_EQ(drapes[0]->lastRun().triangles, 2);
+  EXPECT_EQ(figment::fieldName(drapes[0]->lastRun().method.integrator), std::string("HEUN"));
+  EXPECT_EQ(drapes[0]->lastRun().body.kind, "none");
+  EXPECT_EQ(drapes[1]->getName().getString(), std::string("Second"));
+  EXPECT_NE(drapes[1]->lastError().find("thickness = -0.001 must be > 0"), std::string::npos) << drapes[1]->lastError();
+  EXPECT_EQ(session.firstError(), drapes[1]->lastError());
   for (const ClothEngine* engine : session.engines()) EXPECT_EQ(engine->evaluationCount(), 1);
 
   ASSERT_NE(session.stage({64, 48}, ViewDirection{30.0, 10.0}), nullptr);
@@ -98,17 +99,17 @@ TEST_F(SceneSessionTest, SaysWhichDrapesAreNotCleanInOneLineEach) {
                                cloth("Broken", "thickness -0.001") + cloth("AlsoFalling", "timeStep 0.002") + "}\n");
   SceneSession session;
   ASSERT_TRUE(session.load(scene)) << session.loadError();
-  const std::vector<EngineDrape>& drapes = session.drape();
+  const std::vector<ClothEngine*>& drapes = session.drape();
   ASSERT_EQ(drapes.size(), 4u);
-  EXPECT_EQ(drapes[1].report.verdict, "");
-  EXPECT_TRUE(drapes[1].report.run.atRest);
-  EXPECT_EQ(drapes[1].report.maxTime, 1.0);  // the method that ran, its bound included
+  EXPECT_EQ(drapes[1]->lastRun().verdict, "");
+  EXPECT_TRUE(drapes[1]->lastRun().run.atRest);
+  EXPECT_EQ(drapes[1]->lastRun().maxTime, 1.0);  // the method that ran, its bound included
   const std::vector<std::string> lines = session.verdicts();
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].rfind("ClothEngine 'Falling': not at rest after maxTime 0.01 s (max speed 0.09", 0), 0u)
       << lines[0];
   EXPECT_EQ(lines[1].rfind("ClothEngine 'AlsoFalling': not at rest after maxTime 0.01 s", 0), 0u) << lines[1];
-  EXPECT_NEAR(drapes[0].report.run.maxStretch, 1.0, 1e-6);  // a falling square keeps its shape
+  EXPECT_NEAR(drapes[0]->lastRun().run.maxStretch, 1.0, 1e-6);  // a falling square keeps its shape
 }
 
 TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) {
@@ -118,11 +119,11 @@ TEST_F(SceneSessionTest, DrapingAgainSimulatesOnlyTheEnginesWhoseInputsChanged) 
   ASSERT_TRUE(session.load(scene)) << session.loadError();
   session.drape();
   session.engines()[1]->friction = 0.2;
-  const std::vector<EngineDrape>& drapes = session.drape();
+  const std::vector<ClothEngine*>& drapes = session.drape();
   EXPECT_EQ(session.engines()[0]->evaluationCount(), 1);
   EXPECT_EQ(session.engines()[1]->evaluationCount(), 2);
-  EXPECT_EQ(drapes[1].error, "");
-  EXPECT_GT(drapes[1].report.run.iterations, 0);
+  EXPECT_EQ(drapes[1]->lastError(), "");
+  EXPECT_GT(drapes[1]->lastRun().run.iterations, 0);
 }
 
 // The guard's draw-side check runs in the session, so every program that stages through it
@@ -249,9 +250,9 @@ TEST_F(SceneSessionTest, TwoSessionsInOneProcessKeepTheirOwnCachesAndObservers) 
   for (auto [scene, positions, steps] : {std::tuple{sceneA, &aloneA, &stepsA}, std::tuple{sceneB, &aloneB, &stepsB}}) {
     SceneSession alone;
     ASSERT_TRUE(alone.load(scene)) << alone.loadError();
-    ASSERT_EQ(alone.drape().front().error, "");
+    ASSERT_EQ(alone.drape().front()->lastError(), "");
     *positions = drapedPositions(alone);
-    *steps = alone.drapes().front().report.run.iterations;
+    *steps = alone.engines().front()->lastRun().run.iterations;
   }
   ASSERT_FALSE(sameBits(aloneA, aloneB));
   ASSERT_GE(stepsA, 128);  // enough for progress reports
@@ -268,8 +269,8 @@ TEST_F(SceneSessionTest, TwoSessionsInOneProcessKeepTheirOwnCachesAndObservers) 
   Watch watchA, watchB;
   watchA.watchProgress(a.context());
   watchB.watchProgress(b.context());
-  ASSERT_EQ(a.drape().front().error, "");
-  ASSERT_EQ(b.drape().front().error, "");
+  ASSERT_EQ(a.drape().front()->lastError(), "");
+  ASSERT_EQ(b.drape().front()->lastError(), "");
   EXPECT_TRUE(sameBits(drapedPositions(a), aloneA));
   EXPECT_TRUE(sameBits(drapedPositions(b), aloneB));
   const ClothEngine* engineA = a.engines().front();
@@ -287,8 +288,8 @@ TEST_F(SceneSessionTest, TwoSessionsInOneProcessKeepTheirOwnCachesAndObservers) 
   watchB.watchSteps(b.context());
   a.engines().front()->restPoints.touch();
   b.engines().front()->restPoints.touch();
-  ASSERT_EQ(a.drape().front().error, "");
-  ASSERT_EQ(b.drape().front().error, "");
+  ASSERT_EQ(a.drape().front()->lastError(), "");
+  ASSERT_EQ(b.drape().front()->lastError(), "");
   EXPECT_TRUE(sameBits(drapedPositions(a), aloneA));
   EXPECT_TRUE(sameBits(drapedPositions(b), aloneB));
   EXPECT_EQ(watchA.stepsFrom, std::set<const ClothEngine*>{engineA});
@@ -329,10 +330,10 @@ TEST_F(SceneSessionTest, AdoptsAGraphBuiltInCodeAsALoadedOne) {
   ASSERT_EQ(session.engines().size(), 1u);
   EXPECT_EQ(session.engines().front(), engine);
   EXPECT_EQ(engine->drapeContext(), session.sharedContext());
-  const std::vector<EngineDrape>& drapes = session.drape();
+  const std::vector<ClothEngine*>& drapes = session.drape();
   ASSERT_EQ(drapes.size(), 1u);
-  EXPECT_EQ(drapes.front().error, "");
-  EXPECT_GT(drapes.front().report.run.iterations, 0);  // it simulated
+  EXPECT_EQ(drapes.front()->lastError(), "");
+  EXPECT_GT(drapes.front()->lastRun().run.iterations, 0);  // it simulated
   EXPECT_NE(session.stage(ImageSize{64, 48}, ViewDirection{}), nullptr);
   engine->ref();
   session.clear();

@@ -31,12 +31,9 @@ TEST(WindForceCsv, ARowPerSampleWithTheForcesNorm) {
   square.drape();
   const std::vector<session::WindSample>& samples = recorder.windSamples(square.engine());
   ASSERT_FALSE(samples.empty());
-  session::EngineDrape drape;
-  drape.engine = &square.engine();
-  drape.name = "Drape";
   const test::TempDir dir;
   const std::string path = (dir.path() / "wind.csv").string();
-  ASSERT_EQ(viewer::writeWindForceCsv(path, {drape}, recorder), "");
+  ASSERT_EQ(viewer::writeWindForceCsv(path, {&square.engine()}, recorder), "");
   const std::vector<std::string> rows = lines(path);
   ASSERT_EQ(rows.size(), samples.size() + 1);
   EXPECT_EQ(rows[0], "engine,time_s,pressure_Pa,phase_rad,force_x_N,force_y_N,force_z_N,force_N");
@@ -54,12 +51,10 @@ TEST(WindForceCsv, AnUnwritablePathIsAnErrorAndNoFile) {
   const test::FallingSquare square(0.01);
   ASSERT_TRUE(square.read());
   const session::DrapeRecorder recorder(square.context(), {}, 0.0);
-  session::EngineDrape drape;
-  drape.engine = &square.engine();
   const test::TempDir dir;
   dir.file("blocker", "a file where the folder would be\n");
   const std::string path = (dir.path() / "blocker" / "wind.csv").string();  // its folder is a file
-  EXPECT_NE(viewer::writeWindForceCsv(path, {drape}, recorder), "");
+  EXPECT_NE(viewer::writeWindForceCsv(path, {&square.engine()}, recorder), "");
   EXPECT_FALSE(std::filesystem::exists(path));
 }
 

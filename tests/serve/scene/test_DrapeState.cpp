@@ -6,15 +6,15 @@
 #include "serve/scene/DrapeState.h"
 
 using figment::serve::drapeState;
-using figment::session::EngineDrape;
+using figment::DrapeReport;
 
 namespace {
 
 // A drape that came to rest whole, as the drape cache records one.
-EngineDrape atRest() {
-  EngineDrape drape;
-  drape.report.run.atRest = true;
-  drape.report.run.maxStretch = 1.08;  // the shipped drapes end at 1.03 to 1.14
+DrapeReport atRest() {
+  DrapeReport drape;
+  drape.run.atRest = true;
+  drape.run.maxStretch = 1.08;  // the shipped drapes end at 1.03 to 1.14
   return drape;
 }
 
@@ -26,22 +26,22 @@ TEST(DrapeState, DrapesAtRestAreRest) {
 }
 
 TEST(DrapeState, ADrapeStillMovingOrHeldByALimiterIsRestless) {
-  EngineDrape moving = atRest(), clamped = atRest(), limited = atRest();
-  moving.report.run.atRest = false;
-  clamped.report.run.clampedSectionShareAtEnd = 0.01;
-  limited.report.run.limitedNodeShareAtEnd = 0.02;
-  for (const EngineDrape& drape : {moving, clamped, limited}) EXPECT_EQ(drapeState({atRest(), drape}), "restless");
+  DrapeReport moving = atRest(), clamped = atRest(), limited = atRest();
+  moving.run.atRest = false;
+  clamped.run.clampedSectionShareAtEnd = 0.01;
+  limited.run.limitedNodeShareAtEnd = 0.02;
+  for (const DrapeReport& drape : {moving, clamped, limited}) EXPECT_EQ(drapeState({atRest(), drape}), "restless");
 }
 
 TEST(DrapeState, AnEdgePastTheTearStretchOrAFailedStepIsTorn) {
-  EngineDrape stretched = atRest(), failed = atRest(), restlessToo = atRest();
-  stretched.report.run.maxStretch = 1.51;  // DrapeVerdict::kTearStretch 1.5
-  failed.report.run.implicitCosts.failedSteps = 1;
-  restlessToo.report.run.atRest = false;
+  DrapeReport stretched = atRest(), failed = atRest(), restlessToo = atRest();
+  stretched.run.maxStretch = 1.51;  // DrapeVerdict::kTearStretch 1.5
+  failed.run.implicitCosts.failedSteps = 1;
+  restlessToo.run.atRest = false;
   EXPECT_EQ(drapeState({stretched}), "torn");
   EXPECT_EQ(drapeState({atRest(), failed}), "torn");
   EXPECT_EQ(drapeState({restlessToo, stretched}), "torn");  // the worse of the two
-  EngineDrape atTheBound = atRest();
-  atTheBound.report.run.maxStretch = 1.5;  // not past it
+  DrapeReport atTheBound = atRest();
+  atTheBound.run.maxStretch = 1.5;  // not past it
   EXPECT_EQ(drapeState({atTheBound}), "rest");
 }

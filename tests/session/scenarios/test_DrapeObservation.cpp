@@ -14,6 +14,7 @@
 #include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
 #include "session/DrapeRecorder.h"
+#include "sim/drape/DrapeReport.h"
 #include "session/FrameDisplay.h"
 #include "session/SceneSession.h"
 #include "sim/cloth/ClothSolver.h"
@@ -56,7 +57,7 @@ TEST_F(DrapeObservation, ProgressComesEvery64StepsWithAZeroInterval) {
     reports.push_back(p);
   };
   session_.context().progressInterval = 0.0;
-  ASSERT_EQ(session_.drape().front().error, "");
+  ASSERT_EQ(session_.drape().front()->lastError(), "");
   ASSERT_EQ(reports.size(), 500u / 64u);  // steps 64, 128, ..., 448
   for (size_t i = 0; i < reports.size(); ++i) {
     EXPECT_EQ(reports[i].iterations, 64 * int(i + 1));
@@ -70,8 +71,8 @@ TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead
   // A kept drape of this very scene would otherwise be read in place of simulating it.
   session_.context().cache = std::make_shared<figment::DrapeCache>(dir_.path() / "cache", 1u << 20);
   load(fallingSquare(0.05));
-  ASSERT_EQ(session_.drape().front().error, "");
-  ASSERT_FALSE(session_.drapes().front().report.fromCache);
+  ASSERT_EQ(session_.drape().front()->lastError(), "");
+  ASSERT_FALSE(session_.engines().front()->lastRun().fromCache);
   SceneSession again(session_.sharedContext());  // the same cache
   ASSERT_TRUE(again.load(dir_.file("scene.iv", fallingSquare(0.05))));
   std::vector<double> times;
@@ -80,8 +81,8 @@ TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead
     times.push_back(solver.time());
     steps.push_back(solver.iterations());
   };
-  ASSERT_EQ(again.drape().front().error, "");
-  EXPECT_FALSE(again.drapes().front().report.fromCache);
+  ASSERT_EQ(again.drape().front()->lastError(), "");
+  EXPECT_FALSE(again.engines().front()->lastRun().fromCache);
   ASSERT_EQ(times.size(), 51u);  // before the first step, then after each of 50
   for (size_t i = 0; i < times.size(); ++i) {
     EXPECT_EQ(steps[i], int(i));
@@ -92,7 +93,7 @@ TEST_F(DrapeObservation, TheObserverSeesTheStartAndEveryStepAndTheCacheIsNotRead
 TEST_F(DrapeObservation, TheRecorderKeepsTheStateAtEachFrameTimeAndTheLastAfterTheRun) {
   ClothEngine& engine = load(fallingSquare(0.2));
   DrapeRecorder recorder(session_.sharedContext(), {0.0, 0.1, 0.2, 0.5}, 0.0);
-  ASSERT_EQ(session_.drape().front().error, "");
+  ASSERT_EQ(session_.drape().front()->lastError(), "");
   ASSERT_TRUE(recorder.observed(engine));
   const auto height = [&](size_t k) { return recorder.frame(engine, k).at(0)[1]; };
   EXPECT_FLOAT_EQ(height(0), 1.0f);  // the start: the rest shape
@@ -107,7 +108,7 @@ TEST_F(DrapeObservation, TheRecorderKeepsTheStateAtEachFrameTimeAndTheLastAfterT
 TEST_F(DrapeObservation, AFrameShownReplacesTheDrapeWhereItIsDrawn) {
   ClothEngine& engine = load(fallingSquare(0.1));
   DrapeRecorder recorder(session_.sharedContext(), {0.0, 0.1}, 0.0);
-  ASSERT_EQ(session_.drape().front().error, "");
+  ASSERT_EQ(session_.drape().front()->lastError(), "");
   auto* points = static_cast<SoCoordinate3*>(SoNode::getByName("Points"));
   ASSERT_NE(points, nullptr);
   showPositions(engine, recorder.frame(engine, 0));
@@ -123,7 +124,7 @@ TEST_F(DrapeObservation, WindSamplesAreTheModelsForceOnTheWholeGarment) {
   ClothEngine& engine =
       load(fallingSquare(1.0, "windDirection 0 1 0 windAmplitude 0.5 windFrequency 2 windPhaseInterval 0.25"));
   DrapeRecorder recorder(session_.sharedContext(), {}, 0.01);
-  ASSERT_EQ(session_.drape().front().error, "");
+  ASSERT_EQ(session_.drape().front()->lastError(), "");
   const std::vector<WindSample>& samples = recorder.windSamples(engine);
   ASSERT_GE(samples.size(), 100u);
   ASSERT_LE(samples.size(), 101u);
