@@ -11,8 +11,8 @@
 
 #include "nodes/cloth/ClothEngine.h"
 #include "session/SceneSession.h"
-#include "sim/drape/DrapeReport.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/DrapeReport.h"
 
 namespace figment::bench {
 

@@ -36,9 +36,9 @@ nlohmann::json fitJson(const session::EngineFit& fit) {
 }
 }  // namespace
 
-std::string writeStatsJson(const std::string& path, const std::string& scene,
-                           const std::vector<ClothEngine*>& engines, const std::vector<session::EngineFit>& fits,
-                           double renderWallSeconds, const ImageSize& size) {
+std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<ClothEngine*>& engines,
+                           const std::vector<session::EngineFit>& fits, double renderWallSeconds,
+                           const ImageSize& size) {
   nlohmann::json garments = nlohmann::json::array();
   for (const ClothEngine* engine : engines) {
     nlohmann::json garment = nlohmann::json::parse(drapeReportJson(engine->lastRun()));

@@ -18,8 +18,8 @@ namespace figment::viewer {
 // in `fits` (session/EngineFit.h) has "fit": {"catalogue", "text", "regions": {REGION:
 // {"stretch_pct", "max_stretch_pct", "ease_mm", "girth_ease_cm", "pressure_kpa"[,
 // "verdict"]}}}, as figment-size --json gives them. Returns "" or the error.
-std::string writeStatsJson(const std::string& path, const std::string& scene,
-                           const std::vector<ClothEngine*>& engines, const std::vector<session::EngineFit>& fits,
-                           double renderWallSeconds, const ImageSize& size);
+std::string writeStatsJson(const std::string& path, const std::string& scene, const std::vector<ClothEngine*>& engines,
+                           const std::vector<session::EngineFit>& fits, double renderWallSeconds,
+                           const ImageSize& size);
 
 }  // namespace figment::viewer

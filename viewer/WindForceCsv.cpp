@@ -16,8 +16,8 @@ std::string writeWindForceCsv(const std::string& path, const std::vector<ClothEn
     out << "engine,time_s,pressure_Pa,phase_rad,force_x_N,force_y_N,force_z_N,force_N\n";
     for (const ClothEngine* engine : engines)
       for (const session::WindSample& s : recorder.windSamples(*engine))
-        out << engine->getName().getString() << ',' << s.time << ',' << s.pressure << ',' << s.phase << ',' << s.force.x() << ','
-            << s.force.y() << ',' << s.force.z() << ',' << s.force.norm() << '\n';
+        out << engine->getName().getString() << ',' << s.time << ',' << s.pressure << ',' << s.phase << ','
+            << s.force.x() << ',' << s.force.y() << ',' << s.force.z() << ',' << s.force.norm() << '\n';
     out.close();
     return out ? "" : std::string("cannot write the wind force: ") + std::strerror(errno);
   });

@@ -141,8 +141,8 @@ void reportProgress(figment::viewer::ProgressBar& bar, const ClothEngine& engine
 void reportFinished(const std::string& scene, const ClothEngine& engine) {
   const figment::DrapeReport& report = engine.lastRun();
   if (!report.verdict.empty()) {
-    std::cerr << "figment-view: " << figment::viewer::printableLine(scene + ": " + engine.label() + ": " + report.verdict)
-              << "\n";
+    std::cerr << "figment-view: "
+              << figment::viewer::printableLine(scene + ": " + engine.label() + ": " + report.verdict) << "\n";
     return;
   }
   if (report.wallSeconds < 1.0) return;  // short clean runs stay quiet

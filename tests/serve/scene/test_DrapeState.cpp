@@ -5,8 +5,8 @@
 
 #include "serve/scene/DrapeState.h"
 
-using figment::serve::drapeState;
 using figment::DrapeReport;
+using figment::serve::drapeState;
 
 namespace {
 

@@ -14,10 +14,10 @@
 #include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
 #include "session/DrapeRecorder.h"
-#include "sim/drape/DrapeReport.h"
 #include "session/FrameDisplay.h"
 #include "session/SceneSession.h"
 #include "sim/cloth/ClothSolver.h"
+#include "sim/drape/DrapeReport.h"
 #include "support/TempDir.h"
 
 using namespace figment::session;
