@@ -18,7 +18,7 @@ namespace figment {
 
 namespace {
 constexpr std::array<char, 16> kMagic = {'f', 'i', 'g', 'm', 'e', 'n', 't', '-',
-                                         'd', 'r', 'a', 'p', 'e', ' ', '1', '\n'};
+                                         'd', 'r', 'a', 'p', 'e', ' ', '2', '\n'};  // 2: one record
 // Three digests of a key, each FNV-1a from its own basis.
 constexpr std::uint64_t kBases[3] = {14695981039346656037ull, 0x84222325cbf29ce4ull, 0x9e3779b97f4a7c15ull};
 
@@ -34,14 +34,6 @@ std::uint64_t checksum(const std::vector<unsigned char>& bytes) {
   return hash.value();
 }
 
-std::vector<unsigned char> payloadOf(const CachedDrape& drape) {
-  ByteWriter out;
-  out.putArray(drape.positions);
-  out.putArray(drape.sectionIndices);
-  out.putArray(drape.stats);
-  return out.take();
-}
-
 // An entry's name: two digests of its key, so the folder and a shared store name it alike.
 std::string stemOf(const std::string& key) {
   char name[40];
@@ -50,9 +42,8 @@ std::string stemOf(const std::string& key) {
 }
 
 // An entry's bytes: the magic, a third digest of the key, the payload's size and checksum,
-// the payload.
-std::vector<unsigned char> encode(const std::string& key, const CachedDrape& drape) {
-  const std::vector<unsigned char> payload = payloadOf(drape);
+// the payload (the record).
+std::vector<unsigned char> encode(const std::string& key, const std::vector<unsigned char>& payload) {
   ByteWriter entry;
   entry.put(kMagic);
   entry.put(digest(key, 2));
@@ -63,8 +54,8 @@ std::vector<unsigned char> encode(const std::string& key, const CachedDrape& dra
   return bytes;
 }
 
-// The drape an entry's bytes hold, if they are sound and made for `key`.
-std::optional<CachedDrape> decode(const std::vector<unsigned char>& bytes, const std::string& key) {
+// The record an entry's bytes hold, if they are sound and made for `key`.
+std::optional<std::vector<unsigned char>> decode(const std::vector<unsigned char>& bytes, const std::string& key) {
   ByteReader header(bytes);
   std::array<char, 16> magic{};
   std::uint64_t keyDigest = 0, size = 0, sum = 0;
@@ -72,13 +63,9 @@ std::optional<CachedDrape> decode(const std::vector<unsigned char>& bytes, const
                      header.get(size) && header.get(sum);
   const std::size_t headerSize = kMagic.size() + 3 * sizeof(std::uint64_t);
   if (!sound || bytes.size() != headerSize + size) return std::nullopt;
-  const std::vector<unsigned char> payload(bytes.begin() + headerSize, bytes.end());
-  ByteReader body(payload);
-  CachedDrape drape;
-  if (checksum(payload) != sum || !body.getArray(drape.positions) || !body.getArray(drape.sectionIndices) ||
-      !body.getArray(drape.stats) || !body.done())
-    return std::nullopt;
-  return drape;
+  std::vector<unsigned char> payload(bytes.begin() + headerSize, bytes.end());
+  if (checksum(payload) != sum) return std::nullopt;
+  return payload;
 }
 
 std::string writeEntry(const std::filesystem::path& path, const std::vector<unsigned char>& bytes) {
@@ -109,13 +96,13 @@ std::string DrapeCache::sharedName(const std::string& key) const {
   return "drape:" + stemOf(key);
 }
 
-std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string& problem) const {
+std::optional<std::vector<unsigned char>> DrapeCache::find(const std::string& key, std::string& problem) const {
   problem.clear();
   const std::filesystem::path path = entryPath(key);
   std::ifstream in(path, std::ios::binary);
   if (!in) return shared_ ? findShared(key, problem) : std::nullopt;
   const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  std::optional<CachedDrape> drape = decode(bytes, key);
+  std::optional<std::vector<unsigned char>> drape = decode(bytes, key);
   std::error_code ec;
   if (!drape) {
     std::filesystem::remove(path, ec);
@@ -126,12 +113,12 @@ std::optional<CachedDrape> DrapeCache::find(const std::string& key, std::string&
   return drape;
 }
 
-std::optional<CachedDrape> DrapeCache::findShared(const std::string& key, std::string& problem) const {
+std::optional<std::vector<unsigned char>> DrapeCache::findShared(const std::string& key, std::string& problem) const {
   const std::string name = sharedName(key);
   const std::optional<std::string> kept = shared_->get(name);
   if (!kept) return std::nullopt;
   const std::vector<unsigned char> bytes(kept->begin(), kept->end());
-  std::optional<CachedDrape> drape = decode(bytes, key);
+  std::optional<std::vector<unsigned char>> drape = decode(bytes, key);
   if (!drape) {
     shared_->remove(name);
     problem = "shared entry " + name + ": damaged or foreign, removed; draped again";
@@ -143,8 +130,8 @@ std::optional<CachedDrape> DrapeCache::findShared(const std::string& key, std::s
   return drape;
 }
 
-std::string DrapeCache::store(const std::string& key, const CachedDrape& drape) const {
-  const std::vector<unsigned char> bytes = encode(key, drape);
+std::string DrapeCache::store(const std::string& key, const std::vector<unsigned char>& record) const {
+  const std::vector<unsigned char> bytes = encode(key, record);
   if (shared_) shared_->put(sharedName(key), std::string(bytes.begin(), bytes.end()));
   std::error_code ec;
   std::filesystem::create_directories(folder_, ec);

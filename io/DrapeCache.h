@@ -1,6 +1,7 @@
 #pragma once
 // Finished drapes kept on disk, so rendering another view of a scene, or running it
-// again, does not simulate again. An entry is keyed by a text that holds everything
+// again, does not simulate again. An entry holds a drape's record (io/DrapeRecord.h: its
+// report, positions and sections) as bytes the cache does not read; it is keyed by a text that holds everything
 // that shaped the drape (nodes/cloth/DrapeKey.h writes it: every engine input, the
 // body, the files they read, the node library's own build); its file is named by two 64-bit
 // digests of the key and carries a third, and a checksum of its contents, so a damaged
@@ -24,12 +25,6 @@ namespace figment {
 
 class SharedCacheStore;
 
-struct CachedDrape {
-  std::vector<std::array<float, 3>> positions;  // the engine's output, as it gave it
-  std::vector<std::int32_t> sectionIndices;     // its levelCoordIndex
-  std::vector<unsigned char> stats;             // the run's statistics, as the engine writes them (its own version)
-};
-
 class DrapeCache {
  public:
   DrapeCache(std::filesystem::path folder, std::uintmax_t maxBytes,
@@ -39,13 +34,13 @@ class DrapeCache {
   static std::filesystem::path userFolder();
 
   const std::filesystem::path& folder() const { return folder_; }
-  // The entry for `key`, if there is a sound one. A damaged one is removed and
+  // The record kept for `key`, if there is a sound entry. A damaged one is removed and
   // `problem` says so (naming the file); otherwise `problem` is left empty.
-  std::optional<CachedDrape> find(const std::string& key, std::string& problem) const;
-  // Keeps `drape` under `key`; "" or the error, naming the file or folder.
-  std::string store(const std::string& key, const CachedDrape& drape) const;
-  // Removes the entry for `key`, if any: one the engine cannot read (a record of another
-  // version) goes, to be made again.
+  std::optional<std::vector<unsigned char>> find(const std::string& key, std::string& problem) const;
+  // Keeps `record` under `key`; "" or the error, naming the file or folder.
+  std::string store(const std::string& key, const std::vector<unsigned char>& record) const;
+  // Removes the entry for `key`, if any: one whose record the engine cannot read (of
+  // another version) goes, to be made again.
   void remove(const std::string& key) const;
   // The file an entry for `key` lives in.
   std::filesystem::path entryPath(const std::string& key) const;
@@ -54,7 +49,7 @@ class DrapeCache {
 
  private:
   // The entry the shared store holds for `key`, checked and copied into the folder.
-  std::optional<CachedDrape> findShared(const std::string& key, std::string& problem) const;
+  std::optional<std::vector<unsigned char>> findShared(const std::string& key, std::string& problem) const;
   void trim() const;
 
   std::filesystem::path folder_;

@@ -222,8 +222,8 @@ void ClothEngine::evaluate() {
     try {
       figment::GarmentDrape drape = d.simulate(*this);
       out.take(drape);
+      cache.keep(key, drape, d.cacheMessage);
       d.report = std::move(drape.report);
-      cache.keep(key, out, d.report, d.cacheMessage);
     } catch (const std::exception& e) {
       d.error = label() + ": " + e.what();
     } catch (...) {

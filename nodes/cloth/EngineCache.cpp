@@ -3,7 +3,7 @@
 #include <chrono>
 
 #include "io/DrapeCache.h"
-#include "io/DrapeReportRecord.h"
+#include "io/DrapeRecord.h"
 
 namespace figment {
 
@@ -20,31 +20,26 @@ std::optional<DrapeReport> EngineCache::read(const std::string& key, int numRest
                                              std::string& message) const {
   if (!cache_ || key.empty()) return std::nullopt;
   const auto start = std::chrono::steady_clock::now();
-  const std::optional<CachedDrape> cached = cache_->find(key, message);
-  if (!cached || static_cast<int>(cached->positions.size()) != numRest) return std::nullopt;
+  const std::optional<std::vector<unsigned char>> record = cache_->find(key, message);
+  if (!record) return std::nullopt;
   std::string problem;
-  std::optional<DrapeReport> report = readDrapeReport(cached->stats, problem);
-  if (!report) {
+  std::optional<GarmentDrape> drape = readDrapeRecord(*record, problem);
+  if (!drape) {
     cache_->remove(key);
     message = cache_->entryPath(key).string() + ": " + problem + ", removed; draped again";
     return std::nullopt;
   }
-  out.positions.clear();
-  for (const auto& p : cached->positions) out.positions.emplace_back(p[0], p[1], p[2]);
-  out.indices = cached->sectionIndices;
-  report->fromCache = true;
-  report->wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return report;
+  if (static_cast<int>(drape->positions.size()) != numRest) return std::nullopt;
+  out.take(*drape);
+  DrapeReport& report = drape->report;
+  report.fromCache = true;
+  report.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(report);
 }
 
-void EngineCache::keep(const std::string& key, const EngineOutput& out, const DrapeReport& report,
-                       std::string& message) const {
+void EngineCache::keep(const std::string& key, const GarmentDrape& drape, std::string& message) const {
   if (!cache_ || key.empty()) return;
-  CachedDrape drape;
-  for (const SbVec3f& p : out.positions) drape.positions.push_back({p[0], p[1], p[2]});
-  drape.sectionIndices = out.indices;
-  drape.stats = writeDrapeReport(report);
-  const std::string problem = cache_->store(key, drape);
+  const std::string problem = cache_->store(key, writeDrapeRecord(drape));
   if (!problem.empty()) message = "drape cache: " + problem;
 }
 

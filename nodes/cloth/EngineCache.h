@@ -1,7 +1,7 @@
 #pragma once
 // Internal to figment_nodes (not installed): a ClothEngine's output, from a drape or from
-// the drape cache (io/DrapeCache.h): read from an entry, or kept in one, with the drape's
-// report as a record beside it (io/DrapeReportRecord.h).
+// the drape cache (io/DrapeCache.h): read from an entry, or kept in one, as the drape's
+// record (io/DrapeRecord.h: its report, positions and sections).
 
 #include <Inventor/SbVec3f.h>
 
@@ -37,8 +37,8 @@ class EngineCache {
   // read it. An entry whose record this build cannot read (another version, damaged) is
   // removed and `message` says so; nullopt then, and when there is none.
   std::optional<DrapeReport> read(const std::string& key, int numRest, EngineOutput& out, std::string& message) const;
-  // Keeps `out` and `report` under `key`; `message` says what went wrong, if anything.
-  void keep(const std::string& key, const EngineOutput& out, const DrapeReport& report, std::string& message) const;
+  // Keeps `drape` under `key`; `message` says what went wrong, if anything.
+  void keep(const std::string& key, const GarmentDrape& drape, std::string& message) const;
 
  private:
   const DrapeCache* cache_;

@@ -4,7 +4,7 @@
 // drape's levels and settling, where it came from, and its verdict. Every front end reads
 // this one report (ClothEngine::lastRun, the session, figment-view --stats, the service's
 // X-Figment-Drape, the bench), and the drape cache keeps it beside the positions
-// (io/DrapeReportRecord.h).
+// (io/DrapeRecord.h).
 
 #include <string>
 

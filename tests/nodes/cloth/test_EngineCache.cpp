@@ -7,7 +7,7 @@
 #include <cstring>
 
 #include "io/DrapeCache.h"
-#include "io/DrapeReportRecord.h"
+#include "io/DrapeRecord.h"
 #include "nodes/cloth/EngineCache.h"
 #include "support/TempDir.h"
 
@@ -46,7 +46,7 @@ TEST(EngineCache, WithoutACacheNothingIsReadOrKept) {
   EXPECT_FALSE(none);
   EngineOutput out = restOutput(4);
   std::string message;
-  none.keep("key", out, twoTriangles().report, message);
+  none.keep("key", twoTriangles(), message);
   EXPECT_FALSE(none.read("key", 4, out, message));
   EXPECT_EQ(message, "");
 }
@@ -59,7 +59,7 @@ TEST(EngineCache, AKeptDrapeReadsBackWithItsReportFromTheCache) {
   const figment::GarmentDrape drape = twoTriangles();
   made.take(drape);
   std::string message;
-  cache.keep("dress", made, drape.report, message);
+  cache.keep("dress", drape, message);
   EXPECT_EQ(message, "");
   EngineOutput back = restOutput(4);
   const std::optional<figment::DrapeReport> report = cache.read("dress", 4, back, message);
@@ -78,14 +78,12 @@ TEST(EngineCache, ARecordOfAnotherVersionIsRemovedAndSaid) {
   const TempDir dir;
   const figment::DrapeCache drapes(dir.path(), 1 << 20);
   const EngineCache cache(&drapes);
-  EngineOutput made = restOutput(4);
-  made.take(twoTriangles());
   std::string message;
-  cache.keep("dress", made, twoTriangles().report, message);
-  std::optional<figment::CachedDrape> entry = drapes.find("dress", message);
+  cache.keep("dress", twoTriangles(), message);
+  std::optional<std::vector<unsigned char>> entry = drapes.find("dress", message);
   ASSERT_TRUE(entry) << message;
-  const std::uint32_t later = figment::kDrapeReportRecordVersion + 1;
-  std::memcpy(entry->stats.data(), &later, sizeof later);
+  const std::uint32_t later = figment::kDrapeRecordVersion + 1;
+  std::memcpy(entry->data(), &later, sizeof later);  // a record starts with its version
   ASSERT_EQ(drapes.store("dress", *entry), "");
   EngineOutput back = restOutput(4);
   EXPECT_FALSE(cache.read("dress", 4, back, message));

@@ -14,7 +14,7 @@
 #include <memory>
 
 #include "io/DrapeCache.h"
-#include "io/DrapeReportRecord.h"
+#include "io/DrapeRecord.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/DrapeContext.h"
@@ -191,11 +191,11 @@ TEST(DrapeCacheEngine, ARecordOfAnotherVersionIsDroppedSaidAndMadeAgain) {
   const std::vector<SbVec3f> first = drape(engine);
   const std::string key = figment::drapeKey(engine, "");
   std::string problem;
-  std::optional<figment::CachedDrape> entry = cache.cache().find(key, problem);
+  std::optional<std::vector<unsigned char>> entry = cache.cache().find(key, problem);
   ASSERT_TRUE(entry) << problem;
   // A sound entry (its checksum matches) whose record says it is of a later version.
-  const std::uint32_t later = figment::kDrapeReportRecordVersion + 1;
-  std::memcpy(entry->stats.data(), &later, sizeof later);
+  const std::uint32_t later = figment::kDrapeRecordVersion + 1;
+  std::memcpy(entry->data(), &later, sizeof later);  // a record starts with its version
   ASSERT_EQ(cache.cache().store(key, *entry), "");
   engine.restPoints.touch();
   const std::vector<SbVec3f> second = drape(engine);

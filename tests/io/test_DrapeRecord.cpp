@@ -1,17 +1,20 @@
-// The drape cache's record of a drape's report: every field comes back as written (each
-// set to a value of its own, so a field read into another's place shows); a record of
-// another version, one cut short and one with bytes after its end are refused, naming
-// why; a bool byte other than 0 or 1, or a method's enumeration past its values, is damage.
+// The drape cache's record of a drape: every field of its report comes back as written
+// (each set to a value of its own, so a field read into another's place shows), and its
+// positions and sections as the engine draws them; a record of another version, one cut
+// short and one with bytes after its end are refused, naming why; a bool byte other than 0
+// or 1, a method's enumeration past its values, a position that is not finite or a
+// section past the positions is damage.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 
-#include "io/DrapeReportRecord.h"
+#include "io/DrapeRecord.h"
 
 using figment::DrapeReport;
-using figment::readDrapeReport;
-using figment::writeDrapeReport;
+using figment::GarmentDrape;
+using figment::readDrapeRecord;
+using figment::writeDrapeRecord;
 
 namespace {
 
@@ -93,47 +96,88 @@ void expectSame(const DrapeReport& a, const DrapeReport& b) {
   EXPECT_EQ(a.verdict, b.verdict);
 }
 
+// A drape of three points and one section, with every field of its report set.
+GarmentDrape everyPartSet() {
+  GarmentDrape drape;
+  drape.report = everyFieldSet();
+  drape.positions = {{0.25, 1.0, -0.5}, {std::nextafter(1.0f, 2.0f), 0.0, 3e-7}, {-1.0, 2.0, 0.125}};
+  drape.sections = {{0, 2, 1}};
+  return drape;
+}
+
+// `report` through a record (of a drape with no points) and back.
+std::optional<DrapeReport> roundTrip(const DrapeReport& report, std::string& problem) {
+  GarmentDrape drape;
+  drape.report = report;
+  std::optional<GarmentDrape> read = readDrapeRecord(writeDrapeRecord(drape), problem);
+  if (!read) return std::nullopt;
+  return read->report;
+}
+
 std::string problemOf(const std::vector<unsigned char>& record) {
   std::string problem;
-  EXPECT_FALSE(readDrapeReport(record, problem));
+  EXPECT_FALSE(readDrapeRecord(record, problem));
   return problem;
 }
 
 }  // namespace
 
-TEST(DrapeReportRecord, EveryFieldComesBackAsWritten) {
+TEST(DrapeRecord, EveryFieldComesBackAsWritten) {
   const DrapeReport written = everyFieldSet();
   std::string problem = "not cleared";
-  const std::optional<DrapeReport> read = readDrapeReport(writeDrapeReport(written), problem);
+  const std::optional<DrapeReport> read = roundTrip(written, problem);
   ASSERT_TRUE(read) << problem;
   EXPECT_EQ(problem, "");
   expectSame(*read, written);
-  const std::optional<DrapeReport> empty = readDrapeReport(writeDrapeReport({}), problem);
+  const std::optional<DrapeReport> empty = roundTrip({}, problem);
   ASSERT_TRUE(empty) << problem;
   expectSame(*empty, DrapeReport{});
   DrapeReport noLimit = written;
   noLimit.method.limit.reset();
-  EXPECT_EQ(readDrapeReport(writeDrapeReport(noLimit), problem)->method, noLimit.method);
+  EXPECT_EQ(roundTrip(noLimit, problem)->method, noLimit.method);
 }
 
-TEST(DrapeReportRecord, StartsWithItsVersion) {
-  const std::vector<unsigned char> record = writeDrapeReport(everyFieldSet());
+// Positions as the engine draws them: floats, so a float's bits come back whole.
+TEST(DrapeRecord, PositionsAndSectionsComeBackAsFloatsAndTriples) {
+  const GarmentDrape written = everyPartSet();
+  std::string problem;
+  const std::optional<GarmentDrape> read = readDrapeRecord(writeDrapeRecord(written), problem);
+  ASSERT_TRUE(read) << problem;
+  ASSERT_EQ(read->positions.size(), 3u);
+  for (size_t i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(read->positions[i][k], double(float(written.positions[i][k])));
+  EXPECT_EQ(read->positions[1].x(), double(std::nextafter(1.0f, 2.0f)));
+  EXPECT_EQ(read->sections, written.sections);
+  EXPECT_FALSE(read->sewing);
+}
+
+TEST(DrapeRecord, APositionNotFiniteOrASectionPastThePositionsIsDamage) {
+  GarmentDrape nan = everyPartSet(), past = everyPartSet(), negative = everyPartSet();
+  nan.positions[1].y() = std::nan("");
+  past.sections = {{0, 1, 3}};
+  negative.sections = {{0, -1, 2}};
+  for (const GarmentDrape* drape : {&nan, &past, &negative})
+    EXPECT_EQ(problemOf(writeDrapeRecord(*drape)), "a damaged record");
+}
+
+TEST(DrapeRecord, StartsWithItsVersion) {
+  const std::vector<unsigned char> record = writeDrapeRecord(everyPartSet());
   std::uint32_t version = 0;
   ASSERT_GE(record.size(), sizeof version);
   std::memcpy(&version, record.data(), sizeof version);
-  EXPECT_EQ(version, figment::kDrapeReportRecordVersion);
+  EXPECT_EQ(version, figment::kDrapeRecordVersion);
 }
 
-TEST(DrapeReportRecord, ARecordOfAnotherVersionIsRefusedNamingIt) {
-  std::vector<unsigned char> record = writeDrapeReport(everyFieldSet());
-  const std::uint32_t earlier = figment::kDrapeReportRecordVersion - 1;
+TEST(DrapeRecord, ARecordOfAnotherVersionIsRefusedNamingIt) {
+  std::vector<unsigned char> record = writeDrapeRecord(everyPartSet());
+  const std::uint32_t earlier = figment::kDrapeRecordVersion - 1;
   std::memcpy(record.data(), &earlier, sizeof earlier);
-  EXPECT_EQ(problemOf(record), "a record of version " + std::to_string(earlier) + ", not " +
-                                   std::to_string(figment::kDrapeReportRecordVersion));
+  EXPECT_EQ(problemOf(record),
+            "a record of version " + std::to_string(earlier) + ", not " + std::to_string(figment::kDrapeRecordVersion));
 }
 
-TEST(DrapeReportRecord, ARecordCutShortOrRunningOnIsDamaged) {
-  const std::vector<unsigned char> record = writeDrapeReport(everyFieldSet());
+TEST(DrapeRecord, ARecordCutShortOrRunningOnIsDamaged) {
+  const std::vector<unsigned char> record = writeDrapeRecord(everyPartSet());
   for (size_t size : {size_t(0), size_t(2), size_t(4), size_t(20), record.size() - 1}) {
     const std::vector<unsigned char> cut(record.begin(), record.begin() + size);
     EXPECT_EQ(problemOf(cut), "a damaged record") << size << " bytes";
@@ -143,8 +187,8 @@ TEST(DrapeReportRecord, ARecordCutShortOrRunningOnIsDamaged) {
   EXPECT_EQ(problemOf(longer), "a damaged record");
 }
 
-TEST(DrapeReportRecord, ABoolOtherThanZeroOrOneOrAnEnumerationPastItsValuesIsDamage) {
-  const std::vector<unsigned char> record = writeDrapeReport(everyFieldSet());
+TEST(DrapeRecord, ABoolOtherThanZeroOrOneOrAnEnumerationPastItsValuesIsDamage) {
+  const std::vector<unsigned char> record = writeDrapeRecord(everyPartSet());
   // After the version (4 bytes): the integrator, the contact model (a byte each), the
   // time step (float64), the limiter (a byte), whether a limit is given (a bool).
   ASSERT_EQ(record.at(4), static_cast<unsigned char>(figment::Integrator::SymplecticEuler));

@@ -1,4 +1,7 @@
-#include "io/DrapeReportRecord.h"
+#include "io/DrapeRecord.h"
+
+#include <array>
+#include <cmath>
 
 #include "io/ByteReader.h"
 #include "io/ByteWriter.h"
@@ -102,17 +105,46 @@ struct FieldReader {
   bool text(std::string& value) { return in.getText(value); }
 };
 
+// The drape's shape after its report: positions as float32 triples, sections as int32
+// triples, each indexing a position.
+void writeShape(ByteWriter& out, const GarmentDrape& drape) {
+  std::vector<std::array<float, 3>> points;
+  for (const Vec3& x : drape.positions) points.push_back({float(x.x()), float(x.y()), float(x.z())});
+  out.putArray(points);
+  std::vector<std::array<std::int32_t, 3>> sections;
+  for (const Triangle& t : drape.sections) sections.push_back({t[0], t[1], t[2]});
+  out.putArray(sections);
+}
+
+bool readShape(ByteReader& in, GarmentDrape& drape) {
+  std::vector<std::array<float, 3>> points;
+  std::vector<std::array<std::int32_t, 3>> sections;
+  if (!in.getArray(points) || !in.getArray(sections)) return false;
+  for (const auto& p : points) {
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) return false;
+    drape.positions.emplace_back(p[0], p[1], p[2]);
+  }
+  const auto n = static_cast<std::int64_t>(points.size());
+  for (const auto& t : sections) {
+    for (std::int32_t i : t)
+      if (i < 0 || i >= n) return false;
+    drape.sections.push_back({t[0], t[1], t[2]});
+  }
+  return true;
+}
+
 }  // namespace
 
-std::vector<unsigned char> writeDrapeReport(const DrapeReport& report) {
+std::vector<unsigned char> writeDrapeRecord(const GarmentDrape& drape) {
   FieldWriter writer;
-  writer.out.put(kDrapeReportRecordVersion);
-  DrapeReport copy = report;  // the field list takes its fields by reference, for the reader too
+  writer.out.put(kDrapeRecordVersion);
+  DrapeReport copy = drape.report;  // the field list takes its fields by reference, for the reader too
   eachField(writer, copy);
+  writeShape(writer.out, drape);
   return writer.out.take();
 }
 
-std::optional<DrapeReport> readDrapeReport(const std::vector<unsigned char>& record, std::string& problem) {
+std::optional<GarmentDrape> readDrapeRecord(const std::vector<unsigned char>& record, std::string& problem) {
   problem.clear();
   FieldReader reader{ByteReader(record)};
   std::uint32_t version = 0;
@@ -120,16 +152,16 @@ std::optional<DrapeReport> readDrapeReport(const std::vector<unsigned char>& rec
     problem = "a damaged record";
     return std::nullopt;
   }
-  if (version != kDrapeReportRecordVersion) {
-    problem = "a record of version " + std::to_string(version) + ", not " + std::to_string(kDrapeReportRecordVersion);
+  if (version != kDrapeRecordVersion) {
+    problem = "a record of version " + std::to_string(version) + ", not " + std::to_string(kDrapeRecordVersion);
     return std::nullopt;
   }
-  DrapeReport report;
-  if (!eachField(reader, report) || !reader.in.done()) {
+  GarmentDrape drape;
+  if (!eachField(reader, drape.report) || !readShape(reader.in, drape) || !reader.in.done()) {
     problem = "a damaged record";
     return std::nullopt;
   }
-  return report;
+  return drape;
 }
 
 }  // namespace figment
