@@ -61,6 +61,7 @@ def sew(binary, folder, entry, body):
         return row
     figures = json.load(open(stats))
     row.update({k: figures[k] for k in FIELDS if k in figures})
+    row["max_stretch"] = figures["drape"]["verdict"]["max_edge_stretch"]  # the drape's report
     row["problem"] = "; ".join(line.split(": ", 2)[-1] for line in run.stderr.strip().splitlines())
     os.remove(stats)
     return row

@@ -14,12 +14,14 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "ToolMain.h"
 #include "io/AtomicFile.h"
+#include "io/DrapeReportJson.h"
 #include "io/MeshSetExport.h"
 #include "io/PatternFile.h"
 #include "sim/cloth/DrapeVerdict.h"
@@ -68,23 +70,28 @@ int nodesInside(const figment::Collider& body, const std::vector<figment::Vec3>&
   return inside;
 }
 
+// The sewing's figures, the whole run's, and the drape's report as figment-view --stats
+// writes it (io/DrapeReportJson.h) under "drape".
 std::string statsJson(const figment::GarmentDrape& drape, const figment::DrapeVerdict& verdict, int inside,
                       const figment::UnsewnGarment& cut) {
   const figment::SewingOutcome& sewing = *drape.sewing;
-  char text[1024];
-  std::snprintf(text, sizeof text,
-                "{\n  \"at_rest\": %s,\n  \"seam_gap_max_m\": %.6f,\n  \"inside_nodes\": %d,\n"
-                "  \"max_stretch\": %.5f,\n  \"steps\": %d,\n  \"wall_s\": %.3f,\n  \"sewing_steps\": %d,\n"
-                "  \"sewing_wall_s\": %.3f,\n  \"drape_steps\": %d,\n  \"closed_gap_m\": %.6f,\n"
-                "  \"open_seam_pairs\": %d,\n  \"panels\": %zu,\n  \"nodes\": %zu,\n  \"sewn_nodes\": %d,\n"
-                "  \"triangles\": %zu,\n  \"clean\": %s\n}\n",
-                verdict.run.atRest ? "true" : "false", sewing.seamGap, inside, verdict.run.maxStretch,
-                sewing.run.iterations + verdict.run.iterations, sewing.run.wallSeconds + verdict.run.wallSeconds,
-                sewing.run.iterations, sewing.run.wallSeconds, verdict.run.iterations, sewing.closedGap,
-                sewing.openPairs, cut.panelNames.size(), cut.placed.vertices.size(), sewing.sewnNodes,
-                cut.placed.triangles.size(),
-                verdict.clean() && inside == 0 && sewing.openPairs == 0 ? "true" : "false");
-  return text;
+  const nlohmann::json stats = {{"at_rest", verdict.run.atRest},
+                                {"seam_gap_max_m", sewing.seamGap},
+                                {"inside_nodes", inside},
+                                {"steps", sewing.run.iterations + verdict.run.iterations},
+                                {"wall_s", sewing.run.wallSeconds + verdict.run.wallSeconds},
+                                {"sewing_steps", sewing.run.iterations},
+                                {"sewing_wall_s", sewing.run.wallSeconds},
+                                {"drape_steps", verdict.run.iterations},
+                                {"closed_gap_m", sewing.closedGap},
+                                {"open_seam_pairs", sewing.openPairs},
+                                {"panels", cut.panelNames.size()},
+                                {"nodes", cut.placed.vertices.size()},
+                                {"sewn_nodes", sewing.sewnNodes},
+                                {"triangles", cut.placed.triangles.size()},
+                                {"clean", verdict.clean() && inside == 0 && sewing.openPairs == 0},
+                                {"drape", nlohmann::json::parse(figment::drapeReportJson(drape.report))}};
+  return stats.dump(2) + "\n";
 }
 
 // What the drape's end says of it (sim/cloth/DrapeVerdict.h).
@@ -122,7 +129,8 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   drapeRequest.parameters = parameters;
   drapeRequest.body = collider;
   drapeRequest.sewing = figment::DrapeSewing{cut.flat, cut.seams, {}};
-  const figment::GarmentDrape drape = figment::drapeGarment(drapeRequest);
+  figment::GarmentDrape drape = figment::drapeGarment(drapeRequest);
+  drape.report.verdict = figment::verdictOf(drape.report);
 
   const figment::DrapeVerdict verdict = verdictOf(drape);
   const int inside = nodesInside(*collider, drape.positions);

@@ -256,7 +256,7 @@ DrapeResult ClothSolver::ending() const {
   DrapeResult result;
   result.atRest = atRest();
   result.maxSpeed = maxSpeed();
-  result.maxStretch = maxStretch();
+  result.maxStretch = edges_.largest(x_);  // the most stretched edge (EdgeStretch::largest)
   result.clampedSectionShareAtEnd = lastStepClampedShare_;
   result.limitedNodeShareAtEnd = lastStepLimitedShare_;
   return result;

@@ -100,8 +100,6 @@ class ClothSolver {
   // edge, the shares the stability measures held in the last step (the rest of a
   // DrapeResult, the run's own counts, is zero).
   DrapeResult ending() const;
-  // The largest edge stretch now (EdgeStretch::largest).
-  double maxStretch() const { return edges_.largest(x_); }
   // The shares of the sections clamped and of the nodes limited in the last step (per
   // force evaluation; zeros for the implicit integrator).
   double lastStepClampedShare() const { return lastStepClampedShare_; }

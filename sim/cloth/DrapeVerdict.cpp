@@ -16,6 +16,10 @@ std::string figure(double value) {
 }
 }  // namespace
 
+bool DrapeVerdict::tore() const {
+  return run.maxStretch > kTearStretch;
+}
+
 std::string DrapeVerdict::describe() const {
   const ImplicitStepCosts& steps = run.implicitCosts;
   std::vector<std::string> parts;

@@ -29,7 +29,7 @@ struct DrapeVerdict {
   DrapeResult run;       // how the run ended (sim/cloth/DrapeResult.h)
   double maxTime = 0.0;  // s, the run's bound
 
-  bool tore() const { return run.maxStretch > kTearStretch; }
+  bool tore() const;  // an edge ended past kTearStretch
   bool limited() const { return run.clampedSectionShareAtEnd > 0.0 || run.limitedNodeShareAtEnd > 0.0; }
   bool clean() const { return run.atRest && !tore() && !limited() && run.implicitCosts.failedSteps == 0; }
   // "" when clean; else what happened, with its figures, as one line without a period:

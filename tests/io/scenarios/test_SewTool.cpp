@@ -37,8 +37,12 @@ TEST(SewTool, SewsAPatternOnTheDefaultBodyAndSaysWhatTheDrapeDid) {
   ASSERT_EQ(result.status, 0) << result.err;
   ASSERT_TRUE(std::filesystem::exists(out));
   const nlohmann::json figures = nlohmann::json::parse(std::ifstream(stats));
-  for (const char* key : {"at_rest", "seam_gap_max_m", "inside_nodes", "max_stretch", "steps", "wall_s"})
+  for (const char* key : {"at_rest", "seam_gap_max_m", "inside_nodes", "steps", "wall_s", "drape"})
     EXPECT_TRUE(figures.contains(key)) << key;
+  // The drape's report as figment-view --stats writes it (io/DrapeReportJson.h).
+  EXPECT_GT(figures["drape"]["verdict"]["max_edge_stretch"].get<double>(), 0.9);
+  EXPECT_EQ(figures["drape"]["iterations"], figures["drape_steps"]);
+  EXPECT_EQ(figures["drape"]["at_rest"], figures["at_rest"]);
   // What stderr says agrees with the figures: a clean drape prints nothing.
   EXPECT_EQ(figures["clean"].get<bool>(), result.err.empty()) << result.err;
   EXPECT_GT(figures["steps"].get<int>(), 0);
