@@ -1,4 +1,4 @@
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 
 #include <stdexcept>
 
@@ -7,16 +7,16 @@
 
 namespace figment {
 
-MakeHumanSession::MakeHumanSession() = default;
+MakeHumanLibrary::MakeHumanLibrary() = default;
 
-MakeHumanSession::~MakeHumanSession() = default;
+MakeHumanLibrary::~MakeHumanLibrary() = default;
 
-const std::string& MakeHumanSession::dir() {
+const std::string& MakeHumanLibrary::dir() {
   if (dir_.empty()) dir_ = findMakeHumanData();
   return dir_;
 }
 
-const HumanModel& MakeHumanSession::model() {
+const HumanModel& MakeHumanLibrary::model() {
   if (model_) return *model_;
   if (dir().empty()) throw std::runtime_error(kMakeHumanDataMissing);
   library_ = std::make_unique<TargetLibrary>(dir_);
@@ -24,25 +24,25 @@ const HumanModel& MakeHumanSession::model() {
   return *model_;
 }
 
-BodyFitResult MakeHumanSession::fit(const HumanParameters& start, const std::vector<MeasurementGoal>& goals) {
-  return fitBody(model(), start, goals);
+MeasuredBody MakeHumanLibrary::measuredBody(const HumanParameters& start, const std::vector<MeasurementGoal>& goals) {
+  return makeMeasuredBody(model(), start, goals);
 }
 
-BodyFitResult MakeHumanSession::fit(Sex sex, const std::vector<MeasurementGoal>& goals) {
-  return fit(start(sex), goals);
+MeasuredBody MakeHumanLibrary::measuredBody(Sex sex, const std::vector<MeasurementGoal>& goals) {
+  return measuredBody(start(sex), goals);
 }
 
-BodyFitResult MakeHumanSession::fit(const ChartSize& size) {
-  return fit(size.sex, goals(size));
+MeasuredBody MakeHumanLibrary::measuredBody(const ChartSize& size) {
+  return measuredBody(size.sex, goals(size));
 }
 
-HumanParameters MakeHumanSession::start(Sex sex) {
+HumanParameters MakeHumanLibrary::start(Sex sex) {
   HumanParameters start;
   start.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
   return start;
 }
 
-std::vector<MeasurementGoal> MakeHumanSession::goals(const ChartSize& size) {
+std::vector<MeasurementGoal> MakeHumanLibrary::goals(const ChartSize& size) {
   return {{"stature", size.stature}, {"bust_girth", size.bust}, {"waist_girth", size.waist}, {"hip_girth", size.hip}};
 }
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "serve/request/Catalogue.h"
+#include "serve/request/ShopperChoices.h"
 #include "serve/request/RequestParameters.h"
 #include "sim/garment/SizeChart.h"
 

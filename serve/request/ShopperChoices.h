@@ -1,5 +1,6 @@
 #pragma once
-// What a shopper may ask for: garment styles with their sizes and colours, poses, lights,
+// ShopperChoices: what a shopper may ask for (not the shop's garment catalogue,
+// io/GarmentCatalogue.h, though GET /api/catalogue keeps its name): garment styles with their sizes and colours, poses, lights,
 // skin tones and the ranges of the body's measurements. Plain data shared by the server
 // (parsing requests, GET /api/catalogue) and its workers (building scenes): every file a
 // scene reads is named here, in code, never by a request.
@@ -71,7 +72,7 @@ struct LightPreset {
   std::vector<Light> lights;
 };
 
-class Catalogue {
+class ShopperChoices {
  public:
   static const std::vector<MeasureRange>& measures();
   static const std::vector<GarmentStyle>& styles();

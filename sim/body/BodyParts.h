@@ -1,6 +1,6 @@
 #pragma once
 // A body mesh cut into the parts of its skeleton (sim/body/Skeleton.h): the inputs of the
-// collision volumes (§3; fitted by sim/fitting).
+// collision volumes (§3; fitted by sim/volumes).
 //
 // The cut, per triangle (by its centroid c and outward face normal n):
 //   1. the nearest bone among those the triangle faces away from, n . (c - q) >= 0 with
