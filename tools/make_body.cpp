@@ -62,8 +62,8 @@ void printJson(const figment::MeasuredBody& made) {
   std::printf(
       ", \"parameters\": {\"gender\": %g, \"age\": %g, \"muscle\": %g, \"weight\": %g, \"height\": %.4f, "
       "\"cupSize\": %g",
-      made.parameters.macro.gender, made.parameters.macro.age, made.parameters.macro.muscle, made.parameters.macro.weight,
-      made.parameters.macro.height, made.parameters.macro.cupSize);
+      made.parameters.macro.gender, made.parameters.macro.age, made.parameters.macro.muscle,
+      made.parameters.macro.weight, made.parameters.macro.height, made.parameters.macro.cupSize);
   for (const auto& [key, value] : made.parameters.measures) std::printf(", \"%s\": %.4f", key.c_str(), value);
   std::printf("}}\n");
 }

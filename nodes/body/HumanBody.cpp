@@ -15,8 +15,8 @@
 #include <utility>
 #include <vector>
 
-#include "io/MakeHumanRig.h"
 #include "io/MakeHumanLibrary.h"
+#include "io/MakeHumanRig.h"
 #include "sim/body/MeasuredBody.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"

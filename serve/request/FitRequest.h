@@ -10,8 +10,8 @@
 #include <variant>
 #include <vector>
 
-#include "serve/request/ShopperChoices.h"
 #include "serve/request/RequestParameters.h"
+#include "serve/request/ShopperChoices.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment::serve {

@@ -80,7 +80,8 @@ struct SizeNames {
 
 std::string acceptedItems(const SizeNames& names) {
   if (!names.chart)
-    return "style:size[:rrggbb], styles " + namesOf(ShopperChoices::styles()) + "; sizes " + namesOf(ShopperChoices::sizes());
+    return "style:size[:rrggbb], styles " + namesOf(ShopperChoices::styles()) + "; sizes " +
+           namesOf(ShopperChoices::sizes());
   std::vector<std::string> sizes;
   for (const ChartSize& size : names.chart->sizes(names.sex)) sizes.push_back(size.name);
   return "style:size[:rrggbb], styles " + styleNames() + "; " + sexName(names.sex) + " sizes " + namesOf(sizes);
@@ -218,8 +219,9 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
     else if (name == "pose")
       error = pose(value, names, request.pose);
     else if (name == "light")
-      error = ShopperChoices::light(value) ? (request.light = value, std::nullopt)
-                                      : std::optional(bad(name, value, "no such light", namesOf(ShopperChoices::lights())));
+      error = ShopperChoices::light(value)
+                  ? (request.light = value, std::nullopt)
+                  : std::optional(bad(name, value, "no such light", namesOf(ShopperChoices::lights())));
     else if (name == "outfit")
       error = outfit(value, names, request.outfit);
     else if (name == "view")

@@ -23,7 +23,8 @@ std::string wardrobeText() {
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  MeshFile { fileName \"human.zae\" collisionExclude \"human-highpolyeyesMesh\" }\n"
       "  File { name \"human-volumes.iv\" }\n";
-  for (const GarmentStyle& style : ShopperChoices::styles()) text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
+  for (const GarmentStyle& style : ShopperChoices::styles())
+    text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
   return text + "}\n";
 }
 

@@ -3,8 +3,8 @@
 #include <set>
 #include <sstream>
 
-#include "serve/request/ShopperChoices.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 
 namespace figment::serve {
 

@@ -244,8 +244,8 @@ const std::vector<std::pair<std::string, std::string>>& measurableKeys() {
   return keys;
 }
 
-MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start, const std::vector<MeasurementGoal>& goals,
-                      const MeasuredBodyOptions& options) {
+MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start,
+                              const std::vector<MeasurementGoal>& goals, const MeasuredBodyOptions& options) {
   const Problem problem(model, start, goals);
   Eigen::VectorXd x = startingPoint(start, problem.unknowns());
   meetStature(problem, start.macro.weight, x);

@@ -48,7 +48,7 @@ class UnreachableMeasurement : public std::invalid_argument {
 // weight and muscle when a girth is, and cup size when the bust needs it).
 // Throws std::invalid_argument for an unknown or repeated key or a value <= 0, and
 // UnreachableMeasurement as above.
-MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start, const std::vector<MeasurementGoal>& goals,
-                      const MeasuredBodyOptions& options = {});
+MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start,
+                              const std::vector<MeasurementGoal>& goals, const MeasuredBodyOptions& options = {});
 
 }  // namespace figment

@@ -4,8 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "sim/body/MeasuredBody.h"
 #include "sim/body/BodyMeasurements.h"
+#include "sim/body/MeasuredBody.h"
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/TriangleBvh.h"

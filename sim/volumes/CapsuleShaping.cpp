@@ -151,13 +151,13 @@ double enclosedCapsuleCost(const CapsuleParameters& parameters, const std::vecto
   return capsuleCost(Capsule(grown), points, 1.0);
 }
 
-ShapedCapsule shapeCapsule(const std::vector<Vec3>& points, const CapsuleShapingOptions& options) {
+CapsuleShaping shapeCapsule(const std::vector<Vec3>& points, const CapsuleShapingOptions& options) {
   if (points.size() < 4) throw std::invalid_argument("a capsule needs at least 4 points to fit");
   const CapsuleParameters start = startingCapsule(points);
   const double size = std::max({start.x, start.y, start.z});
   if (!(size > 1e-6)) throw std::invalid_argument("the points to fit have no extent");
   const GeneticResult best = geneticSearch(capsuleProblem(start, size, points, options), scheduleOf(options));
-  ShapedCapsule shaped;
+  CapsuleShaping shaped;
   shaped.parameters = parametersOf(best.genes);
   shaped.cost = best.cost;
   if (options.enclose) shaped.enclosureScale = growToEnclose(shaped.parameters, points);

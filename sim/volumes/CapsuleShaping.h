@@ -36,14 +36,14 @@ struct CapsuleShapingOptions : GeneticShares {
   bool costAfterEnclosure = true;
 };
 
-struct ShapedCapsule {
+struct CapsuleShaping {
   CapsuleParameters parameters;
   double cost = 0.0;            // of the best member before enclosure
   double enclosureScale = 1.0;  // how much enclosure grew it (1: not at all)
 };
 
 // Throws std::invalid_argument when `points` has fewer than 4 points or no extent.
-ShapedCapsule shapeCapsule(const std::vector<Vec3>& points, const CapsuleShapingOptions& options = {});
+CapsuleShaping shapeCapsule(const std::vector<Vec3>& points, const CapsuleShapingOptions& options = {});
 
 // The default capsule set on the points, where a fit starts: centred on them, along
 // their principal axis (pointing up), as big as their extents, ends half rounded.

@@ -17,7 +17,7 @@ namespace figment {
 // angular bin, then K = `harmonics` Fourier terms by least squares; then every section's
 // constant term grows until each of those triangles' vertices is inside (enclosure).
 RadialDepth shapeRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
-                           double maxRadius, int sections, int harmonics, int angles = 64);
+                             double maxRadius, int sections, int harmonics, int angles = 64);
 
 // Fits a radial depth volume on the axis [base, base + length direction] to the points
 // of a part's surface (its vertices, say, and its triangles' centroids), all of which
@@ -29,8 +29,8 @@ RadialDepth shapeRadialDepth(const TriangleMesh& body, const Vec3& base, const V
 // (second differences along the axis, k^4-weighted harmonics) keeps sections with few
 // points well posed. Then enclosure, per section: each point of `enclose` left outside
 // raises the constant terms of its two sections by its shortfall.
-RadialDepth shapeRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose, const Vec3& base,
-                                   const Vec3& direction, double length, int sections, int harmonics,
-                                   double outsideWeight = 100.0);
+RadialDepth shapeRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose,
+                                     const Vec3& base, const Vec3& direction, double length, int sections,
+                                     int harmonics, double outsideWeight = 100.0);
 
 }  // namespace figment

@@ -15,7 +15,7 @@ namespace {
 
 // A radial volume on the line through `origin` along `direction`, spanning the part.
 RadialDepth shapeAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin, const Vec3& direction,
-                     int harmonics, double sectionSpacing) {
+                       int harmonics, double sectionSpacing) {
   double low = std::numeric_limits<double>::max(), high = -low;
   for (const Vec3& v : part.mesh.vertices) {
     const double s = (v - origin).dot(direction);
@@ -26,7 +26,7 @@ RadialDepth shapeAlong(const PartMesh& part, const std::vector<Vec3>& points, co
   const double length = high - low + 2 * margin;
   const int sections = std::max(2, static_cast<int>(std::ceil(length / sectionSpacing)) + 1);
   return shapeRadialDepthToPoints(points, part.mesh.vertices, origin + (low - margin) * direction, direction, length,
-                                sections, harmonics);
+                                  sections, harmonics);
 }
 
 }  // namespace

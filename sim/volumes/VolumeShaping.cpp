@@ -107,7 +107,7 @@ namespace {
 // saying which to `progress`.
 template <typename ShapePart>
 std::vector<CollisionVolumeParameters> shapeEachPart(const TriangleMesh& body, const Skeleton& skeleton,
-                                                   const VolumeShapingOptions& options, ShapePart shapePart) {
+                                                     const VolumeShapingOptions& options, ShapePart shapePart) {
   std::vector<PartMesh> parts = splitIntoParts(body, skeleton);
   std::erase_if(parts, [](const PartMesh& part) { return part.mesh.vertices.size() < 4; });
   std::vector<CollisionVolumeParameters> out;
@@ -122,12 +122,12 @@ std::vector<CollisionVolumeParameters> shapeEachPart(const TriangleMesh& body, c
 }  // namespace
 
 std::vector<CollisionVolumeParameters> shapeCapsules(const TriangleMesh& body, const Skeleton& skeleton,
-                                                   const VolumeShapingOptions& options) {
+                                                     const VolumeShapingOptions& options) {
   return shapeEachPart(body, skeleton, options, [&](const PartMesh& part) { return shapePartCapsules(part, options); });
 }
 
 std::vector<CollisionVolumeParameters> shapeRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
-                                                        const VolumeShapingOptions& options) {
+                                                          const VolumeShapingOptions& options) {
   return shapeEachPart(body, skeleton, options, [&](const PartMesh& part) { return shapePartRadial(part, options); });
 }
 

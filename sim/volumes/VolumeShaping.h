@@ -48,17 +48,16 @@ struct VolumeShapingOptions {
 // One or more capsules per part (every part of skeleton.parts gets at least one volume);
 // each encloses its vertices.
 std::vector<CollisionVolumeParameters> shapeCapsules(const TriangleMesh& body, const Skeleton& skeleton,
-                                                   const VolumeShapingOptions& options = {});
+                                                     const VolumeShapingOptions& options = {});
 // Radial depth volumes per part; parts that a radial volume cannot suit fall back to
 // capsules (kind Capsule).
 std::vector<CollisionVolumeParameters> shapeRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
-                                                        const VolumeShapingOptions& options = {});
+                                                          const VolumeShapingOptions& options = {});
 
 // The same, for parts already cut (splitIntoParts); the bench measures these.
 std::vector<CollisionVolumeParameters> shapePartCapsules(const PartMesh& part,
-                                                       const VolumeShapingOptions& options = {});
-std::vector<CollisionVolumeParameters> shapePartRadial(const PartMesh& part,
-                                                     const VolumeShapingOptions& options = {});
+                                                         const VolumeShapingOptions& options = {});
+std::vector<CollisionVolumeParameters> shapePartRadial(const PartMesh& part, const VolumeShapingOptions& options = {});
 
 // The signed distance of p to one volume (< 0 inside), by its nearest().
 double signedDistance(const CollisionVolumeParameters& volume, const Vec3& p);

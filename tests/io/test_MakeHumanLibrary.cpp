@@ -61,7 +61,7 @@ TEST_F(MakeHumanLibraryWithData, AChartBodyIsMadeToTheSizesFourMeasurements) {
   const MeasuredBody made = human_.measuredBody(m);
   const MeasuredBody direct =
       makeMeasuredBody(human_.model(), MakeHumanLibrary::start(Sex::Male),
-              {{"stature", 1.74}, {"bust_girth", 0.96}, {"waist_girth", 0.84}, {"hip_girth", 1.00}});
+                       {{"stature", 1.74}, {"bust_girth", 0.96}, {"waist_girth", 0.84}, {"hip_girth", 1.00}});
   ASSERT_EQ(made.body.vertices.size(), direct.body.vertices.size());
   for (size_t i = 0; i < made.body.vertices.size(); ++i) ASSERT_EQ(made.body.vertices[i], direct.body.vertices[i]) << i;
   EXPECT_EQ(made.parameters.macro.gender, 1.0);

@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "io/MakeHumanFiles.h"
-#include "io/MakeHumanRig.h"
 #include "io/MakeHumanLibrary.h"
+#include "io/MakeHumanRig.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 

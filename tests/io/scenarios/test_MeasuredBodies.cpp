@@ -11,8 +11,8 @@
 #include <cstdio>
 
 #include "io/MakeHumanFiles.h"
-#include "io/MakeHumanRig.h"
 #include "io/MakeHumanLibrary.h"
+#include "io/MakeHumanRig.h"
 #include "io/MeshExport.h"
 #include "io/MeshImport.h"
 #include "io/SizeChartFile.h"
@@ -74,7 +74,7 @@ TEST_F(MeasuredBodies, SixtySetsMeasureWithin5mmAndCrossNoNewParts) {
         {"stature", set.stature}, {"bust_girth", set.bust}, {"waist_girth", set.waist}, {"hip_girth", set.hip}};
     MeasuredBody made;
     ASSERT_NO_THROW(made = makeMeasuredBody(*model, startFor(set.sex), goals)) << label(set);
-    exportObj(numberedByFirstUse(made.body), path);                  // as figment-body writes it
+    exportObj(numberedByFirstUse(made.body), path);                 // as figment-body writes it
     const BodyMeasurements m = measureBody(importMesh(path).mesh);  // as figment-measure reads it
     for (const MeasurementGoal& goal : goals) EXPECT_NEAR(m.byName(goal.key), goal.value, 0.005) << label(set);
     const std::vector<std::string> crossing = newPartCrossings(made.body);
@@ -137,7 +137,7 @@ TEST_F(MeasuredBodies, APartialMeasurementIsTheFullOnesPart) {
 TEST_F(MeasuredBodies, BeyondTheWeightsEndsTheMassGoesOnThroughMuscleAndCup) {
   const auto fit = [&](double stature, double bust, double waist, double hip) {
     return makeMeasuredBody(*model, startFor(Sex::Female),
-                   {{"stature", stature}, {"bust_girth", bust}, {"waist_girth", waist}, {"hip_girth", hip}})
+                            {{"stature", stature}, {"bust_girth", bust}, {"waist_girth", waist}, {"hip_girth", hip}})
         .parameters.macro;
   };
   // women's 38: within the weight's range, muscle and cup size as they were

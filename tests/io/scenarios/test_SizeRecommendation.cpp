@@ -141,7 +141,7 @@ static TriangleMesh chartBodyAt(MakeHumanLibrary& human, const SizeChart& chart,
   };
   return human
       .measuredBody(ChartSize{sex, "", "", at(&ChartSize::stature), at(&ChartSize::bust), at(&ChartSize::waist),
-                     at(&ChartSize::hip)})
+                              at(&ChartSize::hip)})
       .body;
 }
 

@@ -18,10 +18,10 @@
 #include "io/SizeChartFile.h"
 #include "serve/http/WebAssets.h"
 #include "serve/request/BodyMeasuresText.h"
-#include "serve/request/ShopperChoices.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 #include "serve/workers/Digest.h"
 #include "sim/garment/GarmentStyle.h"
 

@@ -6,8 +6,8 @@
 
 #include <set>
 
-#include "serve/request/ShopperChoices.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 #include "serve/workers/PrecomputePlan.h"
 
 using namespace figment::serve;

@@ -47,14 +47,14 @@ TEST(CapsuleShaping, AShapedCapsuleReproducesTheCapsuleItsPointsCameFrom) {
   // (parameters may differ where two describe the same surface).
   const Capsule truth(thigh());
   const std::vector<Vec3> points = surfaceSamples(truth, 800, 3);
-  const ShapedCapsule fit = shapeCapsule(points);
-  const Capsule fitted(fit.parameters);
+  const CapsuleShaping shaped = shapeCapsule(points);
+  const Capsule result(shaped.parameters);
   const double size = thigh().y;
   RecordProperty("hausdorff_mm",
-                 std::to_string(1000 * std::max(oneSidedHausdorff(truth, fitted), oneSidedHausdorff(fitted, truth))));
-  RecordProperty("enclosure_scale", std::to_string(fit.enclosureScale));
-  EXPECT_LT(oneSidedHausdorff(truth, fitted), 0.01 * size);
-  EXPECT_LT(oneSidedHausdorff(fitted, truth), 0.01 * size);
+                 std::to_string(1000 * std::max(oneSidedHausdorff(truth, result), oneSidedHausdorff(result, truth))));
+  RecordProperty("enclosure_scale", std::to_string(shaped.enclosureScale));
+  EXPECT_LT(oneSidedHausdorff(truth, result), 0.01 * size);
+  EXPECT_LT(oneSidedHausdorff(result, truth), 0.01 * size);
 }
 
 TEST(CapsuleShaping, TheShapedCapsuleEnclosesEveryPoint) {
@@ -67,17 +67,17 @@ TEST(CapsuleShaping, TheShapedCapsuleEnclosesEveryPoint) {
         if (i % 6 == 0 || j % 6 == 0 || k % 6 == 0) box.push_back(Vec3(0.1 * i / 6, 0.3 * j / 6, 0.08 * k / 6));
   CapsuleShapingOptions options;
   options.generations = 150;
-  const ShapedCapsule fit = shapeCapsule(box, options);
-  const Capsule capsule(fit.parameters);
+  const CapsuleShaping shaped = shapeCapsule(box, options);
+  const Capsule capsule(shaped.parameters);
   for (const Vec3& p : box) EXPECT_TRUE(capsule.contains(p)) << p.transpose();
-  EXPECT_GT(fit.enclosureScale, 1.0);
+  EXPECT_GT(shaped.enclosureScale, 1.0);
 }
 
 TEST(CapsuleShaping, TheSameSeedRepeatsACapsuleAndAnotherChangesIt) {
   const std::vector<Vec3> points = surfaceSamples(Capsule(thigh()), 200, 5);
   CapsuleShapingOptions options;
   options.generations = 60;
-  const ShapedCapsule a = shapeCapsule(points, options), b = shapeCapsule(points, options);
+  const CapsuleShaping a = shapeCapsule(points, options), b = shapeCapsule(points, options);
   EXPECT_EQ(a.parameters.values(), b.parameters.values());
   options.seed = 2;
   EXPECT_NE(shapeCapsule(points, options).parameters.values(), a.parameters.values());
