@@ -135,7 +135,7 @@ TEST_F(MeasuredBodies, APartialMeasurementIsTheFullOnesPart) {
 }
 
 TEST_F(MeasuredBodies, BeyondTheWeightsEndsTheMassGoesOnThroughMuscleAndCup) {
-  const auto fit = [&](double stature, double bust, double waist, double hip) {
+  const auto made = [&](double stature, double bust, double waist, double hip) {
     return makeMeasuredBody(*model, startFor(Sex::Female),
                             {{"stature", stature}, {"bust_girth", bust}, {"waist_girth", waist}, {"hip_girth", hip}})
         .parameters.macro;
