@@ -10,8 +10,8 @@
 #include "CsvFile.h"
 #include "Statistics.h"
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
-#include "io/MakeHumanSession.h"
 #include "io/SizeChartFile.h"
 #include "sim/body/SkinParts.h"
 #include "sim/collision/SelfIntersections.h"
@@ -35,14 +35,14 @@ double threadSeconds() {
 
 struct Row {
   ChartSize set;
-  double seconds = 0;     // fit + measure, wall, median of the repeats
+  double seconds = 0;     // made + measured, wall, median of the repeats
   double cpuSeconds = 0;  // the same in this thread's CPU time
   double worstError = 0;  // m, the largest |achieved - typed|
   int iterations = 0;
   double checkSeconds = 0;  // CPU: the crossing check
   size_t crossings = 0;     // triangle pairs, folds within a part included
   std::string parts;        // the part pairs that cross and do not in the base mesh, "left thigh x right thigh; ..."
-  std::string refused;      // the fit's one line, when it refused
+  std::string refused;      // the refusal's one line, when it refused
 };
 
 // What the study checks each body against: the skin's parts and which of them cross in the base mesh.
@@ -59,16 +59,16 @@ std::string newPartCrossings(const std::vector<TrianglePair>& pairs, const Refer
   return out;
 }
 
-Row study(MakeHumanSession& human, const ChartSize& set, const Reference& base, int repeat) {
+Row study(MakeHumanLibrary& human, const ChartSize& set, const Reference& base, int repeat) {
   Row row;
   row.set = set;
   std::vector<double> times, cpu;
-  BodyFitResult fit;
+  MeasuredBody made;
   try {
     for (int r = 0; r < repeat; ++r) {
       const auto t0 = std::chrono::steady_clock::now();
       const double c0 = threadSeconds();
-      fit = human.fit(set);
+      made = human.measuredBody(set);
       cpu.push_back(threadSeconds() - c0);
       times.push_back(secondsSince(t0));
     }
@@ -78,11 +78,11 @@ Row study(MakeHumanSession& human, const ChartSize& set, const Reference& base, 
   }
   row.seconds = median(times);
   row.cpuSeconds = median(cpu);
-  row.iterations = fit.iterations;
-  for (const MeasurementGoal& goal : MakeHumanSession::goals(set))
-    row.worstError = std::max(row.worstError, std::abs(fit.achieved.byName(goal.key) - goal.value));
+  row.iterations = made.iterations;
+  for (const MeasurementGoal& goal : MakeHumanLibrary::goals(set))
+    row.worstError = std::max(row.worstError, std::abs(made.achieved.byName(goal.key) - goal.value));
   const double c0 = threadSeconds();
-  const std::vector<TrianglePair> pairs = selfIntersections(fit.body);
+  const std::vector<TrianglePair> pairs = selfIntersections(made.body);
   row.checkSeconds = threadSeconds() - c0;
   row.crossings = pairs.size();
   row.parts = newPartCrossings(pairs, base);
@@ -103,7 +103,7 @@ bool writeRows(const std::string& path, const std::vector<Row>& rows) {
   });
 }
 
-int runSets(MakeHumanSession& human, const BodyStudyOptions& options) {
+int runSets(MakeHumanLibrary& human, const BodyStudyOptions& options) {
   const auto loadStart = std::chrono::steady_clock::now();
   const HumanModel& model = human.model();
   const std::vector<ChartSize> sets = bodyCheckSets(readSizeChart(defaultSizeChartPath()));
@@ -148,7 +148,7 @@ int runSets(MakeHumanSession& human, const BodyStudyOptions& options) {
 }  // namespace
 
 int runBodyStudy(const BodyStudyOptions& options) {
-  MakeHumanSession human;
+  MakeHumanLibrary human;
   if (human.dir().empty()) {
     std::fprintf(stderr, "figment-bench: %s\n", kMakeHumanDataMissing);
     return 1;

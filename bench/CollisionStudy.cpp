@@ -17,7 +17,7 @@
 #include "sim/body/BodyParts.h"
 #include "sim/body/SkeletonEstimate.h"
 #include "sim/collision/MeshCollider.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/volumes/VolumeShaping.h"
 
 namespace figment::bench {
 
@@ -175,17 +175,17 @@ Row exactRow(const PartMesh& part, const std::vector<Vec3>& points) {
 PartRows studyPart(const PartMesh& part, const CollisionStudyOptions& options) {
   const std::vector<Vec3>& vertices = part.mesh.vertices;
   const std::vector<Vec3> points = queryPoints(vertices);
-  // What fitCapsules and fitRadialVolumes return for this part (they loop over the
+  // What shapeCapsules and shapeRadialVolumes return for this part (they loop over the
   // parts of splitIntoParts with these same calls).
-  CollisionVolumeFitOptions fitOptions;
+  VolumeShapingOptions fitOptions;
   fitOptions.harmonics = options.harmonics;
   fitOptions.sectionSpacing = options.sectionSpacing;
   PartRows rows;
   auto start = Clock::now();
-  const std::vector<CollisionVolumeParameters> capsules = fitPartCapsules(part, fitOptions);
+  const std::vector<CollisionVolumeParameters> capsules = shapePartCapsules(part, fitOptions);
   rows.capsule = fittedRow(capsules, secondsSince(start), vertices, points);
   start = Clock::now();
-  const std::vector<CollisionVolumeParameters> radial = fitPartRadial(part, fitOptions);
+  const std::vector<CollisionVolumeParameters> radial = shapePartRadial(part, fitOptions);
   rows.radial = fittedRow(radial, secondsSince(start), vertices, points);
   rows.fellBack = radial.front().kind == CollisionVolumeParameters::Kind::Capsule;
   rows.exact = exactRow(part, points);

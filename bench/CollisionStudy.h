@@ -5,7 +5,7 @@
 // own triangles (the exact BVH collider).
 //
 // What is measured, per part of splitIntoParts (sim/body/BodyParts.h):
-//   volumes   exactly what fitCapsules / fitRadialVolumes (sim/fitting/CollisionVolumeFitting.h) return for
+//   volumes   exactly what shapeCapsules / shapeRadialVolumes (sim/volumes/VolumeShaping.h) return for
 //             the part: one or more capsules; a radial volume, or the part's capsules
 //             where it falls back (kind column);
 //   gap       one-sided, from the body: for each vertex of the part, its depth in the

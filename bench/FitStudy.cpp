@@ -11,7 +11,7 @@
 #include "Statistics.h"
 #include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/SizeChartFile.h"
 #include "sim/fit/SizeFitter.h"
 
@@ -82,7 +82,7 @@ ChartSize along(const std::vector<ChartSize>& sizes, double position) {
   return c;
 }
 
-void gridRows(SizeFitter& fitter, MakeHumanSession& human, const SizeChart& chart, const FitStudyOptions& options,
+void gridRows(SizeFitter& fitter, MakeHumanLibrary& human, const SizeChart& chart, const FitStudyOptions& options,
               const std::string& style, Sex sex, std::vector<GridRow>& rows) {
   const std::vector<ChartSize>& sizes = chart.sizes(sex);
   const double low = -options.gridBeyond, high = static_cast<double>(sizes.size()) - 1 + options.gridBeyond;
@@ -91,7 +91,7 @@ void gridRows(SizeFitter& fitter, MakeHumanSession& human, const SizeChart& char
     const ChartSize c = along(sizes, position);
     GridRow row{style, sexName(sex), position, c.bust, c.waist, c.hip, ""};
     try {
-      row.recommended = fitter.recommend(human.fit(c).body, sex, true).recommended;
+      row.recommended = fitter.recommend(human.measuredBody(c).body, sex, true).recommended;
     } catch (const UnreachableMeasurement&) {
     }
     std::printf("grid %s %s %.2f (bust %.3f waist %.3f hip %.3f) -> %s\n", style.c_str(), sexName(sex), position,
@@ -179,7 +179,7 @@ int writeFitCsv(const FitStudyOptions& options, const GarmentCatalogue& catalogu
 }  // namespace
 
 int runFitStudy(const FitStudyOptions& options) {
-  MakeHumanSession human;
+  MakeHumanLibrary human;
   if (human.dir().empty()) {
     std::fprintf(stderr, "figment-bench: %s\n", kMakeHumanDataMissing);
     return 1;

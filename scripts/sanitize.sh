@@ -8,7 +8,7 @@
 # bodies, the hybrid renderer's nodes) and through it most of sim/ and io/, and it fits CI's
 # 20 minutes on 2 cores beside the normal suite (building it with the sanitizers takes about
 # 600 CPU-seconds). test_sim as well roughly doubles the build (its ~40 test files and
-# sim/fitting), past the limit; run both where time allows:
+# sim/volumes), past the limit; run both where time allows:
 #   FIGMENT_SANITIZE_LABELS='^(sim|nodes)$' scripts/sanitize.sh
 # (a ctest -L regular expression over the test modules: sim, io, nodes, viewer, headless, scenes).
 set -euo pipefail

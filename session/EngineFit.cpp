@@ -11,7 +11,7 @@
 #include <optional>
 
 #include "io/GarmentCatalogue.h"
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "nodes/body/HumanBody.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/body/MeshFile.h"
@@ -156,7 +156,7 @@ void measureRegions(EngineFit& fit, const std::vector<std::string>* told) {
 }
 
 // Verdicts against the garment's size draped on its own chart body, as figment-size's.
-void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& chart, MakeHumanSession& human) {
+void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& chart, MakeHumanLibrary& human) {
   if (human.dir().empty()) return;
   SizeFitter fitter(human.model(), chart, *item.style);
   const std::vector<RegionFit>& own = fitter.ownFit(item.sex, item.size);
@@ -172,7 +172,7 @@ void judgeRegions(EngineFit& fit, const CatalogueItem& item, const SizeChart& ch
 
 }  // namespace
 
-std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeHumanSession* verdicts) {
+std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeHumanLibrary* verdicts) {
   std::vector<EngineFit> fits;
   for (EngineFit& fit : drawnEngines(scene)) {
     if (!fillInputs(fit)) continue;

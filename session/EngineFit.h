@@ -21,7 +21,7 @@ class SoGroup;
 class SoSeparator;
 
 namespace figment {
-class MakeHumanSession;
+class MakeHumanLibrary;
 }
 
 namespace figment::session {
@@ -56,9 +56,9 @@ struct EngineFit {
 
 // The scene's draped garments on mesh bodies, in scene order: drape the scene first.
 // `regions` false leaves the regions out (a fit map needs none). With `verdicts`, the
-// caller's MakeHuman session, the regions of a catalogue garment are judged against its
+// caller's MakeHumanLibrary, the regions of a catalogue garment are judged against its
 // size on its own chart body (that body and drape are made here with it: about 1 s, and
 // MakeHuman's data; without the data, no verdicts); null: no verdicts.
-std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeHumanSession* verdicts);
+std::vector<EngineFit> measureEngineFits(SoSeparator* scene, bool regions, MakeHumanLibrary* verdicts);
 
 }  // namespace figment::session

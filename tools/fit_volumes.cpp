@@ -11,7 +11,7 @@
 // human stature is refused at once, with the options that would fix it (tools/ToolMain.h:
 // the fit's thresholds are in metres). Its skeleton is estimated from cross sections
 // (sim/body/SkeletonEstimate.h); each part gets radial depth volumes (or capsules where a
-// radial volume does not suit it, sim/fitting/CollisionVolumeFitting.h) or capsules, or, for the parts
+// radial volume does not suit it, sim/volumes/VolumeShaping.h) or capsules, or, for the parts
 // named by --capsule and --exact, capsules and ExactVolume. The file holds one
 // SkeletonJoints and the volume nodes. One summary line on stdout; any error is one
 // line, "figment-fit: <file>: <reason>", exit status 1, and no file.
@@ -38,7 +38,7 @@
 #include "nodes/body/RadialDepthVolume.h"
 #include "nodes/body/SkeletonJoints.h"
 #include "sim/body/SkeletonEstimate.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/volumes/VolumeShaping.h"
 
 namespace {
 
@@ -49,7 +49,7 @@ struct Options {
   std::string output;
   std::string method = "radial";
   std::vector<std::string> capsuleParts, exactParts;
-  figment::CollisionVolumeFitOptions fit;
+  figment::VolumeShapingOptions fit;
   std::string commandLine;
 };
 
@@ -130,11 +130,11 @@ std::vector<figment::CollisionVolumeParameters> fitVolumes(const figment::Triang
   std::vector<figment::CollisionVolumeParameters> volumes;
   const bool radial = options.method == "radial";
   if (radial) {
-    for (figment::CollisionVolumeParameters& v : figment::fitRadialVolumes(body, skeleton, options.fit))
+    for (figment::CollisionVolumeParameters& v : figment::shapeRadialVolumes(body, skeleton, options.fit))
       if (!forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
   }
   if (!radial || !forcedCapsules.empty()) {
-    for (figment::CollisionVolumeParameters& v : figment::fitCapsules(body, skeleton, options.fit))
+    for (figment::CollisionVolumeParameters& v : figment::shapeCapsules(body, skeleton, options.fit))
       if (!radial || forcedCapsules.count(v.part)) volumes.push_back(std::move(v));
   }
   return volumes;

@@ -16,7 +16,7 @@
 
 #include "ToolMain.h"
 #include "io/MakeHumanFiles.h"
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/MeshExport.h"
 #include "io/MeshSetExport.h"
 
@@ -54,28 +54,28 @@ void writeBody(const figment::TriangleMesh& body, const std::string& path) {
   figment::exportMeshSet({skin}, path);
 }
 
-void printJson(const figment::BodyFitResult& fit) {
+void printJson(const figment::MeasuredBody& made) {
   std::printf("{");
-  const auto named = fit.achieved.named();
+  const auto named = made.achieved.named();
   for (size_t i = 0; i < named.size(); ++i)
     std::printf("%s\"%s\": %.5f", i ? ", " : "", named[i].first.c_str(), named[i].second);
   std::printf(
       ", \"parameters\": {\"gender\": %g, \"age\": %g, \"muscle\": %g, \"weight\": %g, \"height\": %.4f, "
       "\"cupSize\": %g",
-      fit.parameters.macro.gender, fit.parameters.macro.age, fit.parameters.macro.muscle, fit.parameters.macro.weight,
-      fit.parameters.macro.height, fit.parameters.macro.cupSize);
-  for (const auto& [key, value] : fit.parameters.measures) std::printf(", \"%s\": %.4f", key.c_str(), value);
+      made.parameters.macro.gender, made.parameters.macro.age, made.parameters.macro.muscle,
+      made.parameters.macro.weight, made.parameters.macro.height, made.parameters.macro.cupSize);
+  for (const auto& [key, value] : made.parameters.measures) std::printf(", \"%s\": %.4f", key.c_str(), value);
   std::printf("}}\n");
 }
 
 int make(const figment::HumanParameters& start, const std::vector<figment::MeasurementGoal>& goals,
          const std::string& output) {
-  figment::MakeHumanSession human;
+  figment::MakeHumanLibrary human;
   if (human.dir().empty()) return kTool.fail(figment::kMakeHumanDataMissing);
   try {
-    const figment::BodyFitResult fit = human.fit(start, goals);
-    writeBody(figment::numberedByFirstUse(fit.body), output);
-    printJson(fit);
+    const figment::MeasuredBody made = human.measuredBody(start, goals);
+    writeBody(figment::numberedByFirstUse(made.body), output);
+    printJson(made);
     return 0;
   } catch (const std::exception& error) {
     return kTool.fail(error.what());
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
   figment::HumanParameters start;
   std::map<std::string, double> typed;
   app.add_option("--sex", sex, "female or male")->required()->check(CLI::IsMember({"female", "male"}));
-  for (const auto& [key, parameter] : figment::fittedKeys())
+  for (const auto& [key, parameter] : figment::measurableKeys())
     app.add_option_function<double>(
         optionName(key), [&typed, k = key](double v) { typed[k] = v; },
         key + ", m (moves MakeHuman's " + parameter + ")");

@@ -17,7 +17,7 @@
 #include "io/FitMapScene.h"
 #include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/MeshExport.h"
 #include "io/RecommendationJson.h"
 #include "io/SizeChartFile.h"
@@ -30,7 +30,7 @@ const figment::tools::ToolMain kTool{"figment-size"};
 
 struct Request {
   std::string style, sex, body, chart;
-  std::map<std::string, double> typed;  // fitBody's keys -> m
+  std::map<std::string, double> typed;  // makeMeasuredBody's keys -> m
   bool json = false, cold = false;
   std::string fitMap, fitMapDir;  // kind; folder for body.obj and <size>.iv
   std::string size;               // set: try this size on only, no recommendation
@@ -105,7 +105,7 @@ int recommend(const Request& request, const figment::HumanModel& model, const fi
 }
 
 int run(const Request& request) {
-  figment::MakeHumanSession human;
+  figment::MakeHumanLibrary human;
   if (human.dir().empty()) return kTool.fail(figment::kMakeHumanDataMissing);
   try {
     const figment::HumanModel& model = human.model();
@@ -119,7 +119,7 @@ int run(const Request& request) {
     std::vector<figment::MeasurementGoal> goals;
     for (const auto& [key, value] : request.typed) goals.push_back({key, value});
     return recommend(request, model,
-                     human.fit(request.sex == "male" ? figment::Sex::Male : figment::Sex::Female, goals).body);
+                     human.measuredBody(request.sex == "male" ? figment::Sex::Male : figment::Sex::Female, goals).body);
   } catch (const std::exception& error) {
     return kTool.fail(error.what());
   }

@@ -35,7 +35,7 @@
 
 #include "headless/InitHeadless.h"
 #include "io/DrapeCache.h"
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "nodes/Init.h"
 #include "nodes/SceneSearch.h"
 #include "nodes/body/Mannequin.h"
@@ -324,7 +324,7 @@ std::vector<figment::session::EngineFit> measureFits(const SceneSession& session
   using figment::session::measureEngineFits;
   if (options.fitMap.empty() && options.stats.empty()) return {};
   if (options.stats.empty()) return measureEngineFits(session.scene(), false, nullptr);
-  figment::MakeHumanSession makeHuman;
+  figment::MakeHumanLibrary makeHuman;
   return measureEngineFits(session.scene(), true, &makeHuman);
 }
 

@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
+#include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
-#include "io/MakeHumanSession.h"
-#include "sim/body/BodyFit.h"
+#include "sim/body/MeasuredBody.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 #include "sim/collision/MovingMeshCollider.h"
@@ -44,7 +44,7 @@ struct HumanBody::Data {
   ~Data() {
     if (material) material->unref();
   }
-  figment::MakeHumanSession human;               // this node's: the targets it blends, read once
+  figment::MakeHumanLibrary human;               // this node's: the targets it blends, read once
   std::shared_ptr<const figment::HumanRig> rig;  // read on the first pose
   std::shared_ptr<const figment::RigSkin> skin;
   std::shared_ptr<const PoseMotion> motion;  // null: the rest pose
@@ -152,9 +152,9 @@ bool HumanBody::load(SoInput* in) {
     if (goals.empty()) {
       body = model.make(parameters);
     } else {
-      figment::BodyFitResult fit = data_->human.fit(parameters, goals);
-      body = std::move(fit.body);
-      parameters = fit.parameters;
+      figment::MeasuredBody made = data_->human.measuredBody(parameters, goals);
+      body = std::move(made.body);
+      parameters = made.parameters;
     }
     body = posed(parameters, std::move(body));
     setMesh(body, body);

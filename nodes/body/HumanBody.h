@@ -22,9 +22,9 @@ struct HumanParameters;
   \brief MakeHuman's body made to measurements; drawn, and a body wherever a MeshFile is.
 
   The skin of MakeHuman's hm08 base mesh blended from its macro targets (sim/body/HumanModel.h)
-  and, when any measurement field is above 0, fitted to those measurements
-  (sim/body/BodyFit.h: each met within 5 mm as figment-measure measures it; the weight is then
-  chosen by the fit, and the untyped measurements follow the macro model). Metres, y up, feet
+  and, when any measurement field is above 0, made to those measurements
+  (sim/body/MeasuredBody.h: each met within 5 mm as figment-measure measures it; the weight is then
+  chosen by the solve, and the untyped measurements follow the macro model). Metres, y up, feet
   on the floor, facing +z. Being a MeshFile it draws, offers `point` and `coordIndex`, is a
   ClothEngine's body (its triangles, exactly) and a Mannequin's body; the file fields
   (fileName, metresPerUnit, upAxis, exclude, collisionExclude, crop) are not used and

@@ -48,7 +48,7 @@ struct TriangleMesh;
   joint in `rotatedJoints` turns by its rotation about its rest position, carrying the
   parts below it; `height` scales the whole body about the floor, `armLength` the arms
   along their bones, `chest`, `waist` and `hips` the girth of the upper torso, lower
-  torso and hips. The volumes follow their parts' transformations (no refitting) and
+  torso and hips. The volumes follow their parts' transformations (no reshaping) and
   MannequinSkin draws the body mesh following them, blended within `blendRadius` of
   each joint.
 

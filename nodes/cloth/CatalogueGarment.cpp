@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "io/GarmentCatalogue.h"
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/PatternFile.h"
 #include "nodes/MeshFields.h"
 #include "nodes/SceneFiles.h"
@@ -20,7 +20,7 @@ SO_NODE_SOURCE(CatalogueGarment);
 
 struct CatalogueGarment::Data {
   std::vector<std::string> sceneDirectories;  // kept at read time for later loads
-  figment::MakeHumanSession human;            // this node's: the targets its chart bodies blend, read once
+  figment::MakeHumanLibrary human;            // this node's: the targets its chart bodies blend, read once
 };
 
 void CatalogueGarment::initClass() {
@@ -96,7 +96,7 @@ bool CatalogueGarment::load(SoInput* in) {
     } catch (const std::invalid_argument& bad) {
       throw std::invalid_argument(std::string("garment ") + bad.what());
     }
-    const figment::TriangleMesh body = data_->human.fit(shop.chart().sizes(item.sex)[item.size]).body;
+    const figment::TriangleMesh body = data_->human.measuredBody(shop.chart().sizes(item.sex)[item.size]).body;
     if (item.sewn()) {
       const figment::SewingPattern pattern = figment::readPatternFile(item.patternFile);
       const figment::UnsewnGarment cut = figment::cutPattern(

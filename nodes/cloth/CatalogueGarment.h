@@ -21,7 +21,7 @@
   "dress:M" is the strap dress in the women's M, "tshirt:38" the T-shirt in the women's 38,
   "pencil:S:222222" the pencil skirt in S, black. The mesh is the style cut around the size's
   chart body (MakeHuman's body made to the chart's stature, bust, waist and hip girth,
-  sim/body/BodyFit.h) with the style's ease (sim/garment/GarmentStyle.h): a size-M dress
+  sim/body/MeasuredBody.h) with the style's ease (sim/garment/GarmentStyle.h): a size-M dress
   is one fixed garment whatever body wears it, the same one figment-size drapes. Being a
   MeshFile it offers `point` and `coordIndex` for a ClothEngine's restPoints and coordIndex;
   the file fields are not used and fileName must stay "". Two more outputs: `colour`, the

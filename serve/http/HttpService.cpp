@@ -13,9 +13,9 @@
 #include "io/SizeChartFile.h"
 #include "serve/http/ExchangeServer.h"
 #include "serve/http/WebAssets.h"
-#include "serve/request/Catalogue.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 #include "serve/request/Utf8Text.h"
 #include "serve/workers/Digest.h"
 #include "serve/workers/RedisStore.h"
@@ -292,9 +292,9 @@ void HttpService::asset(const httplib::Request& request, httplib::Response& resp
 }
 
 void HttpService::catalogue(const httplib::Request&, httplib::Response& response) {
-  nlohmann::json catalogue = Catalogue::toJson();
+  nlohmann::json catalogue = ShopperChoices::toJson();
   catalogue["limits"] = limitsJson();
-  if (chart_) catalogue["fit"] = FitRequest::catalogueJson(*chart_);
+  if (chart_) catalogue["fit"] = FitRequest::choicesJson(*chart_);
   response.set_header("Cache-Control", "public, max-age=300");
   response.set_content(jsonText(catalogue), kJson);
 }

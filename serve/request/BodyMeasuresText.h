@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "serve/request/Catalogue.h"
 #include "serve/request/RequestParameters.h"
+#include "serve/request/ShopperChoices.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment::serve {

@@ -73,7 +73,7 @@ std::variant<FitRequest, ParameterError> FitRequest::parseCanonical(const std::s
   return parse(RequestParameters::split(text), chart);
 }
 
-nlohmann::json FitRequest::catalogueJson(const SizeChart& chart) {
+nlohmann::json FitRequest::choicesJson(const SizeChart& chart) {
   nlohmann::json sizes = nlohmann::json::object(), measures = nlohmann::json::object();
   for (const Sex sex : {Sex::Female, Sex::Male}) {
     nlohmann::json list = nlohmann::json::array(), ranged = nlohmann::json::object();

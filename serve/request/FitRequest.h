@@ -10,8 +10,8 @@
 #include <variant>
 #include <vector>
 
-#include "serve/request/Catalogue.h"
 #include "serve/request/RequestParameters.h"
+#include "serve/request/ShopperChoices.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment::serve {
@@ -31,7 +31,7 @@ class FitRequest {
   static std::variant<FitRequest, ParameterError> parseCanonical(const std::string& text, const SizeChart& chart);
 
   // /api/catalogue's "fit": each style with the chart's sizes per sex, and the ranges.
-  static nlohmann::json catalogueJson(const SizeChart& chart);
+  static nlohmann::json choicesJson(const SizeChart& chart);
 
   Sex sex = Sex::Female;
   std::string style;  // a sim/garment style name

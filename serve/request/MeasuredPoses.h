@@ -1,7 +1,7 @@
 #pragma once
 // The poses a measured body (GET /api/render with `sex`) may take: MakeHuman's rig presets
 // (sim/body/PosePresets.h), which the HumanBody takes in a drape by moving from its rest
-// pose into it (nodes/body/HumanBody.h). The Mannequin's catalogue poses (relaxed,
+// pose into it (nodes/body/HumanBody.h). The Mannequin's poses (ShopperChoices: relaxed,
 // turn-head) turn its own skeleton's joints, which a HumanBody has not: refused for it.
 
 #include <string>

@@ -53,42 +53,43 @@ std::string namesOf(const std::vector<T>& items) {
   return namesOf(names);
 }
 
-// `ranges`: a measured body's (its sex's, BodyMeasuresText::ranges); empty: the Mannequin's catalogue.
+// `ranges`: a measured body's (its sex's, BodyMeasuresText::ranges); empty: the Mannequin's (ShopperChoices).
 std::optional<ParameterError> measurement(const std::string& name, const std::string& value,
                                           const std::vector<MeasureRange>& ranges, double& out) {
   const std::string key = name == "chest" ? "bust" : name;
   const auto own = std::find_if(ranges.begin(), ranges.end(), [&](const MeasureRange& r) { return r.name == key; });
-  return BodyMeasuresText::read(name, value, own != ranges.end() ? *own : Catalogue::measure(key), out);
+  return BodyMeasuresText::read(name, value, own != ranges.end() ? *own : ShopperChoices::measure(key), out);
 }
 
-// A tone by its name as the catalogue writes it, or hex in any case, optionally after '#'.
+// A tone by its name as ShopperChoices writes it, or hex in any case, optionally after '#'.
 std::optional<ParameterError> skinTone(const std::string& value, std::string& out) {
-  for (const NamedColour& tone : Catalogue::skinTones())
+  for (const NamedColour& tone : ShopperChoices::skinTones())
     if (tone.name == value) return out = tone.hex, std::nullopt;
   const std::string text = lower(value.size() == 7 && value[0] == '#' ? value.substr(1) : value);
   if (isHex6(text)) return out = text, std::nullopt;
-  return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(Catalogue::skinTones()));
+  return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(ShopperChoices::skinTones()));
 }
 
 // The sizes an outfit item may name and the measurements' ranges: the Mannequin's
-// catalogue, or with a sex the chart's.
+// ShopperChoices, or with a sex the chart's.
 struct SizeNames {
-  const SizeChart* chart = nullptr;  // null: the Mannequin's catalogue
+  const SizeChart* chart = nullptr;  // null: the Mannequin's ShopperChoices
   Sex sex = Sex::Female;
   std::vector<MeasureRange> ranges;  // with a chart: the sex's (what /api/fit accepts)
 };
 
 std::string acceptedItems(const SizeNames& names) {
   if (!names.chart)
-    return "style:size[:rrggbb], styles " + namesOf(Catalogue::styles()) + "; sizes " + namesOf(Catalogue::sizes());
+    return "style:size[:rrggbb], styles " + namesOf(ShopperChoices::styles()) + "; sizes " +
+           namesOf(ShopperChoices::sizes());
   std::vector<std::string> sizes;
   for (const ChartSize& size : names.chart->sizes(names.sex)) sizes.push_back(size.name);
   return "style:size[:rrggbb], styles " + styleNames() + "; " + sexName(names.sex) + " sizes " + namesOf(sizes);
 }
 
-// A graded style's colour when it has none: the Mannequin catalogue's for its name, else grey.
+// A graded style's colour when it has none: ShopperChoices' for its name, else grey.
 std::string defaultColour(const std::string& style) {
-  const GarmentStyle* known = Catalogue::style(style);
+  const GarmentStyle* known = ShopperChoices::style(style);
   return known ? known->defaultColour : "8c8c8c";
 }
 
@@ -100,9 +101,9 @@ std::optional<ParameterError> outfitItem(const std::string& value, const std::st
     return bad("outfit", value, "a garment without a size: " + Utf8Text::shown(item, 32), accepted);
   out.style = item.substr(0, a);
   out.size = item.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
-  if (names.chart ? !findStyle(out.style) : !Catalogue::style(out.style))
+  if (names.chart ? !findStyle(out.style) : !ShopperChoices::style(out.style))
     return bad("outfit", value, "no style named " + Utf8Text::shown(out.style, 32), accepted);
-  if (names.chart ? names.chart->find(names.sex, out.size) < 0 : !Catalogue::size(out.size))
+  if (names.chart ? names.chart->find(names.sex, out.size) < 0 : !ShopperChoices::size(out.size))
     return bad("outfit", value, "no size named " + Utf8Text::shown(out.size, 32), accepted);
   if (names.chart) out.size = names.chart->sizes(names.sex)[size_t(names.chart->find(names.sex, out.size))].name;
   out.colour = b == std::string::npos ? defaultColour(out.style) : lower(item.substr(b + 1));
@@ -129,14 +130,14 @@ std::optional<ParameterError> outfit(const std::string& value, const SizeNames& 
   return std::nullopt;
 }
 
-// A Mannequin's pose is the catalogue's; a measured body's one of MakeHuman's rig presets.
+// A Mannequin's pose is one of ShopperChoices'; a measured body's one of MakeHuman's rig presets.
 std::optional<ParameterError> pose(const std::string& value, const SizeNames& names, std::string& out) {
-  if (names.chart ? MeasuredPoses::find(value) != nullptr : Catalogue::pose(value) != nullptr)
+  if (names.chart ? MeasuredPoses::find(value) != nullptr : ShopperChoices::pose(value) != nullptr)
     return out = value, std::nullopt;
-  if (names.chart && Catalogue::pose(value))
+  if (names.chart && ShopperChoices::pose(value))
     return bad("pose", value, "a measured body (sex) has MakeHuman's rig, not the Mannequin's joints",
                MeasuredPoses::names());
-  return bad("pose", value, "no such pose", names.chart ? MeasuredPoses::names() : namesOf(Catalogue::poses()));
+  return bad("pose", value, "no such pose", names.chart ? MeasuredPoses::names() : namesOf(ShopperChoices::poses()));
 }
 
 // Stretch needs the drape alone; ease and pressure the skin as a mesh, which a measured
@@ -218,8 +219,9 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
     else if (name == "pose")
       error = pose(value, names, request.pose);
     else if (name == "light")
-      error = Catalogue::light(value) ? (request.light = value, std::nullopt)
-                                      : std::optional(bad(name, value, "no such light", namesOf(Catalogue::lights())));
+      error = ShopperChoices::light(value)
+                  ? (request.light = value, std::nullopt)
+                  : std::optional(bad(name, value, "no such light", namesOf(ShopperChoices::lights())));
     else if (name == "outfit")
       error = outfit(value, names, request.outfit);
     else if (name == "view")
@@ -239,12 +241,12 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
 RenderRequest defaults() {
   RenderRequest request;
   const auto rounded = [](const char* name) {
-    return std::round(Catalogue::measure(name).reference * 1000.0) / 1000.0;
+    return std::round(ShopperChoices::measure(name).reference * 1000.0) / 1000.0;
   };
   request.body = {rounded("stature"), rounded("bust"), rounded("waist"), rounded("hips")};
   request.skin = "cc9473";
   request.pose = "rest";
-  request.outfit = {{"dress", "M", Catalogue::style("dress")->defaultColour}};
+  request.outfit = {{"dress", "M", ShopperChoices::style("dress")->defaultColour}};
   request.light = "studio";
   return request;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // GET /api/render's parameters, checked and made canonical. A request is parameters
-// only: names from the catalogue, numbers and hex colours; nothing in it names a file or
+// only: names from ShopperChoices, numbers and hex colours; nothing in it names a file or
 // holds scene text. Two requests that draw the same picture have the same canonical()
 // text, so its digest names the image (the ETag) and identical requests in flight drape
 // once.
@@ -9,16 +9,16 @@
 #include <variant>
 #include <vector>
 
-#include "serve/request/Catalogue.h"
 #include "serve/request/RequestParameters.h"
+#include "serve/request/ShopperChoices.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment::serve {
 
 // One garment of the outfit, innermost first.
 struct OutfitItem {
-  std::string style;   // a Catalogue style
-  std::string size;    // a Catalogue size
+  std::string style;   // a ShopperChoices style
+  std::string size;    // a ShopperChoices size
   std::string colour;  // rrggbb, lower case
 };
 
@@ -57,9 +57,9 @@ class RenderRequest {
   BodyMeasures body;  // m
   std::string sex;    // "" for the scaled Mannequin; female or male for a measured HumanBody
   std::string skin;   // rrggbb
-  std::string pose;   // a Catalogue pose
+  std::string pose;   // a ShopperChoices pose
   std::vector<OutfitItem> outfit;
-  std::string light;                  // a Catalogue light
+  std::string light;                  // a ShopperChoices light
   double azimuth = 0, elevation = 0;  // degrees
   int width = 800, height = 600;      // pixels
   std::string format = "png";         // png, or glb: the dressed body as glTF binary

@@ -65,13 +65,13 @@ void addLights(SoSeparator* root, const LightPreset& preset) {
 Mannequin* mannequin(const RenderRequest& request, const Wardrobe& wardrobe) {
   auto* model = new Mannequin;
   model->body = wardrobe.body();
-  const Pose& pose = *Catalogue::pose(request.pose);
+  const Pose& pose = *ShopperChoices::pose(request.pose);
   for (size_t i = 0; i < pose.joints.size(); ++i) {
     const auto& r = pose.rotations[i];
     model->rotatedJoints.set1Value(int(i), pose.joints[i].c_str());
     model->rotations.set1Value(int(i), SbRotation(SbVec3f(float(r[0]), float(r[1]), float(r[2])), float(r[3])));
   }
-  const BodyFactors factors = Catalogue::bodyFactors(request.body);
+  const BodyFactors factors = ShopperChoices::bodyFactors(request.body);
   model->height = float(factors.height);
   model->chest = float(factors.chest);
   model->waist = float(factors.waist);
@@ -260,7 +260,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
                                 std::vector<FitMapGarment>* fitMaps) {
   if (request.fitMap.empty()) fitMaps = nullptr;
   auto* root = new SoSeparator;
-  addLights(root, *Catalogue::light(request.light));
+  addLights(root, *ShopperChoices::light(request.light));
   auto* body = new SoSeparator;
   body->addChild(material(colourOf(request.skin), 0.1f, 0.2f));
   body->addChild(hints(true));
@@ -284,11 +284,11 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
   root->addChild(body);
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {
-    const GarmentStyle& style = *Catalogue::style(item.style);
+    const GarmentStyle& style = *ShopperChoices::style(item.style);
     const MeshFile* pattern = wardrobe.pattern(item.style);
     ClothEngine* engine = engineFor(style, !beneath.empty(), bodyUnder(model, beneath));
-    restShape(engine, pattern, wardrobe.heightOrigin(), Catalogue::bodyFactors(request.body).height,
-              Catalogue::size(item.size)->girth);
+    restShape(engine, pattern, wardrobe.heightOrigin(), ShopperChoices::bodyFactors(request.body).height,
+              ShopperChoices::size(item.size)->girth);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
     root->addChild(garment(item, engine, &pattern->coordIndex,
                            {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}}));  // cotton jersey

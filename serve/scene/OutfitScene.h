@@ -1,7 +1,7 @@
 #pragma once
 // A render request's scene, built in code from FIGMENT's nodes (never from text a
 // request holds): the lights of its preset; the default mannequin sized by the request's
-// measurements (Catalogue::bodyFactors) and posed; its skin; and each garment of the
+// measurements (ShopperChoices::bodyFactors) and posed; its skin; and each garment of the
 // outfit, innermost first, draped by a ClothEngine on the mannequin and on the draped
 // surfaces of the garments under it, as scenes/outfit-layers.iv drapes its two. The
 // same nodes and settings as the shipped scenes, so the same request drapes as a scene

@@ -11,19 +11,20 @@
 #include "io/GarmentCatalogue.h"
 #include "nodes/body/MeshFile.h"
 #include "nodes/body/SkeletonJoints.h"
-#include "serve/request/Catalogue.h"
+#include "serve/request/ShopperChoices.h"
 
 namespace figment::serve {
 
 namespace {
 
-// The shared nodes as scene text: fixed in code, with the catalogue's file names only.
+// The shared nodes as scene text: fixed in code, with ShopperChoices' file names only.
 std::string wardrobeText() {
   std::string text =
       "#Inventor V2.1 ascii\nSeparator {\n"
       "  MeshFile { fileName \"human.zae\" collisionExclude \"human-highpolyeyesMesh\" }\n"
       "  File { name \"human-volumes.iv\" }\n";
-  for (const GarmentStyle& style : Catalogue::styles()) text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
+  for (const GarmentStyle& style : ShopperChoices::styles())
+    text += "  MeshFile { fileName \"" + style.pattern + "\" }\n";
   return text + "}\n";
 }
 
@@ -58,7 +59,7 @@ std::string Wardrobe::read(const std::string& scenesFolder) {
   root_->ref();
   // The children in the text's order (no DEF names: Coin's name dictionary is the
   // whole process's): the body, its volumes, then one pattern per style.
-  const size_t styles = Catalogue::styles().size();
+  const size_t styles = ShopperChoices::styles().size();
   if (size_t(root->getNumChildren()) != 2 + styles) return "the body or a pattern did not read from " + scenesFolder;
   const auto meshFile = [root](int i) {
     SoNode* node = root->getChild(i);
@@ -66,7 +67,7 @@ std::string Wardrobe::read(const std::string& scenesFolder) {
   };
   body_ = meshFile(0);
   volumes_ = root->getChild(1);
-  for (size_t i = 0; i < styles; ++i) patterns_[Catalogue::styles()[i].name] = meshFile(int(2 + i));
+  for (size_t i = 0; i < styles; ++i) patterns_[ShopperChoices::styles()[i].name] = meshFile(int(2 + i));
   if (!body_ || body_->point.getNum() == 0) return "the body did not read from " + scenesFolder;
   for (const auto& [style, pattern] : patterns_)
     if (!pattern || pattern->point.getNum() == 0) return "the " + style + "'s pattern did not read";
@@ -81,7 +82,7 @@ std::string Wardrobe::readCatalogue(const std::string& scenesFolder) {
     return error.what();
   }
   // The service's styles and their default colours are the catalogue's.
-  for (const GarmentStyle& style : Catalogue::styles()) {
+  for (const GarmentStyle& style : ShopperChoices::styles()) {
     const CatalogueStyle* sold = catalogue_->style(style.name);
     if (!sold) return scenesFolder + "/catalogue/index.txt: no style " + style.name;
     if (sold->colours.front() != style.defaultColour)

@@ -1,9 +1,9 @@
 #pragma once
 // What every scene a worker builds shares, read once when the worker starts: the default
-// body's mesh and fitted collision volumes, each catalogue style's pattern, and the garment
+// body's mesh and shaped collision volumes, each service style's pattern, and the garment
 // catalogue's files (catalogue/index.txt, io/GarmentCatalogue.h), which must sell every
-// style of Catalogue.h with its default colour first. The files are the catalogue's
-// (Catalogue.h), found in the scenes folder; nothing here is named by a request.
+// style of ShopperChoices.h with its default colour first. The files are those ShopperChoices.h
+// names, found in the scenes folder; nothing here is named by a request.
 
 #include <Inventor/SbVec3f.h>
 #include <Inventor/nodes/SoNode.h>

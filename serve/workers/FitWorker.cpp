@@ -38,7 +38,7 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
                                               {"waist_girth", request.body.waist}};
   TriangleMesh body;
   try {
-    body = human_.fit(request.sex, goals).body;
+    body = human_.measuredBody(request.sex, goals).body;
   } catch (const UnreachableMeasurement& error) {
     return failure(422, std::string("no body of these measurements can be made: ") + error.what());
   }
@@ -50,7 +50,7 @@ std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {
   // Made as a chart body, in HumanBody's order (nodes/body/HumanBody.cpp: goalsOf), so the
   // answer is the node's.
   try {
-    human_.fit(ChartSize{sex, "", "", body.stature, body.bust, body.waist, body.hips});
+    human_.measuredBody(ChartSize{sex, "", "", body.stature, body.bust, body.waist, body.hips});
   } catch (const UnreachableMeasurement& error) {
     return error.what();
   }

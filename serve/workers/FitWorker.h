@@ -10,8 +10,8 @@
 #include <memory>
 #include <string>
 
-#include "io/MakeHumanSession.h"
-#include "serve/request/Catalogue.h"
+#include "io/MakeHumanLibrary.h"
+#include "serve/request/ShopperChoices.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/garment/SizeChart.h"
 
@@ -52,7 +52,7 @@ class FitWorker {
   SizeFitter& fitter(const std::string& style);
 
   SizeChart chart_;
-  MakeHumanSession human_;                                      // the worker's: read on its first fit request
+  MakeHumanLibrary human_;                                      // the worker's: read on its first fit request
   std::map<std::string, std::unique_ptr<SizeFitter>> fitters_;  // by style
 };
 

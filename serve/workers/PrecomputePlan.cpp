@@ -3,8 +3,8 @@
 #include <set>
 #include <sstream>
 
-#include "serve/request/Catalogue.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 
 namespace figment::serve {
 
@@ -79,7 +79,7 @@ std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromLines(co
 std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogue(const Grid& grid) {
   std::vector<std::string> poses = grid.poses, views = grid.views, bodies = grid.bodies;
   if (poses.empty())
-    for (const Pose& pose : Catalogue::poses()) poses.push_back(pose.name);
+    for (const Pose& pose : ShopperChoices::poses()) poses.push_back(pose.name);
   if (views.empty()) views.push_back("front");
   if (bodies.empty()) bodies.push_back("");
   Requests requests;
@@ -90,8 +90,8 @@ std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogu
     for (const char* name : {"stature", "bust", "waist", "hips"})
       if (std::string value; std::getline(in, value, ',')) measures.emplace_back(name, value);
     if (!body.empty() && measures.size() != 4) return "--body " + body + ": not STATURE,BUST,WAIST,HIPS (metres)";
-    for (const GarmentStyle& style : Catalogue::styles())
-      for (const GarmentSize& size : Catalogue::sizes())
+    for (const GarmentStyle& style : ShopperChoices::styles())
+      for (const GarmentSize& size : ShopperChoices::sizes())
         for (const std::string& pose : poses)
           for (const std::string& view : views) {
             QueryParameters parameters = measures;

@@ -21,7 +21,7 @@ class PrecomputePlan {
 
   struct Grid {
     std::vector<std::string> bodies;  // "STATURE,BUST,WAIST,HIPS" in metres; none: the default body
-    std::vector<std::string> poses;   // none: every pose of the catalogue
+    std::vector<std::string> poses;   // none: every pose of ShopperChoices
     std::vector<std::string> views;   // as the view parameter takes them; none: front
     std::string size = "800x600";     // WxH
   };

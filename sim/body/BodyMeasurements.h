@@ -1,6 +1,6 @@
 #pragma once
 // A body's measurements as a tape measures them (ISO 8559-1 names), from landmarks found
-// on its mesh. What a made body is fitted to (sim/body/BodyFit.h) and what
+// on its mesh. What a body is made to (sim/body/MeasuredBody.h) and what
 // figment-measure prints. Definitions, and where each departs from the standard, in
 // docs/bodies.md; the landmark rules at the top of BodyMeasurements.cpp.
 

@@ -1,6 +1,6 @@
 #pragma once
 // A body mesh cut into the parts of its skeleton (sim/body/Skeleton.h): the inputs of the
-// collision volumes (§3; fitted by sim/fitting).
+// collision volumes (§3; shaped by sim/volumes).
 //
 // The cut, per triangle (by its centroid c and outward face normal n):
 //   1. the nearest bone among those the triangle faces away from, n . (c - q) >= 0 with
@@ -34,7 +34,7 @@ std::vector<int> assignTriangles(const TriangleMesh& body, const Skeleton& skele
 
 // The part of each vertex of `body`: the part most of its triangles belong to (ties: the
 // lower index); -1 for a vertex no triangle uses. With triangleParts from
-// assignTriangles, the vertices skin with the parts whose volumes were fitted to them.
+// assignTriangles, the vertices skin with the parts whose volumes were shaped to them.
 std::vector<int> vertexParts(const TriangleMesh& body, const std::vector<int>& triangleParts, size_t partCount);
 
 }  // namespace figment

@@ -31,7 +31,7 @@ struct SkinWeights {
 // Throws std::invalid_argument when blendRadius is not > 0.
 SkinWeights skinWeights(const Skeleton& skeleton, const std::vector<Vec3>& restVertices, double blendRadius = 0.04);
 // The same with each vertex's own part given (index into skeleton.parts; -1: by
-// assignParts), e.g. the parts the collision volumes were fitted to (vertexParts).
+// assignParts), e.g. the parts the collision volumes were shaped to (vertexParts).
 SkinWeights skinWeights(const Skeleton& skeleton, const std::vector<Vec3>& restVertices, const std::vector<int>& owner,
                         double blendRadius = 0.04);
 // Throws std::invalid_argument when the sizes disagree or a part has no transform.

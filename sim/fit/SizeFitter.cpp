@@ -4,8 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "sim/body/BodyFit.h"
 #include "sim/body/BodyMeasurements.h"
+#include "sim/body/MeasuredBody.h"
 #include "sim/cloth/MaterialPresets.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/TriangleBvh.h"
@@ -153,7 +153,7 @@ const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
                                               {"waist_girth", chartSize.waist},
                                               {"hip_girth", chartSize.hip}};
   Graded made;
-  made.body = fitBody(model_, sexStart(sex), goals).body;
+  made.body = makeMeasuredBody(model_, sexStart(sex), goals).body;
   if (style_) {
     made.garment = cutGarment(*style_, made.body);
   } else {

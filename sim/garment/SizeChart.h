@@ -1,7 +1,7 @@
 #pragma once
 // A size chart: for each sex, the sizes in order from the smallest, each with the body
 // dimensions it is cut for (stature, bust or chest, waist and hip girth). The chart's body
-// of a size is MakeHuman's body made to those four (sim/body/BodyFit.h); a graded garment
+// of a size is MakeHuman's body made to those four (sim/body/MeasuredBody.h); a graded garment
 // is cut around it (sim/garment/GarmentStyle.h). Read from a file by io/SizeChartFile.h;
 // the shipped chart and its source: scenes/sizes/chart.txt, docs/sizes.md.
 

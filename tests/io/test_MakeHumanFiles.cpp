@@ -10,7 +10,7 @@
 #include "io/MakeHumanFiles.h"
 #include "io/MeshExport.h"
 #include "io/TargetLibrary.h"
-#include "sim/body/BodyFit.h"
+#include "sim/body/MeasuredBody.h"
 #include "support/GzipFile.h"
 #include "support/IoTestSupport.h"
 
@@ -92,12 +92,12 @@ TEST_F(MakeHumanData, SizeChartBodiesMeasureWithin5mmOfTheirDimensions) {
   const TempDir dir;
   for (const ChartSize& size : kChart) {
     HumanParameters start = sex(size.gender);
-    const BodyFitResult fit = fitBody(
+    const MeasuredBody made = makeMeasuredBody(
         *model_, start,
         {{"stature", size.stature}, {"bust_girth", size.bust}, {"waist_girth", size.waist}, {"hip_girth", size.hip}});
     // written and read back as figment-measure reads it, then measured anew
     const std::string path = (dir.path() / "body.obj").string();
-    exportObj(numberedByFirstUse(fit.body), path);
+    exportObj(numberedByFirstUse(made.body), path);
     const BodyMeasurements m = measureBody(importMesh(path).mesh);
     EXPECT_NEAR(m.stature, size.stature, 0.005) << size.name;
     EXPECT_NEAR(m.bustGirth, size.bust, 0.005) << size.name;
@@ -109,12 +109,12 @@ TEST_F(MakeHumanData, SizeChartBodiesMeasureWithin5mmOfTheirDimensions) {
 TEST_F(MakeHumanData, ASetOutOfReachIsRefusedNamingTheMeasurement) {
   // hips 40 cm under the waist: no body has them
   try {
-    fitBody(*model_, sex(0), {{"waist_girth", 0.90}, {"hip_girth", 0.50}});
+    makeMeasuredBody(*model_, sex(0), {{"waist_girth", 0.90}, {"hip_girth", 0.50}});
     FAIL() << "no exception";
   } catch (const UnreachableMeasurement& e) {
     EXPECT_NE(std::string(e.what()).find("hip_girth 0.500 m is out of reach"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(fitBody(*model_, sex(0), {{"waist", 0.7}}), std::invalid_argument);
+  EXPECT_THROW(makeMeasuredBody(*model_, sex(0), {{"waist", 0.7}}), std::invalid_argument);
 }
 
 TEST_F(MakeHumanData, TargetsAreReadOnceAndAMissingOneIsNull) {

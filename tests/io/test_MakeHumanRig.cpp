@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
-#include "io/MakeHumanSession.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 
@@ -37,7 +37,7 @@ class MakeHumanRigTest : public ::testing::Test {
     const int b = rig->require(bone);
     return g[b] * placed[b].head;
   }
-  MakeHumanSession human;
+  MakeHumanLibrary human;
   const HumanModel* model = nullptr;  // human's
   std::optional<HumanRig> rig;
 };

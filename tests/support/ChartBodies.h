@@ -6,7 +6,7 @@
 
 #include <memory>
 
-#include "io/MakeHumanSession.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/SizeChartFile.h"
 
 namespace figment::test {
@@ -15,14 +15,14 @@ namespace figment::test {
 inline constexpr const char* kMakeHumanDataSkip = "MakeHuman's data not found (scripts/setup.sh fetches it)";
 
 struct ChartBodies {
-  std::unique_ptr<MakeHumanSession> human;  // its model read
+  std::unique_ptr<MakeHumanLibrary> human;  // its model read
   SizeChart chart;
 };
 
 // Null when MakeHuman's data is absent (the suite's tests then skip); the chart is read
 // only when it is there.
 inline std::unique_ptr<ChartBodies> loadChartBodies() {
-  auto human = std::make_unique<MakeHumanSession>();
+  auto human = std::make_unique<MakeHumanLibrary>();
   if (human->dir().empty()) return nullptr;
   human->model();
   return std::make_unique<ChartBodies>(ChartBodies{std::move(human), readSizeChart(defaultSizeChartPath())});

@@ -11,12 +11,12 @@
 #include <cstdio>
 
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
-#include "io/MakeHumanSession.h"
 #include "io/MeshExport.h"
 #include "io/MeshImport.h"
 #include "io/SizeChartFile.h"
-#include "sim/body/BodyFit.h"
+#include "sim/body/MeasuredBody.h"
 #include "sim/body/SkinParts.h"
 #include "sim/collision/SelfIntersections.h"
 #include "sim/garment/SizeGrading.h"
@@ -48,7 +48,7 @@ class MeasuredBodies : public ::testing::Test {
     p.macro.gender = sex == Sex::Male ? 1.0 : 0.0;
     return p;
   }
-  MakeHumanSession human;
+  MakeHumanLibrary human;
   const HumanModel* model = nullptr;  // human's
   std::vector<int> parts;
   std::vector<std::pair<int, int>> baseCrossing;
@@ -72,12 +72,12 @@ TEST_F(MeasuredBodies, SixtySetsMeasureWithin5mmAndCrossNoNewParts) {
   for (const ChartSize& set : sets) {
     const std::vector<MeasurementGoal> goals = {
         {"stature", set.stature}, {"bust_girth", set.bust}, {"waist_girth", set.waist}, {"hip_girth", set.hip}};
-    BodyFitResult fit;
-    ASSERT_NO_THROW(fit = fitBody(*model, startFor(set.sex), goals)) << label(set);
-    exportObj(numberedByFirstUse(fit.body), path);                  // as figment-body writes it
+    MeasuredBody made;
+    ASSERT_NO_THROW(made = makeMeasuredBody(*model, startFor(set.sex), goals)) << label(set);
+    exportObj(numberedByFirstUse(made.body), path);                 // as figment-body writes it
     const BodyMeasurements m = measureBody(importMesh(path).mesh);  // as figment-measure reads it
     for (const MeasurementGoal& goal : goals) EXPECT_NEAR(m.byName(goal.key), goal.value, 0.005) << label(set);
-    const std::vector<std::string> crossing = newPartCrossings(fit.body);
+    const std::vector<std::string> crossing = newPartCrossings(made.body);
     EXPECT_TRUE(crossing.empty()) << label(set) << ": " << (crossing.empty() ? "" : crossing.front());
   }
 }
@@ -115,7 +115,7 @@ TEST_F(MeasuredBodies, EachPartHoldsSkinOnBothSides) {
 }
 
 TEST_F(MeasuredBodies, APartialMeasurementIsTheFullOnesPart) {
-  // what a fit measures at each step is what figment-measure gives for the same keys
+  // what the maker measures at each step is what figment-measure gives for the same keys
   for (const double weight : {0.2, 0.9}) {
     HumanParameters p = startFor(Sex::Female);
     p.macro.weight = weight;
@@ -135,24 +135,24 @@ TEST_F(MeasuredBodies, APartialMeasurementIsTheFullOnesPart) {
 }
 
 TEST_F(MeasuredBodies, BeyondTheWeightsEndsTheMassGoesOnThroughMuscleAndCup) {
-  const auto fit = [&](double stature, double bust, double waist, double hip) {
-    return fitBody(*model, startFor(Sex::Female),
-                   {{"stature", stature}, {"bust_girth", bust}, {"waist_girth", waist}, {"hip_girth", hip}})
+  const auto made = [&](double stature, double bust, double waist, double hip) {
+    return makeMeasuredBody(*model, startFor(Sex::Female),
+                            {{"stature", stature}, {"bust_girth", bust}, {"waist_girth", waist}, {"hip_girth", hip}})
         .parameters.macro;
   };
   // women's 38: within the weight's range, muscle and cup size as they were
-  const MacroParameters m38 = fit(1.68, 0.88, 0.72, 0.96);
+  const MacroParameters m38 = made(1.68, 0.88, 0.72, 0.96);
   EXPECT_GT(m38.weight, 0.0);
   EXPECT_LT(m38.weight, 1.0);
   EXPECT_EQ(m38.muscle, 0.5);
   EXPECT_EQ(m38.cupSize, 0.5);
   // women's 46 (graded above the chart): the heaviest weight, and less muscle
-  const MacroParameters m46 = fit(1.68, 1.04, 0.88, 1.12);
+  const MacroParameters m46 = made(1.68, 1.04, 0.88, 1.12);
   EXPECT_EQ(m46.weight, 1.0);
   EXPECT_LT(m46.muscle, 0.5);
   // women's 28 (graded below) at 176 cm: the lightest weight, no muscle, and a smaller cup
   // once the bust target is at its end
-  const MacroParameters m28 = fit(1.76, 0.68, 0.52, 0.76);
+  const MacroParameters m28 = made(1.76, 0.68, 0.52, 0.76);
   EXPECT_EQ(m28.weight, 0.0);
   EXPECT_EQ(m28.muscle, 0.0);
   EXPECT_LT(m28.cupSize, 0.5);

@@ -23,8 +23,8 @@
 #include "sim/body/BodyMeasurements.h"
 #include "sim/body/BodyParts.h"
 #include "sim/body/SkeletonEstimate.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
 #include "sim/garment/StrapDress.h"
+#include "sim/volumes/VolumeShaping.h"
 #include "support/DefaultBody.h"
 #include "support/ProgramRun.h"
 #include "support/TempDir.h"
@@ -145,8 +145,8 @@ TEST(ScaledAndTurnedBody, HasTheDefaultBodysVolumesOnTwoParts) {
     const PartMesh& expectedPart = partNamed(expectedParts, name);
     const PartMesh& foundPart = partNamed(foundParts, name);
     ASSERT_EQ(foundPart.mesh.vertices.size(), expectedPart.mesh.vertices.size()) << name;
-    const std::vector<CollisionVolumeParameters> expected = fitPartRadial(expectedPart);
-    const std::vector<CollisionVolumeParameters> found = fitPartRadial(foundPart);
+    const std::vector<CollisionVolumeParameters> expected = shapePartRadial(expectedPart);
+    const std::vector<CollisionVolumeParameters> found = shapePartRadial(foundPart);
     ASSERT_EQ(found.size(), expected.size()) << name;
     // The surfaces agree where they matter, at the part's own vertices: within 1 mm.
     double largest = 0.0;

@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "io/MakeHumanFiles.h"
+#include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
-#include "io/MakeHumanSession.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 #include "sim/collision/MovingMeshCollider.h"
@@ -77,7 +77,7 @@ class PosedDrapes : public ::testing::Test {
   }
 
   HumanParameters parameters;
-  MakeHumanSession human;
+  MakeHumanLibrary human;
   const HumanModel* model = nullptr;  // human's
   std::optional<HumanRig> rig;
   RigSkin skin;

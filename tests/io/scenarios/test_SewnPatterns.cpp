@@ -64,7 +64,7 @@ TEST_P(SewnPatterns, SewsClosedAndRestsOnItsSizesChartBody) {
   const SizeChart& chart = bodies_->chart;
   const int size = chart.find(shipped.sex, shipped.size);
   ASSERT_GE(size, 0) << shipped.size;
-  const TriangleMesh body = bodies_->human->fit(chart.sizes(shipped.sex)[size]).body;
+  const TriangleMesh body = bodies_->human->measuredBody(chart.sizes(shipped.sex)[size]).body;
   const SewingPattern pattern = readPatternFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/patterns/" + shipped.file);
   const UnsewnGarment cut = cutPattern(placed(pattern, placementOn(body, 0.0)), 0.02);
   auto collider = std::make_shared<MeshCollider>(body);

@@ -59,7 +59,7 @@ class SixBodyDrapes : public ::testing::TestWithParam<ChartBody> {
     return sizes.at(which.place == Place::Smallest ? 0 : which.place == Place::Middle ? n / 2 : n - 1);
   }
   // The size's body, made to its stature, bust, waist and hip girth.
-  static TriangleMesh chartBody(const ChartBody& which) { return bodies_->human->fit(chartSize(which)).body; }
+  static TriangleMesh chartBody(const ChartBody& which) { return bodies_->human->measuredBody(chartSize(which)).body; }
 
   static inline std::unique_ptr<test::ChartBodies> bodies_;
 };

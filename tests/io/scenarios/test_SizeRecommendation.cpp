@@ -132,7 +132,7 @@ TEST_F(SizeRecommendation, EveryCatalogueStyleGivesEachChartBodyItsOwnSizeButThe
 
 // The body at `position` along the chart (a size's index, fractional; beyond the ends by the
 // end steps), as figment-bench recommend --grid makes it.
-static TriangleMesh chartBodyAt(MakeHumanSession& human, const SizeChart& chart, Sex sex, double position) {
+static TriangleMesh chartBodyAt(MakeHumanLibrary& human, const SizeChart& chart, Sex sex, double position) {
   const std::vector<ChartSize>& sizes = chart.sizes(sex);
   const int i = std::clamp(static_cast<int>(std::floor(position)), 0, static_cast<int>(sizes.size()) - 2);
   const double t = position - i;
@@ -140,8 +140,8 @@ static TriangleMesh chartBodyAt(MakeHumanSession& human, const SizeChart& chart,
     return sizes[i].*field + t * (sizes[i + 1].*field - sizes[i].*field);
   };
   return human
-      .fit(ChartSize{sex, "", "", at(&ChartSize::stature), at(&ChartSize::bust), at(&ChartSize::waist),
-                     at(&ChartSize::hip)})
+      .measuredBody(ChartSize{sex, "", "", at(&ChartSize::stature), at(&ChartSize::bust), at(&ChartSize::waist),
+                              at(&ChartSize::hip)})
       .body;
 }
 

@@ -7,7 +7,7 @@
 
 #include "io/MeshImport.h"
 #include "sim/body/SkeletonEstimate.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/volumes/VolumeShaping.h"
 
 using namespace figment;
 
@@ -89,14 +89,14 @@ TEST(SkeletonEstimate, ABoxIsNotAHumanoid) {
   EXPECT_THROW(estimateSkeleton(box), std::invalid_argument);
 }
 
-TEST(CollisionVolumeFitting, EncloseEveryPartOfTheDefaultBodyAndNameIt) {
-  // fitCapsules and fitRadialVolumes (sim/fitting/CollisionVolumeFitting.h): every part of the skeleton
+TEST(VolumeShaping, EncloseEveryPartOfTheDefaultBodyAndNameIt) {
+  // shapeCapsules and shapeRadialVolumes (sim/volumes/VolumeShaping.h): every part of the skeleton
   // gets volumes carrying its name, and every vertex of a part lies in one of them.
   if (!humanAvailable()) GTEST_SKIP() << "assimp-testmodels' human.zae is not installed";
   const TriangleMesh body = defaultBody();
   const Skeleton skeleton = estimateSkeleton(body);
   const std::vector<PartMesh> parts = splitIntoParts(body, skeleton);
-  for (const auto& volumes : {fitCapsules(body, skeleton), fitRadialVolumes(body, skeleton)}) {
+  for (const auto& volumes : {shapeCapsules(body, skeleton), shapeRadialVolumes(body, skeleton)}) {
     std::set<std::string> named;
     for (const CollisionVolumeParameters& v : volumes) named.insert(v.part);
     for (const BodyPart& part : skeleton.parts) EXPECT_TRUE(named.count(part.name)) << part.name;

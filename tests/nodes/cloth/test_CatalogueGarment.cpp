@@ -13,7 +13,7 @@
 #include "io/PatternFile.h"
 #include "io/TargetLibrary.h"
 #include "nodes/cloth/CatalogueGarment.h"
-#include "sim/body/BodyFit.h"
+#include "sim/body/MeasuredBody.h"
 #include "sim/garment/GarmentStyle.h"
 #include "sim/pattern/PatternCutting.h"
 #include "sim/pattern/PatternPlacement.h"
@@ -34,8 +34,8 @@ figment::TriangleMesh womensM(const std::string& dir) {
   const figment::HumanModel model = figment::loadHumanModel(dir, library);
   figment::HumanParameters female;
   female.macro.gender = 0.0;
-  return figment::fitBody(model, female,
-                          {{"stature", 1.68}, {"bust_girth", 0.88}, {"waist_girth", 0.72}, {"hip_girth", 0.96}})
+  return figment::makeMeasuredBody(
+             model, female, {{"stature", 1.68}, {"bust_girth", 0.88}, {"waist_girth", 0.72}, {"hip_girth", 0.96}})
       .body;
 }
 

@@ -76,8 +76,8 @@ TEST(FitRequest, RefusesEachBadParameterNamingItAndTheAcceptedRange) {
   EXPECT_EQ(refused(twice).error, "given twice");
 }
 
-TEST(FitRequest, CatalogueListsTheChartsSizesPerStyleAndSex) {
-  const nlohmann::json fit = FitRequest::catalogueJson(chart());
+TEST(FitRequest, ChoicesListTheChartsSizesPerStyleAndSex) {
+  const nlohmann::json fit = FitRequest::choicesJson(chart());
   bool pencil = false;
   for (const nlohmann::json& style : fit["styles"]) {
     ASSERT_EQ(style["sizes"]["female"].size(), 2u);

@@ -1,6 +1,6 @@
 // serve/http/openapi.json (as figment-serve embeds it) says what the server takes, checked here
 // against the server's own constants, lists and parser, so that no bound can drift from
-// the code: each measurement's range without a sex (the Mannequin's catalogue) and with
+// the code: each measurement's range without a sex (the Mannequin's, ShopperChoices) and with
 // each (the size advice's ranges of the shipped size chart), the parameters' names, every
 // enumeration, the limits, and each pattern against the parser itself: over values at and
 // past each edge, a pattern matches exactly those the parser takes, but for the rules it
@@ -18,10 +18,10 @@
 #include "io/SizeChartFile.h"
 #include "serve/http/WebAssets.h"
 #include "serve/request/BodyMeasuresText.h"
-#include "serve/request/Catalogue.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 #include "serve/workers/Digest.h"
 #include "sim/garment/GarmentStyle.h"
 
@@ -66,7 +66,7 @@ bool takes(const std::string& sex, const std::string& name, const std::string& v
 }
 
 MeasureRange rangeFor(const std::string& sex, const std::string& name) {
-  if (sex == "none") return Catalogue::measure(name);
+  if (sex == "none") return ShopperChoices::measure(name);
   for (const MeasureRange& range :
        BodyMeasuresText::ranges(chart(), sex == "male" ? figment::Sex::Male : figment::Sex::Female))
     if (range.name == name) return range;
@@ -136,7 +136,7 @@ TEST(OpenApiContract, EachMeasurementsRangeIsTheServersForEachSex) {
     EXPECT_EQ(documented["schema"]["maximum"].get<double>(), highest) << name;
     if (name != "chest") {
       EXPECT_EQ(documented["schema"]["default"].get<double>(),
-                std::round(Catalogue::measure(measure).reference * 1000) / 1000);
+                std::round(ShopperChoices::measure(measure).reference * 1000) / 1000);
     }
   }
 }
@@ -157,11 +157,11 @@ TEST(OpenApiContract, EachFitMeasurementsRangeIsTheServersForEachSex) {
   }
 }
 
-TEST(OpenApiContract, EnumerationsAreTheCataloguesLists) {
+TEST(OpenApiContract, EnumerationsAreTheShopperChoicesLists) {
   std::set<std::string> tones, lights, poses, rigPoses, styles;
-  for (const NamedColour& tone : Catalogue::skinTones()) tones.insert(tone.name);
-  for (const LightPreset& light : Catalogue::lights()) lights.insert(light.name);
-  for (const Pose& pose : Catalogue::poses()) poses.insert(pose.name);
+  for (const NamedColour& tone : ShopperChoices::skinTones()) tones.insert(tone.name);
+  for (const LightPreset& light : ShopperChoices::lights()) lights.insert(light.name);
+  for (const Pose& pose : ShopperChoices::poses()) poses.insert(pose.name);
   for (const MeasuredPose& pose : MeasuredPoses::all()) rigPoses.insert(pose.name);
   for (const figment::GarmentStyle& style : figment::garmentStyles()) styles.insert(style.name);
   EXPECT_EQ(strings(render("skin")["schema"]["anyOf"][0]["enum"]), tones);

@@ -150,7 +150,7 @@ TEST_F(OutfitSceneTest, LayersDrapeInsideOutOnTheMannequinAndTheGarmentsBeneath)
   int lights = 0;
   for (int i = 0; i < root->getNumChildren(); ++i)
     lights += root->getChild(i)->isOfType(SoDirectionalLight::getClassTypeId());
-  EXPECT_EQ(lights, int(Catalogue::light("soft")->lights.size()));
+  EXPECT_EQ(lights, int(ShopperChoices::light("soft")->lights.size()));
   root->unref();
 }
 
@@ -177,8 +177,8 @@ TEST_F(OutfitSceneTest, APatternFollowsTheStatureAndItsSizeWidensIt) {
   SoSeparator* b = scene({{"outfit", "dress:M"}, {"stature", "1.820"}}, tall);
   SoSeparator* c = scene({{"outfit", "dress:XL"}}, xl);
   const float floor = wardrobe_->heightOrigin()[1];
-  const double height = 1.820 / Catalogue::measure("stature").reference;
-  const double defaultHeight = 1.659 / Catalogue::measure("stature").reference;  // the default, rounded to mm
+  const double height = 1.820 / ShopperChoices::measure("stature").reference;
+  const double defaultHeight = 1.659 / ShopperChoices::measure("stature").reference;  // the default, rounded to mm
   const SbBox3f boxM = restBox(m[0]), boxTall = restBox(tall[0]), boxXl = restBox(xl[0]);
   // Heights above the floor scale with the stature (float rounding: 1e-4 of a metre).
   EXPECT_NEAR((boxTall.getMax()[1] - floor) / (boxM.getMax()[1] - floor), height / defaultHeight, 1e-4);

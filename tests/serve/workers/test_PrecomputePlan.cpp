@@ -6,8 +6,8 @@
 
 #include <set>
 
-#include "serve/request/Catalogue.h"
 #include "serve/request/RenderRequest.h"
+#include "serve/request/ShopperChoices.h"
 #include "serve/workers/PrecomputePlan.h"
 
 using namespace figment::serve;
@@ -48,20 +48,20 @@ TEST(PrecomputePlan, TheCatalogueGridIsEveryStyleSizeBodyPoseAndView) {
   const auto plan = PrecomputePlan::fromCatalogue(grid);
   ASSERT_EQ(plan.index(), 0u) << std::get<1>(plan);
   const PrecomputePlan::Requests& requests = std::get<0>(plan);
-  const size_t expected = Catalogue::styles().size() * Catalogue::sizes().size() * 2 * 1 * 3;
+  const size_t expected = ShopperChoices::styles().size() * ShopperChoices::sizes().size() * 2 * 1 * 3;
   EXPECT_EQ(requests.size(), expected);
   EXPECT_EQ(std::set<std::string>(requests.begin(), requests.end()).size(), expected);
   for (const std::string& request : requests) {
     const RenderRequest parsed = std::get<RenderRequest>(RenderRequest::parseCanonical(request));
     ASSERT_EQ(parsed.outfit.size(), 1u);
-    EXPECT_EQ(parsed.outfit[0].colour, Catalogue::style(parsed.outfit[0].style)->defaultColour);
+    EXPECT_EQ(parsed.outfit[0].colour, ShopperChoices::style(parsed.outfit[0].style)->defaultColour);
     EXPECT_EQ(parsed.pose, "rest");
   }
   PrecomputePlan::Grid defaults;
   const auto every = PrecomputePlan::fromCatalogue(defaults);
   ASSERT_EQ(every.index(), 0u);
   EXPECT_EQ(std::get<0>(every).size(),
-            Catalogue::styles().size() * Catalogue::sizes().size() * Catalogue::poses().size());
+            ShopperChoices::styles().size() * ShopperChoices::sizes().size() * ShopperChoices::poses().size());
 }
 
 TEST(PrecomputePlan, ABadBodyOrPoseIsNamed) {

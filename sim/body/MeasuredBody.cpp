@@ -7,7 +7,7 @@
 // path through MakeHuman's weight and muscle, by the Illinois variant of regula falsi
 // (Dowell & Jarratt 1971): the girths grow with it, and their errors' sum changes sign once.
 
-#include "sim/body/BodyFit.h"
+#include "sim/body/MeasuredBody.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -40,7 +40,7 @@ std::vector<Unknown> unknownsFor(const std::vector<MeasurementGoal>& goals, cons
   for (const MeasurementGoal& goal : goals) {
     if (!seen.insert(goal.key).second) throw std::invalid_argument(goal.key + " is given twice");
     if (!(goal.value > 0)) throw std::invalid_argument(goal.key + " = " + std::to_string(goal.value) + " m is not > 0");
-    const auto& keys = fittedKeys();
+    const auto& keys = measurableKeys();
     const auto it = std::find_if(keys.begin(), keys.end(), [&](const auto& k) { return k.first == goal.key; });
     if (it == keys.end()) throw std::invalid_argument("no measurement '" + goal.key + "' to fit");
     const double low = it->second == "height" ? 0.0 : it->second == "bust" && cupExtends(start) ? -2.0 : -1.0;
@@ -229,7 +229,7 @@ int solve(const Problem& problem, double s, Eigen::VectorXd& x, Evaluation& e, d
 
 }  // namespace
 
-const std::vector<std::pair<std::string, std::string>>& fittedKeys() {
+const std::vector<std::pair<std::string, std::string>>& measurableKeys() {
   static const std::vector<std::pair<std::string, std::string>> keys = {{"stature", "height"},
                                                                         {"bust_girth", "bust"},
                                                                         {"underbust_girth", "underbust"},
@@ -244,15 +244,15 @@ const std::vector<std::pair<std::string, std::string>>& fittedKeys() {
   return keys;
 }
 
-BodyFitResult fitBody(const HumanModel& model, const HumanParameters& start, const std::vector<MeasurementGoal>& goals,
-                      const BodyFitOptions& options) {
+MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start,
+                              const std::vector<MeasurementGoal>& goals, const MeasuredBodyOptions& options) {
   const Problem problem(model, start, goals);
   Eigen::VectorXd x = startingPoint(start, problem.unknowns());
   meetStature(problem, start.macro.weight, x);
   const double s = naturalMass(problem, x);
   Evaluation e = problem.evaluate(s, x);
   // aim well inside the tolerance: the measurement's own steps (1 mm levels) stay below it
-  BodyFitResult result;
+  MeasuredBody result;
   result.iterations = solve(problem, s, x, e, 0.25 * options.tolerance, options.maxIterations);
   if (worst(e) > options.tolerance) refuse(goals, e);
   result.parameters = applied(start, s, problem.unknowns(), x);

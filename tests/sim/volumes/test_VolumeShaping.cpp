@@ -1,4 +1,4 @@
-// A whole body's collision volumes (sim/fitting/CollisionVolumeFitting.h) on a tiny literal body: one bent
+// A whole body's collision volumes (sim/volumes/VolumeShaping.h) on a tiny literal body: one bent
 // part (an L of two tubes, which one capsule cannot fit) and a straight one. Each
 // volume carries its part's name, every part gets one, and the part's vertices are all
 // inside its volumes (§3.3: forced enclosure).
@@ -8,7 +8,7 @@
 #include <set>
 
 #include "sim/collision/Capsule.h"
-#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/volumes/VolumeShaping.h"
 #include "support/TestMeshes.h"
 
 using namespace figment;
@@ -78,26 +78,26 @@ void expectEnclosedAndNamed(const std::vector<CollisionVolumeParameters>& volume
 
 }  // namespace
 
-TEST(CollisionVolumeFitting, CapsulesEncloseEveryPartAndCarryItsName) {
+TEST(VolumeShaping, CapsulesEncloseEveryPartAndCarryItsName) {
   const TriangleMesh body = twoPartBody();
   const Skeleton skeleton = twoParts();
-  const std::vector<CollisionVolumeParameters> capsules = fitCapsules(body, skeleton);
+  const std::vector<CollisionVolumeParameters> capsules = shapeCapsules(body, skeleton);
   for (const CollisionVolumeParameters& v : capsules) EXPECT_EQ(v.kind, CollisionVolumeParameters::Kind::Capsule);
   expectEnclosedAndNamed(capsules, body, skeleton);
 }
 
-TEST(CollisionVolumeFitting, TheBentPartIsSplitIntoSeveralCapsules) {
+TEST(VolumeShaping, TheBentPartIsSplitIntoSeveralCapsules) {
   // One capsule round an L stands far off it; two (heel, sole) follow it.
-  const std::vector<CollisionVolumeParameters> capsules = fitCapsules(twoPartBody(), twoParts());
+  const std::vector<CollisionVolumeParameters> capsules = shapeCapsules(twoPartBody(), twoParts());
   int foot = 0;
   for (const CollisionVolumeParameters& v : capsules) foot += v.part == "foot";
   EXPECT_GE(foot, 2);
 }
 
-TEST(CollisionVolumeFitting, RadialVolumesEncloseEveryPartAndCarryItsName) {
+TEST(VolumeShaping, RadialVolumesEncloseEveryPartAndCarryItsName) {
   const TriangleMesh body = twoPartBody();
   const Skeleton skeleton = twoParts();
-  const std::vector<CollisionVolumeParameters> volumes = fitRadialVolumes(body, skeleton);
+  const std::vector<CollisionVolumeParameters> volumes = shapeRadialVolumes(body, skeleton);
   expectEnclosedAndNamed(volumes, body, skeleton);
   // The straight tube is what a radial volume suits: no fallback there.
   for (const CollisionVolumeParameters& v : volumes) {
@@ -107,15 +107,15 @@ TEST(CollisionVolumeFitting, RadialVolumesEncloseEveryPartAndCarryItsName) {
   }
 }
 
-TEST(CollisionVolumeFitting, TheSameSeedRepeatsAFit) {
+TEST(VolumeShaping, TheSameSeedRepeatsTheVolumes) {
   const TriangleMesh body = twoPartBody();
-  const std::vector<CollisionVolumeParameters> a = fitCapsules(body, twoParts()), b = fitCapsules(body, twoParts());
+  const std::vector<CollisionVolumeParameters> a = shapeCapsules(body, twoParts()), b = shapeCapsules(body, twoParts());
   ASSERT_EQ(a.size(), b.size());
   for (size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].capsule.values(), b[i].capsule.values());
 }
 
-TEST(CollisionVolumeFitting, SaysWhichPartItIsFittingBeforeEach) {
-  CollisionVolumeFitOptions options;
+TEST(VolumeShaping, SaysWhichPartItIsShapingBeforeEach) {
+  VolumeShapingOptions options;
   std::vector<std::string> said;
   options.progress = [&](const std::string& part, int index, int count) {
     EXPECT_EQ(index, static_cast<int>(said.size()));
@@ -123,7 +123,7 @@ TEST(CollisionVolumeFitting, SaysWhichPartItIsFittingBeforeEach) {
     said.push_back(part);
   };
   const Skeleton skeleton = twoParts();
-  fitRadialVolumes(twoPartBody(), skeleton, options);
+  shapeRadialVolumes(twoPartBody(), skeleton, options);
   ASSERT_EQ(said.size(), 2u);
   EXPECT_EQ(said[0], skeleton.parts[0].name);
   EXPECT_EQ(said[1], skeleton.parts[1].name);

@@ -1,4 +1,4 @@
-#include "sim/fitting/RadialDepthFit.h"
+#include "sim/volumes/RadialDepthShaping.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -225,8 +225,8 @@ void encloseBySection(RadialDepthParameters& p, const std::vector<Vec3>& enclose
 
 }  // namespace
 
-RadialDepth fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
-                           double maxRadius, int sections, int harmonics, int angles) {
+RadialDepth shapeRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
+                             double maxRadius, int sections, int harmonics, int angles) {
   if (sections < 2) throw std::invalid_argument("sections = " + std::to_string(sections) + " must be >= 2");
   if (angles < 2 * harmonics + 1)
     throw std::invalid_argument("angles = " + std::to_string(angles) + " must be >= 2 harmonics + 1");
@@ -245,9 +245,9 @@ RadialDepth fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec
   return RadialDepth(p);
 }
 
-RadialDepth fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose, const Vec3& base,
-                                   const Vec3& direction, double length, int sections, int harmonics,
-                                   double outsideWeight) {
+RadialDepth shapeRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose,
+                                     const Vec3& base, const Vec3& direction, double length, int sections,
+                                     int harmonics, double outsideWeight) {
   if (sections < 2) throw std::invalid_argument("sections = " + std::to_string(sections) + " must be >= 2");
   if (points.empty()) throw std::invalid_argument("no points to fit");
   RadialDepthParameters p = axisFrame(base, direction, length, harmonics);

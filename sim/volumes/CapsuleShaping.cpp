@@ -1,4 +1,4 @@
-#include "sim/fitting/CapsuleFit.h"
+#include "sim/volumes/CapsuleShaping.h"
 
 #include <algorithm>
 #include <array>
@@ -20,7 +20,7 @@ CapsuleParameters parametersOf(const std::vector<double>& genes) {
 // The capsule's 12 values as genes from `start`: their limits and mutation steps for a
 // part of this size (m) around its centre, and the cost of the options.
 GeneticProblem capsuleProblem(const CapsuleParameters& start, double size, const std::vector<Vec3>& points,
-                              const CapsuleFitOptions& options) {
+                              const CapsuleShapingOptions& options) {
   const std::array<double, 12> values = start.values();
   const Vec3 centre(start.ox, start.oy, start.oz);
   GeneticProblem problem;
@@ -52,7 +52,7 @@ GeneticProblem capsuleProblem(const CapsuleParameters& start, double size, const
 
 // The options' shares as counts of members (rounded down; at least 4 members and one
 // parent).
-GeneticSchedule scheduleOf(const CapsuleFitOptions& options) {
+GeneticSchedule scheduleOf(const CapsuleShapingOptions& options) {
   GeneticSchedule schedule;
   const int n = std::max(options.population, 4);
   schedule.population = n;
@@ -151,17 +151,17 @@ double enclosedCapsuleCost(const CapsuleParameters& parameters, const std::vecto
   return capsuleCost(Capsule(grown), points, 1.0);
 }
 
-CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options) {
+CapsuleShaping shapeCapsule(const std::vector<Vec3>& points, const CapsuleShapingOptions& options) {
   if (points.size() < 4) throw std::invalid_argument("a capsule needs at least 4 points to fit");
   const CapsuleParameters start = startingCapsule(points);
   const double size = std::max({start.x, start.y, start.z});
   if (!(size > 1e-6)) throw std::invalid_argument("the points to fit have no extent");
   const GeneticResult best = geneticSearch(capsuleProblem(start, size, points, options), scheduleOf(options));
-  CapsuleFit fit;
-  fit.parameters = parametersOf(best.genes);
-  fit.cost = best.cost;
-  if (options.enclose) fit.enclosureScale = growToEnclose(fit.parameters, points);
-  return fit;
+  CapsuleShaping shaped;
+  shaped.parameters = parametersOf(best.genes);
+  shaped.cost = best.cost;
+  if (options.enclose) shaped.enclosureScale = growToEnclose(shaped.parameters, points);
+  return shaped;
 }
 
 }  // namespace figment

@@ -5,7 +5,7 @@
 //
 // A member is an axis near a starting one: its direction tilted by (u, v) radians about
 // two directions perpendicular to the start's, its origin moved by (du, dv) m along
-// them, each within its limit. The search is geneticSearch (sim/fitting/GeneticSearch.h):
+// them, each within its limit. The search is geneticSearch (sim/volumes/GeneticSearch.h):
 // the starting axis and members spread uniformly within the limits; the shares of the
 // population rounded to the nearest count (at least one mutant and one parent, the best
 // member always kept); a mutation moves its gene by 0.3 times its limit times a standard
@@ -15,7 +15,7 @@
 #include <functional>
 
 #include "sim/core/TriangleMesh.h"
-#include "sim/fitting/GeneticSearch.h"
+#include "sim/volumes/GeneticSearch.h"
 
 namespace figment {
 

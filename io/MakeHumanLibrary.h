@@ -1,27 +1,27 @@
 #pragma once
-// MakeHumanSession: MakeHuman's model as one owner uses it (a HumanBody or CatalogueGarment
+// MakeHumanLibrary: MakeHuman's model as one owner uses it (a HumanBody or CatalogueGarment
 // node, a service's worker, a program's run): the data folder found once, the base mesh and
 // the targets a body blends read once and kept, and bodies made to measurements from them.
-// Nothing is shared between sessions (no process-wide state): two owners read the data twice.
+// Nothing is shared between libraries (no process-wide state): two owners read the data twice.
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "sim/body/BodyFit.h"
+#include "sim/body/MeasuredBody.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment {
 
 class TargetLibrary;
 
-class MakeHumanSession {
+class MakeHumanLibrary {
  public:
-  // Looks for nothing yet: a session never asked for a body costs nothing.
-  MakeHumanSession();
-  ~MakeHumanSession();
-  MakeHumanSession(const MakeHumanSession&) = delete;
-  MakeHumanSession& operator=(const MakeHumanSession&) = delete;
+  // Looks for nothing yet: a library never asked for a body costs nothing.
+  MakeHumanLibrary();
+  ~MakeHumanLibrary();
+  MakeHumanLibrary(const MakeHumanLibrary&) = delete;
+  MakeHumanLibrary& operator=(const MakeHumanLibrary&) = delete;
 
   // The data folder (findMakeHumanData), looked for until found and then kept; "" while
   // there is none.
@@ -30,15 +30,15 @@ class MakeHumanSession {
   // when there is no data (looked for again on the next call), and as readHumanBase.
   const HumanModel& model();
 
-  // A body fitted to `goals` from `start` (sim/body/BodyFit.h; the least squares see the
+  // A body made to `goals` from `start` (sim/body/MeasuredBody.h; the least squares see the
   // goals in their order, so an owner that must answer as another keeps its order).
-  // Throws as model() and fitBody (UnreachableMeasurement for a set out of reach).
-  BodyFitResult fit(const HumanParameters& start, const std::vector<MeasurementGoal>& goals);
+  // Throws as model() and makeMeasuredBody (UnreachableMeasurement for a set out of reach).
+  MeasuredBody measuredBody(const HumanParameters& start, const std::vector<MeasurementGoal>& goals);
   // The same from MakeHuman's default body of `sex` (macro gender 0 or 1).
-  BodyFitResult fit(Sex sex, const std::vector<MeasurementGoal>& goals);
+  MeasuredBody measuredBody(Sex sex, const std::vector<MeasurementGoal>& goals);
   // A body of `size`'s sex made to its stature, bust, waist and hip girth, in that order:
   // a size's chart body, as CatalogueGarment and SizeFitter make it.
-  BodyFitResult fit(const ChartSize& size);
+  MeasuredBody measuredBody(const ChartSize& size);
 
   // MakeHuman's default body of `sex`: macro gender 0 (female) or 1 (male), the rest 0.5.
   static HumanParameters start(Sex sex);

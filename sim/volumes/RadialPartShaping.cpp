@@ -1,4 +1,4 @@
-#include "sim/fitting/RadialPartFit.h"
+#include "sim/volumes/RadialPartShaping.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,16 +6,16 @@
 #include <utility>
 
 #include "sim/core/PrincipalAxes.h"
-#include "sim/fitting/AxisSearch.h"
-#include "sim/fitting/RadialDepthFit.h"
+#include "sim/volumes/AxisSearch.h"
+#include "sim/volumes/RadialDepthShaping.h"
 
 namespace figment {
 
 namespace {
 
 // A radial volume on the line through `origin` along `direction`, spanning the part.
-RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin, const Vec3& direction,
-                     int harmonics, double sectionSpacing) {
+RadialDepth shapeAlong(const PartMesh& part, const std::vector<Vec3>& points, const Vec3& origin, const Vec3& direction,
+                       int harmonics, double sectionSpacing) {
   double low = std::numeric_limits<double>::max(), high = -low;
   for (const Vec3& v : part.mesh.vertices) {
     const double s = (v - origin).dot(direction);
@@ -25,8 +25,8 @@ RadialDepth fitAlong(const PartMesh& part, const std::vector<Vec3>& points, cons
   const double margin = 1e-4;
   const double length = high - low + 2 * margin;
   const int sections = std::max(2, static_cast<int>(std::ceil(length / sectionSpacing)) + 1);
-  return fitRadialDepthToPoints(points, part.mesh.vertices, origin + (low - margin) * direction, direction, length,
-                                sections, harmonics);
+  return shapeRadialDepthToPoints(points, part.mesh.vertices, origin + (low - margin) * direction, direction, length,
+                                  sections, harmonics);
 }
 
 }  // namespace
@@ -42,7 +42,7 @@ double radialGapEstimate(const RadialDepth& volume, const std::vector<Vec3>& ver
   return total / static_cast<double>(vertices.size());
 }
 
-RadialDepth fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing) {
+RadialDepth shapeRadialPart(const PartMesh& part, int harmonics, double sectionSpacing) {
   std::vector<Vec3> points = part.mesh.vertices;
   for (const Triangle& t : part.mesh.triangles)
     points.push_back((part.mesh.vertices[t[0]] + part.mesh.vertices[t[1]] + part.mesh.vertices[t[2]]) / 3.0);
@@ -56,21 +56,21 @@ RadialDepth fitRadialPart(const PartMesh& part, int harmonics, double sectionSpa
     if (std::abs(spread.axes.col(k).dot(bone)) > std::abs(principal.dot(bone))) principal = spread.axes.col(k);
   if (principal.dot(bone) < 0.0) principal = -principal;
   const std::vector<std::pair<Vec3, Vec3>> axes = {{part.from, bone}, {centroid, bone}, {centroid, principal}};
-  RadialDepth best = fitAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);
+  RadialDepth best = shapeAlong(part, points, axes[0].first, axes[0].second, harmonics, sectionSpacing);
   double bestGap = radialGapEstimate(best, part.mesh.vertices);
   size_t start = 0;
   for (size_t k = 1; k < axes.size(); ++k) {
-    RadialDepth candidate = fitAlong(part, points, axes[k].first, axes[k].second, harmonics, sectionSpacing);
+    RadialDepth candidate = shapeAlong(part, points, axes[k].first, axes[k].second, harmonics, sectionSpacing);
     const double gap = radialGapEstimate(candidate, part.mesh.vertices);
     if (gap < bestGap) best = std::move(candidate), bestGap = gap, start = k;
   }
   // The genetic search from the best of them (it keeps its best: never worse).
   const AxisSearchResult searched = searchAxis({axes[start].first, axes[start].second}, [&](const Axis& axis) {
-    return radialGapEstimate(fitAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
+    return radialGapEstimate(shapeAlong(part, points, axis.origin, axis.direction, harmonics, sectionSpacing),
                              part.mesh.vertices);
   });
   if (searched.cost < bestGap)
-    best = fitAlong(part, points, searched.axis.origin, searched.axis.direction, harmonics, sectionSpacing);
+    best = shapeAlong(part, points, searched.axis.origin, searched.axis.direction, harmonics, sectionSpacing);
   return best;
 }
 

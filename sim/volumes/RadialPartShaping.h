@@ -1,7 +1,7 @@
 #pragma once
 // A radial depth volume for one body part (paper §3.2): the analytic fit
-// (sim/fitting/RadialDepthFit.h) along the best axis the genetic search
-// (sim/fitting/AxisSearch.h) finds.
+// (sim/volumes/RadialDepthShaping.h) along the best axis the genetic search
+// (sim/volumes/AxisSearch.h) finds.
 
 #include <vector>
 
@@ -13,10 +13,10 @@ namespace figment {
 // A radial depth volume on the best axis found: the best of three (the bone; the bone's
 // direction through the part's centroid; the part's principal axis nearest the bone's
 // direction, through the centroid) by radialGapEstimate, then the genetic search
-// (sim/fitting/AxisSearch.h) from it; each volume lengthened to span every vertex of the part,
+// (sim/volumes/AxisSearch.h) from it; each volume lengthened to span every vertex of the part,
 // with sections about `sectionSpacing` (m) apart and K = `harmonics`
-// (fitRadialDepthToPoints on the part's vertices and triangle centroids).
-RadialDepth fitRadialPart(const PartMesh& part, int harmonics, double sectionSpacing);
+// (shapeRadialDepthToPoints on the part's vertices and triangle centroids).
+RadialDepth shapeRadialPart(const PartMesh& part, int harmonics, double sectionSpacing);
 
 // A cheap estimate of the mean gap from `vertices` to `volume`: the radial shortfall
 // r(s, a) - rho of each, at most its distance to the nearer cap (m).

@@ -1,4 +1,4 @@
-#include "sim/fitting/AxisSearch.h"
+#include "sim/volumes/AxisSearch.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "sim/fitting/CapsuleFit.h"
+#include "sim/volumes/CapsuleShaping.h"
 
 using namespace figment;
 
@@ -42,22 +42,22 @@ CapsuleParameters thigh() {
 
 }  // namespace
 
-TEST(CapsuleFit, AFittedCapsuleReproducesTheCapsuleItsPointsCameFrom) {
+TEST(CapsuleShaping, AShapedCapsuleReproducesTheCapsuleItsPointsCameFrom) {
   // Symmetric Hausdorff distance between the surfaces under 1 % of the capsule's length
   // (parameters may differ where two describe the same surface).
   const Capsule truth(thigh());
   const std::vector<Vec3> points = surfaceSamples(truth, 800, 3);
-  const CapsuleFit fit = fitCapsule(points);
-  const Capsule fitted(fit.parameters);
+  const CapsuleShaping shaped = shapeCapsule(points);
+  const Capsule result(shaped.parameters);
   const double size = thigh().y;
   RecordProperty("hausdorff_mm",
-                 std::to_string(1000 * std::max(oneSidedHausdorff(truth, fitted), oneSidedHausdorff(fitted, truth))));
-  RecordProperty("enclosure_scale", std::to_string(fit.enclosureScale));
-  EXPECT_LT(oneSidedHausdorff(truth, fitted), 0.01 * size);
-  EXPECT_LT(oneSidedHausdorff(fitted, truth), 0.01 * size);
+                 std::to_string(1000 * std::max(oneSidedHausdorff(truth, result), oneSidedHausdorff(result, truth))));
+  RecordProperty("enclosure_scale", std::to_string(shaped.enclosureScale));
+  EXPECT_LT(oneSidedHausdorff(truth, result), 0.01 * size);
+  EXPECT_LT(oneSidedHausdorff(result, truth), 0.01 * size);
 }
 
-TEST(CapsuleFit, TheFitEnclosesEveryPoint) {
+TEST(CapsuleShaping, TheShapedCapsuleEnclosesEveryPoint) {
   // Points of a box (a part no capsule fits exactly): enclosure grows the best capsule
   // until none is left outside.
   std::vector<Vec3> box;
@@ -65,29 +65,29 @@ TEST(CapsuleFit, TheFitEnclosesEveryPoint) {
     for (int j = 0; j <= 6; ++j)
       for (int k = 0; k <= 6; ++k)
         if (i % 6 == 0 || j % 6 == 0 || k % 6 == 0) box.push_back(Vec3(0.1 * i / 6, 0.3 * j / 6, 0.08 * k / 6));
-  CapsuleFitOptions options;
+  CapsuleShapingOptions options;
   options.generations = 150;
-  const CapsuleFit fit = fitCapsule(box, options);
-  const Capsule capsule(fit.parameters);
+  const CapsuleShaping shaped = shapeCapsule(box, options);
+  const Capsule capsule(shaped.parameters);
   for (const Vec3& p : box) EXPECT_TRUE(capsule.contains(p)) << p.transpose();
-  EXPECT_GT(fit.enclosureScale, 1.0);
+  EXPECT_GT(shaped.enclosureScale, 1.0);
 }
 
-TEST(CapsuleFit, TheSameSeedRepeatsAFitAndAnotherChangesIt) {
+TEST(CapsuleShaping, TheSameSeedRepeatsACapsuleAndAnotherChangesIt) {
   const std::vector<Vec3> points = surfaceSamples(Capsule(thigh()), 200, 5);
-  CapsuleFitOptions options;
+  CapsuleShapingOptions options;
   options.generations = 60;
-  const CapsuleFit a = fitCapsule(points, options), b = fitCapsule(points, options);
+  const CapsuleShaping a = shapeCapsule(points, options), b = shapeCapsule(points, options);
   EXPECT_EQ(a.parameters.values(), b.parameters.values());
   options.seed = 2;
-  EXPECT_NE(fitCapsule(points, options).parameters.values(), a.parameters.values());
+  EXPECT_NE(shapeCapsule(points, options).parameters.values(), a.parameters.values());
 }
 
-TEST(CapsuleFit, TooFewPointsAreRefused) {
-  EXPECT_THROW(fitCapsule({Vec3::Zero(), Vec3::UnitX()}), std::invalid_argument);
+TEST(CapsuleShaping, TooFewPointsAreRefused) {
+  EXPECT_THROW(shapeCapsule({Vec3::Zero(), Vec3::UnitX()}), std::invalid_argument);
 }
 
-TEST(CapsuleFit, TheGaugeAgreesWithTheInsideTest) {
+TEST(CapsuleShaping, TheGaugeAgreesWithTheInsideTest) {
   // unitGauge(u) <= 1 exactly where the unit capsule holds u, for a tapered, tilted,
   // unequally rounded capsule; and grown by the gauge a point lies on the surface.
   CapsuleParameters c = thigh();

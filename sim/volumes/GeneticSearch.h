@@ -1,10 +1,10 @@
 #pragma once
-// The genetic algorithm of the paper's fitting: §3.1 fits capsules by "a form of genetic
+// The genetic algorithm that shapes the paper's collision volumes: §3.1 fits capsules by "a form of genetic
 // optimization algorithm" (sort by cost, mutate the bottom of the population, cross over
 // the band above it, parents biased to low cost), and §3.2 finds the radial depth
 // volume's axis by "a combination of analytic and iterative (genetic) techniques". A
 // real-valued search over N genes within bounds, minimising a cost; one search serves
-// both (sim/fitting/CapsuleFit.h, sim/fitting/AxisSearch.h), which differ only in their
+// both (sim/volumes/CapsuleShaping.h, sim/volumes/AxisSearch.h), which differ only in their
 // problem and schedule.
 //
 // Based on: D. E. Goldberg, Genetic Algorithms in Search, Optimization and Machine

@@ -1,4 +1,4 @@
-// The catalogue: the JSON GET /api/catalogue sends lists every style with its sizes and
+// The shopper's choices: the JSON GET /api/catalogue sends lists every style with its sizes and
 // colours; measurements at the default body's own give factors of 1.
 
 #include <gtest/gtest.h>
@@ -7,33 +7,33 @@
 #include <nlohmann/json.hpp>
 
 #include "io/GarmentCatalogue.h"
-#include "serve/request/Catalogue.h"
+#include "serve/request/ShopperChoices.h"
 
 using namespace figment::serve;
 
-TEST(Catalogue, ListsEveryStyleWithSizesAndColours) {
-  const nlohmann::json json = Catalogue::toJson();
-  ASSERT_EQ(json["styles"].size(), Catalogue::styles().size());
+TEST(ShopperChoices, ListsEveryStyleWithSizesAndColours) {
+  const nlohmann::json json = ShopperChoices::toJson();
+  ASSERT_EQ(json["styles"].size(), ShopperChoices::styles().size());
   for (const nlohmann::json& style : json["styles"]) {
-    EXPECT_NE(Catalogue::style(style["name"]), nullptr);
-    EXPECT_EQ(style["sizes"].size(), Catalogue::sizes().size());
+    EXPECT_NE(ShopperChoices::style(style["name"]), nullptr);
+    EXPECT_EQ(style["sizes"].size(), ShopperChoices::sizes().size());
     EXPECT_FALSE(style["colours"].empty());
   }
   EXPECT_GE(json["lights"].size(), 3u);
-  EXPECT_EQ(json["poses"].size(), Catalogue::poses().size());
+  EXPECT_EQ(json["poses"].size(), ShopperChoices::poses().size());
   EXPECT_EQ(json["measurements"]["stature"]["unit"], "m");
 }
 
-TEST(Catalogue, TheDefaultBodysMeasurementsAreFactorsOfOne) {
-  const auto reference = [](const char* name) { return Catalogue::measure(name).reference; };
+TEST(ShopperChoices, TheDefaultBodysMeasurementsAreFactorsOfOne) {
+  const auto reference = [](const char* name) { return ShopperChoices::measure(name).reference; };
   const BodyFactors same =
-      Catalogue::bodyFactors({reference("stature"), reference("bust"), reference("waist"), reference("hips")});
+      ShopperChoices::bodyFactors({reference("stature"), reference("bust"), reference("waist"), reference("hips")});
   EXPECT_DOUBLE_EQ(same.height, 1.0);
   EXPECT_DOUBLE_EQ(same.chest, 1.0);
   EXPECT_DOUBLE_EQ(same.waist, 1.0);
   EXPECT_DOUBLE_EQ(same.hips, 1.0);
   // Each range stays inside the Mannequin's accepted factors [0.5, 2].
-  for (const MeasureRange& range : Catalogue::measures()) {
+  for (const MeasureRange& range : ShopperChoices::measures()) {
     EXPECT_GT(range.minimum / range.reference, 0.5) << range.name;
     EXPECT_LT(range.maximum / range.reference, 2.0) << range.name;
   }
@@ -42,10 +42,10 @@ TEST(Catalogue, TheDefaultBodysMeasurementsAreFactorsOfOne) {
 // The service's styles are the garment catalogue's (scenes/catalogue/, io/GarmentCatalogue.h):
 // each is sold there, its default colour is the catalogue's first for it, and each of the
 // catalogue's colours for it is one the service offers.
-TEST(Catalogue, ItsStylesAndColoursAreTheGarmentCataloguesFiles) {
+TEST(ShopperChoices, ItsStylesAndColoursAreTheGarmentCataloguesFiles) {
   const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
-  const std::vector<std::string>& offered = Catalogue::colours();
-  for (const GarmentStyle& style : Catalogue::styles()) {
+  const std::vector<std::string>& offered = ShopperChoices::colours();
+  for (const GarmentStyle& style : ShopperChoices::styles()) {
     const figment::CatalogueStyle* sold = catalogue.style(style.name);
     ASSERT_NE(sold, nullptr) << style.name;
     EXPECT_EQ(style.defaultColour, sold->colours.front()) << style.name;

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "sim/fitting/RadialDepthFit.h"
+#include "sim/volumes/RadialDepthShaping.h"
 #include "support/TestMeshes.h"
 
 using namespace figment;
@@ -31,23 +31,23 @@ TriangleMesh cylinder(double r, double height, int slices, int rings) {
 
 }  // namespace
 
-TEST(RadialDepthFit, ACylinderHasAConstantDepthAndNoHigherHarmonics) {
+TEST(RadialDepthShaping, ACylinderHasAConstantDepthAndNoHigherHarmonics) {
   const TriangleMesh mesh = cylinder(0.1, 0.5, 96, 10);
-  const RadialDepth v = fitRadialDepth(mesh, Vec3(0, 0, 0), Vec3::UnitY(), 0.5, 0.3, 6, 4);
+  const RadialDepth v = shapeRadialDepth(mesh, Vec3(0, 0, 0), Vec3::UnitY(), 0.5, 0.3, 6, 4);
   for (const auto& c : v.parameters().coefficients) {
     EXPECT_NEAR(c[0], 0.1, 0.001);  // the 96-gon's chords lie within 0.05 mm of r
     for (size_t k = 1; k < c.size(); ++k) EXPECT_NEAR(c[k], 0.0, 2e-4) << "term " << k;
   }
 }
 
-TEST(RadialDepthFit, AFittedVolumeEnclosesItsPartAndFollowsItsShape) {
+TEST(RadialDepthShaping, AShapedVolumeEnclosesItsPartAndFollowsItsShape) {
   // A ball (UV sphere, r = 0.12) along a tilted axis through it: every vertex whose
   // projection falls on the axis is inside, and the surface stays within 1 cm of the ball
   // (sections every 2.4 cm, 8 harmonics).
   const TriangleMesh ball = meshes::sphere(0.12, 48, 24);
   const Vec3 direction = Vec3(0.3, 1.0, 0.2).normalized();
   const Vec3 base = -0.12 * direction;
-  const RadialDepth v = fitRadialDepth(ball, base, direction, 0.24, 0.5, 11, 8);
+  const RadialDepth v = shapeRadialDepth(ball, base, direction, 0.24, 0.5, 11, 8);
   int checked = 0;
   for (const Vec3& p : ball.vertices) {
     double s, a, rho;
@@ -61,7 +61,7 @@ TEST(RadialDepthFit, AFittedVolumeEnclosesItsPartAndFollowsItsShape) {
     for (double a : {0.0, 1.0, 2.0, 4.0}) EXPECT_NEAR(v.surface(s, a).norm(), 0.12, 0.01) << s << " " << a;
 }
 
-TEST(RadialDepthFit, AnEnvelopeFitEnclosesItsPointsAndHugsAnEllipticTube) {
+TEST(RadialDepthShaping, AnEnvelopeEnclosesItsPointsAndHugsAnEllipticTube) {
   // An elliptic tube (semi-axes 6 and 4 cm) along a tilted axis: every point inside, and
   // the side within 1 mm of the ellipse (K = 4 resolves it), the mean gap under 0.5 mm.
   const Vec3 direction = Vec3(0.2, 1.0, 0.1).normalized(), u = direction.unitOrthogonal(), w = direction.cross(u);
@@ -71,7 +71,7 @@ TEST(RadialDepthFit, AnEnvelopeFitEnclosesItsPointsAndHugsAnEllipticTube) {
       const double a = 2 * M_PI * j / 48;
       points.push_back(0.4 * i / 20 * direction + 0.06 * std::cos(a) * u + 0.04 * std::sin(a) * w);
     }
-  const RadialDepth v = fitRadialDepthToPoints(points, points, -1e-4 * direction, direction, 0.4002, 9, 4);
+  const RadialDepth v = shapeRadialDepthToPoints(points, points, -1e-4 * direction, direction, 0.4002, 9, 4);
   double total = 0.0;
   for (const Vec3& p : points) {
     EXPECT_TRUE(v.contains(p)) << p.transpose();

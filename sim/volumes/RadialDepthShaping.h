@@ -1,7 +1,7 @@
 #pragma once
-// Fitting the paper's radial depth volume (§3.2, sim/collision/RadialDepth.h) to a body
+// Shaping the paper's radial depth volume (§3.2, sim/collision/RadialDepth.h) to a body
 // part: the analytic half of "a combination of analytic and iterative (genetic)
-// techniques" (the axis search is sim/fitting/AxisSearch.h). Two fits, both ending in
+// techniques" (the axis search is sim/volumes/AxisSearch.h). Two fits, both ending in
 // enclosure (§3.3): every section's constant term grows until the part is inside.
 
 #include <vector>
@@ -16,8 +16,8 @@ namespace figment {
 // sections (>= 2), each sampled at `angles` angles by the farthest section point per
 // angular bin, then K = `harmonics` Fourier terms by least squares; then every section's
 // constant term grows until each of those triangles' vertices is inside (enclosure).
-RadialDepth fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
-                           double maxRadius, int sections, int harmonics, int angles = 64);
+RadialDepth shapeRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec3& direction, double length,
+                             double maxRadius, int sections, int harmonics, int angles = 64);
 
 // Fits a radial depth volume on the axis [base, base + length direction] to the points
 // of a part's surface (its vertices, say, and its triangles' centroids), all of which
@@ -29,8 +29,8 @@ RadialDepth fitRadialDepth(const TriangleMesh& body, const Vec3& base, const Vec
 // (second differences along the axis, k^4-weighted harmonics) keeps sections with few
 // points well posed. Then enclosure, per section: each point of `enclose` left outside
 // raises the constant terms of its two sections by its shortfall.
-RadialDepth fitRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose, const Vec3& base,
-                                   const Vec3& direction, double length, int sections, int harmonics,
-                                   double outsideWeight = 100.0);
+RadialDepth shapeRadialDepthToPoints(const std::vector<Vec3>& points, const std::vector<Vec3>& enclose,
+                                     const Vec3& base, const Vec3& direction, double length, int sections,
+                                     int harmonics, double outsideWeight = 100.0);
 
 }  // namespace figment

@@ -1,7 +1,7 @@
 #pragma once
-// Fitting a capsule to a body part's vertices by the paper's genetic algorithm (§3.1).
+// Shaping a capsule to a body part's vertices by the paper's genetic algorithm (§3.1).
 //
-// The search is geneticSearch (sim/fitting/GeneticSearch.h) over the capsule's 12
+// The search is geneticSearch (sim/volumes/GeneticSearch.h) over the capsule's 12
 // parameters: a population of identical capsules starts from one default capsule set on
 // the part (startingCapsule); the shares of the population rounded down to counts (at
 // least 4 members and one parent); a mutation moves its parameter by a normal step of
@@ -19,12 +19,12 @@
 #include <vector>
 
 #include "sim/collision/Capsule.h"
-#include "sim/fitting/GeneticSearch.h"
+#include "sim/volumes/GeneticSearch.h"
 
 namespace figment {
 
-struct CapsuleFitOptions : GeneticShares {
-  CapsuleFitOptions() {
+struct CapsuleShapingOptions : GeneticShares {
+  CapsuleShapingOptions() {
     population = 60;
     generations = 400;
   }
@@ -36,14 +36,14 @@ struct CapsuleFitOptions : GeneticShares {
   bool costAfterEnclosure = true;
 };
 
-struct CapsuleFit {
+struct CapsuleShaping {
   CapsuleParameters parameters;
   double cost = 0.0;            // of the best member before enclosure
   double enclosureScale = 1.0;  // how much enclosure grew it (1: not at all)
 };
 
 // Throws std::invalid_argument when `points` has fewer than 4 points or no extent.
-CapsuleFit fitCapsule(const std::vector<Vec3>& points, const CapsuleFitOptions& options = {});
+CapsuleShaping shapeCapsule(const std::vector<Vec3>& points, const CapsuleShapingOptions& options = {});
 
 // The default capsule set on the points, where a fit starts: centred on them, along
 // their principal axis (pointing up), as big as their extents, ends half rounded.

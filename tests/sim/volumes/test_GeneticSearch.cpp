@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "sim/fitting/GeneticSearch.h"
+#include "sim/volumes/GeneticSearch.h"
 
 using namespace figment;
 

@@ -7,7 +7,7 @@
 
 #include "sim/body/BodyParts.h"
 #include "sim/collision/RadialDepth.h"
-#include "sim/fitting/RadialPartFit.h"
+#include "sim/volumes/RadialPartShaping.h"
 #include "support/BoxFigure.h"
 
 using namespace figment;
@@ -21,7 +21,7 @@ RadialDepth cylinder() {
   return RadialDepth(p);
 }
 
-TEST(RadialPartFit, GapEstimateIsTheMeanShortfallCappedByTheEnds) {
+TEST(RadialPartShaping, GapEstimateIsTheMeanShortfallCappedByTheEnds) {
   const std::vector<Vec3> vertices = {
       {0.05, 0.5, 0},  // 5 cm inside the side
       {0.1, 0.5, 0},   // on it
@@ -31,13 +31,13 @@ TEST(RadialPartFit, GapEstimateIsTheMeanShortfallCappedByTheEnds) {
   EXPECT_NEAR(radialGapEstimate(cylinder(), vertices), (0.05 + 0 + 0 + 0.02) / 4, 1e-12);
 }
 
-TEST(RadialPartFit, AFitAlongItsBoneSpansThePart) {
+TEST(RadialPartShaping, AVolumeAlongItsBoneSpansThePart) {
   PartMesh part;
   part.name = "shinL";
   part.mesh = mannequin::boxMesh({{-0.05, 0.0, -0.05}, {0.05, 0.4, 0.05}});
   part.from = Vec3(0, 0.4, 0);
   part.to = Vec3(0, 0, 0);
-  const RadialDepth fitted = fitRadialPart(part, 1, 0.05);
+  const RadialDepth fitted = shapeRadialPart(part, 1, 0.05);
   const RadialDepthParameters& p = fitted.parameters();
   EXPECT_GT(std::abs(p.direction.dot(Vec3::UnitY())), 0.9);  // about along the bone
   for (const Vec3& v : part.mesh.vertices) {

@@ -1,4 +1,4 @@
-#include "sim/fitting/GeneticSearch.h"
+#include "sim/volumes/GeneticSearch.h"
 
 #include <algorithm>
 #include <random>

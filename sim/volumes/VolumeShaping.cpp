@@ -1,11 +1,11 @@
-#include "sim/fitting/CollisionVolumeFitting.h"
+#include "sim/volumes/VolumeShaping.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 
-#include "sim/fitting/CapsuleFit.h"
-#include "sim/fitting/RadialPartFit.h"
+#include "sim/volumes/CapsuleShaping.h"
+#include "sim/volumes/RadialPartShaping.h"
 
 namespace figment {
 
@@ -20,23 +20,23 @@ double meanGap(const Capsule& capsule, const std::vector<Vec3>& points) {
   return total / static_cast<double>(points.size());
 }
 
-CapsuleParameters fitEnclosing(const std::vector<Vec3>& points, uint64_t seed) {
+CapsuleParameters shapeEnclosing(const std::vector<Vec3>& points, uint64_t seed) {
   std::vector<Vec3> sample;
   const size_t every = std::max<size_t>(1, (points.size() + 299) / 300);
   for (size_t i = 0; i < points.size(); i += every) sample.push_back(points[i]);
-  CapsuleFitOptions options;
+  CapsuleShapingOptions options;
   options.seed = static_cast<uint32_t>(seed);
   options.generations = 300;
   options.enclose = false;
-  CapsuleParameters c = fitCapsule(sample, options).parameters;
+  CapsuleParameters c = shapeCapsule(sample, options).parameters;
   growToEnclose(c, points);
   return c;
 }
 
 // Capsules for `points`, split along the capsule's axis while that helps; appends them
 // and returns the summed gap over the points.
-double fitPieces(const std::vector<Vec3>& points, uint64_t seed, int budget, std::vector<CapsuleParameters>& out) {
-  const CapsuleParameters whole = fitEnclosing(points, seed);
+double shapePieces(const std::vector<Vec3>& points, uint64_t seed, int budget, std::vector<CapsuleParameters>& out) {
+  const CapsuleParameters whole = shapeEnclosing(points, seed);
   const Capsule capsule(whole);
   const double gap = meanGap(capsule, points);
   if (gap <= kSplitGap || budget < 2 || points.size() < 40) {
@@ -57,7 +57,7 @@ double fitPieces(const std::vector<Vec3>& points, uint64_t seed, int budget, std
   std::vector<CapsuleParameters> pieces;
   const int lowBudget = budget / 2;
   const double split =
-      fitPieces(low, seed + 1, lowBudget, pieces) + fitPieces(high, seed + 2, budget - lowBudget, pieces);
+      shapePieces(low, seed + 1, lowBudget, pieces) + shapePieces(high, seed + 2, budget - lowBudget, pieces);
   if (split < gap * static_cast<double>(points.size())) {
     out.insert(out.end(), pieces.begin(), pieces.end());
     return split;
@@ -73,23 +73,23 @@ double signedDistance(const CollisionVolumeParameters& volume, const Vec3& p) {
                                                                  : RadialDepth(volume.radial).nearest(p).distance;
 }
 
-std::vector<CollisionVolumeParameters> fitPartCapsules(const PartMesh& part, const CollisionVolumeFitOptions& options) {
+std::vector<CollisionVolumeParameters> shapePartCapsules(const PartMesh& part, const VolumeShapingOptions& options) {
   std::vector<CapsuleParameters> capsules;
-  fitPieces(part.mesh.vertices, options.seed, kMaxCapsules, capsules);
+  shapePieces(part.mesh.vertices, options.seed, kMaxCapsules, capsules);
   std::vector<CollisionVolumeParameters> out;
   for (const CapsuleParameters& c : capsules)
     out.push_back({part.name, CollisionVolumeParameters::Kind::Capsule, c, {}});
   return out;
 }
 
-std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part, const CollisionVolumeFitOptions& options) {
-  const RadialDepth radial = fitRadialPart(part, options.harmonics, options.sectionSpacing);
+std::vector<CollisionVolumeParameters> shapePartRadial(const PartMesh& part, const VolumeShapingOptions& options) {
+  const RadialDepth radial = shapeRadialPart(part, options.harmonics, options.sectionSpacing);
   const std::vector<CollisionVolumeParameters> suited = {
       {part.name, CollisionVolumeParameters::Kind::Radial, {}, radial.parameters()}};
   double radialGap = 0.0;
   for (const Vec3& v : part.mesh.vertices) radialGap += std::abs(radial.nearest(v).distance);
   if (radialGap <= kSplitGap * static_cast<double>(part.mesh.vertices.size())) return suited;
-  const std::vector<CollisionVolumeParameters> capsules = fitPartCapsules(part, options);
+  const std::vector<CollisionVolumeParameters> capsules = shapePartCapsules(part, options);
   // The capsules' gap by the same estimate as the radial one's: each vertex's depth in
   // the deepest capsule holding it.
   double capsuleGap = 0.0;
@@ -103,17 +103,17 @@ std::vector<CollisionVolumeParameters> fitPartRadial(const PartMesh& part, const
 
 namespace {
 
-// `fitPart` on every part of `body` with enough vertices to fit, in the skeleton's order,
+// `shapePart` on every part of `body` with enough vertices to fit, in the skeleton's order,
 // saying which to `progress`.
-template <typename FitPart>
-std::vector<CollisionVolumeParameters> fitEachPart(const TriangleMesh& body, const Skeleton& skeleton,
-                                                   const CollisionVolumeFitOptions& options, FitPart fitPart) {
+template <typename ShapePart>
+std::vector<CollisionVolumeParameters> shapeEachPart(const TriangleMesh& body, const Skeleton& skeleton,
+                                                     const VolumeShapingOptions& options, ShapePart shapePart) {
   std::vector<PartMesh> parts = splitIntoParts(body, skeleton);
   std::erase_if(parts, [](const PartMesh& part) { return part.mesh.vertices.size() < 4; });
   std::vector<CollisionVolumeParameters> out;
   for (size_t i = 0; i < parts.size(); ++i) {
     if (options.progress) options.progress(parts[i].name, static_cast<int>(i), static_cast<int>(parts.size()));
-    const std::vector<CollisionVolumeParameters> v = fitPart(parts[i]);
+    const std::vector<CollisionVolumeParameters> v = shapePart(parts[i]);
     out.insert(out.end(), v.begin(), v.end());
   }
   return out;
@@ -121,14 +121,14 @@ std::vector<CollisionVolumeParameters> fitEachPart(const TriangleMesh& body, con
 
 }  // namespace
 
-std::vector<CollisionVolumeParameters> fitCapsules(const TriangleMesh& body, const Skeleton& skeleton,
-                                                   const CollisionVolumeFitOptions& options) {
-  return fitEachPart(body, skeleton, options, [&](const PartMesh& part) { return fitPartCapsules(part, options); });
+std::vector<CollisionVolumeParameters> shapeCapsules(const TriangleMesh& body, const Skeleton& skeleton,
+                                                     const VolumeShapingOptions& options) {
+  return shapeEachPart(body, skeleton, options, [&](const PartMesh& part) { return shapePartCapsules(part, options); });
 }
 
-std::vector<CollisionVolumeParameters> fitRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
-                                                        const CollisionVolumeFitOptions& options) {
-  return fitEachPart(body, skeleton, options, [&](const PartMesh& part) { return fitPartRadial(part, options); });
+std::vector<CollisionVolumeParameters> shapeRadialVolumes(const TriangleMesh& body, const Skeleton& skeleton,
+                                                          const VolumeShapingOptions& options) {
+  return shapeEachPart(body, skeleton, options, [&](const PartMesh& part) { return shapePartRadial(part, options); });
 }
 
 }  // namespace figment

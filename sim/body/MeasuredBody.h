@@ -18,19 +18,19 @@
 namespace figment {
 
 struct MeasurementGoal {
-  std::string key;  // a BodyMeasurements::named() key with a parameter (fittedKeys())
+  std::string key;  // a BodyMeasurements::named() key with a parameter (measurableKeys())
   double value;     // m
 };
 
 // The keys a goal may name, each with the parameter it moves.
-const std::vector<std::pair<std::string, std::string>>& fittedKeys();
+const std::vector<std::pair<std::string, std::string>>& measurableKeys();
 
-struct BodyFitOptions {
+struct MeasuredBodyOptions {
   double tolerance = 0.005;  // m: each goal met within this
   int maxIterations = 12;
 };
 
-struct BodyFitResult {
+struct MeasuredBody {
   HumanParameters parameters;
   TriangleMesh body;
   BodyMeasurements achieved;
@@ -48,7 +48,7 @@ class UnreachableMeasurement : public std::invalid_argument {
 // weight and muscle when a girth is, and cup size when the bust needs it).
 // Throws std::invalid_argument for an unknown or repeated key or a value <= 0, and
 // UnreachableMeasurement as above.
-BodyFitResult fitBody(const HumanModel& model, const HumanParameters& start, const std::vector<MeasurementGoal>& goals,
-                      const BodyFitOptions& options = {});
+MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start,
+                              const std::vector<MeasurementGoal>& goals, const MeasuredBodyOptions& options = {});
 
 }  // namespace figment

@@ -1,4 +1,4 @@
-#include "serve/request/Catalogue.h"
+#include "serve/request/ShopperChoices.h"
 
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -64,52 +64,52 @@ const T* byName(const std::vector<T>& list, const std::string& name) {
 
 }  // namespace
 
-const std::vector<MeasureRange>& Catalogue::measures() {
+const std::vector<MeasureRange>& ShopperChoices::measures() {
   return kMeasures;
 }
-const std::vector<GarmentStyle>& Catalogue::styles() {
+const std::vector<GarmentStyle>& ShopperChoices::styles() {
   return kStyles;
 }
-const std::vector<GarmentSize>& Catalogue::sizes() {
+const std::vector<GarmentSize>& ShopperChoices::sizes() {
   return kSizes;
 }
-const std::vector<std::string>& Catalogue::colours() {
+const std::vector<std::string>& ShopperChoices::colours() {
   return kColours;
 }
-const std::vector<NamedColour>& Catalogue::skinTones() {
+const std::vector<NamedColour>& ShopperChoices::skinTones() {
   return kSkinTones;
 }
-const std::vector<Pose>& Catalogue::poses() {
+const std::vector<Pose>& ShopperChoices::poses() {
   return kPoses;
 }
-const std::vector<LightPreset>& Catalogue::lights() {
+const std::vector<LightPreset>& ShopperChoices::lights() {
   return kLights;
 }
 
-const GarmentStyle* Catalogue::style(const std::string& name) {
+const GarmentStyle* ShopperChoices::style(const std::string& name) {
   return byName(kStyles, name);
 }
-const GarmentSize* Catalogue::size(const std::string& name) {
+const GarmentSize* ShopperChoices::size(const std::string& name) {
   return byName(kSizes, name);
 }
-const Pose* Catalogue::pose(const std::string& name) {
+const Pose* ShopperChoices::pose(const std::string& name) {
   return byName(kPoses, name);
 }
-const LightPreset* Catalogue::light(const std::string& name) {
+const LightPreset* ShopperChoices::light(const std::string& name) {
   return byName(kLights, name);
 }
 
-const MeasureRange& Catalogue::measure(const std::string& name) {
+const MeasureRange& ShopperChoices::measure(const std::string& name) {
   if (const MeasureRange* range = byName(kMeasures, name)) return *range;
   throw std::invalid_argument("no measurement named " + name);
 }
 
-BodyFactors Catalogue::bodyFactors(const BodyMeasures& body) {
+BodyFactors ShopperChoices::bodyFactors(const BodyMeasures& body) {
   return {body.stature / measure("stature").reference, body.bust / measure("bust").reference,
           body.waist / measure("waist").reference, body.hips / measure("hips").reference};
 }
 
-nlohmann::json Catalogue::toJson() {
+nlohmann::json ShopperChoices::toJson() {
   nlohmann::json sizes = nlohmann::json::array(), styles = nlohmann::json::array();
   for (const GarmentSize& size : kSizes) sizes.push_back(size.name);
   for (const GarmentStyle& style : kStyles)

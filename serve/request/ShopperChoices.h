@@ -1,8 +1,10 @@
 #pragma once
-// What a shopper may ask for: garment styles with their sizes and colours, poses, lights,
-// skin tones and the ranges of the body's measurements. Plain data shared by the server
-// (parsing requests, GET /api/catalogue) and its workers (building scenes): every file a
-// scene reads is named here, in code, never by a request.
+// ShopperChoices: what a shopper may ask for (not the shop's garment catalogue,
+// io/GarmentCatalogue.h, though GET /api/catalogue keeps its name): garment styles with
+// their sizes and colours, poses, lights, skin tones and the ranges of the body's
+// measurements. Plain data shared by the server (parsing requests, GET /api/catalogue) and
+// its workers (building scenes): every file a scene reads is named here, in code, never by
+// a request.
 //
 // The request -> scene mapping goes through two seams so measured bodies and graded
 // garments slot in later: a body is its measurements (BodyMeasures, metres), turned into
@@ -71,7 +73,7 @@ struct LightPreset {
   std::vector<Light> lights;
 };
 
-class Catalogue {
+class ShopperChoices {
  public:
   static const std::vector<MeasureRange>& measures();
   static const std::vector<GarmentStyle>& styles();

@@ -6,7 +6,7 @@
 #include <numbers>
 #include <vector>
 
-#include "sim/fitting/AxisSearch.h"
+#include "sim/volumes/AxisSearch.h"
 
 using namespace figment;
 
