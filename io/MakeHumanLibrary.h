@@ -19,9 +19,9 @@ class MakeHumanLibrary {
  public:
   // Looks for nothing yet: a library never asked for a body costs nothing.
   MakeHumanLibrary();
+  // Defined where TargetLibrary is complete. Neither copied (its unique_ptr members) nor
+  // moved (a declared destructor leaves no implicit move): one library, one model.
   ~MakeHumanLibrary();
-  MakeHumanLibrary(const MakeHumanLibrary&) = delete;
-  MakeHumanLibrary& operator=(const MakeHumanLibrary&) = delete;
 
   // The data folder (findMakeHumanData), looked for until found and then kept; "" while
   // there is none.

@@ -117,15 +117,18 @@ std::string checkMeshes(const std::vector<ColouredMesh>& meshes) {
   return "";
 }
 
+// Each format once: the extension that asks for it and assimp's exporter that writes it.
+struct FormatEntry {
+  MeshSetFormat format;
+  const char* extension;
+  const char* exporterId;
+};
+constexpr FormatEntry kFormats[] = {
+    {MeshSetFormat::Glb, ".glb", "glb2"}, {MeshSetFormat::Gltf, ".gltf", "gltf2"}, {MeshSetFormat::Obj, ".obj", "obj"}};
+
 const char* exporterId(MeshSetFormat format) {
-  switch (format) {
-    case MeshSetFormat::Glb:
-      return "glb2";
-    case MeshSetFormat::Gltf:
-      return "gltf2";
-    case MeshSetFormat::Obj:
-      return "obj";
-  }
+  for (const FormatEntry& entry : kFormats)
+    if (entry.format == format) return entry.exporterId;
   return "";
 }
 
@@ -135,9 +138,8 @@ std::optional<MeshSetFormat> meshSetFormatOf(const std::string& path) {
   std::string extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension == ".glb") return MeshSetFormat::Glb;
-  if (extension == ".gltf") return MeshSetFormat::Gltf;
-  if (extension == ".obj") return MeshSetFormat::Obj;
+  for (const FormatEntry& entry : kFormats)
+    if (extension == entry.extension) return entry.format;
   return std::nullopt;
 }
 

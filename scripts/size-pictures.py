@@ -20,6 +20,8 @@ import sys
 import tempfile
 import zlib
 
+import pngrows
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TEMPLATE = os.path.join(ROOT, "scenes", "sizes", "pencil-S-on-XL.iv")
 TEMPLATE_BODY = "stature 1.68  bustGirth 0.96  waistGirth 0.80  hipGirth 1.04"
@@ -30,37 +32,9 @@ CROP = (70, 120, 230, 280)    # the garment's part of it: left, top, right, bott
 def read_png(path):
     """(width, height, rows of RGB bytes) of an 8-bit RGB or RGBA PNG."""
     data = open(path, "rb").read()
-    assert data[:8] == b"\x89PNG\r\n\x1a\n", path
-    pos, idat, width = 8, b"", 0
-    while pos < len(data):
-        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        body = data[pos + 8:pos + 8 + length]
-        if kind == b"IHDR":
-            width, height, depth, colour = struct.unpack(">IIBB", body[:10])
-            assert depth == 8 and colour in (2, 6), (path, depth, colour)
-            channels = 3 if colour == 2 else 4
-        elif kind == b"IDAT":
-            idat += body
-        pos += 12 + length
-    raw, stride, rows, previous = zlib.decompress(idat), width * channels, [], bytearray(width * channels)
-    for y in range(height):
-        kind, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - channels] if i >= channels else 0
-            b, c = previous[i], previous[i - channels] if i >= channels else 0
-            if kind == 1:
-                line[i] = (line[i] + a) & 255
-            elif kind == 2:
-                line[i] = (line[i] + b) & 255
-            elif kind == 3:
-                line[i] = (line[i] + (a + b) // 2) & 255
-            elif kind == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        previous = line
-        rows.append(bytes(v for i, v in enumerate(line) if channels == 3 or i % 4 != 3))
-    return width, height, rows
+    assert data[:8] == pngrows.SIGNATURE, path
+    width, height, channels, rows = pngrows.unfiltered_rows(data)
+    return width, height, [bytes(v for i, v in enumerate(line) if channels == 3 or i % 4 != 3) for line in rows]
 
 
 def write_png(path, width, rows):

@@ -4,16 +4,11 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "nodes/NodeSource.h"
 #include "sim/collision/Capsule.h"
 #include "sim/collision/CollisionVolume.h"
 
-SO_NODE_SOURCE(CapsuleVolume);
-
-void CapsuleVolume::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  CollisionVolumeNode::initClass();
-  SO_NODE_INIT_CLASS(CapsuleVolume, CollisionVolumeNode, "CollisionVolumeNode");
-}
+FIGMENT_DERIVED_NODE_SOURCE(CapsuleVolume, CollisionVolumeNode)
 
 CapsuleVolume::CapsuleVolume() {
   SO_NODE_CONSTRUCTOR(CapsuleVolume);

@@ -3,14 +3,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "nodes/NodeSource.h"
 #include "sim/collision/CompositeCollider.h"
 
-SO_NODE_SOURCE(CollisionGroup);
-
-void CollisionGroup::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(CollisionGroup, SoNode, "Node");
-}
+FIGMENT_NODE_SOURCE(CollisionGroup, SoNode, "Node")
 
 CollisionGroup::CollisionGroup() {
   SO_NODE_CONSTRUCTOR(CollisionGroup);

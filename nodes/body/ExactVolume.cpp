@@ -2,16 +2,11 @@
 
 #include <stdexcept>
 
+#include "nodes/NodeSource.h"
 #include "sim/collision/CollisionVolume.h"
 #include "sim/core/TriangleMesh.h"
 
-SO_NODE_SOURCE(ExactVolume);
-
-void ExactVolume::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  CollisionVolumeNode::initClass();
-  SO_NODE_INIT_CLASS(ExactVolume, CollisionVolumeNode, "CollisionVolumeNode");
-}
+FIGMENT_DERIVED_NODE_SOURCE(ExactVolume, CollisionVolumeNode)
 
 ExactVolume::ExactVolume() {
   SO_NODE_CONSTRUCTOR(ExactVolume);

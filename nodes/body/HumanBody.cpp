@@ -17,12 +17,11 @@
 
 #include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
+#include "nodes/NodeSource.h"
 #include "sim/body/MeasuredBody.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
 #include "sim/collision/MovingMeshCollider.h"
-
-SO_NODE_SOURCE(HumanBody);
 
 // The rest body and the pose it turns into, kept for the moving collider's shapes.
 struct PoseMotion {
@@ -52,11 +51,7 @@ struct HumanBody::Data {
   SoMaterial* material = nullptr;  // the skin tone's, in the hidden mesh when set
 };
 
-void HumanBody::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  MeshFile::initClass();
-  SO_NODE_INIT_CLASS(HumanBody, MeshFile, "MeshFile");
-}
+FIGMENT_DERIVED_NODE_SOURCE(HumanBody, MeshFile)
 
 HumanBody::HumanBody() : data_(std::make_unique<Data>()) {
   SO_NODE_CONSTRUCTOR(HumanBody);

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "nodes/NodeSource.h"
 #include "nodes/body/CapsuleVolume.h"
 #include "nodes/body/CollisionVolumeNode.h"
 #include "nodes/body/ExactVolume.h"
@@ -29,8 +30,6 @@
 #include "sim/collision/CollisionVolume.h"
 #include "sim/collision/VolumeSetCollider.h"
 
-SO_NODE_SOURCE(Mannequin);
-
 struct Mannequin::Model {
   figment::Skeleton skeleton;
   std::vector<VolumeEntry> volumes;
@@ -40,10 +39,7 @@ struct Mannequin::Model {
   std::vector<char> exactPart;  // per skeleton part: named in exactParts
 };
 
-void Mannequin::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(Mannequin, SoGroup, "Group");
-}
+FIGMENT_NODE_SOURCE(Mannequin, SoGroup, "Group")
 
 Mannequin::Mannequin() {
   SO_NODE_CONSTRUCTOR(Mannequin);

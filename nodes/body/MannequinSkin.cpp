@@ -18,12 +18,11 @@
 #include <string>
 #include <vector>
 
+#include "nodes/NodeSource.h"
 #include "nodes/body/HiddenChildren.h"
 #include "nodes/body/Mannequin.h"
 #include "sim/body/Skeleton.h"
 #include "sim/core/TriangleMesh.h"
-
-SO_NODE_SOURCE(MannequinSkin);
 
 struct MannequinSkin::Impl {
   explicit Impl(MannequinSkin* owner) : children(owner) {}
@@ -35,10 +34,7 @@ struct MannequinSkin::Impl {
   std::string error;
 };
 
-void MannequinSkin::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(MannequinSkin, SoNode, "Node");
-}
+FIGMENT_NODE_SOURCE(MannequinSkin, SoNode, "Node")
 
 MannequinSkin::MannequinSkin() : impl_(std::make_unique<Impl>(this)) {
   SO_NODE_CONSTRUCTOR(MannequinSkin);

@@ -27,13 +27,12 @@
 
 #include "io/MeshImport.h"
 #include "nodes/MeshFields.h"
+#include "nodes/NodeSource.h"
 #include "nodes/SceneFiles.h"
 #include "nodes/body/HiddenChildren.h"
 #include "nodes/cloth/FieldValues.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/core/ParameterChecks.h"
-
-SO_NODE_SOURCE(MeshFile);
 
 struct MeshFile::Impl {
   explicit Impl(MeshFile* owner) : children(owner) {}
@@ -148,10 +147,7 @@ std::pair<figment::TriangleMesh, figment::TriangleMesh> importMeshes(const MeshF
 
 }  // namespace
 
-void MeshFile::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(MeshFile, SoNode, "Node");
-}
+FIGMENT_NODE_SOURCE(MeshFile, SoNode, "Node")
 
 MeshFile::MeshFile() : impl_(std::make_unique<Impl>(this)) {
   SO_NODE_CONSTRUCTOR(MeshFile);

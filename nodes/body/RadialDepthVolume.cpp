@@ -5,16 +5,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "nodes/NodeSource.h"
 #include "sim/collision/CollisionVolume.h"
 #include "sim/collision/RadialDepth.h"
 
-SO_NODE_SOURCE(RadialDepthVolume);
-
-void RadialDepthVolume::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  CollisionVolumeNode::initClass();
-  SO_NODE_INIT_CLASS(RadialDepthVolume, CollisionVolumeNode, "CollisionVolumeNode");
-}
+FIGMENT_DERIVED_NODE_SOURCE(RadialDepthVolume, CollisionVolumeNode)
 
 RadialDepthVolume::RadialDepthVolume() {
   SO_NODE_CONSTRUCTOR(RadialDepthVolume);

@@ -4,14 +4,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "nodes/NodeSource.h"
 #include "sim/body/Skeleton.h"
 
-SO_NODE_SOURCE(SkeletonJoints);
-
-void SkeletonJoints::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(SkeletonJoints, SoNode, "Node");
-}
+FIGMENT_NODE_SOURCE(SkeletonJoints, SoNode, "Node")
 
 SkeletonJoints::SkeletonJoints() {
   SO_NODE_CONSTRUCTOR(SkeletonJoints);

@@ -12,22 +12,17 @@
 #include "io/MakeHumanLibrary.h"
 #include "io/PatternFile.h"
 #include "nodes/MeshFields.h"
+#include "nodes/NodeSource.h"
 #include "nodes/SceneFiles.h"
 #include "sim/pattern/PatternCutting.h"
 #include "sim/pattern/PatternPlacement.h"
-
-SO_NODE_SOURCE(CatalogueGarment);
 
 struct CatalogueGarment::Data {
   std::vector<std::string> sceneDirectories;  // kept at read time for later loads
   figment::MakeHumanLibrary human;            // this node's: the targets its chart bodies blend, read once
 };
 
-void CatalogueGarment::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  MeshFile::initClass();
-  SO_NODE_INIT_CLASS(CatalogueGarment, MeshFile, "MeshFile");
-}
+FIGMENT_DERIVED_NODE_SOURCE(CatalogueGarment, MeshFile)
 
 CatalogueGarment::CatalogueGarment() : data_(std::make_unique<Data>()) {
   SO_NODE_CONSTRUCTOR(CatalogueGarment);

@@ -3,16 +3,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "nodes/NodeSource.h"
 #include "nodes/cloth/ClothEngineInputs.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/OffsetCollider.h"
 
-SO_NODE_SOURCE(GarmentSurface);
-
-void GarmentSurface::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(GarmentSurface, SoNode, "Node");
-}
+FIGMENT_NODE_SOURCE(GarmentSurface, SoNode, "Node")
 
 GarmentSurface::GarmentSurface() {
   SO_NODE_CONSTRUCTOR(GarmentSurface);

@@ -10,18 +10,13 @@
 
 #include "io/PatternFile.h"
 #include "nodes/MeshFields.h"
+#include "nodes/NodeSource.h"
 #include "nodes/SceneFiles.h"
 #include "sim/core/ParameterChecks.h"
 #include "sim/pattern/PatternCutting.h"
 #include "sim/pattern/PatternPlacement.h"
 
-SO_NODE_SOURCE(SewingPattern);
-
-void SewingPattern::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  MeshFile::initClass();
-  SO_NODE_INIT_CLASS(SewingPattern, MeshFile, "MeshFile");
-}
+FIGMENT_DERIVED_NODE_SOURCE(SewingPattern, MeshFile)
 
 SewingPattern::SewingPattern() {
   SO_NODE_CONSTRUCTOR(SewingPattern);

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "guard/CoordIndexFaces.h"
+#include "nodes/NodeSource.h"
 #include "nodes/render/FacetOrder.h"
 #include "nodes/render/GLStencilElement.h"
 #include "nodes/render/StencilDecisionElement.h"
@@ -25,15 +26,7 @@
 #include "nodes/render/StencilRuleElement.h"
 #include "sim/core/DisplaySubdivision.h"
 
-SO_NODE_SOURCE(ClothingLayer);
-
-void ClothingLayer::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  GLStencilElement::initClass();
-  StencilRuleElement::initClass();
-  StencilDecisionElement::initClass();
-  SO_NODE_INIT_CLASS(ClothingLayer, SoIndexedFaceSet, "IndexedFaceSet");
-}
+FIGMENT_NODE_SOURCE_AFTER(ClothingLayer, SoIndexedFaceSet, "IndexedFaceSet", initStencilElements)
 
 ClothingLayer::ClothingLayer() {
   SO_NODE_CONSTRUCTOR(ClothingLayer);

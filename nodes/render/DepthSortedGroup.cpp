@@ -14,12 +14,9 @@
 #include <numeric>
 #include <vector>
 
-SO_NODE_SOURCE(DepthSortedGroup);
+#include "nodes/NodeSource.h"
 
-void DepthSortedGroup::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  SO_NODE_INIT_CLASS(DepthSortedGroup, SoGroup, "Group");
-}
+FIGMENT_NODE_SOURCE(DepthSortedGroup, SoGroup, "Group")
 
 DepthSortedGroup::DepthSortedGroup() {
   SO_NODE_CONSTRUCTOR(DepthSortedGroup);

@@ -4,15 +4,19 @@
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/misc/SoState.h>
 
-SO_ELEMENT_SOURCE(GLStencilElement);
+#include "nodes/NodeSource.h"
+#include "nodes/render/StencilDecisionElement.h"
+#include "nodes/render/StencilRuleElement.h"
 
-void GLStencilElement::initClass() {
-  if (getClassTypeId() != SoType::badType()) return;
-  SO_ELEMENT_INIT_CLASS(GLStencilElement, inherited);
-  SO_ENABLE(SoGLRenderAction, GLStencilElement);
-}
+FIGMENT_ELEMENT_SOURCE(GLStencilElement)
 
 GLStencilElement::~GLStencilElement() = default;
+
+void initStencilElements() {
+  GLStencilElement::initClass();
+  StencilRuleElement::initClass();
+  StencilDecisionElement::initClass();
+}
 
 void GLStencilElement::init(SoState* state) {
   inherited::init(state);

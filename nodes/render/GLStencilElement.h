@@ -62,3 +62,8 @@ class GLStencilElement : public SoElement {
   Mode mode_ = OFF;
   bool clearedEachFrame_ = false;  // bottom element only: the callback is in place
 };
+
+// Registers GLStencilElement, StencilRuleElement and StencilDecisionElement, in that order:
+// what a node that draws through the stencil rule (ClothingLayer, StencilSeparator) needs
+// registered before itself.
+void initStencilElements();

@@ -3,17 +3,13 @@
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/misc/SoState.h>
 
-SO_ELEMENT_SOURCE(StencilDecisionElement);
+#include "nodes/NodeSource.h"
+
+FIGMENT_ELEMENT_SOURCE(StencilDecisionElement)
 
 bool StencilDecisionElement::Key::operator==(const Key& other) const {
   return root == other.root && rootId == other.rootId && affine == other.affine && projection == other.projection &&
          viewport == other.viewport;
-}
-
-void StencilDecisionElement::initClass() {
-  if (getClassTypeId() != SoType::badType()) return;
-  SO_ELEMENT_INIT_CLASS(StencilDecisionElement, inherited);
-  SO_ENABLE(SoGLRenderAction, StencilDecisionElement);
 }
 
 StencilDecisionElement::~StencilDecisionElement() = default;

@@ -3,13 +3,9 @@
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/misc/SoState.h>
 
-SO_ELEMENT_SOURCE(StencilRuleElement);
+#include "nodes/NodeSource.h"
 
-void StencilRuleElement::initClass() {
-  if (getClassTypeId() != SoType::badType()) return;
-  SO_ELEMENT_INIT_CLASS(StencilRuleElement, inherited);
-  SO_ENABLE(SoGLRenderAction, StencilRuleElement);
-}
+FIGMENT_ELEMENT_SOURCE(StencilRuleElement)
 
 StencilRuleElement::~StencilRuleElement() = default;
 

@@ -4,20 +4,13 @@
 #include <Inventor/elements/SoCacheElement.h>
 #include <Inventor/misc/SoState.h>
 
+#include "nodes/NodeSource.h"
 #include "nodes/render/GLStencilElement.h"
 #include "nodes/render/StencilDecisionElement.h"
 #include "nodes/render/StencilRule.h"
 #include "nodes/render/StencilRuleElement.h"
 
-SO_NODE_SOURCE(StencilSeparator);
-
-void StencilSeparator::initClass() {
-  if (classTypeId != SoType::badType()) return;
-  GLStencilElement::initClass();
-  StencilRuleElement::initClass();
-  StencilDecisionElement::initClass();
-  SO_NODE_INIT_CLASS(StencilSeparator, SoSeparator, "Separator");
-}
+FIGMENT_NODE_SOURCE_AFTER(StencilSeparator, SoSeparator, "Separator", initStencilElements)
 
 StencilSeparator::StencilSeparator() {
   SO_NODE_CONSTRUCTOR(StencilSeparator);

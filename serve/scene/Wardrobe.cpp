@@ -40,8 +40,6 @@ const SkeletonJoints* findJoints(SoNode* node) {
 
 }  // namespace
 
-Wardrobe::Wardrobe() = default;
-
 Wardrobe::~Wardrobe() {
   if (root_) root_->unref();
 }

@@ -22,7 +22,7 @@ namespace figment::serve {
 
 class Wardrobe {
  public:
-  Wardrobe();
+  Wardrobe() = default;
   ~Wardrobe();
   Wardrobe(const Wardrobe&) = delete;
   Wardrobe& operator=(const Wardrobe&) = delete;

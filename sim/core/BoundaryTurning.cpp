@@ -80,7 +80,7 @@ std::vector<std::vector<BoundaryTurning::Turn>> BoundaryTurning::turns(const std
         const Triangle t = startingAt(triangles_[i], v);
         angles += angleAt(positions[v], positions[t[1]], positions[t[2]]);
       }
-      Turn turn{v, totals[k], (M_PI - angles) * kDegrees, 0.0};
+      Turn turn{{totals[k], (M_PI - angles) * kDegrees, 0.0}, v};
       turn.normal = std::sqrt(std::max(turn.total * turn.total - turn.geodesic * turn.geodesic, 0.0));
       loopTurns.push_back(turn);
     }

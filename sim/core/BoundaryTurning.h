@@ -43,20 +43,21 @@ namespace figment {
 
 class BoundaryTurning {
  public:
-  // One boundary vertex's turning, degrees.
-  struct Turn {
-    int vertex = 0;
+  // A turning's three angles, degrees: one vertex's (Turn) or their medians (Summary).
+  struct Angles {
     double total = 0.0;     // the 3D turning, 0 to 180
     double geodesic = 0.0;  // signed: positive towards the cloth
     double normal = 0.0;    // >= 0
   };
 
-  // Medians over every boundary vertex, degrees (|geodesic|), and the zig-zag share.
-  struct Summary {
+  // One boundary vertex's turning.
+  struct Turn : Angles {
+    int vertex = 0;
+  };
+
+  // Medians over every boundary vertex (of |geodesic|), and the zig-zag share.
+  struct Summary : Angles {
     int vertices = 0;
-    double total = 0.0;
-    double geodesic = 0.0;
-    double normal = 0.0;
     double zigZagShare = 0.0;
   };
 

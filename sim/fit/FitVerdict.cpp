@@ -1,7 +1,9 @@
 #include "sim/fit/FitVerdict.h"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
+#include <iterator>
 
 namespace figment {
 
@@ -49,15 +51,10 @@ std::string reason(const RegionFit& fit, const RegionFit& intended, Verdict verd
 }  // namespace
 
 const char* verdictName(Verdict verdict) {
-  switch (verdict) {
-    case Verdict::Tight:
-      return "tight";
-    case Verdict::Fits:
-      return "fits";
-    case Verdict::Loose:
-      return "loose";
-  }
-  return "fits";
+  static constexpr const char* kNames[] = {"tight", "fits", "loose"};  // in Verdict's order
+  static_assert(static_cast<int>(Verdict::Tight) == 0 && static_cast<int>(Verdict::Loose) == 2);
+  const auto index = static_cast<std::size_t>(verdict);
+  return index < std::size(kNames) ? kNames[index] : "fits";
 }
 
 FabricLimits fabricLimits(const std::string& fabric) {

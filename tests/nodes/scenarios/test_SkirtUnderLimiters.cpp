@@ -11,6 +11,7 @@
 #include <cmath>
 #include <set>
 
+#include "guard/CoordIndexFaces.h"
 #include "sim/drape/DrapeReport.h"
 #include "support/ShippedGarmentScene.h"
 
@@ -21,16 +22,11 @@ namespace {
 // Largest |edge length / rest length - 1| over the garment's edges.
 double maxEdgeStrain(const ClothEngine& engine, const SoMFVec3f& positions) {
   std::set<std::pair<int, int>> edges;
-  std::vector<int> face;
-  for (int k = 0; k <= engine.coordIndex.getNum(); ++k) {
-    const int index = k < engine.coordIndex.getNum() ? engine.coordIndex[k] : -1;
-    if (index >= 0) {
-      face.push_back(index);
-      continue;
-    }
-    for (size_t i = 0; i < face.size(); ++i) edges.insert(std::minmax(face[i], face[(i + 1) % face.size()]));
-    face.clear();
-  }
+  const int32_t* coordIndex = engine.coordIndex.getValues(0);
+  for (const figment::guard::CoordIndexFace& face :
+       figment::guard::coordIndexFaces(coordIndex, engine.coordIndex.getNum()))
+    for (int i = 0; i < face.corners(); ++i)
+      edges.insert(std::minmax(coordIndex[face.first + i], coordIndex[face.first + (i + 1) % face.corners()]));
   double worst = 0.0;
   for (const auto& [a, b] : edges) {
     const double rest = (engine.restPoints[a] - engine.restPoints[b]).length();
