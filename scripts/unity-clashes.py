@@ -50,6 +50,8 @@ def scan(path):
             names.add(m.group(3))
         for m in re.finditer(r'\b([A-Za-z_]\w*)\s*(\[[^\]]*\])?\s*=\s*[^;]*;', top):
             names.add(m.group(1))
+        for m in re.finditer(r'\b(?:constexpr|const|inline)\b[^;=(]*?\b([A-Za-z_]\w*)\s*(\[[^\]]*\])?\s*;', top):
+            names.add(m.group(1))  # brace-initialised: constexpr Size kSize{200, 200};
     for m in re.finditer(r'^static\s+[^;{(]*?\b([A-Za-z_]\w*)\s*\(', text, re.M):
         names.add(m.group(1))
     for m in re.finditer(r'^(?:static\s+)?constexpr\s+[^;=(]*?\b([A-Za-z_]\w*)\s*=', text, re.M):
