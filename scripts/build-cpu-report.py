@@ -38,6 +38,11 @@ def main():
             steps[parts[0]] = float(parts[1]) + float(parts[2])  # the last build of an output
         except ValueError:
             continue
+    if args.build:  # only what the build makes now (a batch regrouped since leaves a stale line)
+        outputs = subprocess.run(["ninja", "-C", args.build, "-t", "targets", "all"], capture_output=True,
+                                 text=True).stdout
+        current = {line.split(":")[0] for line in outputs.splitlines()}
+        steps = {out: cpu for out, cpu in steps.items() if out in current or args.build + "/" + out in current}
     by_target = collections.Counter()
     by_kind = collections.Counter()
     by_part = collections.Counter()
