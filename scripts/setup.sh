@@ -48,10 +48,11 @@ missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
 done
-# node and npm: the Khronos glTF validator for the export tests (tools/gltf). Debian's
-# nodejs and npm unless a node with its npm is already there (another vendor's, say).
+# node: the Khronos glTF validator for the export tests (tools/gltf). Debian's nodejs unless a
+# node is already there (another vendor's, say). Not Debian's npm: some 400 packages to unpack
+# on a fresh machine for one tarball (scripts/fetch-npm-lock.py installs it, below).
 if ((${#targets[@]} == 0)); then
-  command -v node >/dev/null && command -v npm >/dev/null || missing+=(nodejs npm)
+  command -v node >/dev/null || missing+=(nodejs)
 fi
 if ((${#missing[@]})); then
   echo "setup: installing ${missing[*]}" >&2
@@ -61,11 +62,12 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
-# The validator at the version and integrity hash package-lock.json pins; again only when
-# the lock file changed since (the tests use it: not for a build of named targets).
+# The validator at the version and integrity hash package-lock.json pins, as npm ci would
+# install it; again only when the lock file changed since (the tests use it: not for a build of
+# named targets).
 if ((${#targets[@]} == 0)) && { [ ! -f tools/gltf/node_modules/.package-lock.json ] ||
   [ tools/gltf/package-lock.json -nt tools/gltf/node_modules/.package-lock.json ]; }; then
-  (cd tools/gltf && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  python3 scripts/fetch-npm-lock.py tools/gltf
 fi
 
 build=${FIGMENT_BUILD_DIR:-build}

@@ -1,5 +1,5 @@
-// Validates one glTF or GLB file with the Khronos glTF validator (pinned in package.json,
-// installed by `npm ci` here: scripts/setup.sh does it) and prints its figures as one line
+// Validates one glTF or GLB file with the Khronos glTF validator (pinned in package-lock.json,
+// installed here as `npm ci` would: scripts/setup.sh does it) and prints its figures as one line
 // of JSON: {"errors": E, "warnings": W, "infos": I, "hints": H, "messages": [...]}, each
 // message "SEVERITY CODE at POINTER: text". Exit status 0 when E is 0, 1 when not, 2 when
 // the file could not be read or validated at all. External buffers (a .gltf's .bin) are
