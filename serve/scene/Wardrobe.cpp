@@ -40,6 +40,8 @@ const SkeletonJoints* findJoints(SoNode* node) {
 
 }  // namespace
 
+Wardrobe::Wardrobe() = default;
+
 Wardrobe::~Wardrobe() {
   if (root_) root_->unref();
 }

@@ -22,7 +22,8 @@ namespace figment::serve {
 
 class Wardrobe {
  public:
-  Wardrobe() = default;
+  // Both in the .cpp, where GarmentCatalogue is a complete type (its unique_ptr deletes it).
+  Wardrobe();
   ~Wardrobe();
   Wardrobe(const Wardrobe&) = delete;
   Wardrobe& operator=(const Wardrobe&) = delete;
