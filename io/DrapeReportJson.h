@@ -2,7 +2,7 @@
 // A drape's report (sim/drape/DrapeReport.h) as one JSON object on one line: what
 // figment-view --stats writes per garment, figment-sew --stats under "drape" and
 // figment-bench's drape study per row. Written here once so the programs cannot drift
-// apart (docs/authoring.md shows it).
+// apart (docs/interfaces.md lists its keys, under figment-view's --stats).
 
 #include <string>
 
