@@ -3,7 +3,10 @@
 // into the shared cache, where every instance then answers them without a render.
 //
 //   figment-precompute --redis URL --requests FILE       one request per line (a query string)
-//   figment-precompute --redis URL --catalogue [--body S,B,W,H]... [--pose P]... [--view V]... [--size WxH]
+//   figment-precompute --redis URL --catalogue [--sex S]... [--body S,B,W,H]... [--pose P]... [--view V]...
+//                      [--size WxH]
+// Requests are checked against the scenes folder's garment catalogue (--scenes), as
+// figment-serve checks them.
 //   figment-precompute --redis URL --status [--wait S]
 //
 // A bad request line or option: one line naming it, exit 2, nothing queued.
@@ -13,8 +16,11 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <thread>
 
+#include "io/GarmentCatalogue.h"
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/workers/JobQueue.h"
 #include "serve/workers/PrecomputePlan.h"
 #include "serve/workers/RedisConnection.h"
@@ -27,6 +33,7 @@ using figment::serve::PrecomputePlan;
 
 struct Options {
   std::string redisUrl;
+  std::string scenesFolder = FIGMENT_SCENES_DIR;
   std::string requestsFile;
   bool catalogue = false;
   PrecomputePlan::Grid grid;
@@ -45,10 +52,18 @@ void print(const JobProgress& progress) {
 
 // The requests the options ask for, or the error line.
 std::variant<PrecomputePlan::Requests, std::string> plan(const Options& options) {
-  if (options.catalogue) return PrecomputePlan::fromCatalogue(options.grid);
+  std::unique_ptr<figment::GarmentCatalogue> catalogue;
+  try {
+    catalogue = std::make_unique<figment::GarmentCatalogue>(
+        figment::serve::MadeBodyChoices::cataloguePath(options.scenesFolder));
+  } catch (const std::exception& error) {
+    return std::string("--scenes: ") + error.what();
+  }
+  if (options.catalogue) return PrecomputePlan::fromCatalogue(options.grid, *catalogue);
   std::ifstream in(options.requestsFile, std::ios::binary);
   if (!in) return options.requestsFile + ": cannot read";
-  return PrecomputePlan::fromLines(std::string(std::istreambuf_iterator<char>(in), {}), options.requestsFile);
+  return PrecomputePlan::fromLines(std::string(std::istreambuf_iterator<char>(in), {}), options.requestsFile,
+                                   catalogue.get());
 }
 
 // Prints the progress until nothing is queued or `wait` s have passed; 0 when nothing is
@@ -102,8 +117,11 @@ int main(int argc, char** argv) {
   auto* requests = app.add_option("--requests", options.requestsFile, "a file of requests, one query string a line");
   auto* catalogue = app.add_flag("--catalogue", options.catalogue, "every style and size of the catalogue");
   requests->excludes(catalogue);
+  app.add_option("--scenes", options.scenesFolder,
+                 "FIGMENT's scenes folder (its garment catalogue), as figment-serve's");
+  app.add_option("--sex", options.grid.sexes, "with --catalogue: female or male (repeatable; default: both)");
   app.add_option("--body", options.grid.bodies, "with --catalogue: STATURE,BUST,WAIST,HIPS in metres (repeatable)");
-  app.add_option("--pose", options.grid.poses, "with --catalogue: a pose (repeatable; default: every pose)");
+  app.add_option("--pose", options.grid.poses, "with --catalogue: a made body's pose (repeatable; default: rest)");
   app.add_option("--view", options.grid.views, "with --catalogue: a view, AZ,EL or front... (repeatable)");
   app.add_option("--size", options.grid.size, "with --catalogue: the image's WxH");
   app.add_flag("--status", options.status, "print the queue's progress and failures");

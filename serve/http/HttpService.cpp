@@ -10,10 +10,10 @@
 #include <regex>
 #include <set>
 
-#include "io/SizeChartFile.h"
 #include "serve/http/ExchangeServer.h"
 #include "serve/http/WebAssets.h"
 #include "serve/request/FitRequest.h"
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/request/ShopperChoices.h"
 #include "serve/request/Utf8Text.h"
@@ -164,9 +164,9 @@ HttpService::HttpService(const ServeOptions& options, const std::string& program
     sharedImages_ = std::make_unique<SharedImages>(std::make_shared<RedisStore>(redis_, options_.redisTtl));
   }
   try {
-    chart_ = std::make_unique<SizeChart>(readSizeChart(FitRequest::chartPath(options_.scenesFolder)));
+    catalogue_ = MadeBodyChoices::readCatalogue(options_.scenesFolder);
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "figment-serve: size advice off: %s\n", error.what());
+    std::fprintf(stderr, "figment-serve: made bodies and size advice off: %s\n", error.what());
   }
   pool_ = std::make_unique<WorkerPool>(workerPoolOptions(options_, program));
   server_->new_task_queue = [] { return new httplib::ThreadPool(kHttpThreads); };
@@ -292,9 +292,11 @@ void HttpService::asset(const httplib::Request& request, httplib::Response& resp
 }
 
 void HttpService::catalogue(const httplib::Request&, httplib::Response& response) {
-  nlohmann::json catalogue = ShopperChoices::toJson();
+  nlohmann::json catalogue = ShopperChoices::sharedJson();
+  catalogue["bodies"] = catalogue_ ? nlohmann::json{"made", "mannequin"} : nlohmann::json{"mannequin"};
+  if (catalogue_) catalogue["made"] = MadeBodyChoices::toJson(*catalogue_);
+  catalogue["mannequin"] = ShopperChoices::mannequinJson();
   catalogue["limits"] = limitsJson();
-  if (chart_) catalogue["fit"] = FitRequest::choicesJson(*chart_);
   response.set_header("Cache-Control", "public, max-age=300");
   response.set_content(jsonText(catalogue), kJson);
 }
@@ -373,7 +375,7 @@ bool HttpService::made(const WorkRequest& work, const std::string& tag, const ht
 
 void HttpService::render(const httplib::Request& request, httplib::Response& response) {
   const QueryParameters parameters(request.params.begin(), request.params.end());
-  auto parsed = RenderRequest::parse(parameters, chart_.get());
+  auto parsed = RenderRequest::parse(parameters, catalogue_.get());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
   const WorkRequest work{JobKind::kRender, std::get<RenderRequest>(parsed).canonical()};
   const char* type = std::get<RenderRequest>(parsed).format == "glb" ? "model/gltf-binary" : "image/png";
@@ -388,9 +390,9 @@ void HttpService::render(const httplib::Request& request, httplib::Response& res
 }
 
 void HttpService::fit(const httplib::Request& request, httplib::Response& response) {
-  if (!chart_) return sendJson(response, 503, {{"error", "no size chart: size advice is off"}});
+  if (!catalogue_) return sendJson(response, 503, {{"error", "no garment catalogue: size advice is off"}});
   const QueryParameters parameters(request.params.begin(), request.params.end());
-  auto parsed = FitRequest::parse(parameters, *chart_);
+  auto parsed = FitRequest::parse(parameters, *catalogue_);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
   const WorkRequest work{JobKind::kFit, std::get<FitRequest>(parsed).canonical()};
   const std::string tag = tagOf(work, build_);
@@ -403,7 +405,7 @@ void HttpService::fit(const httplib::Request& request, httplib::Response& respon
 
 void HttpService::submitJob(const httplib::Request& request, httplib::Response& response) {
   const QueryParameters parameters(request.params.begin(), request.params.end());
-  auto parsed = RenderRequest::parse(parameters, chart_.get());
+  auto parsed = RenderRequest::parse(parameters, catalogue_.get());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return sendRefusal(response, *error);
   const WorkRequest work{JobKind::kRender, std::get<RenderRequest>(parsed).canonical()};
   const std::string tag = tagOf(work, build_);

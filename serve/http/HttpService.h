@@ -16,13 +16,16 @@
 #include "serve/workers/ServeOptions.h"
 #include "serve/workers/SharedImages.h"
 #include "serve/workers/WorkerPool.h"
-#include "sim/garment/SizeChart.h"
 
 namespace httplib {
 class Server;
 struct Request;
 struct Response;
 }  // namespace httplib
+
+namespace figment {
+class GarmentCatalogue;
+}
 
 namespace figment::serve {
 
@@ -83,8 +86,10 @@ class HttpService {
   std::shared_ptr<const std::string> keptAnswer(JobKind kind, const std::string& tag);
 
   ServeOptions options_;
-  std::string build_;                 // Digest::buildDigest()
-  std::unique_ptr<SizeChart> chart_;  // null when the scenes' size chart did not read: no fit
+  std::string build_;  // Digest::buildDigest()
+  // The scenes' garment catalogue and its chart; null when it did not read: the Mannequin
+  // alone, no fit.
+  std::shared_ptr<const GarmentCatalogue> catalogue_;
   std::unique_ptr<WorkerPool> pool_;
   ImageCache images_;
   std::shared_ptr<RedisConnection> redis_;      // null without --redis

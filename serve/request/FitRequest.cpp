@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cstdio>
 #include <map>
-#include <nlohmann/json.hpp>
 
+#include "io/GarmentCatalogue.h"
 #include "serve/request/BodyMeasuresText.h"
-#include "serve/request/MeasuredPoses.h"
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/request/Utf8Text.h"
-#include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
 
@@ -39,7 +38,8 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Qu
 
 }  // namespace
 
-std::variant<FitRequest, ParameterError> FitRequest::parse(const QueryParameters& parameters, const SizeChart& chart) {
+std::variant<FitRequest, ParameterError> FitRequest::parse(const QueryParameters& parameters,
+                                                           const GarmentCatalogue& catalogue) {
   auto parsed = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&parsed)) return *error;
   const auto& values = std::get<std::map<std::string, std::string>>(parsed);
@@ -48,8 +48,10 @@ std::variant<FitRequest, ParameterError> FitRequest::parse(const QueryParameters
   if (sex != "female" && sex != "male") return bad("sex", sex, "no such sex", "female, male");
   request.sex = sex == "male" ? Sex::Male : Sex::Female;
   request.style = values.at("style");
-  if (!findStyle(request.style)) return bad("style", request.style, "no such style", styleNames());
+  const SizeChart& chart = catalogue.chart();
   if (chart.sizes(request.sex).empty()) return bad("sex", sex, "the size chart has no sizes for it", "female, male");
+  auto style = MadeBodyChoices::style(catalogue, request.sex, request.style, "style", request.style);
+  if (auto* error = std::get_if<ParameterError>(&style)) return *error;
   double* fields[] = {&request.body.stature, &request.body.bust, &request.body.waist, &request.body.hips};
   const std::vector<MeasureRange> accepted = BodyMeasuresText::ranges(chart, request.sex);
   for (size_t i = 0; i < accepted.size(); ++i)
@@ -69,33 +71,9 @@ std::string FitRequest::canonical() const {
   return text;
 }
 
-std::variant<FitRequest, ParameterError> FitRequest::parseCanonical(const std::string& text, const SizeChart& chart) {
-  return parse(RequestParameters::split(text), chart);
-}
-
-nlohmann::json FitRequest::choicesJson(const SizeChart& chart) {
-  nlohmann::json sizes = nlohmann::json::object(), measures = nlohmann::json::object();
-  for (const Sex sex : {Sex::Female, Sex::Male}) {
-    nlohmann::json list = nlohmann::json::array(), ranged = nlohmann::json::object();
-    for (const ChartSize& size : chart.sizes(sex))
-      list.push_back({{"name", size.name},
-                      {"number", size.number},
-                      {"stature", size.stature},
-                      {"bust", size.bust},
-                      {"waist", size.waist},
-                      {"hips", size.hip}});
-    sizes[sexName(sex)] = list;
-    if (!chart.sizes(sex).empty())
-      for (const MeasureRange& range : BodyMeasuresText::ranges(chart, sex))
-        ranged[range.name] = {{"unit", "m"}, {"min", range.minimum}, {"max", range.maximum}};
-    measures[sexName(sex)] = ranged;
-  }
-  nlohmann::json styles = nlohmann::json::array();
-  for (const figment::GarmentStyle& style : garmentStyles())
-    styles.push_back({{"name", style.name}, {"about", style.about}, {"sizes", sizes}});
-  nlohmann::json poses = nlohmann::json::array();  // a measured body's (GET /api/render with sex)
-  for (const MeasuredPose& pose : MeasuredPoses::all()) poses.push_back(pose.name);
-  return {{"styles", styles}, {"measurements", measures}, {"poses", poses}};
+std::variant<FitRequest, ParameterError> FitRequest::parseCanonical(const std::string& text,
+                                                                    const GarmentCatalogue& catalogue) {
+  return parse(RequestParameters::split(text), catalogue);
 }
 
 }  // namespace figment::serve

@@ -7,7 +7,9 @@
 #include <map>
 #include <set>
 
+#include "io/GarmentCatalogue.h"
 #include "serve/request/BodyMeasuresText.h"
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/Utf8Text.h"
 #include "sim/garment/GarmentStyle.h"
@@ -16,8 +18,8 @@ namespace figment::serve {
 
 namespace {
 
-const char* const kNames[] = {"stature", "bust",  "chest", "waist", "hips",   "skin", "pose",
-                              "outfit",  "light", "view",  "size",  "format", "sex",  "fitmap"};
+const char* const kNames[] = {"stature", "bust", "chest", "waist",  "hips", "skin", "pose",  "outfit",
+                              "light",   "view", "size",  "format", "body", "sex",  "fitmap"};
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
@@ -70,48 +72,70 @@ std::optional<ParameterError> skinTone(const std::string& value, std::string& ou
   return bad("skin", value, "not a skin tone", "rrggbb (hex) or " + namesOf(ShopperChoices::skinTones()));
 }
 
-// The sizes an outfit item may name and the measurements' ranges: the Mannequin's
-// ShopperChoices, or with a sex the chart's.
-struct SizeNames {
-  const SizeChart* chart = nullptr;  // null: the Mannequin's ShopperChoices
+// What the request's body decides: the styles and sizes an outfit item may name and the
+// measurements' ranges. A made body's come from the garment catalogue and its chart
+// (MadeBodyChoices), the Mannequin's from ShopperChoices.
+struct BodyNames {
+  const GarmentCatalogue* catalogue = nullptr;  // null: the Mannequin
   Sex sex = Sex::Female;
-  std::vector<MeasureRange> ranges;  // with a chart: the sex's (what /api/fit accepts)
+  std::vector<MeasureRange> ranges;  // a made body's: its sex's (what /api/fit accepts)
 };
 
-std::string acceptedItems(const SizeNames& names) {
-  if (!names.chart)
-    return "style:size[:rrggbb], styles " + namesOf(ShopperChoices::styles()) + "; sizes " +
-           namesOf(ShopperChoices::sizes());
-  std::vector<std::string> sizes;
-  for (const ChartSize& size : names.chart->sizes(names.sex)) sizes.push_back(size.name);
-  return "style:size[:rrggbb], styles " + styleNames() + "; " + sexName(names.sex) + " sizes " + namesOf(sizes);
+std::string acceptedItems(const BodyNames& names) {
+  if (!names.catalogue)
+    return "style[:rrggbb] (the paper's patterns as cut, no sizes), styles " + namesOf(ShopperChoices::styles());
+  return "style:size[:rrggbb], " + std::string(sexName(names.sex)) + " styles " +
+         MadeBodyChoices::styleNames(*names.catalogue, names.sex) + " (/api/catalogue lists each one's sizes)";
 }
 
-// A graded style's colour when it has none: ShopperChoices' for its name, else grey.
-std::string defaultColour(const std::string& style) {
-  const GarmentStyle* known = ShopperChoices::style(style);
-  return known ? known->defaultColour : "8c8c8c";
+// The Mannequin's item: a pattern of ShopperChoices as cut, in a colour.
+std::optional<ParameterError> mannequinItem(const std::string& value, const std::string& item,
+                                            const std::string& accepted, OutfitItem& out) {
+  const size_t a = item.find(':');
+  out.style = item.substr(0, a);
+  const GarmentStyle* style = ShopperChoices::style(out.style);
+  if (!style) return bad("outfit", value, "no style named " + Utf8Text::shown(out.style, 32), accepted);
+  out.size.clear();
+  out.colour = a == std::string::npos ? style->defaultColour : lower(item.substr(a + 1));
+  if (isHex6(out.colour)) return std::nullopt;
+  if (item.find(':', a + 1) != std::string::npos || !out.colour.empty())
+    return bad("outfit", value,
+               "the Mannequin wears the paper's patterns as cut, in no sizes: " + Utf8Text::shown(item, 32), accepted);
+  return bad("outfit", value, "not a colour: " + Utf8Text::shown(out.colour, 32), accepted);
 }
 
-std::optional<ParameterError> outfitItem(const std::string& value, const std::string& item, const SizeNames& names,
-                                         OutfitItem& out) {
-  const std::string accepted = acceptedItems(names);
+// A made body's item: a catalogue style in one of its sizes for the body's sex (letter code
+// or number, kept as the letter code), in a colour (the style's first without one).
+std::optional<ParameterError> madeItem(const std::string& value, const std::string& item, const BodyNames& names,
+                                       const std::string& accepted, OutfitItem& out) {
   const size_t a = item.find(':'), b = a == std::string::npos ? a : item.find(':', a + 1);
   if (a == std::string::npos)
     return bad("outfit", value, "a garment without a size: " + Utf8Text::shown(item, 32), accepted);
   out.style = item.substr(0, a);
   out.size = item.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
-  if (names.chart ? !findStyle(out.style) : !ShopperChoices::style(out.style))
-    return bad("outfit", value, "no style named " + Utf8Text::shown(out.style, 32), accepted);
-  if (names.chart ? names.chart->find(names.sex, out.size) < 0 : !ShopperChoices::size(out.size))
-    return bad("outfit", value, "no size named " + Utf8Text::shown(out.size, 32), accepted);
-  if (names.chart) out.size = names.chart->sizes(names.sex)[size_t(names.chart->find(names.sex, out.size))].name;
-  out.colour = b == std::string::npos ? defaultColour(out.style) : lower(item.substr(b + 1));
+  auto style = MadeBodyChoices::style(*names.catalogue, names.sex, out.style, "outfit", value);
+  if (auto* error = std::get_if<ParameterError>(&style)) return error->accepted = accepted, *error;
+  const CatalogueStyle& sold = *std::get<const CatalogueStyle*>(style);
+  const int index = names.catalogue->chart().find(names.sex, out.size);
+  const std::vector<std::string>& sizes = sold.sizes(names.sex);
+  if (index >= 0) out.size = names.catalogue->chart().sizes(names.sex)[size_t(index)].name;
+  if (index < 0 || std::find(sizes.begin(), sizes.end(), out.size) == sizes.end())
+    return bad("outfit", value,
+               "no " + std::string(sexName(names.sex)) + " size " + Utf8Text::shown(item.substr(a + 1, b - a - 1), 32) +
+                   " of " + sold.name,
+               "sizes " + namesOf(sizes));
+  out.colour = b == std::string::npos ? sold.colours.front() : lower(item.substr(b + 1));
   if (!isHex6(out.colour)) return bad("outfit", value, "not a colour: " + Utf8Text::shown(out.colour, 32), accepted);
   return std::nullopt;
 }
 
-std::optional<ParameterError> outfit(const std::string& value, const SizeNames& names, std::vector<OutfitItem>& out) {
+std::optional<ParameterError> outfitItem(const std::string& value, const std::string& item, const BodyNames& names,
+                                         OutfitItem& out) {
+  const std::string accepted = acceptedItems(names);
+  return names.catalogue ? madeItem(value, item, names, accepted, out) : mannequinItem(value, item, accepted, out);
+}
+
+std::optional<ParameterError> outfit(const std::string& value, const BodyNames& names, std::vector<OutfitItem>& out) {
   out.clear();
   if (value.empty() || value == "none") return std::nullopt;  // the body alone
   std::set<std::string> styles;
@@ -130,23 +154,24 @@ std::optional<ParameterError> outfit(const std::string& value, const SizeNames& 
   return std::nullopt;
 }
 
-// A Mannequin's pose is one of ShopperChoices'; a measured body's one of MakeHuman's rig presets.
-std::optional<ParameterError> pose(const std::string& value, const SizeNames& names, std::string& out) {
-  if (names.chart ? MeasuredPoses::find(value) != nullptr : ShopperChoices::pose(value) != nullptr)
+// A Mannequin's pose is one of ShopperChoices'; a made body's one of MakeHuman's rig presets.
+std::optional<ParameterError> pose(const std::string& value, const BodyNames& names, std::string& out) {
+  if (names.catalogue ? MeasuredPoses::find(value) != nullptr : ShopperChoices::pose(value) != nullptr)
     return out = value, std::nullopt;
-  if (names.chart && ShopperChoices::pose(value))
-    return bad("pose", value, "a measured body (sex) has MakeHuman's rig, not the Mannequin's joints",
-               MeasuredPoses::names());
-  return bad("pose", value, "no such pose", names.chart ? MeasuredPoses::names() : namesOf(ShopperChoices::poses()));
+  if (names.catalogue && ShopperChoices::pose(value))
+    return bad("pose", value, "the made body has MakeHuman's rig, not the Mannequin's joints", MeasuredPoses::names());
+  return bad("pose", value, "no such pose",
+             names.catalogue ? MeasuredPoses::names() : namesOf(ShopperChoices::poses()));
 }
 
-// Stretch needs the drape alone; ease and pressure the skin as a mesh, which a measured
-// body has and the Mannequin (its skin drawn over collision volumes) has not.
-std::optional<ParameterError> fitMap(const std::string& value, const SizeNames& names, std::string& out) {
-  const std::string accepted = "stretch, none; with sex also ease, pressure";
+// Stretch needs the drape alone; ease and pressure the skin as a mesh, which a made body
+// has and the Mannequin (its skin drawn over collision volumes) has not.
+std::optional<ParameterError> fitMap(const std::string& value, const BodyNames& names, std::string& out) {
+  const std::string accepted = "stretch, ease, pressure, none (on body=mannequin stretch or none)";
   if (value == "stretch" || value == "none") return out = value == "none" ? "" : value, std::nullopt;
   if (value != "ease" && value != "pressure") return bad("fitmap", value, "no such fit map", accepted);
-  if (!names.chart) return bad("fitmap", value, "ease and pressure need a measured body (sex)", accepted);
+  if (!names.catalogue)
+    return bad("fitmap", value, "ease and pressure need the made body, not the Mannequin", accepted);
   return out = value, std::nullopt;
 }
 
@@ -203,7 +228,7 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Qu
 }
 
 std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::string, std::string>& values,
-                                   const SizeNames& names) {
+                                   const BodyNames& names) {
   std::optional<ParameterError> error;
   for (const auto& [name, value] : values) {
     if (name == "stature")
@@ -238,37 +263,55 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
   return std::nullopt;
 }
 
-RenderRequest defaults() {
-  RenderRequest request;
-  const auto rounded = [](const char* name) {
-    return std::round(ShopperChoices::measure(name).reference * 1000.0) / 1000.0;
-  };
-  request.body = {rounded("stature"), rounded("bust"), rounded("waist"), rounded("hips")};
-  request.skin = "cc9473";
-  request.pose = "rest";
-  request.outfit = {{"dress", "M", ShopperChoices::style("dress")->defaultColour}};
-  request.light = "studio";
-  return request;
-}
-
-// With a sex: the measured body's checks (a chart to size by, the rest pose) and its sex.
-std::optional<ParameterError> measuredBody(RenderRequest& request, const std::map<std::string, std::string>& values,
-                                           SizeNames& names) {
+// The body a request chooses (`body`, `sex`) and what that decides, before any other
+// parameter is read: the made body by default, women's unless `sex` says otherwise.
+std::optional<ParameterError> chooseBody(const std::map<std::string, std::string>& values,
+                                         const GarmentCatalogue* catalogue, RenderRequest& request, BodyNames& names) {
+  const auto body = values.find("body");
   const auto sex = values.find("sex");
-  if (sex == values.end()) return std::nullopt;
-  if (sex->second != "female" && sex->second != "male")
-    return bad("sex", sex->second, "no such sex", "female, male (or none: the Mannequin)");
-  if (!names.chart) return bad("sex", sex->second, "no size chart: measured bodies are off", "none");
-  request.sex = sex->second;
+  const std::string accepted = "made (the shopper's own body, the default), mannequin (the paper's scanned body)";
+  if (body != values.end() && body->second != "made" && body->second != "mannequin")
+    return bad("body", body->second, "no such body", accepted);
+  if (body != values.end() && body->second == "mannequin") {
+    if (sex != values.end())
+      return bad("sex", sex->second, "the Mannequin is one scanned body: it has no sex to choose",
+                 "no sex with body=mannequin");
+    names.ranges = ShopperChoices::measures();
+    return std::nullopt;
+  }
+  if (!catalogue) return bad("body", "made", "no garment catalogue: made bodies are off", "mannequin");
+  request.sex = sex == values.end() ? "female" : sex->second;
+  if (request.sex != "female" && request.sex != "male")
+    return bad("sex", sex->second, "no such sex", "female, male (the made body's)");
+  names.catalogue = catalogue;
   names.sex = request.sex == "male" ? Sex::Male : Sex::Female;
-  if (names.chart->sizes(names.sex).empty())
-    return bad("sex", sex->second, "the size chart has no sizes for it", "female, male");
-  // The measured body's ranges are the size advice's: MakeHuman's reach, not the Mannequin's.
-  names.ranges = BodyMeasuresText::ranges(*names.chart, names.sex);
+  if (MadeBodyChoices::styles(*catalogue, names.sex).empty())
+    return bad("sex", request.sex, "the catalogue sells nothing in its sizes", "female, male");
+  // The made body's ranges are the size advice's: MakeHuman's reach, not the Mannequin's.
+  names.ranges = BodyMeasuresText::ranges(catalogue->chart(), names.sex);
   return std::nullopt;
 }
 
-// What a posed measured body cannot wear. Only a garment's own drape moves the body from
+// What the chosen body is and wears when the request does not say: a made body the chart's
+// M of its sex in the first style sold to it; the Mannequin as scanned, in the dress.
+void defaults(RenderRequest& request, const BodyNames& names) {
+  if (names.catalogue) {
+    request.body = MadeBodyChoices::defaultBody(*names.catalogue, names.sex);
+    const auto [style, size] = MadeBodyChoices::defaultGarment(*names.catalogue, names.sex);
+    request.outfit = {{style, size, names.catalogue->style(style)->colours.front()}};
+  } else {
+    const auto rounded = [](const char* name) {
+      return std::round(ShopperChoices::measure(name).reference * 1000.0) / 1000.0;
+    };
+    request.body = {rounded("stature"), rounded("bust"), rounded("waist"), rounded("hips")};
+    request.outfit = {{"dress", "", ShopperChoices::style("dress")->defaultColour}};
+  }
+  request.skin = "cc9473";
+  request.pose = "rest";
+  request.light = "studio";
+}
+
+// What a posed made body cannot wear. Only a garment's own drape moves the body from
 // rest into its pose (nodes/body/HumanBody.h): an outer layer meets it posed from the start,
 // inside it, and bunches; a skirt or dress put on standing is passed through by the
 // thighs of a sitting body.
@@ -285,21 +328,21 @@ std::optional<ParameterError> posedOutfit(const RenderRequest& request) {
 }  // namespace
 
 std::variant<RenderRequest, ParameterError> RenderRequest::parse(const QueryParameters& parameters,
-                                                                 const SizeChart* chart) {
+                                                                 const GarmentCatalogue* catalogue) {
   auto values = byName(parameters);
   if (auto* error = std::get_if<ParameterError>(&values)) return *error;
   const auto& named = std::get<std::map<std::string, std::string>>(values);
-  RenderRequest request = defaults();
-  SizeNames names;
-  names.chart = named.count("sex") ? chart : nullptr;
-  if (auto error = measuredBody(request, named, names)) return *error;
+  RenderRequest request;
+  BodyNames names;
+  if (auto error = chooseBody(named, catalogue, request, names)) return *error;
+  defaults(request, names);
   if (auto error = fill(request, named, names)) return *error;
   if (auto error = posedOutfit(request)) return *error;
   if (request.format == "glb") {
     // A GLB holds meshes and colours: light, view and size leave it as it is, so they are
     // reset and every such request shares one canonical text (and ETag).
-    const RenderRequest plain = defaults();
-    request.light = plain.light;
+    const RenderRequest plain;
+    request.light = "studio";
     request.azimuth = plain.azimuth, request.elevation = plain.elevation;
     request.width = plain.width, request.height = plain.height;
     request.fitMap.clear();  // the garments in their own colours
@@ -312,24 +355,27 @@ std::vector<std::string> RenderRequest::parameterNames() {
 }
 
 std::variant<RenderRequest, ParameterError> RenderRequest::parseCanonical(const std::string& text,
-                                                                          const SizeChart* chart) {
-  return parse(RequestParameters::split(text), chart);
+                                                                          const GarmentCatalogue* catalogue) {
+  return parse(RequestParameters::split(text), catalogue);
 }
 
 std::string RenderRequest::drapeKey() const {
   std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
-                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + sexText() + "&pose=" + pose +
+                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + bodyText() + "&pose=" + pose +
                      "&outfit=";
-  for (size_t i = 0; i < outfit.size(); ++i) text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size;
+  for (size_t i = 0; i < outfit.size(); ++i)
+    text += (i ? "," : "") + outfit[i].style + (outfit[i].size.empty() ? "" : ":" + outfit[i].size);
+  if (outfit.empty()) text += "none";
   return text;
 }
 
 std::string RenderRequest::sceneKey() const {
   std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
-                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + sexText() + "&skin=" + skin +
+                     formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + bodyText() + "&skin=" + skin +
                      "&pose=" + pose + "&outfit=";
   for (size_t i = 0; i < outfit.size(); ++i)
-    text += (i ? "," : "") + outfit[i].style + ":" + outfit[i].size + ":" + outfit[i].colour;
+    text += (i ? "," : "") + outfit[i].style + (outfit[i].size.empty() ? "" : ":" + outfit[i].size) + ":" +
+            outfit[i].colour;
   if (outfit.empty()) text += "none";
   return text + "&light=" + light + (fitMap.empty() ? "" : "&fitmap=" + fitMap);
 }

@@ -25,10 +25,6 @@ const std::vector<GarmentStyle> kStyles = {
     {"tshirt", "tshirt.obj", true, 5, "d9d9d1"},
 };
 
-// Today's one pattern per style, widened or narrowed about the body's axis; graded
-// patterns per size replace these factors.
-const std::vector<GarmentSize> kSizes = {{"S", 0.96}, {"M", 1.0}, {"L", 1.05}, {"XL", 1.10}};
-
 const std::vector<std::string> kColours = {"1f40b3", "d9d9d1", "8c1f33", "2e7d32",
                                            "c9a227", "222222", "f5f0e6", "6a1b9a"};
 
@@ -70,9 +66,6 @@ const std::vector<MeasureRange>& ShopperChoices::measures() {
 const std::vector<GarmentStyle>& ShopperChoices::styles() {
   return kStyles;
 }
-const std::vector<GarmentSize>& ShopperChoices::sizes() {
-  return kSizes;
-}
 const std::vector<std::string>& ShopperChoices::colours() {
   return kColours;
 }
@@ -88,9 +81,6 @@ const std::vector<LightPreset>& ShopperChoices::lights() {
 
 const GarmentStyle* ShopperChoices::style(const std::string& name) {
   return byName(kStyles, name);
-}
-const GarmentSize* ShopperChoices::size(const std::string& name) {
-  return byName(kSizes, name);
 }
 const Pose* ShopperChoices::pose(const std::string& name) {
   return byName(kPoses, name);
@@ -109,21 +99,23 @@ BodyFactors ShopperChoices::bodyFactors(const BodyMeasures& body) {
           body.waist / measure("waist").reference, body.hips / measure("hips").reference};
 }
 
-nlohmann::json ShopperChoices::toJson() {
-  nlohmann::json sizes = nlohmann::json::array(), styles = nlohmann::json::array();
-  for (const GarmentSize& size : kSizes) sizes.push_back(size.name);
+nlohmann::json ShopperChoices::mannequinJson() {
+  nlohmann::json styles = nlohmann::json::array(), measures = nlohmann::json::object();
   for (const GarmentStyle& style : kStyles)
-    styles.push_back(
-        {{"name", style.name}, {"sizes", sizes}, {"colours", kColours}, {"defaultColour", style.defaultColour}});
-  nlohmann::json skin = nlohmann::json::array(), measures = nlohmann::json::object();
-  for (const NamedColour& tone : kSkinTones) skin.push_back({{"name", tone.name}, {"hex", tone.hex}});
+    styles.push_back({{"name", style.name}, {"colours", kColours}, {"defaultColour", style.defaultColour}});
   for (const MeasureRange& range : kMeasures)
     measures[range.name] = {
         {"unit", "m"}, {"min", range.minimum}, {"max", range.maximum}, {"default", range.reference}};
-  nlohmann::json poses = nlohmann::json::array(), lights = nlohmann::json::array();
+  nlohmann::json poses = nlohmann::json::array();
   for (const Pose& pose : kPoses) poses.push_back(pose.name);
+  return {{"styles", styles}, {"measurements", measures}, {"poses", poses}};
+}
+
+nlohmann::json ShopperChoices::sharedJson() {
+  nlohmann::json skin = nlohmann::json::array(), lights = nlohmann::json::array();
+  for (const NamedColour& tone : kSkinTones) skin.push_back({{"name", tone.name}, {"hex", tone.hex}});
   for (const LightPreset& light : kLights) lights.push_back(light.name);
-  return {{"styles", styles}, {"poses", poses}, {"lights", lights}, {"skinTones", skin}, {"measurements", measures}};
+  return {{"lights", lights}, {"skinTones", skin}};
 }
 
 }  // namespace figment::serve

@@ -1,16 +1,12 @@
 #pragma once
-// ShopperChoices: what a shopper may ask for (not the shop's garment catalogue,
-// io/GarmentCatalogue.h, though GET /api/catalogue keeps its name): garment styles with
-// their sizes and colours, poses, lights, skin tones and the ranges of the body's
-// measurements. Plain data shared by the server (parsing requests, GET /api/catalogue) and
-// its workers (building scenes): every file a scene reads is named here, in code, never by
-// a request.
-//
-// The request -> scene mapping goes through two seams so measured bodies and graded
-// garments slot in later: a body is its measurements (BodyMeasures, metres), turned into
-// today's Mannequin size factors by bodyFactors(); a garment is (style, size), turned into
-// a pattern file and a girth factor by GarmentSize. A parametric body or a graded pattern
-// per size replaces those two functions' answers, not the request.
+// ShopperChoices: the choices a request shares whatever its body (lights, skin tones),
+// and the Mannequin's own: the paper's scanned body (body=mannequin), scaled to the
+// measurements within the ranges its fitted volumes hold, posed by its joints and dressed
+// in the paper's patterns as cut (the shipped scenes' dress, skirt and T-shirt: one size
+// each, so an outfit item names no size). A shopper's own body and the catalogue's sized
+// garments are MadeBodyChoices.h's. Plain data shared by the server (parsing requests, GET
+// /api/catalogue) and its workers (building scenes): every file a scene reads is named
+// here, in code, never by a request.
 
 #include <array>
 #include <nlohmann/json_fwd.hpp>
@@ -45,11 +41,6 @@ struct GarmentStyle {
   std::string defaultColour;     // hex rrggbb
 };
 
-struct GarmentSize {
-  std::string name;  // S, M, L, XL
-  double girth = 1;  // the pattern's girth about the body's axis, 1 = as made
-};
-
 struct NamedColour {
   std::string name;  // fair, light, ...
   std::string hex;   // rrggbb
@@ -77,7 +68,6 @@ class ShopperChoices {
  public:
   static const std::vector<MeasureRange>& measures();
   static const std::vector<GarmentStyle>& styles();
-  static const std::vector<GarmentSize>& sizes();
   static const std::vector<std::string>& colours();  // suggested garment colours, hex
   static const std::vector<NamedColour>& skinTones();
   static const std::vector<Pose>& poses();
@@ -85,17 +75,17 @@ class ShopperChoices {
 
   // Null when unknown.
   static const GarmentStyle* style(const std::string& name);
-  static const GarmentSize* size(const std::string& name);
   static const Pose* pose(const std::string& name);
   static const LightPreset* light(const std::string& name);
   static const MeasureRange& measure(const std::string& name);  // one of measures()
 
-  // Today's body: the default mannequin scaled by factors, each measurement over the
-  // default body's own.
+  // The Mannequin at `body`: scaled by factors, each measurement over its own.
   static BodyFactors bodyFactors(const BodyMeasures& body);
 
-  // GET /api/catalogue's document.
-  static nlohmann::json toJson();
+  // GET /api/catalogue's part for the Mannequin (its styles, measurements and poses), and
+  // the lights and skin tones every body takes.
+  static nlohmann::json mannequinJson();
+  static nlohmann::json sharedJson();
 };
 
 }  // namespace figment::serve

@@ -80,24 +80,15 @@ Mannequin* mannequin(const RenderRequest& request, const Wardrobe& wardrobe) {
   return model;
 }
 
-// The pattern's rest shape on this body at a size. Until patterns are graded, a pattern
-// follows the body's stature as the Mannequin's height scales the body (uniformly about
-// `origin`, so straps stay on the shoulders: a dress made for 1.66 m tangled on a 1.82 m
-// body), and its size widens or narrows it about its own vertical axis (the middle of its
-// extent in x and z), heights kept.
-void restShape(ClothEngine* engine, const MeshFile* pattern, const SbVec3f& origin, double height, double girth) {
+// The pattern's rest shape on this body. The paper's patterns come in one size, made for
+// the scanned body; a pattern follows the body's stature as the Mannequin's height scales
+// the body (uniformly about `origin`, so straps stay on the shoulders: a dress made for
+// 1.66 m tangled on a 1.82 m body).
+void restShape(ClothEngine* engine, const MeshFile* pattern, const SbVec3f& origin, double height) {
   const int n = pattern->point.getNum();
   const SbVec3f* points = pattern->point.getValues(0);
   std::vector<SbVec3f> shape(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) shape[size_t(i)] = origin + float(height) * (points[i] - origin);
-  float lo[2] = {shape[0][0], shape[0][2]}, hi[2] = {lo[0], lo[1]};
-  for (const SbVec3f& p : shape)
-    for (int k = 0; k < 2; ++k) {
-      lo[k] = std::min(lo[k], p[2 * k]);
-      hi[k] = std::max(hi[k], p[2 * k]);
-    }
-  const float cx = 0.5f * (lo[0] + hi[0]), cz = 0.5f * (lo[1] + hi[1]), g = float(girth);
-  for (SbVec3f& p : shape) p = SbVec3f(cx + g * (p[0] - cx), p[1], cz + g * (p[2] - cz));
   engine->restPoints.setValues(0, n, shape.data());
 }
 
@@ -264,7 +255,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
   auto* body = new SoSeparator;
   body->addChild(material(colourOf(request.skin), 0.1f, 0.2f));
   body->addChild(hints(true));
-  if (!request.sex.empty()) {
+  if (!request.mannequin()) {
     root->ref();
     root->addChild(body);
     try {
@@ -287,8 +278,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     const GarmentStyle& style = *ShopperChoices::style(item.style);
     const MeshFile* pattern = wardrobe.pattern(item.style);
     ClothEngine* engine = engineFor(style, !beneath.empty(), bodyUnder(model, beneath));
-    restShape(engine, pattern, wardrobe.heightOrigin(), ShopperChoices::bodyFactors(request.body).height,
-              ShopperChoices::size(item.size)->girth);
+    restShape(engine, pattern, wardrobe.heightOrigin(), ShopperChoices::bodyFactors(request.body).height);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
     root->addChild(garment(item, engine, &pattern->coordIndex,
                            {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}}));  // cotton jersey

@@ -1,15 +1,15 @@
 #pragma once
 // A render request's scene, built in code from FIGMENT's nodes (never from text a
-// request holds): the lights of its preset; the default mannequin sized by the request's
-// measurements (ShopperChoices::bodyFactors) and posed; its skin; and each garment of the
-// outfit, innermost first, draped by a ClothEngine on the mannequin and on the draped
-// surfaces of the garments under it, as scenes/outfit-layers.iv drapes its two. The
-// same nodes and settings as the shipped scenes, so the same request drapes as a scene
-// file would.
+// request holds): the lights of its preset; the body, its skin; and each garment of the
+// outfit, innermost first, draped by a ClothEngine on the body and on the draped surfaces
+// of the garments under it, as scenes/outfit-layers.iv drapes its two.
 //
-// A request with a sex has MakeHuman's body instead (a HumanBody made to its measurements,
-// in its rest pose), and each garment is its style's graded garment of the chart's size
-// (what GET /api/fit drapes for that size), draped with the size advice's settings.
+// The made body (the default) is MakeHuman's HumanBody made to the measurements and posed,
+// and each garment is its style's graded garment of the chart's size (what GET /api/fit
+// drapes for that size), draped with the size advice's settings. The Mannequin
+// (body=mannequin) is the paper's scanned body sized by the measurements
+// (ShopperChoices::bodyFactors) and posed, in the paper's patterns as cut, with the same
+// nodes and settings as the shipped scenes, so it drapes as a scene file would.
 
 #include <functional>
 #include <stdexcept>
@@ -60,7 +60,7 @@ class OutfitScene {
   };
 
   // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
-  // only for a request with a sex. With a fit map, its garments go to `fitMaps`. Throws
+  // only for a made body. With a fit map, its garments go to `fitMaps`. Throws
   // BodyNotMade.
   static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
                             const GradedGarment& graded = nullptr, std::vector<FitMapGarment>* fitMaps = nullptr);

@@ -5,6 +5,7 @@
 #include <thread>
 #include <vector>
 
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/workers/Digest.h"
 #include "serve/workers/JobQueue.h"
@@ -32,7 +33,13 @@ JobWorker::JobWorker(const ServeOptions& options, const std::string& program, st
       consumer_(std::move(consumer)),
       claimAfter_(claimAfter),
       build_(Digest::buildDigest()),
-      pool_(std::make_unique<WorkerPool>(workerPoolOptions(options, program))) {}
+      pool_(std::make_unique<WorkerPool>(workerPoolOptions(options, program))) {
+  try {
+    catalogue_ = MadeBodyChoices::readCatalogue(options.scenesFolder);
+  } catch (const std::exception& error) {
+    log(std::string("made bodies off: ") + error.what());
+  }
+}
 
 JobWorker::~JobWorker() = default;
 
@@ -73,7 +80,7 @@ void JobWorker::handle(JobQueue& queue, const SharedImages& images, const RedisS
     queue.fail(job, "400: the job has no request");
     return;
   }
-  auto parsed = RenderRequest::parseCanonical(job.request);
+  auto parsed = RenderRequest::parseCanonical(job.request, catalogue_.get());
   if (const auto* error = std::get_if<ParameterError>(&parsed)) {
     queue.fail(job, "400: " + error->error + (error->parameter.empty() ? "" : " (" + error->parameter + ")"));
     return;

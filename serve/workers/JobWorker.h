@@ -7,7 +7,8 @@
 // image is kept already is acknowledged without rendering; a bad request or a render the
 // worker refuses (400, 500) is recorded failed with its one-line error; a worker that died
 // or ran past the time limit leaves the job pending, for any consumer to take over after
-// `claimAfter` s.
+// `claimAfter` s. Jobs are checked against the scenes folder's garment catalogue, as the
+// server checks requests.
 
 #include <atomic>
 #include <memory>
@@ -16,6 +17,10 @@
 
 #include "serve/workers/ServeOptions.h"
 #include "serve/workers/WorkerPool.h"
+
+namespace figment {
+class GarmentCatalogue;
+}
 
 namespace figment::serve {
 
@@ -45,6 +50,8 @@ class JobWorker {
   double claimAfter_;
   std::string build_;  // Digest::buildDigest(): the ETag's second part
   std::unique_ptr<WorkerPool> pool_;
+  // The scenes' garment catalogue; null when it did not read (the Mannequin's jobs alone).
+  std::shared_ptr<const GarmentCatalogue> catalogue_;
   std::atomic<bool> stopping_{false};
   std::mutex logMutex_;
   std::string lastLine_;  // said once, not again by the next thread that finds the same

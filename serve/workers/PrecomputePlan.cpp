@@ -3,8 +3,9 @@
 #include <set>
 #include <sstream>
 
+#include "io/GarmentCatalogue.h"
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/request/RenderRequest.h"
-#include "serve/request/ShopperChoices.h"
 
 namespace figment::serve {
 
@@ -43,8 +44,9 @@ QueryParameters parametersOf(const std::string& query) {
 }
 
 // The canonical text of `parameters`, or the error as "parameter=value: error (accepted)".
-std::variant<std::string, std::string> canonicalOf(const QueryParameters& parameters) {
-  auto parsed = RenderRequest::parse(parameters);
+std::variant<std::string, std::string> canonicalOf(const QueryParameters& parameters,
+                                                   const GarmentCatalogue* catalogue) {
+  auto parsed = RenderRequest::parse(parameters, catalogue);
   if (const auto* error = std::get_if<ParameterError>(&parsed))
     return std::variant<std::string, std::string>(
         std::in_place_index<1>, (error->parameter.empty() ? "" : error->parameter + "=" + error->value + ": ") +
@@ -59,7 +61,8 @@ void addOnce(PrecomputePlan::Requests& requests, std::set<std::string>& seen, st
 }  // namespace
 
 std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromLines(const std::string& text,
-                                                                              const std::string& fileName) {
+                                                                              const std::string& fileName,
+                                                                              const GarmentCatalogue* catalogue) {
   Requests requests;
   std::set<std::string> seen;
   std::stringstream in(text);
@@ -69,40 +72,47 @@ std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromLines(co
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#') continue;
-    auto canonical = canonicalOf(parametersOf(line.substr(start)));
+    auto canonical = canonicalOf(parametersOf(line.substr(start)), catalogue);
     if (canonical.index() == 1) return fileName + ":" + std::to_string(number) + ": " + std::get<1>(canonical);
     addOnce(requests, seen, std::get<0>(canonical));
   }
   return requests;
 }
 
-std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogue(const Grid& grid) {
-  std::vector<std::string> poses = grid.poses, views = grid.views, bodies = grid.bodies;
-  if (poses.empty())
-    for (const Pose& pose : ShopperChoices::poses()) poses.push_back(pose.name);
+std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogue(const Grid& grid,
+                                                                                  const GarmentCatalogue& catalogue) {
+  std::vector<std::string> sexes = grid.sexes, poses = grid.poses, views = grid.views, bodies = grid.bodies;
+  if (sexes.empty())
+    for (const Sex sex : {Sex::Female, Sex::Male})
+      if (!MadeBodyChoices::styles(catalogue, sex).empty()) sexes.push_back(sexName(sex));
+  if (poses.empty()) poses.push_back("rest");
   if (views.empty()) views.push_back("front");
   if (bodies.empty()) bodies.push_back("");
   Requests requests;
   std::set<std::string> seen;
-  for (const std::string& body : bodies) {
-    QueryParameters measures;
-    std::stringstream in(body);
-    for (const char* name : {"stature", "bust", "waist", "hips"})
-      if (std::string value; std::getline(in, value, ',')) measures.emplace_back(name, value);
-    if (!body.empty() && measures.size() != 4) return "--body " + body + ": not STATURE,BUST,WAIST,HIPS (metres)";
-    for (const GarmentStyle& style : ShopperChoices::styles())
-      for (const GarmentSize& size : ShopperChoices::sizes())
-        for (const std::string& pose : poses)
-          for (const std::string& view : views) {
-            QueryParameters parameters = measures;
-            parameters.insert(parameters.end(), {{"outfit", style.name + ":" + size.name + ":" + style.defaultColour},
-                                                 {"pose", pose},
-                                                 {"view", view},
-                                                 {"size", grid.size}});
-            auto canonical = canonicalOf(parameters);
-            if (canonical.index() == 1) return std::get<1>(canonical);
-            addOnce(requests, seen, std::get<0>(canonical));
-          }
+  for (const std::string& sexText : sexes) {
+    if (sexText != "female" && sexText != "male") return "--sex " + sexText + ": not female or male";
+    const Sex sex = sexText == "male" ? Sex::Male : Sex::Female;
+    for (const std::string& body : bodies) {
+      QueryParameters measures = {{"sex", sexText}};
+      std::stringstream in(body);
+      for (const char* name : {"stature", "bust", "waist", "hips"})
+        if (std::string value; std::getline(in, value, ',')) measures.emplace_back(name, value);
+      if (!body.empty() && measures.size() != 5) return "--body " + body + ": not STATURE,BUST,WAIST,HIPS (metres)";
+      for (const CatalogueStyle* style : MadeBodyChoices::styles(catalogue, sex))
+        for (const std::string& size : style->sizes(sex))
+          for (const std::string& pose : poses)
+            for (const std::string& view : views) {
+              QueryParameters parameters = measures;
+              parameters.insert(parameters.end(), {{"outfit", style->name + ":" + size + ":" + style->colours.front()},
+                                                   {"pose", pose},
+                                                   {"view", view},
+                                                   {"size", grid.size}});
+              auto canonical = canonicalOf(parameters, &catalogue);
+              if (canonical.index() == 1) return std::get<1>(canonical);
+              addOnce(requests, seen, std::get<0>(canonical));
+            }
+    }
   }
   return requests;
 }

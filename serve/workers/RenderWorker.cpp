@@ -6,8 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "io/DrapeCache.h"
+#include "io/GarmentCatalogue.h"
 #include "io/PngFile.h"
-#include "io/SizeChartFile.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/scene/DrapeState.h"
@@ -65,11 +65,9 @@ RenderWorker::Answer unreachableBody(const RenderRequest& request, const std::st
 RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder, const std::string& redisUrl,
                            long redisTtl) {
   startError_ = wardrobe_.read(scenesFolder);
-  try {
-    fit_ = std::make_unique<FitWorker>(readSizeChart(FitRequest::chartPath(scenesFolder)));
-  } catch (const std::exception&) {
-    // The server read the same file and refuses fit requests when it cannot: none come.
-  }
+  // The server read the same catalogue and, when it could not, draws the Mannequin alone
+  // and refuses fits: no made body comes.
+  if (wardrobe_.catalogue()) fit_ = std::make_unique<FitWorker>(wardrobe_.catalogue()->chart());
   if (cacheFolder.empty()) return;
   std::shared_ptr<RedisStore> shared;
   if (!redisUrl.empty()) {
@@ -107,14 +105,14 @@ RenderWorker::Answer RenderWorker::answer(const WorkRequest& request) {
 
 RenderWorker::Answer RenderWorker::advise(const std::string& canonical) {
   if (!fit_) return failure(503, "no size chart: size advice is off");
-  auto parsed = FitRequest::parseCanonical(canonical, fit_->chart());
+  auto parsed = FitRequest::parseCanonical(canonical, *wardrobe_.catalogue());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
   FitWorker::Answer answer = fit_->advise(std::get<FitRequest>(parsed));
   return {answer.status, std::move(answer.body), false, ""};
 }
 
 RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
-  auto parsed = RenderRequest::parseCanonical(canonical, fit_ ? &fit_->chart() : nullptr);
+  auto parsed = RenderRequest::parseCanonical(canonical, wardrobe_.catalogue());
   if (auto* error = std::get_if<ParameterError>(&parsed)) return failure(400, error->error);
   const RenderRequest& request = std::get<RenderRequest>(parsed);
   if (request.sceneKey() != sceneKey_) {

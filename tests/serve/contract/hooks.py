@@ -1,25 +1,29 @@
 """Schemathesis hooks for figment-serve's contract test (tests/serve/scenarios/test_contract.py).
 
 Each parameter's schema in serve/http/openapi.json says what the server takes for it whatever
-the other parameters are: the union over a request without `sex` (the Mannequin) and one
-with each sex. The rules between parameters, which OpenAPI 3 cannot state, are in the
-parameters' descriptions and, where they are data, in the document's own extensions
-(`x-figment-by-sex`: each sex's range, enumeration or pattern; `x-figment-max-pixels`),
+the other parameters are: the union over the Mannequin (body=mannequin) and a made body of
+each sex (the default, women's unless `sex` says). The rules between parameters, which
+OpenAPI 3 cannot state, are in the parameters' descriptions and, where they are data, in the
+document's own extensions (`x-figment-by-body`: each body's range, enumeration or pattern
+for a render; `x-figment-by-sex` for a fit; `x-figment-max-pixels`),
 which test_serve checks against the server's constants. A case Schemathesis generates as
 valid (positive) that breaks such a rule is refused with the 400 the description
 announces, so before it is sent it is made to keep the rules, and only positive cases are:
 
-  - a number outside its sex's range (but within another case's) is brought to the
+  - a number outside its body's range (but within another case's) is brought to the
     nearest end of it;
-  - an optional parameter whose value its sex does not take but another case does (a
-    Mannequin's pose with a sex, a chart size without one, fitmap=ease without a sex) is
-    left out: the default then applies;
+  - an optional parameter whose value its body does not take but another case does (a
+    Mannequin's pose on a made body, a chart size on the Mannequin, fitmap=ease on the
+    Mannequin, a style not sold to the sex) is left out: the default then applies; a
+    required one (a fit's style) takes the first value its sex does;
+  - sex beside body=mannequin is left out (the Mannequin has none);
   - a value no case takes is sent as generated: the server must refuse it, and then the
     schema that allowed it is wrong;
   - chest given beside bust with another text is left out (bust and chest must agree);
   - an outfit that wears a style twice is left out;
-  - a posed measured body keeps its pose only in one garment, sitting only in a tshirt or
-    nothing (the default outfit, a dress, counts), else the pose is left out;
+  - a posed made body keeps its pose only in one garment, sitting only in a tshirt or
+    nothing (the default outfit counts: a dress for women, a tshirt for men), else the pose
+    is left out;
   - a size past the pixels in all is left out;
   - POST /api/render: a parameter in both the query and the form is left out of the form.
 
@@ -64,33 +68,47 @@ def _takes(rule, value):
     return "pattern" not in rule or re.search(rule["pattern"], _text(value)) is not None
 
 
-def _kept(rule, value):
-    """`value` as its sex's rule takes it (a number brought into the range), or None to leave it out."""
+def _kept(rule, value, required):
+    """`value` as its body's rule takes it (a number brought into the range), or None to
+    leave it out; a required one not taken becomes the rule's first value."""
     if "minimum" in rule:
         return min(max(_number(value), rule["minimum"]), rule["maximum"])
-    return value if _takes(rule, value) else None
+    if _takes(rule, value):
+        return value
+    return rule["enum"][0] if required and "enum" in rule else None
 
 
-def _by_sex(values, parameters):
-    sex = _text(values.get("sex", "none"))
+def _condition(values, extension):
+    """The case a request is: its body for a render, its sex for a fit."""
+    if extension == "x-figment-by-sex":
+        return _text(values.get("sex"))
+    if _text(values.get("body")) == "mannequin":
+        values["sex"] = None
+        return "mannequin"
+    return _text(values.get("sex") or "female")
+
+
+def _by_body(values, parameters):
     for name, parameter in parameters.items():
-        rules = parameter.get("x-figment-by-sex", {})
-        if sex not in rules or name not in values:
+        extension = "x-figment-by-body" if "x-figment-by-body" in parameter else "x-figment-by-sex"
+        rules = parameter.get(extension, {})
+        condition = _condition(values, extension)
+        if condition not in rules or values.get(name) is None:
             continue
         # A value no case takes is sent as it is: the schema should not have allowed it, and
         # the server's refusal is the finding (a loosened document, say).
         if any(_takes(rule, values[name]) for rule in rules.values()):
-            values[name] = _kept(rules[sex], values[name])
+            values[name] = _kept(rules[condition], values[name], parameter.get("required", False))
 
 
 def _outfit(values):
     outfit = values.get("outfit")
     if outfit is None:
-        return ["dress"]  # the default outfit
+        return ["tshirt" if _text(values.get("sex")) == "male" else "dress"]  # the default outfit
     items = [item.split(":")[0] for item in _text(outfit).split(",") if item and _text(outfit) != "none"]
     if len(items) != len(set(items)):
         values["outfit"] = None
-        return ["dress"]
+        return _outfit(values)
     return items
 
 
@@ -100,7 +118,7 @@ def _between(values, parameters):
         values["chest"] = None
     styles = _outfit(values)
     pose = values.get("pose")
-    if values.get("sex") is not None and pose is not None and _text(pose) != "rest":
+    if _text(values.get("body")) != "mannequin" and pose is not None and _text(pose) != "rest":
         if len(styles) > 1 or (_text(pose) == "sitting" and styles and styles != ["tshirt"]):
             values["pose"] = None
     size = values.get("size")
@@ -119,7 +137,7 @@ def map_case(context, case):
     form = dict(case.body) if isinstance(case.body, dict) else {}
     form = {name: value for name, value in form.items() if name not in query}
     values = dict(query, **form)
-    _by_sex(values, parameters)
+    _by_body(values, parameters)
     _between(values, parameters)
     case.query = {name: values[name] for name in query if values[name] is not None}
     if isinstance(case.body, dict):

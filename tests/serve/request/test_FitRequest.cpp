@@ -1,22 +1,22 @@
 // A fit request's parameters: every one required, canonical text that reads back to itself
 // (its kind travels beside it, never in it), and every class of bad parameter refused with
-// the parameter, its value and what is accepted.
+// the parameter, its value and what is accepted. Checked against the shipped catalogue, as
+// the server checks them: a style is one it dresses a body of that sex in.
 
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
+#include <cstdio>
 
 #include "serve/request/FitRequest.h"
-#include "support/SmallSizeChart.h"
+#include "support/ShippedCatalogue.h"
 
 using namespace figment;
 using namespace figment::serve;
 
 namespace {
 
-// Women's S and M, men's M and L.
-SizeChart chart() {
-  return test::smallSizeChart(2, 0, 2);
+const GarmentCatalogue& chart() {
+  return test::shippedCatalogue();
 }
 
 QueryParameters womansM() {
@@ -59,10 +59,22 @@ TEST(FitRequest, RefusesEachBadParameterNamingItAndTheAcceptedRange) {
   EXPECT_EQ(refused(with("style", "cape")).parameter, "style");
   EXPECT_NE(refused(with("style", "cape")).accepted.find("pencil"), std::string::npos);
   EXPECT_EQ(refused(with("sex", "x")).accepted, "female, male");
-  const ParameterError small = refused(with("bust", "0.70"));  // the women's S less two sizes is 0.76
+  // A style not sold to the sex, and one sewn from a pattern (not dressed by the service yet).
+  QueryParameters man = with("sex", "male");
+  for (auto& [key, given] : man)
+    if (key == "style") given = "dress";
+  EXPECT_EQ(refused(man).error, "dress is not sold in male sizes");
+  EXPECT_NE(refused(with("style", "tee")).error.find("sewn"), std::string::npos);
+  // The ranges are the women's smallest and largest chart bodies, two 4 cm sizes beyond.
+  const std::vector<ChartSize>& women = chart().chart().sizes(Sex::Female);
+  char range[64];
+  std::snprintf(range, sizeof range, "%.2f to %.2f (metres)", women.front().bust - 0.08, women.back().bust + 0.08);
+  char under[16];
+  std::snprintf(under, sizeof under, "%.3f", women.front().bust - 0.09);
+  const ParameterError small = refused(with("bust", under));
   EXPECT_EQ(small.parameter, "bust");
   EXPECT_EQ(small.error, "out of range");
-  EXPECT_EQ(small.accepted, "0.76 to 0.96 (metres)");
+  EXPECT_EQ(small.accepted, range);
   EXPECT_EQ(refused(with("waist", "nan")).error, "not a number");
   EXPECT_EQ(refused(with("stature", "2.5")).parameter, "stature");
   QueryParameters missing = womansM();
@@ -74,17 +86,4 @@ TEST(FitRequest, RefusesEachBadParameterNamingItAndTheAcceptedRange) {
   QueryParameters twice = womansM();
   twice.emplace_back("sex", "female");
   EXPECT_EQ(refused(twice).error, "given twice");
-}
-
-TEST(FitRequest, ChoicesListTheChartsSizesPerStyleAndSex) {
-  const nlohmann::json fit = FitRequest::choicesJson(chart());
-  bool pencil = false;
-  for (const nlohmann::json& style : fit["styles"]) {
-    ASSERT_EQ(style["sizes"]["female"].size(), 2u);
-    EXPECT_EQ(style["sizes"]["male"][1]["name"], "L");
-    EXPECT_EQ(style["sizes"]["male"][1]["number"], "50");
-    pencil = pencil || style["name"] == "pencil";
-  }
-  EXPECT_TRUE(pencil);
-  EXPECT_DOUBLE_EQ(fit["measurements"]["female"]["waist"]["max"].get<double>(), 0.80);
 }

@@ -1,35 +1,64 @@
-// A render request's parameters: defaults, canonical text that reads back to itself, and
-// every class of bad parameter refused with the parameter, its value and what is accepted.
+// A render request's parameters: defaults (the made body, the chart's M, in the first style
+// sold to it), canonical text that reads back to itself, the Mannequin as an explicit choice,
+// and every class of bad parameter refused with the parameter, its value and what is
+// accepted. Checked against the shipped garment catalogue, as the server checks them.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include "serve/request/RenderRequest.h"
+#include "support/ShippedCatalogue.h"
 
 using namespace figment;
 using namespace figment::serve;
 
 namespace {
 
+const GarmentCatalogue* catalogue() {
+  return &test::shippedCatalogue();
+}
+
+std::variant<RenderRequest, ParameterError> parse(const QueryParameters& parameters) {
+  return RenderRequest::parse(parameters, catalogue());
+}
+
 RenderRequest ok(const QueryParameters& parameters) {
-  auto parsed = RenderRequest::parse(parameters);
+  auto parsed = parse(parameters);
   if (auto* error = std::get_if<ParameterError>(&parsed)) ADD_FAILURE() << error->parameter << ": " << error->error;
   return std::holds_alternative<RenderRequest>(parsed) ? std::get<RenderRequest>(parsed) : RenderRequest{};
 }
 
-ParameterError refused(const QueryParameters& parameters) {
-  auto parsed = RenderRequest::parse(parameters);
+ParameterError refused(const QueryParameters& parameters, const GarmentCatalogue* given = catalogue()) {
+  auto parsed = RenderRequest::parse(parameters, given);
   EXPECT_TRUE(std::holds_alternative<ParameterError>(parsed)) << "accepted";
   return std::holds_alternative<ParameterError>(parsed) ? std::get<ParameterError>(parsed) : ParameterError{};
 }
 
+// `parameters` on the Mannequin.
+QueryParameters mannequin(QueryParameters parameters) {
+  parameters.emplace_back("body", "mannequin");
+  return parameters;
+}
+
 }  // namespace
 
-TEST(RenderRequest, NoParametersIsTheDefaultBodyInTheDress) {
+TEST(RenderRequest, NoParametersIsTheMadeWomansMInTheDress) {
   const RenderRequest request = ok({});
+  EXPECT_FALSE(request.mannequin());
   EXPECT_EQ(request.canonical(),
-            "stature=1.659&bust=0.891&waist=0.696&hips=0.939&skin=cc9473&pose=rest&outfit=dress:M:1f40b3"
+            "stature=1.680&bust=0.880&waist=0.720&hips=0.960&sex=female&skin=cc9473&pose=rest&outfit=dress:M:1f40b3"
+            "&light=studio&view=0.0,0.0&size=800x600");
+  // A man's default is the men's M in the first style sold to men.
+  const RenderRequest man = ok({{"sex", "male"}});
+  EXPECT_EQ(man.canonical(),
+            "stature=1.740&bust=0.960&waist=0.840&hips=1.000&sex=male&skin=cc9473&pose=rest&outfit=tshirt:M:d9d9d1"
+            "&light=studio&view=0.0,0.0&size=800x600");
+  // The Mannequin as scanned, in the paper's dress as cut.
+  EXPECT_EQ(ok(mannequin({})).canonical(),
+            "stature=1.659&bust=0.891&waist=0.696&hips=0.939&body=mannequin&skin=cc9473&pose=rest&outfit=dress:1f40b3"
             "&light=studio&view=0.0,0.0&size=800x600");
 }
 
@@ -37,17 +66,23 @@ TEST(RenderRequest, CanonicalTextReadsBackToItself) {
   const RenderRequest request = ok({{"stature", "1.7204"},
                                     {"chest", "0.95"},
                                     {"skin", "tan"},
-                                    {"outfit", "tshirt:L:2E7D32,skirt:S"},
+                                    {"outfit", "tshirt:L:2E7D32,skirt:36"},
                                     {"view", "-30,10.04"},
                                     {"size", "320x240"},
                                     {"light", "warm"},
-                                    {"pose", "relaxed"}});
+                                    {"pose", "rest"}});
   EXPECT_EQ(request.canonical(),
-            "stature=1.720&bust=0.950&waist=0.696&hips=0.939&skin=a86b45&pose=relaxed"
+            "stature=1.720&bust=0.950&waist=0.720&hips=0.960&sex=female&skin=a86b45&pose=rest"
             "&outfit=tshirt:L:2e7d32,skirt:S:8c1f33&light=warm&view=330.0,10.0&size=320x240");
-  auto again = RenderRequest::parseCanonical(request.canonical());
-  ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
-  EXPECT_EQ(std::get<RenderRequest>(again).canonical(), request.canonical());
+  const RenderRequest scanned = ok(mannequin({{"outfit", "tshirt:2E7D32,skirt"}, {"pose", "relaxed"}}));
+  EXPECT_EQ(scanned.canonical(),
+            "stature=1.659&bust=0.891&waist=0.696&hips=0.939&body=mannequin&skin=cc9473&pose=relaxed"
+            "&outfit=tshirt:2e7d32,skirt:8c1f33&light=studio&view=0.0,0.0&size=800x600");
+  for (const RenderRequest& one : {request, scanned}) {
+    auto again = RenderRequest::parseCanonical(one.canonical(), catalogue());
+    ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
+    EXPECT_EQ(std::get<RenderRequest>(again).canonical(), one.canonical());
+  }
 }
 
 TEST(RenderRequest, ColoursLightAndViewShareTheDrape) {
@@ -56,6 +91,7 @@ TEST(RenderRequest, ColoursLightAndViewShareTheDrape) {
   EXPECT_EQ(a.drapeKey(), b.drapeKey());
   EXPECT_NE(a.canonical(), b.canonical());
   EXPECT_NE(ok({{"outfit", "dress:L"}}).drapeKey(), b.drapeKey());  // the control: a size drapes anew
+  EXPECT_NE(ok(mannequin({{"outfit", "dress"}})).drapeKey(), ok({{"outfit", "dress:M"}}).drapeKey());
 }
 
 TEST(RenderRequest, EveryClassOfBadParameterNamesItsParameterValueAndRange) {
@@ -72,7 +108,7 @@ TEST(RenderRequest, EveryClassOfBadParameterNamesItsParameterValueAndRange) {
       {{{"pose", "../../etc"}}, "pose", "no such pose"},
       {{{"light", "laser"}}, "light", "no such light"},
       {{{"outfit", "cape:M"}}, "outfit", "no style named cape"},
-      {{{"outfit", "dress:XXS"}}, "outfit", "no size named XXS"},
+      {{{"outfit", "dress:XXL"}}, "outfit", "no female size XXL of dress"},
       {{{"outfit", "dress"}}, "outfit", "a garment without a size: dress"},
       {{{"outfit", "dress:M:blue"}}, "outfit", "not a colour: blue"},
       {{{"outfit", "dress:M,dress:L"}}, "outfit", "a style worn twice: dress"},
@@ -83,6 +119,13 @@ TEST(RenderRequest, EveryClassOfBadParameterNamesItsParameterValueAndRange) {
       {{{"size", "4000x3000"}}, "size", "too small or too large"},
       {{{"size", "1600x1600"}}, "size", "too small or too large"},
       {{{"file", "/etc/passwd"}}, "file", "unknown parameter"},
+      {{{"body", "robot"}}, "body", "no such body"},
+      {{{"sex", "x"}}, "sex", "no such sex"},
+      {{{"body", "mannequin"}, {"sex", "female"}}, "sex", "the Mannequin is one scanned body: it has no sex to choose"},
+      {{{"body", "mannequin"}, {"outfit", "dress:M"}},
+       "outfit",
+       "the Mannequin wears the paper's patterns as cut, in no sizes: dress:M"},
+      {{{"body", "mannequin"}, {"outfit", "pencil"}}, "outfit", "no style named pencil"},
       {{{"pose", "rest"}, {"pose", "rest"}}, "pose", "given twice"},
       {{{"skin", std::string(300, 'a')}}, "skin", "value too long"},
   };
@@ -108,84 +151,65 @@ TEST(RenderRequest, AGlbIgnoresLightViewAndSize) {
   EXPECT_EQ(refused({{"format", "obj"}}).parameter, "format");
 }
 
-namespace {
-
-SizeChart womensChart() {
-  return SizeChart(
-      {{Sex::Female, "S", "36", 1.68, 0.84, 0.68, 0.92}, {Sex::Female, "M", "38", 1.68, 0.88, 0.72, 0.96}});
-}
-
-}  // namespace
-
-TEST(RenderRequest, ASexMakesTheBodyMeasuredAndTheSizesTheCharts) {
-  const SizeChart chart = womensChart();
-  auto parsed = RenderRequest::parse({{"sex", "female"}, {"outfit", "pencil:38:FF0000"}}, &chart);
-  ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed));
-  const RenderRequest& request = std::get<RenderRequest>(parsed);
+TEST(RenderRequest, TheMadeBodysSizesAreTheCataloguesForItsSex) {
+  const RenderRequest request = ok({{"outfit", "pencil:38:FF0000"}});
   EXPECT_EQ(request.sex, "female");
   ASSERT_EQ(request.outfit.size(), 1u);
   EXPECT_EQ(request.outfit[0].size, "M");  // the chart's number, named by its letter code
-  EXPECT_EQ(request.canonical(),
-            "stature=1.659&bust=0.891&waist=0.696&hips=0.939&sex=female&skin=cc9473&pose=rest&outfit=pencil:M:ff0000"
-            "&light=studio&view=0.0,0.0&size=800x600");
-  auto again = RenderRequest::parseCanonical(request.canonical(), &chart);
-  ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
-  EXPECT_EQ(std::get<RenderRequest>(again).canonical(), request.canonical());
   EXPECT_NE(request.drapeKey().find("sex=female"), std::string::npos);
+  EXPECT_EQ(ok({{"sex", "male"}, {"outfit", "tshirt:XXL"}}).outfit[0].size, "XXL");  // a men's size
+  // Every style and size the catalogue sells to a sex parses, and nothing else does.
+  for (const Sex sex : {Sex::Female, Sex::Male})
+    for (const CatalogueStyle& style : catalogue()->styles())
+      for (const ChartSize& size : catalogue()->chart().sizes(sex)) {
+        const std::vector<std::string>& sold = style.sizes(sex);
+        const bool sells = !style.sewn() && std::find(sold.begin(), sold.end(), size.name) != sold.end();
+        auto parsed = parse({{"sex", sexName(sex)}, {"outfit", style.name + ":" + size.name}});
+        EXPECT_EQ(std::holds_alternative<RenderRequest>(parsed), sells) << style.name << ":" << size.name;
+      }
 }
 
-TEST(RenderRequest, AMeasuredBodyRefusesWhatItCannotWear) {
-  const SizeChart chart = womensChart();
-  const auto refusedWith = [&chart](const QueryParameters& parameters, const SizeChart* given) {
-    auto parsed = RenderRequest::parse(parameters, given);
-    EXPECT_TRUE(std::holds_alternative<ParameterError>(parsed));
-    return std::holds_alternative<ParameterError>(parsed) ? std::get<ParameterError>(parsed) : ParameterError{};
-  };
-  EXPECT_EQ(refusedWith({{"sex", "female"}}, nullptr).error, "no size chart: measured bodies are off");
-  EXPECT_EQ(refusedWith({{"sex", "x"}}, &chart).parameter, "sex");
+TEST(RenderRequest, AMadeBodyRefusesWhatItCannotWear) {
+  EXPECT_EQ(refused({}, nullptr).error, "no garment catalogue: made bodies are off");
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(RenderRequest::parse(mannequin({}), nullptr)));
   // The Mannequin's joints are not MakeHuman's rig: its poses are refused, naming the rig's.
-  const ParameterError relaxed = refusedWith({{"sex", "female"}, {"pose", "relaxed"}}, &chart);
+  const ParameterError relaxed = refused({{"pose", "relaxed"}});
   EXPECT_EQ(relaxed.parameter, "pose");
   EXPECT_EQ(relaxed.accepted, "rest, arms-down, arm-raised, walking, sitting");
-  EXPECT_EQ(refusedWith({{"pose", "sitting"}}, &chart).parameter, "pose");  // and the rig's for the Mannequin
-  EXPECT_EQ(refusedWith({{"sex", "female"}, {"outfit", "pencil:XL"}}, &chart).error, "no size named XL");
-  EXPECT_EQ(refusedWith({{"sex", "female"}, {"outfit", "cape:M"}}, &chart).error, "no style named cape");
-  // Without a sex the chart changes nothing: the Mannequin's styles and sizes.
-  EXPECT_EQ(refusedWith({{"outfit", "pencil:M"}}, &chart).error, "no style named pencil");
+  EXPECT_EQ(refused(mannequin({{"pose", "sitting"}})).parameter, "pose");  // and the rig's for the Mannequin
+  EXPECT_EQ(refused({{"sex", "male"}, {"outfit", "dress:M"}}).error, "dress is not sold in male sizes");
+  EXPECT_NE(refused({{"outfit", "tee:M"}}).error.find("sewn from a pattern"), std::string::npos);
 }
 
-TEST(RenderRequest, AMeasuredBodysMeasurementsTakeTheSizeAdvicesRanges) {
+TEST(RenderRequest, AMadeBodysMeasurementsTakeTheSizeAdvicesRanges) {
   // MakeHuman's reach, as GET /api/fit accepts it: the chart's bodies widened by 8 cm each
-  // side (here bust 0.76 to 0.96) and stature 1.45 to 1.95; not the Mannequin's ranges.
-  const SizeChart chart = womensChart();
-  const auto parsed = [&chart](const QueryParameters& parameters) { return RenderRequest::parse(parameters, &chart); };
-  auto bust = parsed({{"sex", "female"}, {"bust", "1.00"}});
-  ASSERT_TRUE(std::holds_alternative<ParameterError>(bust));
-  EXPECT_EQ(std::get<ParameterError>(bust).parameter, "bust");
-  EXPECT_EQ(std::get<ParameterError>(bust).value, "1.00");
-  EXPECT_EQ(std::get<ParameterError>(bust).accepted, "0.76 to 0.96 (metres)");
-  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"bust", "1.00"}})));  // the Mannequin's range
-  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"sex", "female"}, {"stature", "1.93"}})));
-  auto chest = parsed({{"sex", "female"}, {"chest", "0.70"}});
-  ASSERT_TRUE(std::holds_alternative<ParameterError>(chest));
-  EXPECT_EQ(std::get<ParameterError>(chest).parameter, "chest");
-  EXPECT_EQ(refused({{"stature", "1.93"}}).parameter, "stature");
+  // side and stature 1.45 to 1.95; not the Mannequin's ranges.
+  const std::vector<ChartSize>& women = catalogue()->chart().sizes(Sex::Female);
+  char over[16], accepted[64];
+  std::snprintf(over, sizeof over, "%.2f", women.back().bust + 0.10);
+  std::snprintf(accepted, sizeof accepted, "%.2f to %.2f (metres)", women.front().bust - 0.08,
+                women.back().bust + 0.08);
+  const ParameterError bust = refused({{"bust", over}});
+  EXPECT_EQ(bust.parameter, "bust");
+  EXPECT_EQ(bust.value, over);
+  EXPECT_EQ(bust.accepted, accepted);
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parse({{"stature", "1.93"}})));
+  EXPECT_EQ(refused(mannequin({{"stature", "1.93"}})).parameter, "stature");  // the Mannequin's range
+  EXPECT_EQ(refused({{"chest", "0.60"}}).parameter, "chest");
 }
 
-TEST(RenderRequest, APosedMeasuredBodyWearsOneGarmentAndSitsOnlyInATshirt) {
-  const SizeChart chart = womensChart();
-  const auto parsed = [&chart](const QueryParameters& parameters) { return RenderRequest::parse(parameters, &chart); };
+TEST(RenderRequest, APosedMadeBodyWearsOneGarmentAndSitsOnlyInATshirt) {
   for (const char* pose : {"rest", "arms-down", "arm-raised", "walking", "sitting"}) {
-    auto one = parsed({{"sex", "female"}, {"pose", pose}, {"outfit", "tshirt:M"}});
+    auto one = parse({{"pose", pose}, {"outfit", "tshirt:M"}});
     ASSERT_TRUE(std::holds_alternative<RenderRequest>(one)) << pose;
     EXPECT_EQ(std::get<RenderRequest>(one).pose, pose);
     EXPECT_NE(std::get<RenderRequest>(one).drapeKey().find(std::string("pose=") + pose), std::string::npos);
   }
-  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"sex", "female"}, {"outfit", "tshirt:M,pencil:M"}})));
-  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parsed({{"sex", "female"}, {"pose", "sitting"}, {"outfit", ""}})));
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parse({{"outfit", "tshirt:M,pencil:M"}})));
+  EXPECT_TRUE(std::holds_alternative<RenderRequest>(parse({{"pose", "sitting"}, {"outfit", ""}})));
   for (const auto& [pose, outfit] : std::vector<std::pair<std::string, std::string>>{
            {"walking", "tshirt:M,pencil:M"}, {"arms-down", "pencil:S,tshirt:M"}, {"sitting", "pencil:M"}}) {
-    auto refusal = parsed({{"sex", "female"}, {"pose", pose}, {"outfit", outfit}});
+    auto refusal = parse({{"pose", pose}, {"outfit", outfit}});
     ASSERT_TRUE(std::holds_alternative<ParameterError>(refusal)) << pose << " " << outfit;
     EXPECT_EQ(std::get<ParameterError>(refusal).parameter, "pose");
     EXPECT_EQ(std::get<ParameterError>(refusal).value, pose);
@@ -215,21 +239,17 @@ TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
   EXPECT_NE(mapped.canonical().find("&fitmap=stretch"), std::string::npos);  // so another ETag
   EXPECT_EQ(ok({{"outfit", "tshirt:S"}, {"fitmap", "none"}}).canonical(), plain.canonical());
   EXPECT_EQ(plain.canonical().find("fitmap"), std::string::npos);  // earlier requests' tags unchanged
-  auto again = RenderRequest::parseCanonical(mapped.canonical());
+  auto again = RenderRequest::parseCanonical(mapped.canonical(), catalogue());
   ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
   EXPECT_EQ(std::get<RenderRequest>(again).canonical(), mapped.canonical());
   EXPECT_EQ(ok({{"fitmap", "stretch"}, {"format", "glb"}}).canonical(), ok({{"format", "glb"}}).canonical());
   const ParameterError bad = refused({{"fitmap", "heat"}});
   EXPECT_EQ(bad.parameter, "fitmap");
-  EXPECT_EQ(bad.accepted, "stretch, none; with sex also ease, pressure");
-  // Ease and pressure measure from the skin as a mesh: a measured body's, not the Mannequin's.
-  EXPECT_EQ(refused({{"fitmap", "ease"}}).error, "ease and pressure need a measured body (sex)");
-  const SizeChart chart = womensChart();
-  for (const char* kind : {"ease", "pressure"}) {
-    auto parsed = RenderRequest::parse({{"sex", "female"}, {"fitmap", kind}}, &chart);
-    ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed)) << kind;
-    EXPECT_EQ(std::get<RenderRequest>(parsed).fitMap, kind);
-  }
+  EXPECT_EQ(bad.accepted, "stretch, ease, pressure, none (on body=mannequin stretch or none)");
+  // Ease and pressure measure from the skin as a mesh: a made body's, not the Mannequin's.
+  EXPECT_EQ(refused(mannequin({{"fitmap", "ease"}})).error, "ease and pressure need the made body, not the Mannequin");
+  EXPECT_EQ(ok(mannequin({{"fitmap", "stretch"}})).fitMap, "stretch");
+  for (const char* kind : {"ease", "pressure"}) EXPECT_EQ(ok({{"fitmap", kind}}).fitMap, kind);
 }
 
 TEST(RenderRequest, ARefusalQuotesWholeCharacters) {

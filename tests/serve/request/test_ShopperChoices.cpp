@@ -1,5 +1,7 @@
-// The shopper's choices: the JSON GET /api/catalogue sends lists every style with its sizes and
-// colours; measurements at the default body's own give factors of 1.
+// The Mannequin's choices and the shared ones: the JSON GET /api/catalogue sends lists the
+// Mannequin's styles (the paper's patterns, in no sizes) with their colours, its poses and
+// ranges, and every body's lights and skin tones; measurements at the Mannequin's own give
+// factors of 1.
 
 #include <gtest/gtest.h>
 
@@ -11,17 +13,19 @@
 
 using namespace figment::serve;
 
-TEST(ShopperChoices, ListsEveryStyleWithSizesAndColours) {
-  const nlohmann::json json = ShopperChoices::toJson();
+TEST(ShopperChoices, ListsTheMannequinsStylesInNoSizesWithTheirColours) {
+  const nlohmann::json json = ShopperChoices::mannequinJson();
   ASSERT_EQ(json["styles"].size(), ShopperChoices::styles().size());
   for (const nlohmann::json& style : json["styles"]) {
     EXPECT_NE(ShopperChoices::style(style["name"]), nullptr);
-    EXPECT_EQ(style["sizes"].size(), ShopperChoices::sizes().size());
+    EXPECT_FALSE(style.contains("sizes")) << style.dump();  // the paper's patterns as cut
     EXPECT_FALSE(style["colours"].empty());
   }
-  EXPECT_GE(json["lights"].size(), 3u);
   EXPECT_EQ(json["poses"].size(), ShopperChoices::poses().size());
   EXPECT_EQ(json["measurements"]["stature"]["unit"], "m");
+  const nlohmann::json shared = ShopperChoices::sharedJson();
+  EXPECT_EQ(shared["lights"].size(), ShopperChoices::lights().size());
+  EXPECT_EQ(shared["skinTones"].size(), ShopperChoices::skinTones().size());
 }
 
 TEST(ShopperChoices, TheDefaultBodysMeasurementsAreFactorsOfOne) {
@@ -39,9 +43,9 @@ TEST(ShopperChoices, TheDefaultBodysMeasurementsAreFactorsOfOne) {
   }
 }
 
-// The service's styles are the garment catalogue's (scenes/catalogue/, io/GarmentCatalogue.h):
-// each is sold there, its default colour is the catalogue's first for it, and each of the
-// catalogue's colours for it is one the service offers.
+// The Mannequin's styles are sold in the garment catalogue too (scenes/catalogue/,
+// io/GarmentCatalogue.h): its default colour is the catalogue's first for it, and each of
+// the catalogue's colours for it is one the service suggests.
 TEST(ShopperChoices, ItsStylesAndColoursAreTheGarmentCataloguesFiles) {
   const figment::GarmentCatalogue catalogue(figment::defaultCataloguePath());
   const std::vector<std::string>& offered = ShopperChoices::colours();

@@ -1,29 +1,32 @@
 // serve/http/openapi.json (as figment-serve embeds it) says what the server takes, checked here
 // against the server's own constants, lists and parser, so that no bound can drift from
-// the code: each measurement's range without a sex (the Mannequin's, ShopperChoices) and with
-// each (the size advice's ranges of the shipped size chart), the parameters' names, every
+// the code: each measurement's range on the Mannequin (ShopperChoices) and on a made body of
+// each sex (the size advice's ranges of the shipped size chart), the parameters' names, every
 // enumeration, the limits, and each pattern against the parser itself: over values at and
 // past each edge, a pattern matches exactly those the parser takes, but for the rules it
 // cannot state (written in its description), which these values break on purpose.
+// scripts/openapi-choices.py writes the values that come from scenes/ (chart, catalogue).
 // tests/serve/scenarios/test_contract.py then runs Schemathesis against a live server.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 
-#include "io/SizeChartFile.h"
 #include "serve/http/WebAssets.h"
 #include "serve/request/BodyMeasuresText.h"
 #include "serve/request/FitRequest.h"
+#include "serve/request/MadeBodyChoices.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/request/ShopperChoices.h"
 #include "serve/workers/Digest.h"
 #include "sim/garment/GarmentStyle.h"
+#include "support/ShippedCatalogue.h"
 
 using namespace figment::serve;
 using nlohmann::json;
@@ -49,26 +52,27 @@ const json& render(const std::string& name) {
   return parameter("/api/render", name);
 }
 
-const figment::SizeChart& chart() {
-  static const figment::SizeChart shipped = figment::readSizeChart(FitRequest::chartPath(FIGMENT_SOURCE_DIR "/scenes"));
-  return shipped;
+const figment::GarmentCatalogue& shipped() {
+  return figment::test::shippedCatalogue();
 }
 
-const char* const kConditions[] = {"none", "female", "male"};  // x-figment-by-sex's keys
+const char* const kConditions[] = {"mannequin", "female", "male"};  // x-figment-by-body's keys
 
-// Whether a render of `name`=`value` is taken, without a sex or with `sex`. A pose is
-// asked in a tshirt: a sitting measured body wears nothing else (a rule between them).
-bool takes(const std::string& sex, const std::string& name, const std::string& value) {
+// Whether a render of `name`=`value` is taken on the Mannequin or a made body of `body`'s
+// sex. A pose is asked in a tshirt: a sitting made body wears nothing else (a rule between
+// them).
+bool takes(const std::string& body, const std::string& name, const std::string& value) {
   QueryParameters parameters = {{name, value}};
-  if (sex != "none") parameters.push_back({"sex", sex});
-  if (name == "pose") parameters.push_back({"outfit", "tshirt:M"});
-  return std::holds_alternative<RenderRequest>(RenderRequest::parse(parameters, &chart()));
+  parameters.push_back(body == "mannequin" ? QueryParameters::value_type{"body", "mannequin"}
+                                           : QueryParameters::value_type{"sex", body});
+  if (name == "pose") parameters.push_back({"outfit", body == "mannequin" ? "tshirt" : "tshirt:M"});
+  return std::holds_alternative<RenderRequest>(RenderRequest::parse(parameters, &shipped()));
 }
 
-MeasureRange rangeFor(const std::string& sex, const std::string& name) {
-  if (sex == "none") return ShopperChoices::measure(name);
+MeasureRange rangeFor(const std::string& body, const std::string& name) {
+  if (body == "mannequin") return ShopperChoices::measure(name);
   for (const MeasureRange& range :
-       BodyMeasuresText::ranges(chart(), sex == "male" ? figment::Sex::Male : figment::Sex::Female))
+       BodyMeasuresText::ranges(shipped().chart(), body == "male" ? figment::Sex::Male : figment::Sex::Female))
     if (range.name == name) return range;
   throw std::runtime_error("no range " + name);
 }
@@ -123,7 +127,7 @@ TEST(OpenApiContract, EachMeasurementsRangeIsTheServersForEachSex) {
     double lowest = INFINITY, highest = -INFINITY;
     for (const std::string sex : kConditions) {
       const MeasureRange range = rangeFor(sex, measure);
-      const json& rule = documented["x-figment-by-sex"][sex];
+      const json& rule = documented["x-figment-by-body"][sex];
       EXPECT_EQ(rule["minimum"].get<double>(), range.minimum) << name << " " << sex;
       EXPECT_EQ(rule["maximum"].get<double>(), range.maximum) << name << " " << sex;
       // The parser at each end, and a millimetre past it.
@@ -134,9 +138,11 @@ TEST(OpenApiContract, EachMeasurementsRangeIsTheServersForEachSex) {
     }
     EXPECT_EQ(documented["schema"]["minimum"].get<double>(), lowest) << name;  // the schema: any of them
     EXPECT_EQ(documented["schema"]["maximum"].get<double>(), highest) << name;
-    if (name != "chest") {
-      EXPECT_EQ(documented["schema"]["default"].get<double>(),
-                std::round(ShopperChoices::measure(measure).reference * 1000) / 1000);
+    if (name != "chest") {  // the made woman's M, as a request without measurements is
+      const BodyMeasures woman = MadeBodyChoices::defaultBody(shipped(), figment::Sex::Female);
+      const std::map<std::string, double> defaults = {
+          {"stature", woman.stature}, {"bust", woman.bust}, {"waist", woman.waist}, {"hips", woman.hips}};
+      EXPECT_EQ(documented["schema"]["default"].get<double>(), defaults.at(measure)) << name;
     }
   }
 }
@@ -163,27 +169,34 @@ TEST(OpenApiContract, EnumerationsAreTheShopperChoicesLists) {
   for (const LightPreset& light : ShopperChoices::lights()) lights.insert(light.name);
   for (const Pose& pose : ShopperChoices::poses()) poses.insert(pose.name);
   for (const MeasuredPose& pose : MeasuredPoses::all()) rigPoses.insert(pose.name);
-  for (const figment::GarmentStyle& style : figment::garmentStyles()) styles.insert(style.name);
+  for (const figment::Sex sex : {figment::Sex::Female, figment::Sex::Male})
+    for (const figment::CatalogueStyle* style : MadeBodyChoices::styles(shipped(), sex)) styles.insert(style->name);
   EXPECT_EQ(strings(render("skin")["schema"]["anyOf"][0]["enum"]), tones);
   EXPECT_EQ(strings(render("light")["schema"]["enum"]), lights);
-  EXPECT_EQ(strings(render("pose")["x-figment-by-sex"]["none"]["enum"]), poses);
+  EXPECT_EQ(strings(render("pose")["x-figment-by-body"]["mannequin"]["enum"]), poses);
   for (const char* sex : {"female", "male"})
-    EXPECT_EQ(strings(render("pose")["x-figment-by-sex"][sex]["enum"]), rigPoses);
+    EXPECT_EQ(strings(render("pose")["x-figment-by-body"][sex]["enum"]), rigPoses);
   std::set<std::string> anyPose = poses;
   anyPose.insert(rigPoses.begin(), rigPoses.end());
   EXPECT_EQ(strings(render("pose")["schema"]["enum"]), anyPose);
   EXPECT_EQ(strings(render("sex")["schema"]["enum"]), (std::set<std::string>{"female", "male"}));
+  EXPECT_EQ(strings(render("body")["schema"]["enum"]), (std::set<std::string>{"made", "mannequin"}));
   EXPECT_EQ(strings(parameter("/api/fit", "sex")["schema"]["enum"]), (std::set<std::string>{"female", "male"}));
   EXPECT_EQ(strings(parameter("/api/fit", "style")["schema"]["enum"]), styles);
+  for (const figment::Sex sex : {figment::Sex::Female, figment::Sex::Male}) {
+    std::set<std::string> sold;
+    for (const figment::CatalogueStyle* style : MadeBodyChoices::styles(shipped(), sex)) sold.insert(style->name);
+    EXPECT_EQ(strings(parameter("/api/fit", "style")["x-figment-by-sex"][figment::sexName(sex)]["enum"]), sold);
+  }
 }
 
 TEST(OpenApiContract, EachEnumeratedValueIsTakenAndNoOther) {
   for (const std::string name : {"skin", "light", "pose", "fitmap", "format"})
     for (const std::string sex : kConditions) {
       const json& documented = render(name);
-      const json& values = documented.contains("x-figment-by-sex") ? documented["x-figment-by-sex"][sex]["enum"]
-                           : name == "skin"                        ? documented["schema"]["anyOf"][0]["enum"]
-                                                                   : documented["schema"]["enum"];
+      const json& values = documented.contains("x-figment-by-body") ? documented["x-figment-by-body"][sex]["enum"]
+                           : name == "skin"                         ? documented["schema"]["anyOf"][0]["enum"]
+                                                                    : documented["schema"]["enum"];
       for (const std::string value : values) EXPECT_TRUE(takes(sex, name, value)) << name << "=" << value << " " << sex;
       for (const std::string& value : strings(documented["schema"].value("enum", json::array())))
         EXPECT_EQ(takes(sex, name, value), strings(values).count(value) == 1) << name << "=" << value << " " << sex;
@@ -195,9 +208,13 @@ TEST(OpenApiContract, EachEnumeratedValueIsTakenAndNoOther) {
 }
 
 TEST(OpenApiContract, TheOutfitPatternTakesWhatTheParserTakes) {
-  const std::vector<std::string> styles = {"dress", "skirt", "tshirt", "pencil", "cape", "Dress"};
-  const std::vector<std::string> sizes = {"XXS", "XS", "S",  "M",  "L",  "XL", "XXL", "XXXL", "m",
-                                          "32",  "38", "42", "44", "54", "56", "30",  "33"};
+  const std::vector<std::string> styles = {"dress", "skirt", "tshirt", "pencil", "tee", "cape", "Dress"};
+  std::vector<std::string> sizes = {"XXXL", "m", "30", "33", "3XL", "64", ""};
+  for (const figment::Sex sex : {figment::Sex::Female, figment::Sex::Male})
+    for (const figment::ChartSize& size : shipped().chart().sizes(sex)) {
+      sizes.push_back(size.name);
+      sizes.push_back(size.number);
+    }
   std::vector<std::string> values = {"",
                                      "none",
                                      "None",
@@ -208,22 +225,25 @@ TEST(OpenApiContract, TheOutfitPatternTakesWhatTheParserTakes) {
                                      "dress:M:ff0000:00",
                                      "tshirt:M,skirt:L",
                                      "tshirt:M,skirt:L:00FF00,dress:S",
-                                     "tshirt:M,skirt:L,dress:S,pencil:M"};
+                                     "tshirt:M,skirt:L,dress:S,pencil:M",
+                                     "dress:1f40b3",
+                                     "skirt:00FF00,tshirt",
+                                     "dress::1f40b3"};
   for (const std::string& style : styles)
     for (const std::string& size : sizes)
       for (const std::string colour : {"", ":1f40b3", ":1F40B3", ":1f40b", ":1f40bz"})
         values.push_back(style + ":" + size + colour);
   for (const std::string sex : kConditions)
     for (const std::string& value : values)
-      EXPECT_EQ(matches(render("outfit")["x-figment-by-sex"][sex], value), takes(sex, "outfit", value))
+      EXPECT_EQ(matches(render("outfit")["x-figment-by-body"][sex], value), takes(sex, "outfit", value))
           << "outfit=" << value << " " << sex;
   // The union's pattern takes each sex's, and a style worn twice is the rule it cannot state.
   for (const std::string& value : values)
-    if (takes("none", "outfit", value) || takes("female", "outfit", value) || takes("male", "outfit", value)) {
+    if (takes("mannequin", "outfit", value) || takes("female", "outfit", value) || takes("male", "outfit", value)) {
       EXPECT_TRUE(matches(render("outfit")["schema"], value)) << value;
     }
   EXPECT_TRUE(matches(render("outfit")["schema"], "dress:M,dress:S"));
-  EXPECT_FALSE(takes("none", "outfit", "dress:M,dress:S"));
+  EXPECT_FALSE(takes("female", "outfit", "dress:M,dress:S"));
 }
 
 TEST(OpenApiContract, TheViewPatternTakesWhatTheParserTakes) {
@@ -235,7 +255,7 @@ TEST(OpenApiContract, TheViewPatternTakesWhatTheParserTakes) {
         "0,",      ",0",       "-,0",      ".,0",          "0, 0",           " 0,0",
         "0x1,0",   "front",    "back",     "left",         "right",          "Front",
         "up",      "",         "-0,-0"})
-    EXPECT_EQ(matches(render("view")["schema"], value), takes("none", "view", value)) << "view=" << value;
+    EXPECT_EQ(matches(render("view")["schema"], value), takes("mannequin", "view", value)) << "view=" << value;
 }
 
 TEST(OpenApiContract, TheSizePatternTakesWhatTheParserTakesBarThePixelsInAll) {
@@ -254,7 +274,7 @@ TEST(OpenApiContract, TheSizePatternTakesWhatTheParserTakesBarThePixelsInAll) {
     const bool shape = matches(size["schema"], value) && int(value.size()) <= size["schema"]["maxLength"].get<int>();
     const bool withinPixels = shape && std::stol(value) * std::stol(value.substr(value.find('x') + 1)) <=
                                            size["x-figment-max-pixels"].get<long>();
-    EXPECT_EQ(shape && withinPixels, takes("none", "size", value)) << "size=" << value;
+    EXPECT_EQ(shape && withinPixels, takes("mannequin", "size", value)) << "size=" << value;
   }
 }
 
@@ -263,7 +283,7 @@ TEST(OpenApiContract, TheSkinPatternTakesHexAsTheParserDoes) {
                                   "##aabbcc", "", "#", "medium", "#medium", "MEDIUM"}) {
     const json& schema = render("skin")["schema"];
     const bool documented = strings(schema["anyOf"][0]["enum"]).count(value) || matches(schema["anyOf"][1], value);
-    EXPECT_EQ(documented, takes("none", "skin", value)) << "skin=" << value;
+    EXPECT_EQ(documented, takes("mannequin", "skin", value)) << "skin=" << value;
   }
 }
 

@@ -88,13 +88,17 @@ class Fit(ServerCase):
     def test_the_catalogue_lists_the_charts_sizes_per_style(self):
         status, catalogue = self.server.json("/api/catalogue")
         self.assertEqual(status, 200)
-        styles = {style["name"]: style for style in catalogue["fit"]["styles"]}
+        made = catalogue["made"]
+        styles = {style["name"]: style for style in made["styles"]}
         self.assertIn("pencil", styles)
+        chart = {sex: [size["name"] for size in sizes] for sex, sizes in made["sizes"].items()}
+        self.assertEqual(chart["female"][:6], ["XXS", "XS", "S", "M", "L", "XL"])
+        self.assertEqual(chart["male"][:6], ["XS", "S", "M", "L", "XL", "XXL"])
         for style in styles.values():
-            self.assertEqual([s["name"] for s in style["sizes"]["female"]], ["XXS", "XS", "S", "M", "L", "XL"])
-            self.assertEqual([s["name"] for s in style["sizes"]["male"]], ["XS", "S", "M", "L", "XL", "XXL"])
-        self.assertEqual(catalogue["fit"]["poses"], ["rest", "arms-down", "arm-raised", "walking", "sitting"])
-        womens = catalogue["fit"]["measurements"]["female"]
+            for sex, sizes in style["sizes"].items():
+                self.assertEqual(sizes, [size for size in chart[sex] if size in sizes], (style["name"], sex))
+        self.assertEqual(made["poses"], ["rest", "arms-down", "arm-raised", "walking", "sitting"])
+        womens = made["measurements"]["female"]
         self.assertLess(womens["bust"]["min"], 0.76)
         self.assertGreater(womens["bust"]["max"], 0.96)
 
@@ -114,8 +118,8 @@ class Fit(ServerCase):
         self.assertGreater(large, small * 1.05, (small, large))
 
     def test_a_measured_body_refuses_what_it_cannot_wear(self):
-        cases = [(dict(WOMANS_M, outfit="pencil:XXL"), "outfit", "female sizes XXS, XS, S, M, L, XL"),
-                 (dict(WOMANS_M, outfit="cape:M"), "outfit", "styles dress, skirt, tshirt, pencil"),
+        cases = [(dict(WOMANS_M, outfit="pencil:XXXXL"), "outfit", "sizes XXS, XS, S, M, L, XL"),
+                 (dict(WOMANS_M, outfit="cape:M"), "outfit", "female styles dress, skirt, pencil, tshirt"),
                  (dict(WOMANS_M, pose="relaxed"), "pose", "rest"),
                  (dict(WOMANS_M, sex="other"), "sex", "female, male")]
         for query, name, accepted in cases:
@@ -124,14 +128,16 @@ class Fit(ServerCase):
             self.assertEqual(status, 400, query)
             self.assertEqual(error["parameter"], name)
             self.assertIn(accepted, error["accepted"])
-        # A measured body's measurements take the size advice's ranges for its sex, not the
-        # Mannequin's: a woman's bust of 1.10 m is past the chart's XL by more than 8 cm.
+        # A made body's measurements take the size advice's ranges for its sex (the chart's
+        # bodies two sizes wider), not the Mannequin's: a bust 2 cm past them is refused.
+        bust = self.server.json("/api/catalogue")[1]["made"]["measurements"]["female"]["bust"]
+        over = "%.2f" % (bust["max"] + 0.02)
         status, error = self.server.json("/api/render?" + urllib.parse.urlencode(
-            dict(WOMANS_XL, bust="1.10", outfit="pencil:XL")))
-        self.assertEqual((status, error["parameter"], error["value"]), (400, "bust", "1.10"), error)
-        self.assertEqual(error["accepted"], "0.68 to 1.04 (metres)")
-        # Without a sex the Mannequin's catalogue sizes still hold: the chart's XXS is not one.
-        status, error = self.server.json("/api/render?outfit=dress:XXS")
+            dict(WOMANS_XL, bust=over, outfit="pencil:XL")))
+        self.assertEqual((status, error["parameter"], error["value"]), (400, "bust", over), error)
+        self.assertEqual(error["accepted"], "%.2f to %.2f (metres)" % (bust["min"], bust["max"]))
+        # The Mannequin wears the paper's patterns as cut: a size is refused on it.
+        status, error = self.server.json("/api/render?body=mannequin&outfit=dress:XXS")
         self.assertEqual((status, error["parameter"]), (400, "outfit"))
 
     @needs_makehuman
@@ -193,7 +199,7 @@ class Fit(ServerCase):
         self.assertGreater(blue, 50, (red, blue))
         for kind in ("stretch", "pressure"):
             self.assertGreater(sum(bands(kind)), 200, kind)  # the skirt in the map's colours
-        status, error = self.server.json("/api/render?fitmap=ease")  # the Mannequin: no skin mesh
+        status, error = self.server.json("/api/render?body=mannequin&fitmap=ease")  # no skin mesh
         self.assertEqual((status, error["parameter"]), (400, "fitmap"))
 
 

@@ -58,14 +58,24 @@ class Endpoints(ServerCase):
     def test_catalogue(self):
         status, catalogue = self.server.json("/api/catalogue")
         self.assertEqual(status, 200)
-        names = [style["name"] for style in catalogue["styles"]]
+        self.assertEqual(catalogue["bodies"], ["made", "mannequin"])
+        made = catalogue["made"]
+        names = [style["name"] for style in made["styles"]]
         self.assertIn("dress", names)
-        for style in catalogue["styles"]:
-            self.assertIn("M", style["sizes"])
+        for style in made["styles"]:
+            # Each style's sizes are the chart's, per sex it is sold to: one vocabulary.
+            for sex, sizes in style["sizes"].items():
+                chart = [size["name"] for size in made["sizes"][sex]]
+                self.assertTrue(sizes and set(sizes) <= set(chart), (style["name"], sex))
             self.assertTrue(all(len(c) == 6 for c in style["colours"]))
+        self.assertIn("male", next(s for s in made["styles"] if s["name"] == "tshirt")["sizes"])
+        self.assertNotIn("male", next(s for s in made["styles"] if s["name"] == "dress")["sizes"])
+        self.assertEqual(made["measurements"]["female"]["bust"]["default"], 0.88)  # the women's M
+        self.assertTrue(made["poses"])
+        # The Mannequin's patterns come in no sizes.
+        self.assertTrue(all("sizes" not in style for style in catalogue["mannequin"]["styles"]))
         self.assertGreaterEqual(len(catalogue["lights"]), 3)
-        self.assertTrue(catalogue["poses"] and catalogue["skinTones"])
-        self.assertIn("stature", catalogue["measurements"])
+        self.assertTrue(catalogue["skinTones"])
 
     def test_page(self):
         status, headers, body = self.server.request("/")
@@ -94,16 +104,16 @@ class Endpoints(ServerCase):
         self.assertEqual(green[1]["x-figment-cache"], "hit")
         self.assertNotEqual(red[1]["etag"], green[1]["etag"])
 
-    def test_bodies_at_the_ends_of_the_ranges_drape_and_say_how(self):
-        # The tallest body once tangled the dress made for the default one (its shoulders
-        # rose through the straps): the patterns now follow the stature. The smallest body's
-        # outfit comes to rest. The largest body (1.90 m, bust 1.10, hips 1.15) tears the
-        # T-shirt (an edge past 1.5 times its rest length; every size does): the answer says
-        # so (X-Figment-Drape, docs/service.md) and is not kept, so a repeat says it again.
+    def test_mannequins_at_the_ends_of_its_ranges_drape_and_say_how(self):
+        # The tallest Mannequin once tangled the dress made for the default one (its
+        # shoulders rose through the straps): the patterns now follow the stature. The
+        # smallest body's outfit comes to rest. The largest body (1.90 m, bust 1.10, hips
+        # 1.15) tears the paper's T-shirt (an edge past 1.5 times its rest length): the answer
+        # says so (X-Figment-Drape, docs/service.md) and is not kept, so a repeat says it again.
         cached = self.server.json("/healthz")[1]["imageCacheBytes"]
         for body, drape in ((dict(stature="1.90", bust="1.10", hips="1.15"), "torn"),
                             (dict(stature="1.45", waist="0.60", hips="0.82"), "rest")):
-            path = render_path(outfit="tshirt:S,dress:XL", **body)
+            path = render_path(body="mannequin", outfit="tshirt,dress", **body)
             status, headers, body_bytes = self.server.request(path)
             self.assertEqual((status, headers["x-figment-drape"]), (200, drape), (body, body_bytes[:200]))
             self.assertEqual(self.server.request(path)[1]["x-figment-drape"], drape, body)
