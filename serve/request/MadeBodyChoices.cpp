@@ -55,12 +55,12 @@ std::variant<const CatalogueStyle*, ParameterError> MadeBodyChoices::style(const
     return RequestParameters::refusal(parameter, value, "no style named " + Utf8Text::shown(name, 32), accepted);
   if (style->sewn())
     return RequestParameters::refusal(parameter, value,
-                                      name + " is sewn from a pattern: the service does not dress sewn styles yet "
-                                             "(figment-sew does)",
+                                      name +
+                                          " is sewn from a pattern: the service does not dress sewn styles yet "
+                                          "(figment-sew does)",
                                       accepted);
   if (style->sizes(sex).empty())
-    return RequestParameters::refusal(parameter, value, name + " is not sold in " + sexName(sex) + " sizes",
-                                      accepted);
+    return RequestParameters::refusal(parameter, value, name + " is not sold in " + sexName(sex) + " sizes", accepted);
   return style;
 }
 
@@ -71,8 +71,8 @@ BodyMeasures MadeBodyChoices::defaultBody(const GarmentCatalogue& catalogue, Sex
 
 std::pair<std::string, std::string> MadeBodyChoices::defaultGarment(const GarmentCatalogue& catalogue, Sex sex) {
   const std::vector<const CatalogueStyle*> sold = styles(catalogue, sex);
-  if (sold.empty()) throw std::invalid_argument(std::string("the catalogue sells no cut style in ") + sexName(sex) +
-                                                " sizes");
+  if (sold.empty())
+    throw std::invalid_argument(std::string("the catalogue sells no cut style in ") + sexName(sex) + " sizes");
   const std::string size = defaultSize(catalogue.chart(), sex).name;
   const std::vector<std::string>& sizes = sold.front()->sizes(sex);
   const bool cut = std::find(sizes.begin(), sizes.end(), size) != sizes.end();

@@ -31,9 +31,7 @@ namespace figment::serve {
 class MadeBodyChoices {
  public:
   // The catalogue's path in a scenes folder (scenes/catalogue/index.txt).
-  static std::string cataloguePath(const std::string& scenesFolder) {
-    return scenesFolder + "/catalogue/index.txt";
-  }
+  static std::string cataloguePath(const std::string& scenesFolder) { return scenesFolder + "/catalogue/index.txt"; }
   // The scenes folder's catalogue, read; throws as GarmentCatalogue's constructor. Shared:
   // its holder need not see the type (the HTTP side keeps Eigen's headers out of its own).
   static std::shared_ptr<const GarmentCatalogue> readCatalogue(const std::string& scenesFolder);

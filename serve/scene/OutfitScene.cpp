@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 #include <vector>
 
 #include "nodes/body/CollisionGroup.h"
@@ -112,9 +113,17 @@ ClothEngine* engineFor(const GarmentStyle& style, bool layered, SoNode* body) {
 }
 
 struct Draped {
-  ClothEngine* engine;
-  const SoMFInt32* coordIndex;  // the garment's triangles
+  std::function<void(SoMFVec3f&)> follow;  // connects a field to where the garment lies
+  const SoMFInt32* coordIndex;             // the garment's triangles
 };
+
+// Follows an engine's drape, or a drape's fixed points.
+std::function<void(SoMFVec3f&)> following(ClothEngine* engine) {
+  return [engine](SoMFVec3f& field) { field.connectFrom(&engine->positions); };
+}
+std::function<void(SoMFVec3f&)> following(SoMFVec3f* points) {
+  return [points](SoMFVec3f& field) { field.connectFrom(points); };
+}
 
 // What the next garment out collides with: the mannequin and every garment beneath.
 SoNode* bodyUnder(SoNode* model, const std::vector<Draped>& beneath) {
@@ -123,7 +132,7 @@ SoNode* bodyUnder(SoNode* model, const std::vector<Draped>& beneath) {
   group->body = model;
   for (size_t i = 0; i < beneath.size(); ++i) {
     auto* surface = new GarmentSurface;
-    surface->point.connectFrom(&beneath[i].engine->positions);
+    beneath[i].follow(surface->point);
     surface->coordIndex.connectFrom(const_cast<SoMFInt32*>(beneath[i].coordIndex));
     surface->thickness = 0.002f;
     group->layers.set1Value(int(i), surface);
@@ -140,39 +149,75 @@ struct FitMapTarget {
   ClothParameters parameters;
 };
 
-// The garment in its colour, drawn by a ClothingLayer; or with a fit map an IndexedFaceSet
-// coloured per vertex once draped (a ClothingLayer draws one material).
-SoSeparator* garment(const OutfitItem& item, ClothEngine* engine, const SoMFInt32* coordIndex,
-                     const FitMapTarget& fitMap) {
+// The garment at `coordinates` in its colour, drawn by a ClothingLayer; or with a fit map an
+// IndexedFaceSet coloured per vertex once draped (a ClothingLayer draws one material).
+// `triangles` fills the drawing node's coordIndex (connects it, or sets it), which `*drawn`
+// is then; `rest`: the garment as cut, for its fit map.
+SoSeparator* garment(const OutfitItem& item, SoCoordinate3* coordinates,
+                     const std::function<void(SoMFInt32&)>& triangles, const FitMapTarget& fitMap,
+                     const std::function<TriangleMesh()>& rest, const SoMFInt32** drawn) {
   auto* separator = new SoSeparator;
   SoMaterial* colour = material(colourOf(item.colour), 0.15f, 0.3f);
   separator->addChild(colour);
   separator->addChild(hints(false));  // cloth is seen from both sides
-  auto* coordinates = new SoCoordinate3;
-  coordinates->point.connectFrom(&engine->positions);
   separator->addChild(coordinates);
   if (fitMap.garments) {
+    TriangleMesh cut = rest();
     // One colour a point from the start (the session checks the shapes before they are
     // painted): the garment's own until paintFitMaps.
-    const std::vector<SbColor> plain(size_t(engine->restPoints.getNum()), colourOf(item.colour));
+    const std::vector<SbColor> plain(cut.vertices.size(), colourOf(item.colour));
     colour->diffuseColor.setValues(0, int(plain.size()), plain.data());
     auto* binding = new SoMaterialBinding;
     binding->value = SoMaterialBinding::PER_VERTEX_INDEXED;
     separator->addChild(binding);
     auto* faces = new SoIndexedFaceSet;
-    faces->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
+    triangles(faces->coordIndex);
     separator->addChild(faces);
     fitMap.garments->push_back(
-        {engine, coordinates, colour, fitMap.fabric, fitMap.kind, fitMap.skin, fitMap.parameters});
+        {std::move(cut), coordinates, colour, fitMap.fabric, fitMap.kind, fitMap.skin, fitMap.parameters});
+    *drawn = &faces->coordIndex;
     return separator;
   }
   auto* layer = new ClothingLayer;
-  layer->coordIndex.connectFrom(const_cast<SoMFInt32*>(coordIndex));
+  triangles(layer->coordIndex);
   // Drawn smooth (issue 29), as the shipped scenes are: hems read as curves at the drape's
   // cost. The ETag follows, since the build digest covers this program.
   layer->displaySubdivision = OutfitScene::kDisplaySubdivision;
   separator->addChild(layer);
+  *drawn = &layer->coordIndex;
   return separator;
+}
+
+// Connects a drawing node's coordIndex to `source`.
+std::function<void(SoMFInt32&)> connectedTo(const SoMFInt32& source) {
+  return [&source](SoMFInt32& field) { field.connectFrom(const_cast<SoMFInt32*>(&source)); };
+}
+
+// Coordinates that follow an engine's drape.
+SoCoordinate3* coordinatesOf(ClothEngine* engine) {
+  auto* coordinates = new SoCoordinate3;
+  coordinates->point.connectFrom(&engine->positions);
+  return coordinates;
+}
+
+// A garment as cut: the engine's rest points and its faces fan-triangulated.
+TriangleMesh restMesh(const ClothEngine& engine) {
+  TriangleMesh rest;
+  for (int i = 0; i < engine.restPoints.getNum(); ++i) {
+    const SbVec3f& p = engine.restPoints[i];
+    rest.vertices.emplace_back(p[0], p[1], p[2]);
+  }
+  std::vector<int> face;
+  for (int i = 0; i <= engine.coordIndex.getNum(); ++i) {
+    const int v = i < engine.coordIndex.getNum() ? engine.coordIndex[i] : -1;
+    if (v >= 0) {
+      face.push_back(v);
+      continue;
+    }
+    for (size_t k = 2; k < face.size(); ++k) rest.triangles.push_back({face[0], face[k - 1], face[k]});
+    face.clear();
+  }
+  return rest;
 }
 
 // The size advice's drape (sim/fit/SizeFitter.h: sizeDrapeParameters) as a ClothEngine's.
@@ -192,13 +237,22 @@ ClothEngine* gradedEngine(const figment::GarmentStyle& style, bool layered, SoNo
   return engine;
 }
 
-void setMesh(ClothEngine* engine, const TriangleMesh& mesh) {
+std::vector<SbVec3f> pointsOf(const std::vector<Vec3>& vertices) {
   std::vector<SbVec3f> points;
-  for (const Vec3& v : mesh.vertices) points.emplace_back(float(v.x()), float(v.y()), float(v.z()));
+  for (const Vec3& v : vertices) points.emplace_back(float(v.x()), float(v.y()), float(v.z()));
+  return points;
+}
+
+void setTriangles(SoMFInt32& coordIndex, const TriangleMesh& mesh) {
   std::vector<int32_t> index;
   for (const auto& t : mesh.triangles) index.insert(index.end(), {int32_t(t[0]), int32_t(t[1]), int32_t(t[2]), -1});
+  coordIndex.setValues(0, int(index.size()), index.data());
+}
+
+void setMesh(ClothEngine* engine, const TriangleMesh& mesh) {
+  const std::vector<SbVec3f> points = pointsOf(mesh.vertices);
   engine->restPoints.setValues(0, int(points.size()), points.data());
-  engine->coordIndex.setValues(0, int(index.size()), index.data());
+  setTriangles(engine->coordIndex, mesh);
 }
 
 // The body made once, with every field set: a HumanBody makes itself again on each field
@@ -228,27 +282,51 @@ HumanBody* measuredBody(const RenderRequest& request) {
   return body;
 }
 
-// A measured body and its graded garments (the class comment).
-void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request,
-                   const OutfitScene::GradedGarment& graded, std::vector<OutfitScene::FitMapGarment>* fitMaps) {
+// The innermost garment of a made body at rest, from its size drape (the advice's: nothing
+// draped here): drawn where the drape left it.
+Draped drawnSizeDrape(SoSeparator* root, const OutfitItem& item, const TriangleMesh& cut, const GarmentDrape& drape,
+                      const FitMapTarget& fitMap) {
+  auto* coordinates = new SoCoordinate3;
+  const std::vector<SbVec3f> points = pointsOf(drape.positions);
+  coordinates->point.setValues(0, int(points.size()), points.data());
+  const SoMFInt32* drawn = nullptr;
+  root->addChild(garment(
+      item, coordinates, [&cut](SoMFInt32& field) { setTriangles(field, cut); }, fitMap, [&cut] { return cut; },
+      &drawn));
+  return {following(&coordinates->point), drawn};
+}
+
+// A made body and its graded garments (the class comment).
+void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request, const OutfitScene::Made& made,
+                   std::vector<OutfitScene::FitMapGarment>* fitMaps, std::vector<DrapeReport>* drawn) {
   HumanBody* body = measuredBody(request);
   skin->addChild(body);
   const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {
     const figment::GarmentStyle& style = *findStyle(item.style);
-    ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
-    setMesh(engine, graded(item, sex));
+    const TriangleMesh& cut = made.graded(item, sex);
     const FitMapTarget fitMap{fitMaps, style.fabric, request.fitMap, body, sizeDrapeParameters(style)};
-    root->addChild(garment(item, engine, &engine->coordIndex, fitMap));
-    beneath.push_back({engine, &engine->coordIndex});
+    if (beneath.empty() && request.pose == "rest" && made.sizeDrape) {
+      const GarmentDrape drape = made.sizeDrape(request, item);
+      if (drawn) drawn->push_back(drape.report);
+      beneath.push_back(drawnSizeDrape(root, item, cut, drape, fitMap));
+      continue;
+    }
+    ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
+    setMesh(engine, cut);
+    const SoMFInt32* drawn = nullptr;
+    root->addChild(garment(
+        item, coordinatesOf(engine), connectedTo(engine->coordIndex), fitMap, [engine] { return restMesh(*engine); },
+        &drawn));
+    beneath.push_back({following(engine), &engine->coordIndex});
   }
 }
 
 }  // namespace
 
-SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const GradedGarment& graded,
-                                std::vector<FitMapGarment>* fitMaps) {
+SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const Made& made,
+                                std::vector<FitMapGarment>* fitMaps, std::vector<DrapeReport>* drawn) {
   if (request.fitMap.empty()) fitMaps = nullptr;
   auto* root = new SoSeparator;
   addLights(root, *ShopperChoices::light(request.light));
@@ -259,7 +337,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     root->ref();
     root->addChild(body);
     try {
-      dressMeasured(root, body, request, graded, fitMaps);
+      dressMeasured(root, body, request, made, fitMaps, drawn);
     } catch (...) {
       root->unref();  // the half-made scene goes
       throw;
@@ -280,40 +358,19 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     ClothEngine* engine = engineFor(style, !beneath.empty(), bodyUnder(model, beneath));
     restShape(engine, pattern, wardrobe.heightOrigin(), ShopperChoices::bodyFactors(request.body).height);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
-    root->addChild(garment(item, engine, &pattern->coordIndex,
-                           {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}}));  // cotton jersey
-    beneath.push_back({engine, &pattern->coordIndex});
+    const SoMFInt32* drawn = nullptr;
+    root->addChild(garment(
+        item, coordinatesOf(engine), connectedTo(pattern->coordIndex),
+        {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}},  // cotton jersey
+        [engine] { return restMesh(*engine); }, &drawn));
+    beneath.push_back({following(engine), &pattern->coordIndex});
   }
   return root;
 }
 
-namespace {
-
-// A garment as cut: the engine's rest points and its faces fan-triangulated.
-TriangleMesh restMesh(const ClothEngine& engine) {
-  TriangleMesh rest;
-  for (int i = 0; i < engine.restPoints.getNum(); ++i) {
-    const SbVec3f& p = engine.restPoints[i];
-    rest.vertices.emplace_back(p[0], p[1], p[2]);
-  }
-  std::vector<int> face;
-  for (int i = 0; i <= engine.coordIndex.getNum(); ++i) {
-    const int v = i < engine.coordIndex.getNum() ? engine.coordIndex[i] : -1;
-    if (v >= 0) {
-      face.push_back(v);
-      continue;
-    }
-    for (size_t k = 2; k < face.size(); ++k) rest.triangles.push_back({face[0], face[k - 1], face[k]});
-    face.clear();
-  }
-  return rest;
-}
-
-}  // namespace
-
 void OutfitScene::paintFitMaps(const std::vector<FitMapGarment>& fitMaps) {
   for (const FitMapGarment& garment : fitMaps) {
-    const TriangleMesh rest = restMesh(*garment.engine);
+    const TriangleMesh& rest = garment.rest;
     std::vector<Vec3> positions;
     for (int i = 0; i < garment.coordinates->point.getNum(); ++i) {
       const SbVec3f& p = garment.coordinates->point[i];

@@ -18,6 +18,7 @@
 #include "serve/request/RenderRequest.h"
 #include "sim/cloth/ClothParameters.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/GarmentDrape.h"
 
 class ClothEngine;
 class MeshFile;
@@ -39,6 +40,15 @@ class OutfitScene {
   // A style's garment graded to a size of the chart, for a measured body; throws when it
   // cannot be made.
   using GradedGarment = std::function<const TriangleMesh&(const OutfitItem& item, Sex sex)>;
+  // The one drape of a made body × garment size (serve/workers/FitWorker.h's sizeDrape): the
+  // drape the size advice judges. A made body at rest draws its innermost garment from it
+  // rather than draping it again.
+  using SizeDrape = std::function<GarmentDrape(const RenderRequest& request, const OutfitItem& item)>;
+  // What a made body's garments come from; both are asked only for a made body.
+  struct Made {
+    GradedGarment graded;
+    SizeDrape sizeDrape;  // null: every garment drapes in the scene
+  };
 
   // A measured body MakeHuman did not make (measurements out of its reach, or its data
   // missing): the worker asks why (FitWorker::unreachable).
@@ -50,7 +60,7 @@ class OutfitScene {
   // A garment drawn as its fit map (RenderRequest::fitMap): an IndexedFaceSet coloured per
   // vertex by `material`, painted once the drape is done. Nodes of the built scene.
   struct FitMapGarment {
-    ClothEngine* engine;         // its restPoints and coordIndex: the garment as cut
+    TriangleMesh rest;           // the garment as cut
     SoCoordinate3* coordinates;  // the drape's positions
     SoMaterial* material;        // one colour per vertex
     std::string fabric;          // a material preset (sim/cloth/MaterialPresets.h): its limits
@@ -59,11 +69,11 @@ class OutfitScene {
     ClothParameters parameters;  // for ease and pressure: the drape's (clearance, material)
   };
 
-  // The scene's root, not referenced (SceneSession::adopt takes it). `graded` is asked
-  // only for a made body. With a fit map, its garments go to `fitMaps`. Throws
-  // BodyNotMade.
-  static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe,
-                            const GradedGarment& graded = nullptr, std::vector<FitMapGarment>* fitMaps = nullptr);
+  // The scene's root, not referenced (SceneSession::adopt takes it). `made` is asked only
+  // for a made body. With a fit map, its garments go to `fitMaps`; the reports of the size
+  // drapes drawn (not draped here) to `drawn`. Throws BodyNotMade.
+  static SoSeparator* build(const RenderRequest& request, const Wardrobe& wardrobe, const Made& made = {},
+                            std::vector<FitMapGarment>* fitMaps = nullptr, std::vector<DrapeReport>* drawn = nullptr);
   // Colours each garment by the bands of its fit map (sim/fit/FitMap.h) after the drape.
   static void paintFitMaps(const std::vector<FitMapGarment>& fitMaps);
 };

@@ -1,11 +1,16 @@
 #include "serve/workers/FitWorker.h"
 
+#include <cstdio>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "io/DrapeCache.h"
+#include "io/DrapeRecord.h"
 #include "io/MakeHumanFiles.h"
 #include "io/RecommendationJson.h"
 #include "serve/request/FitRequest.h"
+#include "serve/workers/Digest.h"
+#include "sim/drape/DrapeReport.h"
 #include "sim/fit/SizeFitter.h"
 
 namespace figment::serve {
@@ -14,6 +19,22 @@ namespace {
 
 FitWorker::Answer failure(int status, const std::string& error) {
   return {status, nlohmann::json{{"error", error}}.dump()};
+}
+
+// Kept in memory at most: a worker serves a few shoppers at a time.
+constexpr size_t kBodiesKept = 8, kDrapesKept = 48;
+
+// The measurements as a key: the sex and each to the mm, as the requests round them.
+std::string bodyText(const BodyMeasures& body, Sex sex) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s %.3f %.3f %.3f %.3f", sexName(sex), body.stature, body.bust, body.waist,
+                body.hips);
+  return text;
+}
+
+template <class T>
+void bound(std::map<std::string, T>& kept, size_t most) {
+  if (kept.size() > most) kept.clear();  // a worker's working set is small: start again
 }
 
 }  // namespace
@@ -30,19 +51,81 @@ std::string FitWorker::loadModel() {
 
 FitWorker::Answer FitWorker::advise(const FitRequest& request) {
   if (const std::string error = loadModel(); !error.empty()) return failure(500, error);
-  // In figment-size's order (its keys sorted): the fit's least squares see the goals in
-  // order, and the same body must get the same answer from the program and the service.
-  const std::vector<MeasurementGoal> goals = {{"bust_girth", request.body.bust},
-                                              {"hip_girth", request.body.hips},
-                                              {"stature", request.body.stature},
-                                              {"waist_girth", request.body.waist}};
-  TriangleMesh body;
+  const TriangleMesh* body = nullptr;
   try {
-    body = human_.measuredBody(request.sex, goals).body;
+    body = &madeBody(request.body, request.sex);
   } catch (const UnreachableMeasurement& error) {
     return failure(422, std::string("no body of these measurements can be made: ") + error.what());
   }
-  return {200, recommendationJson(fitter(request.style).recommend(body, request.sex))};
+  const std::vector<ChartSize>& sizes = chart_.sizes(request.sex);
+  // Each candidate's one drape on this body, the one its picture draws (cold: a size's drape
+  // is the same whichever was asked first).
+  const Recommendation advice = fitter(request.style).recommendFrom(*body, request.sex, [&](int size) {
+    return sizeDrape(request.body, request.sex, request.style, sizes.at(size_t(size)).name);
+  });
+  return {200, recommendationJson(advice)};
+}
+
+const TriangleMesh& FitWorker::madeBody(const BodyMeasures& body, Sex sex) {
+  if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
+  const std::string key = bodyText(body, sex);
+  if (auto kept = bodies_.find(key); kept != bodies_.end()) return kept->second;
+  // As HumanBody::load makes it: its float fields' values, its goals in its order, its
+  // default macros (0.5, the gender 0 or 1), at rest.
+  const auto field = [](double value) { return double(float(value)); };
+  HumanParameters start = MakeHumanLibrary::start(sex);
+  start.macro.gender = field(start.macro.gender);
+  const std::vector<MeasurementGoal> goals = {{"stature", field(body.stature)},
+                                              {"bust_girth", field(body.bust)},
+                                              {"waist_girth", field(body.waist)},
+                                              {"hip_girth", field(body.hips)}};
+  TriangleMesh made = human_.measuredBody(start, goals).body;
+  bound(bodies_, kBodiesKept);
+  return bodies_.emplace(key, std::move(made)).first->second;
+}
+
+std::string FitWorker::sizeDrapeKey(const BodyMeasures& body, Sex sex, const std::string& style, int size) {
+  const TriangleMesh& mesh = madeBody(body, sex);
+  const std::string_view vertices(reinterpret_cast<const char*>(mesh.vertices.data()),
+                                  mesh.vertices.size() * sizeof(Vec3));
+  const ChartSize& row = chart_.sizes(sex).at(size_t(size));
+  char chart[128];
+  std::snprintf(chart, sizeof chart, "%s %s %.4f %.4f %.4f %.4f", row.name.c_str(), row.number.c_str(), row.stature,
+                row.bust, row.waist, row.hip);
+  return "figment size drape 1\nbody " + bodyText(body, sex) + " " + Digest().add(vertices).hex() + "\nstyle " + style +
+         "\nsize " + chart + "\nbuild " + Digest::buildDigest() + "\n";
+}
+
+GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::string& style,
+                                  const std::string& size) {
+  const int index = chart_.find(sex, size);
+  if (!findStyle(style) || index < 0) throw std::invalid_argument("no graded garment " + style + ":" + size);
+  const std::string key = sizeDrapeKey(body, sex, style, index);
+  if (auto kept = drapes_.find(key); kept != drapes_.end()) {
+    GarmentDrape again = kept->second;
+    again.report.fromCache = true;
+    return again;
+  }
+  std::string problem;
+  if (cache_)
+    if (auto record = cache_->find(key, problem))
+      if (auto read = readDrapeRecord(*record, problem)) {
+        read->report.fromCache = true;
+        bound(drapes_, kDrapesKept);
+        return drapes_.emplace(key, *read).first->second;
+      }
+  SizeFitter& sizes = fitter(style);
+  GarmentDrape made =
+      sizes.drape(sizes.graded(sex, index).garment, std::make_shared<const MeshCollider>(madeBody(body, sex)));
+  made.report.verdict = verdictOf(made.report);
+  // As the record keeps it (float points): the drape a worker finds in the cache later is
+  // the one judged and drawn here, to the bit.
+  const std::vector<unsigned char> record = writeDrapeRecord(made);
+  made = readDrapeRecord(record, problem).value();
+  if (cache_) cache_->store(key, record);  // a cache that cannot keep it costs a drape later
+  bound(drapes_, kDrapesKept);
+  drapes_.emplace(key, made);
+  return made;
 }
 
 std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {

@@ -4,7 +4,13 @@
 // fit request (a render-only worker never pays for it), and one SizeFitter per style keeps
 // its graded sizes (each size's chart body and garment) and, once a fit needs them, their
 // fit-model drapes (about 1 s each), so a later request for another body in that style only
-// drapes its candidates. A render of a measured outfit takes the graded garment alone: no drape.
+// drapes its candidates.
+//
+// One body, one drape per size: the shopper's body is made as a HumanBody node makes it
+// (madeBody), and each size's garment is draped on it once, cold (sizeDrape), kept in
+// memory and in the worker's drape cache (on disk, shared by the workers and, with Redis,
+// by the instances). The advice judges those drapes and a render of the made body at rest
+// draws them, so a picture of an advised size costs a render, not a drape.
 
 #include <map>
 #include <memory>
@@ -13,9 +19,11 @@
 #include "io/MakeHumanLibrary.h"
 #include "serve/request/ShopperChoices.h"
 #include "sim/core/TriangleMesh.h"
+#include "sim/drape/GarmentDrape.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment {
+class DrapeCache;
 class SizeFitter;
 }  // namespace figment
 
@@ -46,14 +54,32 @@ class FitWorker {
   // when MakeHuman's data is missing.
   std::string unreachable(const BodyMeasures& body, Sex sex);
 
+  // The body of `body`'s measurements made as a HumanBody node at rest makes it (its fields'
+  // float values, its goals' order, its default macros): the mesh a render of the made body
+  // draws. Kept for the last few bodies. Throws UnreachableMeasurement, and as loadModel.
+  const TriangleMesh& madeBody(const BodyMeasures& body, Sex sex);
+  // `style`'s garment of the chart's `size` draped cold on madeBody(body, sex) with the
+  // advice's settings: from memory, else the drape cache, else draped and kept in both.
+  // Its report says whether it came from a cache. Throws as garment() and madeBody().
+  GarmentDrape sizeDrape(const BodyMeasures& body, Sex sex, const std::string& style, const std::string& size);
+  // The drape cache sizeDrape keeps its drapes in (the render worker's); none: memory only.
+  void useCache(std::shared_ptr<const DrapeCache> cache) { cache_ = std::move(cache); }
+
  private:
   // "" once the model is read, else why not.
   std::string loadModel();
   SizeFitter& fitter(const std::string& style);
 
+  // The text that names a size drape: the body (its measurements and its mesh's digest),
+  // the style, the size and its chart row, and the build.
+  std::string sizeDrapeKey(const BodyMeasures& body, Sex sex, const std::string& style, int size);
+
   SizeChart chart_;
   MakeHumanLibrary human_;                                      // the worker's: read on its first fit request
   std::map<std::string, std::unique_ptr<SizeFitter>> fitters_;  // by style
+  std::map<std::string, TriangleMesh> bodies_;                  // by sex and measurements: the last few
+  std::map<std::string, GarmentDrape> drapes_;                  // by sizeDrapeKey: the last few dozen
+  std::shared_ptr<const DrapeCache> cache_;
 };
 
 }  // namespace figment::serve

@@ -77,6 +77,7 @@ RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& c
     shared = std::make_shared<RedisStore>(std::make_shared<RedisConnection>(redisUrl, quiet), redisTtl);
   }
   session_.context().cache = std::make_shared<DrapeCache>(cacheFolder, kCacheBytes, shared);
+  if (fit_) fit_->useCache(session_.context().cache);  // the size drapes beside the engines' drapes
 }
 
 void RenderWorker::serve(const FrameChannel& channel) {
@@ -118,20 +119,26 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
   if (request.sceneKey() != sceneKey_) {
     sceneKey_.clear();
     fitMaps_.clear();
+    std::vector<DrapeReport> drawn;  // the size drapes the scene draws: the advice's
     try {
-      session_.adopt(OutfitScene::build(
-          request, wardrobe_,
-          [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
-            return fit_->garment(item.style, sex, item.size);
-          },
-          &fitMaps_));
+      OutfitScene::Made made;
+      if (fit_) {
+        made.graded = [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
+          return fit_->garment(item.style, sex, item.size);
+        };
+        made.sizeDrape = [this](const RenderRequest& shopper, const OutfitItem& item) {
+          return fit_->sizeDrape(shopper.body, shopper.sex == "male" ? Sex::Male : Sex::Female, item.style, item.size);
+        };
+      }
+      session_.adopt(OutfitScene::build(request, wardrobe_, made, &fitMaps_, &drawn));
     } catch (const OutfitScene::BodyNotMade& error) {
       session_.clear();
       if (!fit_) return failure(500, error.what());
       const std::string why = fit_->unreachable(request.body, request.sex == "male" ? Sex::Male : Sex::Female);
       return why.empty() ? failure(500, error.what()) : unreachableBody(request, why);
     }
-    const std::vector<DrapeReport> drapes = drapeReports(session_.drape());
+    std::vector<DrapeReport> drapes = drapeReports(session_.drape());
+    drapes.insert(drapes.begin(), drawn.begin(), drawn.end());  // the innermost garment's first
     const std::string error = session_.firstError();
     if (!error.empty()) {
       session_.clear();

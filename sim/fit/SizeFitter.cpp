@@ -247,13 +247,34 @@ SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
                  drapeSize(graded, sex, size, collider, nullptr));
 }
 
-Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool warm) {
-  const BodyMeasurements measured = measureBody(body);
+std::vector<int> SizeFitter::candidatesFor(const BodyMeasurements& measured, Sex sex, int& centre) const {
   const std::vector<int> candidates =
       chart_.candidates(sex, measured.bustGirth, measured.waistGirth, measured.hipGirth);
   if (candidates.empty()) throw std::invalid_argument(std::string("size chart: no ") + sexName(sex) + " sizes");
   const int nearest = chart_.nearest(sex, measured.bustGirth, measured.waistGirth, measured.hipGirth);
-  const int centre = static_cast<int>(std::find(candidates.begin(), candidates.end(), nearest) - candidates.begin());
+  centre = static_cast<int>(std::find(candidates.begin(), candidates.end(), nearest) - candidates.begin());
+  return candidates;
+}
+
+namespace {
+
+// The smallest candidate with no region tight, or the largest when every one is.
+void choose(Recommendation& out) {
+  out.allTight = true;
+  for (const SizeFit& fit : out.sizes)
+    if (std::find(fit.verdicts.begin(), fit.verdicts.end(), Verdict::Tight) == fit.verdicts.end()) {
+      out.recommended = fit.size, out.allTight = false;
+      break;
+    }
+  if (out.allTight) out.recommended = out.sizes.back().size;
+}
+
+}  // namespace
+
+Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool warm) {
+  const BodyMeasurements measured = measureBody(body);
+  int centre = 0;
+  const std::vector<int> candidates = candidatesFor(measured, sex, centre);
   const int count = static_cast<int>(candidates.size());
   const auto collider = std::make_shared<const MeshCollider>(body);
   const std::vector<FitRegion> regions = styleRegions(body, measured, sex, regions_);
@@ -268,13 +289,22 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
     out.sizes[k] = fitSize(graded, ownFit(sex, candidates[k]), chart_.sizes(sex)[candidates[k]].name, *collider,
                            regions, drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
   }
-  out.allTight = true;
-  for (const SizeFit& fit : out.sizes)
-    if (std::find(fit.verdicts.begin(), fit.verdicts.end(), Verdict::Tight) == fit.verdicts.end()) {
-      out.recommended = fit.size, out.allTight = false;
-      break;
-    }
-  if (out.allTight) out.recommended = out.sizes.back().size;
+  choose(out);
+  return out;
+}
+
+Recommendation SizeFitter::recommendFrom(const TriangleMesh& body, Sex sex,
+                                         const std::function<GarmentDrape(int)>& drapeOf) {
+  const BodyMeasurements measured = measureBody(body);
+  int centre = 0;
+  const std::vector<int> candidates = candidatesFor(measured, sex, centre);
+  const MeshCollider collider(body);
+  const std::vector<FitRegion> regions = styleRegions(body, measured, sex, regions_);
+  Recommendation out;
+  for (const int size : candidates)
+    out.sizes.push_back(
+        fitSize(grade(sex, size), ownFit(sex, size), chart_.sizes(sex)[size].name, collider, regions, drapeOf(size)));
+  choose(out);
   return out;
 }
 

@@ -13,6 +13,7 @@
 // sewn garment's rest shape), and the intended fit is the size's pattern sewn on its own
 // chart body.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -110,6 +111,10 @@ class SizeFitter {
   // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
   // without warm starts) drapes every size cold.
   Recommendation recommend(const TriangleMesh& body, Sex sex, bool warm = true);
+  // As recommend, each candidate's drape on `body` given by `drapeOf` (the size's index in
+  // the chart's sizes of `sex`): a caller that keeps drapes (the service, whose pictures
+  // draw the same drapes) judges the ones it keeps.
+  Recommendation recommendFrom(const TriangleMesh& body, Sex sex, const std::function<GarmentDrape(int)>& drapeOf);
 
   // Drapes one size (cold) on `body` and judges it: what a shopper sees trying it on.
   SizeFit tryOn(const TriangleMesh& body, Sex sex, int size);
@@ -122,6 +127,8 @@ class SizeFitter {
 
  private:
   const Graded& grade(Sex sex, int size);
+  // The candidates for `measured` (indices into the chart's sizes) and the nearest's place.
+  std::vector<int> candidatesFor(const BodyMeasurements& measured, Sex sex, int& centre) const;
   std::vector<RegionFit> fitOn(const MeshCollider& collider, const std::vector<FitRegion>& regions,
                                const Graded& graded, const std::vector<Vec3>& positions) const;
   SizeFit fitSize(const Graded& graded, const std::vector<RegionFit>& own, const std::string& name,

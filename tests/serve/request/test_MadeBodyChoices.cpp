@@ -60,8 +60,10 @@ TEST(MadeBodyChoices, TheDefaultBodyIsTheChartsMInTheFirstStyleSold) {
     EXPECT_DOUBLE_EQ(body.waist, m.waist);
     EXPECT_DOUBLE_EQ(body.hips, m.hip);
   }
-  EXPECT_EQ(MadeBodyChoices::defaultGarment(sold(), Sex::Female), std::make_pair(std::string("dress"), std::string("M")));
-  EXPECT_EQ(MadeBodyChoices::defaultGarment(sold(), Sex::Male), std::make_pair(std::string("tshirt"), std::string("M")));
+  EXPECT_EQ(MadeBodyChoices::defaultGarment(sold(), Sex::Female),
+            std::make_pair(std::string("dress"), std::string("M")));
+  EXPECT_EQ(MadeBodyChoices::defaultGarment(sold(), Sex::Male),
+            std::make_pair(std::string("tshirt"), std::string("M")));
 }
 
 TEST(MadeBodyChoices, TheCatalogueListsEachStylesSizesPerSexFromTheCatalogue) {

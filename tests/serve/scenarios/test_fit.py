@@ -52,6 +52,24 @@ class Fit(ServerCase):
             self.assertNotIn("tight", [r["verdict"] for r in own_size["regions"].values()])
 
     @needs_makehuman
+    def test_the_advices_drapes_are_the_pictures_drapes(self):
+        # One drape per body and size: after the advice, each advised size's picture on the
+        # same body is drawn from the drape the advice judged (X-Figment-Cache: hit, nothing
+        # draped), and a size the advice did not try is draped anew (the control).
+        body = dict(WOMANS_M, stature="1.695", hips="0.975")
+        style = body.pop("style")
+        _, advice = self.advice(dict(body, style=style))
+        for size in advice["sizes"]:
+            query = dict(body, outfit="%s:%s" % (style, size), size="160x200")
+            status, headers, answer = self.server.request("/api/render?" + urllib.parse.urlencode(query))
+            self.assertEqual((status, headers["x-figment-cache"], headers["x-figment-drape"]), (200, "hit", "rest"),
+                             (size, answer[:200]))
+        untried = next(size for size in ("XXS", "XL") if size not in advice["sizes"])
+        query = dict(body, outfit="%s:%s" % (style, untried), size="160x200")
+        status, headers, _ = self.server.request("/api/render?" + urllib.parse.urlencode(query))
+        self.assertEqual((status, headers["x-figment-cache"]), (200, "miss"), untried)
+
+    @needs_makehuman
     def test_a_repeat_is_kept_and_if_none_match_is_304(self):
         headers, first = self.advice(WOMANS_M)
         tag = headers["etag"]

@@ -97,7 +97,7 @@ class OutfitSceneTest : public ::testing::Test {
     if (!std::holds_alternative<RenderRequest>(parsed)) return {};
     std::vector<OutfitScene::FitMapGarment> fitMaps;
     figment::session::SceneSession session;
-    session.adopt(OutfitScene::build(std::get<RenderRequest>(parsed), *wardrobe_, nullptr, &fitMaps));
+    session.adopt(OutfitScene::build(std::get<RenderRequest>(parsed), *wardrobe_, {}, &fitMaps));
     for (ClothEngine* engine : session.engines()) engine->maxTime = engine->timeStep.getValue();
     session.drape();
     EXPECT_EQ(session.firstError(), "");
@@ -205,7 +205,7 @@ TEST_F(OutfitSceneTest, AFitMapColoursEachPointByItsStretchBand) {
   auto parsed = RenderRequest::parse(onTheMannequin({{"outfit", "tshirt,skirt"}, {"fitmap", "stretch"}}));
   ASSERT_TRUE(std::holds_alternative<RenderRequest>(parsed));
   std::vector<OutfitScene::FitMapGarment> fitMaps;
-  SoSeparator* root = OutfitScene::build(std::get<RenderRequest>(parsed), *wardrobe_, nullptr, &fitMaps);
+  SoSeparator* root = OutfitScene::build(std::get<RenderRequest>(parsed), *wardrobe_, {}, &fitMaps);
   root->ref();
   ASSERT_EQ(fitMaps.size(), 2u);  // each garment, innermost first
   EXPECT_EQ(fitMaps[0].fabric, "jersey");
@@ -219,13 +219,14 @@ TEST_F(OutfitSceneTest, AFitMapColoursEachPointByItsStretchBand) {
   // every way it is past jersey's 10 % limit (red).
   // (Coordinates of the test's own: the scene's would drape when read.)
   const OutfitScene::FitMapGarment& shirt = fitMaps[0];
-  const int n = shirt.engine->restPoints.getNum();
+  const int n = int(shirt.rest.vertices.size());
   ASSERT_GT(n, 100);
   auto* drape = new SoCoordinate3;
   drape->ref();
   const auto paintedAt = [&](float scale) {
     std::vector<SbVec3f> points;
-    for (int i = 0; i < n; ++i) points.push_back(shirt.engine->restPoints[i] * scale);
+    for (const figment::Vec3& p : shirt.rest.vertices)
+      points.push_back(SbVec3f(float(p.x()), float(p.y()), float(p.z())) * scale);
     drape->point.setValues(0, n, points.data());
     OutfitScene::FitMapGarment byHand = shirt;
     byHand.coordinates = drape;
@@ -251,8 +252,8 @@ TEST_F(OutfitSceneTest, AFitMapColoursEachPointByItsStretchBand) {
 // about at rest) and shows no magenta, as a garment that lost its colour would.
 TEST_F(OutfitSceneTest, WithoutAFitMapTheGarmentsKeepTheirColours) {
   std::vector<OutfitScene::FitMapGarment> fitMaps;
-  SoSeparator* root = OutfitScene::build(std::get<RenderRequest>(RenderRequest::parse(onTheMannequin({}))), *wardrobe_,
-                                         nullptr, &fitMaps);
+  SoSeparator* root =
+      OutfitScene::build(std::get<RenderRequest>(RenderRequest::parse(onTheMannequin({}))), *wardrobe_, {}, &fitMaps);
   root->ref();
   EXPECT_TRUE(fitMaps.empty());
   root->unref();

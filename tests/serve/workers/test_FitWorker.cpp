@@ -1,0 +1,82 @@
+// A worker's made bodies and size drapes: the body the advice judges on is the mesh a
+// HumanBody node of the same measurements draws (so a picture shows the advice's drape on
+// its own body), and each size's drape is made once: kept in memory, then found in the drape
+// cache by another worker, with the same points. Skipped, before anything runs, where the
+// file system has none of MakeHuman's data.
+
+#include <Inventor/SoDB.h>
+#include <gtest/gtest.h>
+
+#include "io/DrapeCache.h"
+#include "io/MakeHumanFiles.h"
+#include "nodes/Init.h"
+#include "nodes/body/HumanBody.h"
+#include "serve/workers/FitWorker.h"
+#include "support/ShippedCatalogue.h"
+#include "support/TempDir.h"
+
+using namespace figment;
+using namespace figment::serve;
+
+namespace {
+
+// A body between the chart's sizes, given to the mm as a request gives it.
+const BodyMeasures kShopper{1.702, 0.903, 0.741, 0.987};
+
+class FitWorkerTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (findMakeHumanData().empty()) GTEST_SKIP() << "MakeHuman's data not found (scripts/setup.sh fetches it)";
+    SoDB::init();
+    figment::init();
+  }
+};
+
+}  // namespace
+
+TEST_F(FitWorkerTest, TheMadeBodyIsTheMeshAHumanBodyNodeDraws) {
+  FitWorker worker(test::shippedCatalogue().chart());
+  const TriangleMesh& made = worker.madeBody(kShopper, Sex::Female);
+  auto* node = new HumanBody;  // as the service's scene sets it (serve/scene/OutfitScene.cpp)
+  node->ref();
+  node->gender = 0.0f;
+  node->stature = float(kShopper.stature);
+  node->bustGirth = float(kShopper.bust);
+  node->waistGirth = float(kShopper.waist);
+  node->hipGirth = float(kShopper.hips);
+  ASSERT_EQ(size_t(node->point.getNum()), made.vertices.size());
+  double largest = 0;
+  for (size_t i = 0; i < made.vertices.size(); ++i) {
+    const SbVec3f& p = node->point[int(i)];
+    largest = std::max(largest, (Vec3(p[0], p[1], p[2]) - made.vertices[i]).norm());
+  }
+  EXPECT_LT(largest, 1e-6);  // the same mesh, but for the node's float points
+  node->unref();
+  // The control: another body is another mesh.
+  const TriangleMesh& other = worker.madeBody({1.702, 0.903, 0.741, 1.010}, Sex::Female);
+  double moved = 0;
+  for (size_t i = 0; i < made.vertices.size(); ++i) moved = std::max(moved, (other.vertices[i] - made.vertices[i]).norm());
+  EXPECT_GT(moved, 1e-3);
+}
+
+TEST_F(FitWorkerTest, ASizeDrapeIsMadeOnceAndFoundAgainInTheDrapeCache) {
+  test::TempDir folder;
+  const auto cache = std::make_shared<const DrapeCache>(folder.path(), 64u << 20);
+  FitWorker first(test::shippedCatalogue().chart());
+  first.useCache(cache);
+  const GarmentDrape made = first.sizeDrape(kShopper, Sex::Female, "pencil", "M");
+  EXPECT_FALSE(made.report.fromCache);
+  EXPECT_TRUE(made.report.run.atRest) << made.report.verdict;
+  ASSERT_FALSE(made.positions.empty());
+  const GarmentDrape again = first.sizeDrape(kShopper, Sex::Female, "pencil", "M");
+  EXPECT_TRUE(again.report.fromCache);  // from memory
+  EXPECT_EQ(again.positions, made.positions);
+  FitWorker second(test::shippedCatalogue().chart());  // another worker, the same cache
+  second.useCache(cache);
+  const GarmentDrape found = second.sizeDrape(kShopper, Sex::Female, "pencil", "M");
+  EXPECT_TRUE(found.report.fromCache);
+  EXPECT_EQ(found.positions, made.positions);
+  EXPECT_EQ(found.report.run.iterations, made.report.run.iterations);
+  // Another size is another drape.
+  EXPECT_NE(second.sizeDrape(kShopper, Sex::Female, "pencil", "L").positions, made.positions);
+}
