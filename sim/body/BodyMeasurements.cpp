@@ -298,22 +298,26 @@ struct Needs {
 
 constexpr double kBellyRise = 0.02;   // m of girth regained over the dip above: a belly
 constexpr double kChestDepth = 0.12;  // m under the armpits within which the chest itself lies
+constexpr double kDipDepth = 0.005;   // m of girth a dip lies under the window's top girth
 
 // The bust: the fullest level from 2 cm under the armpits down to 25 cm under them, or only
 // down to the narrowest level above a belly (issue 43): walking down, where the girth more
-// than 12 cm under the armpits is 2 cm over the narrowest girth above it, the window ends at
-// that narrowest level. Under a full belly the window's foot is fuller than the chest (a
-// women's DOB 48 body: the "bust" found 8 cm under the waist; a men's HAKA 62 body, whose
-// girth only grows from under the armpits to the belly: the belly), and the bust is the part
-// above. A breast's own rise from the armpits lies within the 12 cm (the apex 4 to 8 cm under
-// them on the chart bodies), and where the girth never regains 2 cm below, the window is the
-// whole one, as before.
+// than 12 cm under the armpits is 2 cm over the narrowest girth above it, and that narrowest
+// is 5 mm under the girth at the window's top (a waist between chest and belly, not the
+// window's own top), the window ends at that narrowest level. Under a full belly the window's
+// foot is fuller than the chest (a women's DOB 48 body: the "bust" found 8 cm under the waist;
+// a men's HAKA 62 body, whose girth grows from just under the armpits to the belly: the belly),
+// and the bust is the part above. A breast's own rise lies within the 12 cm (the apex 4 to 8
+// cm under the armpits on the chart bodies); where the girth never regains 2 cm below, the
+// window is the whole one, as before.
 double bustHeight(const Tape& tape, double armpit) {
   const double top = armpit - tape.scaled(0.02), bottom = armpit - tape.scaled(0.25);
-  double dip = top, dipGirth = tape.girth(top), foot = bottom;
+  const double topGirth = tape.girth(top);
+  double dip = top, dipGirth = topGirth, foot = bottom;
   for (double y = top - kScanStep; y >= bottom; y -= kScanStep) {
     const double g = tape.girth(y);
-    if (y < armpit - tape.scaled(kChestDepth) && g > dipGirth + tape.scaled(kBellyRise)) {
+    if (y < armpit - tape.scaled(kChestDepth) && g > dipGirth + tape.scaled(kBellyRise) &&
+        dipGirth < topGirth - tape.scaled(kDipDepth)) {
       foot = dip;
       break;
     }

