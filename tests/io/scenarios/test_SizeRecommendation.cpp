@@ -113,6 +113,11 @@ const Exception kExceptions[] = {
     {"skirt", Sex::Female, "XS", "XXS", kFlaredSkirtWaistEase},
     // back since issue 43's solve (the chart bodies within 0.3 mm of their bust level before)
     {"skirt", Sex::Female, "S", "XS", kFlaredSkirtWaistEase},
+    // issue 43's sizes: from DOB 46 up the waist steps by 6 cm, twice the skirt's ease; a size
+    // down is 3 cm short on a waist of a metre and more, 3 % stretch, within cotton's 4 %
+    {"skirt", Sex::Female, "4XL", "3XL", kFlaredSkirtWaistEase},
+    {"skirt", Sex::Female, "6XL", "5XL", kFlaredSkirtWaistEase},
+    {"skirt", Sex::Female, "7XL", "6XL", kFlaredSkirtWaistEase},
 };
 
 TEST_F(SizeRecommendation, EveryCatalogueStyleGivesEachChartBodyItsOwnSizeButTheListedExceptions) {
@@ -262,7 +267,9 @@ TEST_F(SizeRecommendation, FigmentSizeRefusesBadInputInOneLine) {
   const test::ProgramResult garment =
       test::runProgram(tool, "--style dress:Q --sex female --body x.obj", dir.path(), dir.path());
   EXPECT_EQ(garment.status, 1);
-  EXPECT_EQ(garment.err, "figment-size: --style \"dress:Q\": no size Q of dress (female XXS, XS, S, M, L, XL)\n");
+  EXPECT_EQ(garment.err,
+            "figment-size: --style \"dress:Q\": no size Q of dress (female XXS, XS, S, M, L, XL, XXL, 3XL, 4XL, 5XL, "
+            "6XL, 7XL)\n");
   const test::ProgramResult some =
       test::runProgram(tool, "--style dress --sex female --stature 1.68", dir.path(), dir.path());
   EXPECT_EQ(some.status, 1);
