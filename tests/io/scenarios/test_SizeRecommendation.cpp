@@ -165,6 +165,20 @@ TEST_F(SizeRecommendation, NeverSmallerAsTheBodyGrows) {
   }
 }
 
+// The same over issue 43's sizes: from half a size over XL (DOB 42) to half a size under 7XL
+// (DOB 54), where the chart's steps grow to 6 cm in bust and waist.
+TEST_F(SizeRecommendation, NeverSmallerAsTheBodyGrowsPastXl) {
+  ASSERT_EQ(chart().sizes(Sex::Female).size(), 12u);
+  int previous = -1;
+  for (double position = 5.5; position <= 10.51; position += 0.5) {
+    const TriangleMesh body = chartBodyAt(*bodies_->human, chart(), Sex::Female, position);
+    const int recommended = index(Sex::Female, pencil_->recommend(body, Sex::Female).recommended);
+    EXPECT_GE(recommended, previous) << "at " << position;
+    EXPECT_GE(recommended, 5) << "at " << position;  // never under the XL the body is past
+    previous = recommended;
+  }
+}
+
 // Two neighbours of the issue's grid (--grid 30 --grid-beyond 2: positions -2 + 9 k / 29),
 // men's, at k = 13 and 14, just over M: the M skirt's thighs were told "2 cm too high" on
 // the first (its row nearest the crotch 2.1 cm lower on the M chart body than on this one),
