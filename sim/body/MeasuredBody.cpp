@@ -25,7 +25,7 @@ constexpr double kMassLow = -1, kMassHigh = 2;
 // How a goal's parameter goes on past its measure target's end (x beyond +-1, up to +-2): the
 // female bust by the cup size (to 0 below, to 1 above), the waist by the stomach's belly target
 // above, the hips by the buttocks' volume target either way (issue 43: a DOB 54 bust, the
-// men's bellies, an apple's narrow hips).
+// men's bellies, a straight women's figure whose hips are no fuller than her bust).
 enum class Extension { None, CupSize, Stomach, Buttocks };
 
 // One goal's parameter: the macro height, or a measure target, continued past its ends by its

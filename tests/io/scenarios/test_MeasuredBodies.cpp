@@ -106,6 +106,7 @@ TEST_F(MeasuredBodies, TheIssuesFullerBodiesAreReached) {
       {Sex::Female, "pear", "", 1.68, 0.88, 0.72, 1.02},  // the hips 30 cm over the waist
       {Sex::Female, "pear", "", 1.68, 1.04, 0.90, 1.20},
       {Sex::Female, "pear", "", 1.60, 1.16, 1.00, 1.30},
+      {Sex::Female, "straight", "", 1.68, 0.96, 0.80, 0.96},  // refused: hips nearest 0.977 m
   };
   for (const ChartSize& set : sets) {
     const std::vector<MeasurementGoal> goals = {
