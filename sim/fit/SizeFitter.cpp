@@ -1,6 +1,7 @@
 #include "sim/fit/SizeFitter.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -247,12 +248,28 @@ SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
                  drapeSize(graded, sex, size, collider, nullptr));
 }
 
+std::vector<int> SizeFitter::candidatesAround(Sex sex, int nearest) const {
+  std::vector<int> offered;  // the chart's sizes this style is made in, smallest first
+  for (int k = 0; k < static_cast<int>(chart_.sizes(sex).size()); ++k)
+    if (!sewn_ || sewn_->sizes.count({sex, k})) offered.push_back(k);
+  if (offered.empty() || nearest < 0) return {};
+  // the offered size nearest the body's and its neighbours among the offered: a sewn style
+  // whose patterns stop before the chart's end (women's XL while the chart goes to 7XL)
+  // recommends among its own sizes, never a size it has no pattern for
+  const auto at = std::min_element(offered.begin(), offered.end(),
+                                   [&](int a, int b) { return std::abs(a - nearest) < std::abs(b - nearest); });
+  const auto first = at == offered.begin() ? at : at - 1, last = at + 1 == offered.end() ? at + 1 : at + 2;
+  return {first, last};
+}
+
 std::vector<int> SizeFitter::candidatesFor(const BodyMeasurements& measured, Sex sex, int& centre) const {
-  const std::vector<int> candidates =
-      chart_.candidates(sex, measured.bustGirth, measured.waistGirth, measured.hipGirth);
-  if (candidates.empty()) throw std::invalid_argument(std::string("size chart: no ") + sexName(sex) + " sizes");
   const int nearest = chart_.nearest(sex, measured.bustGirth, measured.waistGirth, measured.hipGirth);
-  centre = static_cast<int>(std::find(candidates.begin(), candidates.end(), nearest) - candidates.begin());
+  const std::vector<int> candidates = candidatesAround(sex, nearest);
+  if (candidates.empty()) throw std::invalid_argument(std::string("size chart: no ") + sexName(sex) + " sizes");
+  centre =
+      static_cast<int>(std::min_element(candidates.begin(), candidates.end(),
+                                        [&](int a, int b) { return std::abs(a - nearest) < std::abs(b - nearest); }) -
+                       candidates.begin());
   return candidates;
 }
 

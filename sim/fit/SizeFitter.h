@@ -137,6 +137,9 @@ class SizeFitter {
   GarmentDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
                          const std::vector<Vec3>* start) const;
   const SizePattern& patternOf(Sex sex, int size) const;
+  // The candidates for a body nearest chart size `nearest`: that size and its neighbours, among
+  // the sizes this style is made in (a sewn style: those it has patterns for).
+  std::vector<int> candidatesAround(Sex sex, int nearest) const;
 
   const HumanModel& model_;
   const SizeChart& chart_;

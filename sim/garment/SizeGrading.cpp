@@ -34,23 +34,33 @@ ChartSize graded(const ChartSize& from, const ChartSize& towards, int k) {
 
 }  // namespace
 
-std::vector<ChartSize> gradedSizes(const SizeChart& chart, Sex sex, int beyond) {
+std::vector<ChartSize> gradedSizes(const SizeChart& chart, Sex sex, int below, int above) {
   const std::vector<ChartSize>& sizes = chart.sizes(sex);
   if (sizes.size() < 2)
     throw std::invalid_argument(std::string("the chart's ") + sexName(sex) + " sizes are too few to grade beyond");
-  if (beyond < 0) throw std::invalid_argument("sizes beyond the chart: " + std::to_string(beyond) + " < 0");
+  for (const int beyond : {below, above})
+    if (beyond < 0) throw std::invalid_argument("sizes beyond the chart: " + std::to_string(beyond) + " < 0");
   std::vector<ChartSize> out;
-  for (int k = beyond; k >= 1; --k) out.push_back(graded(sizes[0], sizes[1], k));
+  for (int k = below; k >= 1; --k) out.push_back(graded(sizes[0], sizes[1], k));
   out.insert(out.end(), sizes.begin(), sizes.end());
   const size_t n = sizes.size();
-  for (int k = 1; k <= beyond; ++k) out.push_back(graded(sizes[n - 1], sizes[n - 2], k));
+  for (int k = 1; k <= above; ++k) out.push_back(graded(sizes[n - 1], sizes[n - 2], k));
   return out;
 }
 
+std::vector<ChartSize> gradedSizes(const SizeChart& chart, Sex sex, int beyond) {
+  return gradedSizes(chart, sex, beyond, beyond);
+}
+
 std::vector<ChartSize> measurementSets(const SizeChart& chart, int beyond, const std::vector<double>& statureOffsets) {
+  return measurementSets(chart, beyond, beyond, statureOffsets);
+}
+
+std::vector<ChartSize> measurementSets(const SizeChart& chart, int below, int above,
+                                       const std::vector<double>& statureOffsets) {
   std::vector<ChartSize> sets;
   for (const Sex sex : {Sex::Female, Sex::Male})
-    for (const ChartSize& size : gradedSizes(chart, sex, beyond))
+    for (const ChartSize& size : gradedSizes(chart, sex, below, above))
       for (const double offset : statureOffsets) {
         ChartSize set = size;
         set.stature += offset;
@@ -61,7 +71,7 @@ std::vector<ChartSize> measurementSets(const SizeChart& chart, int beyond, const
 }
 
 std::vector<ChartSize> bodyCheckSets(const SizeChart& chart) {
-  return measurementSets(chart, 2, {-0.08, 0.0, 0.08});
+  return measurementSets(chart, 2, 0, {-0.08, 0.0, 0.08});
 }
 
 }  // namespace figment

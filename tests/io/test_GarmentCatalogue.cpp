@@ -66,7 +66,9 @@ TEST(GarmentCatalogue, ANameIsAStyleASizeAndAColour) {
 }
 
 TEST(GarmentCatalogue, ABadNameSaysWhatIsAccepted) {
-  EXPECT_NE(refusal("dress:Q").find("\"dress:Q\": no size Q of dress (female XXS, XS, S, M, L, XL)"), std::string::npos)
+  EXPECT_NE(refusal("dress:Q").find(
+                "\"dress:Q\": no size Q of dress (female XXS, XS, S, M, L, XL, XXL, 3XL, 4XL, 5XL, 6XL, 7XL)"),
+            std::string::npos)
       << refusal("dress:Q");
   EXPECT_NE(refusal("coat:M").find("no style coat (styles dress, skirt, pencil, tshirt, tee, shirt, trousers, "
                                    "pencilskirt, circleskirt, sundress)"),
@@ -74,8 +76,8 @@ TEST(GarmentCatalogue, ABadNameSaysWhatIsAccepted) {
       << refusal("coat:M");
   EXPECT_NE(refusal("dress").find("is not style:size[:rrggbb]"), std::string::npos);
   EXPECT_NE(refusal("dress:M:blue").find("colour blue is not six hex digits"), std::string::npos);
-  EXPECT_NE(refusal("dress:48").find("no size 48"), std::string::npos);  // the men's M: dresses are women's
-  EXPECT_NE(refusal("tshirt:XXS").find("male XS, S, M, L, XL, XXL; female XXS"), std::string::npos)
+  EXPECT_NE(refusal("dress:60").find("no size 60"), std::string::npos);  // the men's 5XL: dresses are women's
+  EXPECT_NE(refusal("tshirt:XXS").find("male XS, S, M, L, XL, XXL, 3XL, 4XL, 5XL, 6XL; female XXS"), std::string::npos)
       << refusal("tshirt:XXS");
 }
 
@@ -122,8 +124,11 @@ TEST(GarmentCatalogue, TheShippedPatternsAreStylesInTheChartsSizes) {
     EXPECT_FALSE(sold->fabric.empty()) << name;
     EXPECT_FALSE(sold->regions.empty()) << name;
     for (const Sex sex : sold->sexes) {
-      EXPECT_EQ(sold->sizes(sex).size(), catalogue.chart().sizes(sex).size()) << name;
+      // the old chart's six a sex at least: the sizes past it (issue 43) wait for their sewing
+      // to be checked (docs/patterns.md)
+      EXPECT_GE(sold->sizes(sex).size(), 6u) << name;
       for (const std::string& size : sold->sizes(sex)) {
+        EXPECT_GE(catalogue.chart().find(sex, size), 0) << name << " " << size;
         const figment::PatternIndexEntry* entry = sold->patternOf(sex, size);
         ASSERT_NE(entry, nullptr) << name << " " << size;
         EXPECT_TRUE(std::filesystem::is_regular_file(entry->file)) << entry->file;
@@ -155,7 +160,8 @@ TEST(GarmentCatalogue, APatternStylesNameIsItsSizesPattern) {
   ASSERT_NE(tshirt.style, nullptr);
   EXPECT_STREQ(tshirt.style->name, "tshirt");
   EXPECT_EQ(tshirt.fabric, "jersey");
-  // Beyond the chart: the index has a women's XXL (44), the chart does not.
+  // Beyond the style: the index and the chart have a women's XXL (44), tee.txt does not list it
+  // (the pattern styles' sewing is not yet checked past XL).
   try {
     shipped().resolve("tee:XXL", Sex::Female);
     ADD_FAILURE() << "tee:XXL resolved in women's sizes";

@@ -29,10 +29,25 @@ std::string errorOf(const std::string& path) {
 
 }  // namespace
 
-TEST(SizeChartFile, TheShippedChartHasSixSizesOfEachSex) {
+TEST(SizeChartFile, TheShippedChartRunsToDob54AndHaka62) {
   const SizeChart chart = readSizeChart(defaultSizeChartPath());
-  ASSERT_EQ(chart.sizes(Sex::Female).size(), 6u);
-  ASSERT_EQ(chart.sizes(Sex::Male).size(), 6u);
+  ASSERT_EQ(chart.sizes(Sex::Female).size(), 12u);
+  ASSERT_EQ(chart.sizes(Sex::Male).size(), 10u);
+  // issue 43's ends: DOB 54 (7XL) bust 1.28, waist 1.12, hips 1.32 m; HAKA 62 (6XL) chest 1.24 m
+  const ChartSize& dob54 = chart.sizes(Sex::Female).back();
+  EXPECT_EQ(dob54.number, "54");
+  EXPECT_EQ(dob54.name, "7XL");
+  EXPECT_DOUBLE_EQ(dob54.bust, 1.28);
+  EXPECT_DOUBLE_EQ(dob54.waist, 1.12);
+  EXPECT_DOUBLE_EQ(dob54.hip, 1.32);
+  const ChartSize& haka62 = chart.sizes(Sex::Male).back();
+  EXPECT_EQ(haka62.number, "62");
+  EXPECT_DOUBLE_EQ(haka62.bust, 1.24);
+  // the 6 cm steps from DOB 46 up in bust and waist
+  const ChartSize& dob46 = chart.sizes(Sex::Female)[chart.find(Sex::Female, "46")];
+  const ChartSize& dob48 = chart.sizes(Sex::Female)[chart.find(Sex::Female, "48")];
+  EXPECT_NEAR(dob48.bust - dob46.bust, 0.06, 1e-12);
+  EXPECT_NEAR(dob48.waist - dob46.waist, 0.06, 1e-12);
   const ChartSize& m = chart.sizes(Sex::Female)[chart.find(Sex::Female, "M")];
   EXPECT_EQ(m.number, "38");
   EXPECT_DOUBLE_EQ(m.bust, 0.88);

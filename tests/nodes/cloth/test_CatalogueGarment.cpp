@@ -47,7 +47,7 @@ TEST(CatalogueGarment, ABadNameIsAReadErrorNamingWhatIsAccepted) {
   SceneRoot root = readGarment("pencil:Q");
   EXPECT_FALSE(root);
   EXPECT_NE(errors.all().find("CatalogueGarment 'Item': garment \"pencil:Q\": no size Q of pencil (female XXS, XS, S, "
-                              "M, L, XL)"),
+                              "M, L, XL, XXL, 3XL, 4XL, 5XL, 6XL, 7XL)"),
             std::string::npos)
       << errors.all();
 }

@@ -52,7 +52,8 @@ TEST(SizeGrading, MeasurementSetsAreEachSizeAtEachStatureOffset) {
   EXPECT_EQ(sets[2].name, sets[0].name);
   EXPECT_EQ(sets.back().sex, Sex::Male);
   EXPECT_NEAR(sets.back().stature, 1.94, 1e-12);
-  // the shipped chart's 6 + 6 sizes give the 60 sets
+  // a chart of 6 + 6 sizes gives 48 sets: two sizes below each sex's smallest, none above its
+  // largest (issue 43: the widened chart's largest are as far as MakeHuman reaches)
   std::vector<ChartSize> twelve;
   // appended, not "F" + std::to_string(i): GCC 12 warns (-Wrestrict) on that operator+
   const auto named = [](char sex, int i) { return std::string(1, sex).append(std::to_string(i)); };
@@ -62,7 +63,26 @@ TEST(SizeGrading, MeasurementSetsAreEachSizeAtEachStatureOffset) {
     twelve.push_back({Sex::Male, named('M', i), std::to_string(44 + 2 * i), 1.68 + 0.03 * i, 0.88 + 0.04 * i,
                       0.76 + 0.04 * i, 0.92 + 0.04 * i});
   }
-  EXPECT_EQ(bodyCheckSets(SizeChart(twelve)).size(), 60u);
+  const std::vector<ChartSize> checked = bodyCheckSets(SizeChart(twelve));
+  ASSERT_EQ(checked.size(), 48u);
+  EXPECT_EQ(checked[0].number, "28");
+  EXPECT_EQ(checked[23].number, "42");  // the women's largest, 8 cm taller: the last women's set
+  EXPECT_NEAR(checked[23].stature, 1.76, 1e-12);
+  EXPECT_EQ(checked.back().number, "54");
+}
+
+TEST(SizeGrading, SizesBelowAndAboveAreCountedApart) {
+  const std::vector<ChartSize> women = gradedSizes(chart(), Sex::Female, 2, 0);
+  ASSERT_EQ(women.size(), 5u);
+  EXPECT_EQ(women.front().name, "S-2");
+  EXPECT_EQ(women.back().name, "L");
+  const std::vector<ChartSize> men = gradedSizes(chart(), Sex::Male, 0, 1);
+  ASSERT_EQ(men.size(), 4u);
+  EXPECT_EQ(men.front().name, "L");
+  EXPECT_EQ(men.back().name, "XXL+1");
+  EXPECT_NEAR(men.back().waist, 1.04, 1e-12);  // the men's last step: 6 cm of waist
+  EXPECT_EQ(measurementSets(chart(), 2, 0, {0.0}).size(), 5u + 5u);
+  EXPECT_THROW(gradedSizes(chart(), Sex::Female, 0, -1), std::invalid_argument);
 }
 
 TEST(SizeGrading, AChartTooShortOrGradedBelowZeroIsRefused) {
