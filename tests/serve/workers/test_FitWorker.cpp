@@ -55,7 +55,8 @@ TEST_F(FitWorkerTest, TheMadeBodyIsTheMeshAHumanBodyNodeDraws) {
   // The control: another body is another mesh.
   const TriangleMesh& other = worker.madeBody({1.702, 0.903, 0.741, 1.010}, Sex::Female);
   double moved = 0;
-  for (size_t i = 0; i < made.vertices.size(); ++i) moved = std::max(moved, (other.vertices[i] - made.vertices[i]).norm());
+  for (size_t i = 0; i < made.vertices.size(); ++i)
+    moved = std::max(moved, (other.vertices[i] - made.vertices[i]).norm());
   EXPECT_GT(moved, 1e-3);
 }
 
