@@ -108,7 +108,7 @@ TEST(RenderRequest, EveryClassOfBadParameterNamesItsParameterValueAndRange) {
       {{{"pose", "../../etc"}}, "pose", "no such pose"},
       {{{"light", "laser"}}, "light", "no such light"},
       {{{"outfit", "cape:M"}}, "outfit", "no style named cape"},
-      {{{"outfit", "dress:XXL"}}, "outfit", "no female size XXL of dress"},
+      {{{"outfit", "dress:9XL"}}, "outfit", "no female size 9XL of dress"},
       {{{"outfit", "dress"}}, "outfit", "a garment without a size: dress"},
       {{{"outfit", "dress:M:blue"}}, "outfit", "not a colour: blue"},
       {{{"outfit", "dress:M,dress:L"}}, "outfit", "a style worn twice: dress"},

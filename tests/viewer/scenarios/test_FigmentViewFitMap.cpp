@@ -120,10 +120,10 @@ TEST_F(FigmentViewFitMap, ABadValueOrNameIsOneLineSayingWhatIsAccepted) {
   EXPECT_NE(badMap.err.find("--fit-map"), std::string::npos) << badMap.err;
   EXPECT_NE(badMap.err.find("stretch"), std::string::npos) << badMap.err;
   EXPECT_NE(badMap.err.find("pressure"), std::string::npos) << badMap.err;
-  const auto badName = view("pencil:XXL", "-o " + quote(path("x.png")));
+  const auto badName = view("pencil:9XL", "-o " + quote(path("x.png")));
   EXPECT_EQ(badName.status, 1);
-  EXPECT_NE(badName.err.find("CatalogueGarment 'Skirt': garment \"pencil:XXL\": no size XXL of pencil (female XXS, "
-                             "XS, S, M, L, XL)"),
+  EXPECT_NE(badName.err.find("CatalogueGarment 'Skirt': garment \"pencil:9XL\": no size 9XL of pencil (female XXS, "
+                             "XS, S, M, L, XL, XXL, 3XL, 4XL, 5XL, 6XL, 7XL)"),
             std::string::npos)
       << badName.err;
   EXPECT_EQ(badName.err.find('\n'), badName.err.size() - 1) << badName.err;  // one line
