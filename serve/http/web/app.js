@@ -187,10 +187,9 @@ function query(azimuth) {
   return p.toString();
 }
 
-function viewWords(azimuth) {
-  const names = { 0: "the front", 90: "the right", 180: "the back", 270: "the left" };
-  return names[azimuth] || azimuth + "°";
-}
+const SIDES = { 0: "front", 90: "right", 180: "back", 270: "left" };
+const angleName = (azimuth) => SIDES[azimuth] || azimuth + "°";
+const viewWords = (azimuth) => (SIDES[azimuth] ? "the " + SIDES[azimuth] : azimuth + "°");
 
 async function show() {
   const problem = missingMeasure();
@@ -226,10 +225,9 @@ function schedule() {
   state.timer = setTimeout(show, 250);
 }
 
-function turn(step) {
-  state.azimuth = (state.azimuth + step + 360) % 360;
-  const names = { 0: "front", 90: "right", 180: "back", 270: "left" };
-  byId("angle").textContent = names[state.azimuth] || state.azimuth + "°";
+function turnTo(azimuth) {
+  state.azimuth = (azimuth + 360) % 360;
+  byId("angle").textContent = angleName(state.azimuth);
   show();
 }
 
@@ -360,11 +358,7 @@ function turntableFrame(azimuth, ticket) {
   const button = element("button", "frame");
   button.type = "button";
   button.setAttribute("aria-label", "See the view from " + viewWords(azimuth));
-  button.addEventListener("click", () => {
-    state.azimuth = azimuth;
-    byId("angle").textContent = viewWords(azimuth).replace("the ", "");
-    show();
-  });
+  button.addEventListener("click", () => turnTo(azimuth));
   const img = element("img");
   img.width = 120;
   img.height = 160;
@@ -461,8 +455,8 @@ async function start() {
     stopTurntable();
     show();
   });
-  byId("turn-left").addEventListener("click", () => turn(-30));
-  byId("turn-right").addEventListener("click", () => turn(30));
+  byId("turn-left").addEventListener("click", () => turnTo(state.azimuth - 30));
+  byId("turn-right").addEventListener("click", () => turnTo(state.azimuth + 30));
   show();
 }
 

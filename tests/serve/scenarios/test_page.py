@@ -208,6 +208,12 @@ class Browser(ServerCase):
             [browser.find_element(By.CSS_SELECTOR, "#advice-sizes li[data-size='%s'] img" % s).get_attribute("src")
              .count("outfit=%s%%3A%s%%3A" % (style, s)) for s in sizes], [1, 1, 1])
         self.assertFalse(browser.find_element(By.ID, "ease-legend").get_attribute("hidden"))
+        # Each picture's alt text names the body, the garment and its size.
+        for s in sizes:
+            alt = browser.find_element(By.CSS_SELECTOR, "#advice-sizes li[data-size='%s'] img" % s).get_attribute("alt")
+            self.assertIn("women's body of height %s cm" % measurements[0][1], alt)
+            self.assertIn("hips %s cm" % measurements[3][1], alt)
+            self.assertIn("the %s in size %s" % (style, s), alt)
         self.assertEqual(self.unnamed_controls(), [])
         self.assertNoSidewaysScrolling()
         self.shot(self.prefix + "advice.png", "fit")
@@ -224,6 +230,9 @@ class Browser(ServerCase):
         self.assertEqual(Select(browser.find_element(By.ID, "size-0")).first_selected_option.get_attribute("value"),
                          neighbour)
         self.assertPictureChanged(pixels)
+        self.assertIn("the %s in %s" % (style, neighbour), browser.find_element(By.ID, "picture").get_attribute("alt"))
+        self.assertIn("chosen", browser.find_element(
+            By.CSS_SELECTOR, "#advice-sizes li[data-size='%s']" % neighbour).get_attribute("class"))
         self.assertEqual(browser.find_element(By.ID, "error").text, "")
 
         self.press("turntable")
