@@ -164,10 +164,10 @@ class Fit(ServerCase):
 
     @needs_makehuman
     def test_a_measured_body_out_of_makehumans_reach_is_422_naming_the_measurement(self):
-        # Each within its range, but no woman of a 0.80 m bust has a 0.88 m waist (the fit
-        # reaches 0.79 m): 422 as GET /api/fit answers, never 500; with no outfit too (the
-        # body alone was drawn empty), and as a GLB.
-        body = dict(sex="female", stature="1.68", bust="0.80", waist="0.88", hips="0.88")
+        # Each within its range, but no woman of a 0.76 m bust and 1.10 m hips has a 0.88 m
+        # waist (the fit reaches 0.874 m): 422 as GET /api/fit answers, never 500; with no
+        # outfit too (the body alone was drawn empty), and as a GLB.
+        body = dict(sex="female", stature="1.68", bust="0.76", waist="0.88", hips="1.10")
         for extra in (dict(outfit="pencil:M"), dict(outfit="none"), dict(outfit="tshirt:S", format="glb")):
             status, headers, answer = self.server.request(
                 "/api/render?" + urllib.parse.urlencode(dict(body, size="160x200", **extra)))

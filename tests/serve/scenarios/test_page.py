@@ -270,10 +270,13 @@ class PhonePage(Browser):
         browser = self.browser
         browser.get(self.server.url)
         self.wait_for_new_picture("")
-        self.type_measurements((("hips", "140"),))
+        hips = self.server.json("/api/catalogue")[1]["made"]["measurements"]["female"]["hips"]
+        over = round(hips["max"] * 100) + 10
+        self.type_measurements((("hips", str(over)),))
         error = browser.find_element(By.ID, "error")
         WebDriverWait(browser, WAIT).until(lambda b: error.text)
-        self.assertEqual(error.text, "Hips: 140 cm is outside what we can show (76 to 112 cm).")
+        self.assertEqual(error.text, "Hips: %d cm is outside what we can show (%d to %d cm)."
+                         % (over, round(hips["min"] * 100), round(hips["max"] * 100)))
         # Each within its range, but not one body together: MakeHuman's nearest, in cm.
         self.type_measurements((("bust", "76"), ("waist", "88"), ("hips", "110")))
         WebDriverWait(browser, WAIT).until(lambda b: error.text.startswith("Waist"))
