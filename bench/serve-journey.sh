@@ -36,11 +36,12 @@ summary() {
 
 for i in $(seq 1 "$shoppers"); do
   # A body between the chart's sizes, another each time: nothing of it is cached.
-  body="sex=female&stature=$(printf '1.%03d' $((640 + 7 * i)))&bust=0.$((86 + i))&waist=0.$((70 + i))&hips=0.$((94 + i))"
+  body="sex=female&stature=$(printf '1.%03d' $((640 + 7 * i)))&bust=0.$((86 + i))&waist=0.$((70 + i))&hips=$(printf '%d.%02d' $(((94 + 2 * i) / 100)) $(((94 + 2 * i) % 100)))"
   timed "$work/first" "api/render?${body}&outfit=dress:M&size=480x640"
   timed "$work/layers" "api/render?${body}&outfit=tshirt:M,skirt:M&size=480x640"
-  advice=$(curl -s -o "$work/advice.json" -w '%{time_total}' "${url}api/fit?${body}&style=dress")
-  echo "$advice" >>"$work/fit"
+  advice=$(curl -s -o "$work/advice.json" -w '%{time_total} %{http_code}' "${url}api/fit?${body}&style=dress")
+  [ "${advice#* }" = 200 ] || { echo "advice for ${body}: ${advice#* } $(cat "$work/advice.json")" >&2; exit 1; }
+  echo "${advice% *}" >>"$work/fit"
   timed "$work/fit-other" "api/fit?${body}&style=pencil"
   for size in $(python3 -c "import json; print(' '.join(json.load(open('$work/advice.json'))['sizes']))"); do
     timed "$work/advised" "api/render?${body}&outfit=dress:${size}&size=480x640"

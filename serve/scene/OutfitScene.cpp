@@ -257,7 +257,8 @@ void setMesh(ClothEngine* engine, const TriangleMesh& mesh) {
 
 // The body made once, with every field set: a HumanBody makes itself again on each field
 // changed, so setting five fields one by one made it five times (a second and more).
-HumanBody* measuredBody(const RenderRequest& request) {
+// Referenced once, for the caller.
+HumanBody* madeBodyNode(const RenderRequest& request) {
   auto* body = new HumanBody;
   body->ref();
   const std::pair<SoSFFloat*, double> quiet[] = {{&body->gender, request.sex == "male" ? 1.0 : 0.0},
@@ -278,7 +279,6 @@ HumanBody* measuredBody(const RenderRequest& request) {
     body->unref();
     throw OutfitScene::BodyNotMade("the measured body could not be made");
   }
-  body->unrefNoDelete();
   return body;
 }
 
@@ -299,8 +299,9 @@ Draped drawnSizeDrape(SoSeparator* root, const OutfitItem& item, const TriangleM
 // A made body and its graded garments (the class comment).
 void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request, const OutfitScene::Made& made,
                    std::vector<OutfitScene::FitMapGarment>* fitMaps, std::vector<DrapeReport>* drawn) {
-  HumanBody* body = measuredBody(request);
+  HumanBody* body = request.pose == "rest" && made.restBody ? made.restBody(request) : madeBodyNode(request);
   skin->addChild(body);
+  if (!(request.pose == "rest" && made.restBody)) body->unref();  // the scene holds it now
   const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {
@@ -324,6 +325,10 @@ void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& re
 }
 
 }  // namespace
+
+HumanBody* OutfitScene::makeBody(const RenderRequest& request) {
+  return madeBodyNode(request);
+}
 
 SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wardrobe, const Made& made,
                                 std::vector<FitMapGarment>* fitMaps, std::vector<DrapeReport>* drawn) {

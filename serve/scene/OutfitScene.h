@@ -21,6 +21,7 @@
 #include "sim/drape/GarmentDrape.h"
 
 class ClothEngine;
+class HumanBody;
 class MeshFile;
 class SoCoordinate3;
 class SoMaterial;
@@ -48,7 +49,13 @@ class OutfitScene {
   struct Made {
     GradedGarment graded;
     SizeDrape sizeDrape;  // null: every garment drapes in the scene
+    // The made body at rest, kept by the worker between scenes (made by makeBody); null:
+    // made for this scene.
+    std::function<HumanBody*(const RenderRequest& request)> restBody;
   };
+  // The made body of `request` (its measurements, sex and pose), referenced once for the
+  // caller. Throws BodyNotMade.
+  static HumanBody* makeBody(const RenderRequest& request);
 
   // A measured body MakeHuman did not make (measurements out of its reach, or its data
   // missing): the worker asks why (FitWorker::unreachable).

@@ -84,6 +84,13 @@ const TriangleMesh& FitWorker::madeBody(const BodyMeasures& body, Sex sex) {
   return bodies_.emplace(key, std::move(made)).first->second;
 }
 
+void FitWorker::keepBody(const BodyMeasures& body, Sex sex, TriangleMesh mesh) {
+  const std::string key = bodyText(body, sex);
+  if (bodies_.count(key)) return;
+  bound(bodies_, kBodiesKept);
+  bodies_.emplace(key, std::move(mesh));
+}
+
 std::string FitWorker::sizeDrapeKey(const BodyMeasures& body, Sex sex, const std::string& style, int size) {
   const TriangleMesh& mesh = madeBody(body, sex);
   const std::string_view vertices(reinterpret_cast<const char*>(mesh.vertices.data()),

@@ -58,6 +58,9 @@ class FitWorker {
   // float values, its goals' order, its default macros): the mesh a render of the made body
   // draws. Kept for the last few bodies. Throws UnreachableMeasurement, and as loadModel.
   const TriangleMesh& madeBody(const BodyMeasures& body, Sex sex);
+  // Keeps `mesh` as madeBody(body, sex): the collision surface of a HumanBody node at rest of
+  // those measurements, which is the same mesh (test_FitWorker), so it is not made twice.
+  void keepBody(const BodyMeasures& body, Sex sex, TriangleMesh mesh);
   // `style`'s garment of the chart's `size` draped cold on madeBody(body, sex) with the
   // advice's settings: from memory, else the drape cache, else draped and kept in both.
   // Its report says whether it came from a cache. Throws as garment() and madeBody().

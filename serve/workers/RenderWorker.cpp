@@ -8,6 +8,7 @@
 #include "io/DrapeCache.h"
 #include "io/GarmentCatalogue.h"
 #include "io/PngFile.h"
+#include "nodes/body/HumanBody.h"
 #include "serve/request/FitRequest.h"
 #include "serve/request/RenderRequest.h"
 #include "serve/scene/DrapeState.h"
@@ -80,6 +81,28 @@ RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& c
   if (fit_) fit_->useCache(session_.context().cache);  // the size drapes beside the engines' drapes
 }
 
+RenderWorker::~RenderWorker() {
+  session_.clear();
+  for (const auto& [key, body] : restBodies_) body->unref();
+}
+
+HumanBody* RenderWorker::restBody(const RenderRequest& request) {
+  char key[96];
+  std::snprintf(key, sizeof key, "%s %.3f %.3f %.3f %.3f", request.sex.c_str(), request.body.stature,
+                request.body.bust, request.body.waist, request.body.hips);
+  if (auto kept = restBodies_.find(key); kept != restBodies_.end()) return kept->second;
+  constexpr size_t kKept = 4;  // a worker serves a few shoppers at a time
+  if (restBodies_.size() >= kKept) {
+    for (const auto& [old, body] : restBodies_) body->unref();  // the held scene keeps its own
+    restBodies_.clear();
+  }
+  HumanBody* body = OutfitScene::makeBody(request);  // throws BodyNotMade
+  restBodies_.emplace(key, body);
+  // The same mesh the advice drapes on: given to the fit, so it is not made twice.
+  if (fit_) fit_->keepBody(request.body, request.sex == "male" ? Sex::Male : Sex::Female, body->collisionSurface());
+  return body;
+}
+
 void RenderWorker::serve(const FrameChannel& channel) {
   constexpr auto kNever = FrameChannel::Clock::time_point::max();
   std::string kindName, canonical;
@@ -129,6 +152,7 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
         made.sizeDrape = [this](const RenderRequest& shopper, const OutfitItem& item) {
           return fit_->sizeDrape(shopper.body, shopper.sex == "male" ? Sex::Male : Sex::Female, item.style, item.size);
         };
+        made.restBody = [this](const RenderRequest& shopper) { return restBody(shopper); };
       }
       session_.adopt(OutfitScene::build(request, wardrobe_, made, &fitMaps_, &drawn));
     } catch (const OutfitScene::BodyNotMade& error) {

@@ -7,6 +7,7 @@
 // or size of it renders without building or draping again. A fit (serve/request/FitRequest.h)
 // goes to the worker's FitWorker instead and answers JSON.
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ class RenderWorker {
   // given (entries kept `redisTtl` s unread); body and patterns from `scenesFolder`.
   RenderWorker(const std::string& scenesFolder, const std::string& cacheFolder, const std::string& redisUrl = "",
                long redisTtl = 0);
+  ~RenderWorker();
+  RenderWorker(const RenderWorker&) = delete;
+  RenderWorker& operator=(const RenderWorker&) = delete;
 
   // "" when the wardrobe read, else why not (the worker then exits).
   const std::string& startError() const { return startError_; }
@@ -60,6 +64,10 @@ class RenderWorker {
   std::unique_ptr<session::SceneRenderer> renderer_;
   std::unique_ptr<FitWorker> fit_;                   // null when the size chart did not read
   std::vector<OutfitScene::FitMapGarment> fitMaps_;  // the held scene's garments drawn as fit maps
+  // Made bodies at rest, by sex and measurements, referenced: the last few, so another
+  // size, style or view of a shopper's body does not make the body again (0.4 s).
+  std::map<std::string, HumanBody*> restBodies_;
+  HumanBody* restBody(const RenderRequest& request);
 };
 
 }  // namespace figment::serve

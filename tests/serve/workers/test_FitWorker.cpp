@@ -51,6 +51,10 @@ TEST_F(FitWorkerTest, TheMadeBodyIsTheMeshAHumanBodyNodeDraws) {
     largest = std::max(largest, (Vec3(p[0], p[1], p[2]) - made.vertices[i]).norm());
   }
   EXPECT_LT(largest, 1e-6);  // the same mesh, but for the node's float points
+  // To the bit where it collides: the worker keeps the node's surface as its made body
+  // (FitWorker::keepBody), and a size drape's key digests those vertices.
+  EXPECT_EQ(node->collisionSurface().vertices, made.vertices);
+  EXPECT_EQ(node->collisionSurface().triangles, made.triangles);
   node->unref();
   // The control: another body is another mesh.
   const TriangleMesh& other = worker.madeBody({1.702, 0.903, 0.741, 1.010}, Sex::Female);
