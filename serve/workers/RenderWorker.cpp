@@ -88,8 +88,8 @@ RenderWorker::~RenderWorker() {
 
 HumanBody* RenderWorker::restBody(const RenderRequest& request) {
   char key[96];
-  std::snprintf(key, sizeof key, "%s %.3f %.3f %.3f %.3f", request.sex.c_str(), request.body.stature,
-                request.body.bust, request.body.waist, request.body.hips);
+  std::snprintf(key, sizeof key, "%s %.3f %.3f %.3f %.3f", request.sex.c_str(), request.body.stature, request.body.bust,
+                request.body.waist, request.body.hips);
   if (auto kept = restBodies_.find(key); kept != restBodies_.end()) return kept->second;
   constexpr size_t kKept = 4;  // a worker serves a few shoppers at a time
   if (restBodies_.size() >= kKept) {

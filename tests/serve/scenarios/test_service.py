@@ -104,6 +104,44 @@ class Endpoints(ServerCase):
         self.assertEqual(green[1]["x-figment-cache"], "hit")
         self.assertNotEqual(red[1]["etag"], green[1]["etag"])
 
+    @needs_makehuman
+    def test_measurements_without_a_body_choice_draw_the_made_body(self):
+        # The made body follows the measurements: two women 10 cm apart in hip girth, all else
+        # the same, seen from the front with nothing on. Their silhouettes are as tall (the
+        # stature), and the torso at the hips is wider on the fuller body by about the
+        # girth's change over pi (a round section's diameter; a body's section is wider
+        # than deep, so up to 1.5 times that), in the pixels a metre takes in the picture.
+        def silhouette(hips):
+            status, headers, body = self.server.request(render_path(
+                stature="1.700", bust="0.900", waist="0.740", hips=hips, outfit="none", size="400x600"))
+            self.assertEqual(status, 200, body[:200])
+            _, _, rows = png_pixels(body)
+            background = rows[0][0]
+            drawn = [y for y, row in enumerate(rows) if any(p != background for p in row)]
+            top, bottom = drawn[0], drawn[-1]
+
+            def torso(y):  # the run of body pixels through the picture's middle column
+                row, middle = rows[y], len(rows[y]) // 2
+                left = right = middle
+                while left > 0 and row[left - 1] != background:
+                    left -= 1
+                while right < len(row) - 1 and row[right + 1] != background:
+                    right += 1
+                return right - left + 1 if row[middle] != background else 0
+
+            height = bottom - top + 1
+            # The hips lie about half way up a standing body: the widest torso there.
+            hips_width = max(torso(bottom - int(f * height)) for f in (0.46, 0.48, 0.50, 0.52, 0.54))
+            return height, hips_width
+
+        narrow, full = silhouette("0.960"), silhouette("1.060")
+        self.assertLessEqual(abs(narrow[0] - full[0]), 2, (narrow, full))  # the same stature
+        per_metre = narrow[0] / 1.70
+        widened = full[1] - narrow[1]
+        expected = 0.10 / 3.14159 * per_metre
+        self.assertGreater(widened, 0.8 * expected, (narrow, full, expected))
+        self.assertLess(widened, 1.6 * expected, (narrow, full, expected))
+
     def test_mannequins_at_the_ends_of_its_ranges_drape_and_say_how(self):
         # The tallest Mannequin once tangled the dress made for the default one (its
         # shoulders rose through the straps): the patterns now follow the stature. The
