@@ -316,10 +316,10 @@ void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& re
     }
     ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
     setMesh(engine, cut);
-    const SoMFInt32* drawn = nullptr;
+    const SoMFInt32* drawnIndex = nullptr;
     root->addChild(garment(
         item, coordinatesOf(engine), connectedTo(engine->coordIndex), fitMap, [engine] { return restMesh(*engine); },
-        &drawn));
+        &drawnIndex));
     beneath.push_back({following(engine), &engine->coordIndex});
   }
 }
@@ -363,11 +363,11 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     ClothEngine* engine = engineFor(style, !beneath.empty(), bodyUnder(model, beneath));
     restShape(engine, pattern, wardrobe.heightOrigin(), ShopperChoices::bodyFactors(request.body).height);
     engine->coordIndex.connectFrom(const_cast<SoMFInt32*>(&pattern->coordIndex));
-    const SoMFInt32* drawn = nullptr;
+    const SoMFInt32* drawnIndex = nullptr;
     root->addChild(garment(
         item, coordinatesOf(engine), connectedTo(pattern->coordIndex),
         {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}},  // cotton jersey
-        [engine] { return restMesh(*engine); }, &drawn));
+        [engine] { return restMesh(*engine); }, &drawnIndex));
     beneath.push_back({following(engine), &pattern->coordIndex});
   }
   return root;
