@@ -299,9 +299,10 @@ Draped drawnSizeDrape(SoSeparator* root, const OutfitItem& item, const TriangleM
 // A made body and its graded garments (the class comment).
 void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request, const OutfitScene::Made& made,
                    std::vector<OutfitScene::FitMapGarment>* fitMaps, std::vector<DrapeReport>* drawn) {
-  HumanBody* body = request.pose == "rest" && made.restBody ? made.restBody(request) : madeBodyNode(request);
+  const bool kept = request.pose == "rest" && made.restBody;  // the worker keeps it between scenes
+  HumanBody* body = kept ? made.restBody(request) : madeBodyNode(request);
   skin->addChild(body);
-  if (!(request.pose == "rest" && made.restBody)) body->unref();  // the scene holds it now
+  if (!kept) body->unref();  // the scene holds it now
   const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {

@@ -24,14 +24,6 @@ FitWorker::Answer failure(int status, const std::string& error) {
 // Kept in memory at most: a worker serves a few shoppers at a time.
 constexpr size_t kBodiesKept = 8, kDrapesKept = 48;
 
-// The measurements as a key: the sex and each to the mm, as the requests round them.
-std::string bodyText(const BodyMeasures& body, Sex sex) {
-  char text[96];
-  std::snprintf(text, sizeof text, "%s %.3f %.3f %.3f %.3f", sexName(sex), body.stature, body.bust, body.waist,
-                body.hips);
-  return text;
-}
-
 template <class T>
 void bound(std::map<std::string, T>& kept, size_t most) {
   if (kept.size() > most) kept.clear();  // a worker's working set is small: start again
@@ -68,7 +60,7 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
 
 const TriangleMesh& FitWorker::madeBody(const BodyMeasures& body, Sex sex) {
   if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
-  const std::string key = bodyText(body, sex);
+  const std::string key = bodyKey(body, sex);
   if (auto kept = bodies_.find(key); kept != bodies_.end()) return kept->second;
   // As HumanBody::load makes it: its float fields' values, its goals in its order, its
   // default macros (0.5, the gender 0 or 1), at rest.
@@ -85,10 +77,17 @@ const TriangleMesh& FitWorker::madeBody(const BodyMeasures& body, Sex sex) {
 }
 
 void FitWorker::keepBody(const BodyMeasures& body, Sex sex, TriangleMesh mesh) {
-  const std::string key = bodyText(body, sex);
+  const std::string key = bodyKey(body, sex);
   if (bodies_.count(key)) return;
   bound(bodies_, kBodiesKept);
   bodies_.emplace(key, std::move(mesh));
+}
+
+std::string FitWorker::bodyKey(const BodyMeasures& body, Sex sex) {
+  char text[96];  // to the mm, as the requests round them
+  std::snprintf(text, sizeof text, "%s %.3f %.3f %.3f %.3f", sexName(sex), body.stature, body.bust, body.waist,
+                body.hips);
+  return text;
 }
 
 std::string FitWorker::sizeDrapeKey(const BodyMeasures& body, Sex sex, const std::string& style, int size) {
@@ -99,7 +98,7 @@ std::string FitWorker::sizeDrapeKey(const BodyMeasures& body, Sex sex, const std
   char chart[128];
   std::snprintf(chart, sizeof chart, "%s %s %.4f %.4f %.4f %.4f", row.name.c_str(), row.number.c_str(), row.stature,
                 row.bust, row.waist, row.hip);
-  return "figment size drape 1\nbody " + bodyText(body, sex) + " " + Digest().add(vertices).hex() + "\nstyle " + style +
+  return "figment size drape 1\nbody " + bodyKey(body, sex) + " " + Digest().add(vertices).hex() + "\nstyle " + style +
          "\nsize " + chart + "\nbuild " + Digest::buildDigest() + "\n";
 }
 

@@ -58,6 +58,8 @@ class FitWorker {
   // float values, its goals' order, its default macros): the mesh a render of the made body
   // draws. Kept for the last few bodies. Throws UnreachableMeasurement, and as loadModel.
   const TriangleMesh& madeBody(const BodyMeasures& body, Sex sex);
+  // The text a made body is known by: the sex and each measurement to the mm.
+  static std::string bodyKey(const BodyMeasures& body, Sex sex);
   // Keeps `mesh` as madeBody(body, sex): the collision surface of a HumanBody node at rest of
   // those measurements, which is the same mesh (test_FitWorker), so it is not made twice.
   void keepBody(const BodyMeasures& body, Sex sex, TriangleMesh mesh);

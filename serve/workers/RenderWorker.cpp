@@ -87,9 +87,8 @@ RenderWorker::~RenderWorker() {
 }
 
 HumanBody* RenderWorker::restBody(const RenderRequest& request) {
-  char key[96];
-  std::snprintf(key, sizeof key, "%s %.3f %.3f %.3f %.3f", request.sex.c_str(), request.body.stature, request.body.bust,
-                request.body.waist, request.body.hips);
+  const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
+  const std::string key = FitWorker::bodyKey(request.body, sex);
   if (auto kept = restBodies_.find(key); kept != restBodies_.end()) return kept->second;
   constexpr size_t kKept = 4;  // a worker serves a few shoppers at a time
   if (restBodies_.size() >= kKept) {
@@ -99,7 +98,7 @@ HumanBody* RenderWorker::restBody(const RenderRequest& request) {
   HumanBody* body = OutfitScene::makeBody(request);  // throws BodyNotMade
   restBodies_.emplace(key, body);
   // The same mesh the advice drapes on: given to the fit, so it is not made twice.
-  if (fit_) fit_->keepBody(request.body, request.sex == "male" ? Sex::Male : Sex::Female, body->collisionSurface());
+  if (fit_) fit_->keepBody(request.body, sex, body->collisionSurface());
   return body;
 }
 
