@@ -102,7 +102,8 @@ def outfit_pattern(item):
 
 def by_body(sizes, styles):
     """Each body's rules, by parameter name."""
-    rules = {name: {} for name in ("stature", "bust", "chest", "waist", "hips", "pose", "outfit", "fitmap")}
+    rules = {name: {} for name in ("stature", "bust", "chest", "waist", "hips", "pose", "outfit", "fitmap",
+                                     "underwear")}
     for body in BODIES:
         ranges = MANNEQUIN if body == "mannequin" else made_ranges(sizes[body])
         for name in ("stature", "bust", "waist", "hips"):
@@ -112,6 +113,7 @@ def by_body(sizes, styles):
         rules["outfit"][body] = {"pattern": outfit_pattern(item_pattern(body, sizes, styles))}
         rules["fitmap"][body] = {"enum": ["stretch", "none"] if body == "mannequin" else
                                  ["stretch", "ease", "pressure", "none"]}
+        rules["underwear"][body] = {"enum": [] if body == "mannequin" else ["on", "off"]}  # made bodies only
     return rules
 
 
@@ -135,7 +137,8 @@ def write(document, sizes, styles):
     items = [item_pattern(body, sizes, styles) for body in BODIES]
     parameters["Outfit"]["schema"]["pattern"] = outfit_pattern(alternatives(items))
     for key, name in (("Stature", "stature"), ("Bust", "bust"), ("Chest", "chest"), ("Waist", "waist"),
-                      ("Hips", "hips"), ("Pose", "pose"), ("Outfit", "outfit"), ("Fitmap", "fitmap")):
+                      ("Hips", "hips"), ("Pose", "pose"), ("Outfit", "outfit"), ("Fitmap", "fitmap"),
+                      ("Underwear", "underwear")):
         parameters[key].pop("x-figment-by-sex", None)
         parameters[key]["x-figment-by-body"] = rules[name]
     fit_styles = [name for name, sold, sewn in styles if not sewn and any(sold.values())]

@@ -5,11 +5,16 @@
 #include <Inventor/errors/SoReadError.h>
 #include <Inventor/fields/SoField.h>
 #include <Inventor/misc/SoChildList.h>
+#include <Inventor/misc/SoNotification.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShapeHints.h>
 
 #include <algorithm>
 #include <initializer_list>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -17,10 +22,13 @@
 
 #include "io/MakeHumanLibrary.h"
 #include "io/MakeHumanRig.h"
+#include "nodes/MeshFields.h"
 #include "nodes/NodeSource.h"
+#include "sim/body/BaseLayer.h"
 #include "sim/body/MeasuredBody.h"
 #include "sim/body/PosePresets.h"
 #include "sim/body/RigSkin.h"
+#include "sim/body/SkinParts.h"
 #include "sim/collision/MovingMeshCollider.h"
 
 // The rest body and the pose it turns into, kept for the moving collider's shapes.
@@ -42,6 +50,14 @@ struct PoseMotion {
 struct HumanBody::Data {
   ~Data() {
     if (material) material->unref();
+    if (layerRoot) layerRoot->unref();
+  }
+  // MakeHuman's rig and the skin bound to it, read once.
+  void readRig() {
+    if (rig) return;
+    const figment::HumanModel& model = human.model();
+    rig = std::make_shared<const figment::HumanRig>(figment::readHumanRig(human.dir(), model.base().fileVertexCount));
+    skin = std::make_shared<const figment::RigSkin>(figment::bindSkin(*rig, model.base().fileIndex));
   }
   figment::MakeHumanLibrary human;               // this node's: the targets it blends, read once
   std::shared_ptr<const figment::HumanRig> rig;  // read on the first pose
@@ -49,6 +65,12 @@ struct HumanBody::Data {
   std::shared_ptr<const PoseMotion> motion;  // null: the rest pose
   mutable std::shared_ptr<const figment::MovingMeshCollider> moving;
   SoMaterial* material = nullptr;  // the skin tone's, in the hidden mesh when set
+  // The base layer: the skin's parts (of the base mesh, read with the rig), the layer cut
+  // for this body (once), and the separator that draws it, in the hidden mesh while
+  // baseLayer is UNDERWEAR.
+  std::vector<int> parts;
+  std::optional<figment::TriangleMesh> layer;
+  SoSeparator* layerRoot = nullptr;
 };
 
 FIGMENT_DERIVED_NODE_SOURCE(HumanBody, MeshFile)
@@ -76,6 +98,11 @@ HumanBody::HumanBody() : data_(std::make_unique<Data>()) {
   SO_NODE_ADD_FIELD(skinning, (DUAL_QUATERNION));
   SO_NODE_ADD_FIELD(poseTime, (0.0f));
   SO_NODE_ADD_FIELD(skinTone, (0));
+  SO_NODE_ADD_FIELD(baseLayer, (NONE));
+  SO_NODE_ADD_FIELD(baseLayerColor, (0.3f, 0.3f, 0.32f));
+  SO_NODE_DEFINE_ENUM_VALUE(BaseLayer, NONE);
+  SO_NODE_DEFINE_ENUM_VALUE(BaseLayer, UNDERWEAR);
+  SO_NODE_SET_SF_ENUM_TYPE(baseLayer, BaseLayer);
   SO_NODE_DEFINE_ENUM_VALUE(Pose, A_POSE);
   SO_NODE_DEFINE_ENUM_VALUE(Pose, ARMS_DOWN);
   SO_NODE_DEFINE_ENUM_VALUE(Pose, ARM_RAISED);
@@ -144,6 +171,7 @@ bool HumanBody::load(SoInput* in) {
     const std::vector<figment::MeasurementGoal> goals = goalsOf(*this);
     figment::HumanParameters parameters = parametersOf(*this);
     figment::TriangleMesh body;
+    data_->layer.reset();
     if (goals.empty()) {
       body = model.make(parameters);
     } else {
@@ -154,13 +182,16 @@ bool HumanBody::load(SoInput* in) {
     body = posed(parameters, std::move(body));
     setMesh(body, body);
     colourSkin();
+    dressBaseLayer();
     return true;
   } catch (const std::exception& e) {
     error = e.what();
   }
   data_->motion.reset();
   data_->moving.reset();
+  data_->layer.reset();
   clearMesh();
+  dressBaseLayer();
   const SbName name = getName();
   const std::string message =
       std::string("HumanBody") + (name.getLength() ? " '" + std::string(name.getString()) + "'" : "") + ": " + error;
@@ -197,12 +228,7 @@ figment::TriangleMesh HumanBody::posed(const figment::HumanParameters& parameter
   data_->motion.reset();
   data_->moving.reset();
   if (pose.getValue() == A_POSE && rotatedJoints.getNum() == 0 && rotations.getNum() == 0) return rest;
-  if (!data_->rig) {
-    const figment::HumanModel& model = data_->human.model();
-    data_->rig = std::make_shared<const figment::HumanRig>(
-        figment::readHumanRig(data_->human.dir(), model.base().fileVertexCount));
-    data_->skin = std::make_shared<const figment::RigSkin>(figment::bindSkin(*data_->rig, model.base().fileIndex));
-  }
+  data_->readRig();
   auto motion = std::make_shared<PoseMotion>();
   motion->rig = data_->rig;
   motion->skin = data_->skin;
@@ -253,4 +279,75 @@ std::shared_ptr<const figment::Collider> HumanBody::bodyCollider() const {
         motion->rest.triangles, [motion](double share) { return motion->shapeAt(share); }, motion->duration);
   }
   return data_->moving;
+}
+
+void HumanBody::notify(SoNotList* list) {
+  inherited::notify(list);
+  const SoField* field = list->getLastField();
+  if (field == &baseLayer || field == &baseLayerColor) dressBaseLayer();
+}
+
+figment::TriangleMesh HumanBody::baseLayerSurface() const {
+  if (baseLayer.getValue() == NONE || !data_->layer) return {};
+  return *data_->layer;
+}
+
+namespace {
+
+// The layer cut for `body` (the class comment): measured on the rest body, drawn posed.
+figment::TriangleMesh cutLayer(const figment::TriangleMesh& rest, const figment::TriangleMesh& posed,
+                               const std::vector<int>& parts, bool women) {
+  figment::BaseLayerShape shape;
+  shape.top = women;
+  const figment::BaseLayerBounds bounds =
+      figment::baseLayerBounds(rest, parts, figment::measureBody(rest).landmarks, shape);
+  return figment::cutBaseLayer(rest, posed, parts, bounds, shape);
+}
+
+SoSeparator* layerNodes(const figment::TriangleMesh& layer, const SbColor& colour) {
+  auto* root = new SoSeparator;
+  auto* material = new SoMaterial;
+  material->diffuseColor = colour;
+  material->specularColor = SbColor(0.15f, 0.15f, 0.15f);
+  material->shininess = 0.3f;
+  root->addChild(material);
+  auto* hints = new SoShapeHints;  // an open surface seen from outside, smooth across its triangles
+  hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+  hints->creaseAngle = 1.0f;
+  root->addChild(hints);
+  auto* coordinates = new SoCoordinate3;
+  auto* faces = new SoIndexedFaceSet;
+  figment::setMeshFields(layer, coordinates->point, faces->coordIndex);
+  root->addChild(coordinates);
+  root->addChild(faces);
+  return root;
+}
+
+}  // namespace
+
+// Draws the base layer in the hidden mesh (after the skin), or takes it out; cuts it once
+// per made body. A layer that cannot be cut is said, and not drawn.
+void HumanBody::dressBaseLayer() {
+  auto* root = static_cast<SoSeparator*>((*getChildren())[0]);
+  if (data_->layerRoot) {
+    if (root->findChild(data_->layerRoot) >= 0) root->removeChild(data_->layerRoot);
+    data_->layerRoot->unref();
+    data_->layerRoot = nullptr;
+  }
+  if (baseLayer.getValue() == NONE || point.getNum() == 0) return;
+  try {
+    if (!data_->layer) {
+      data_->readRig();
+      if (data_->parts.empty()) data_->parts = figment::skinTriangleParts(*data_->rig, data_->human.model().base());
+      data_->layer = cutLayer(restSurface(), collisionSurface(), data_->parts, gender.getValue() < 0.5f);
+    }
+  } catch (const std::exception& e) {
+    const SbName name = getName();
+    SoDebugError::post("HumanBody::baseLayer", "HumanBody%s: no base layer: %s",
+                       name.getLength() ? (" '" + std::string(name.getString()) + "'").c_str() : "", e.what());
+    return;
+  }
+  data_->layerRoot = layerNodes(*data_->layer, baseLayerColor.getValue());
+  data_->layerRoot->ref();
+  root->addChild(data_->layerRoot);
 }

@@ -5,6 +5,7 @@
 #include <Inventor/SbColor.h>
 #include <Inventor/fields/SoMFRotation.h>
 #include <Inventor/fields/SoMFString.h>
+#include <Inventor/fields/SoSFColor.h>
 #include <Inventor/fields/SoSFEnum.h>
 #include <Inventor/fields/SoSFFloat.h>
 #include <Inventor/fields/SoSFInt32.h>
@@ -45,6 +46,11 @@ struct HumanParameters;
   released by Google in 2022, skintone.google, CC BY 4.0): #f6ede4 #f3e7db #f7ead0 #eadaba #d7bd96
   #a07e56 #825c43 #604134 #3a312a #292420; 0 leaves the colour to the scene's Material.
 
+  `baseLayer UNDERWEAR` dresses the body in plain underwear of `baseLayerColor`: briefs, and
+  on a women's body (gender below 0.5) a band over the bust, cut from the skin and drawn
+  1.5 mm off it (sim/body/BaseLayer.h), inside the cloth's clearance, so garments drape over
+  it as over the skin. It is drawn, not a body: the collision surface stays the skin.
+
   The data is found as io/MakeHumanFiles.h says ($FIGMENT_MAKEHUMAN_DIR, a "makehuman" folder
   on $FIGMENT_MODEL_PATH, the build's data folder); each node reads the targets it blends
   once. A measurement set out of reach, a parameter out of range or missing data is a read
@@ -75,6 +81,8 @@ struct HumanParameters;
         skinning DUAL_QUATERNION
         poseTime 0
         skinTone 0
+        baseLayer NONE
+        baseLayerColor 0.3 0.3 0.32
     }
   \endcode
 
@@ -123,6 +131,14 @@ class HumanBody : public MeshFile {
   SoSFInt32 skinTone;
   // The scale's ten colours (sRGB, 0..1), tone 1 first.
   static SbColor monkSkinTone(int tone);
+  // Plain underwear drawn on the skin (the class comment), or none. Default NONE. Changing
+  // either field redraws the layer without making the body again.
+  enum BaseLayer { NONE, UNDERWEAR };
+  SoSFEnum baseLayer;
+  SoSFColor baseLayerColor;  // default a dark neutral grey, 0.3 0.3 0.32
+
+  // The base layer's surface as drawn (empty with baseLayer NONE or no body).
+  figment::TriangleMesh baseLayerSurface() const;
 
   // As a ClothEngine's body: the rest body moving into its pose (posed), else the
   // MeshFile's collider. Throws as MeshFile's.
@@ -136,10 +152,12 @@ class HumanBody : public MeshFile {
   ~HumanBody() override;
   bool load(SoInput* in) override;
   bool isLoadOption(const SoField* field) const override;
+  void notify(SoNotList* list) override;
 
  private:
   struct Data;
   std::unique_ptr<Data> data_;  // MakeHuman's targets, read on first use
   figment::TriangleMesh posed(const figment::HumanParameters& parameters, figment::TriangleMesh rest);
   void colourSkin();
+  void dressBaseLayer();
 };

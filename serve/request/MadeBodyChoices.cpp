@@ -116,7 +116,9 @@ nlohmann::json MadeBodyChoices::toJson(const GarmentCatalogue& catalogue) {
   }
   nlohmann::json poses = nlohmann::json::array();
   for (const MeasuredPose& pose : MeasuredPoses::all()) poses.push_back(pose.name);
-  return {{"styles", styles}, {"sizes", sizes}, {"measurements", measures}, {"poses", poses}};
+  // The base layer (RenderRequest::underwear): on unless the shopper turns it off.
+  const nlohmann::json underwear = {{"values", {"on", "off"}}, {"default", "on"}};
+  return {{"styles", styles}, {"sizes", sizes}, {"measurements", measures}, {"poses", poses}, {"underwear", underwear}};
 }
 
 }  // namespace figment::serve

@@ -18,8 +18,8 @@ namespace figment::serve {
 
 namespace {
 
-const char* const kNames[] = {"stature", "bust", "chest", "waist",  "hips", "skin", "pose",  "outfit",
-                              "light",   "view", "size",  "format", "body", "sex",  "fitmap"};
+const char* const kNames[] = {"stature", "bust", "chest", "waist",  "hips", "skin", "pose",   "outfit",
+                              "light",   "view", "size",  "format", "body", "sex",  "fitmap", "underwear"};
 
 ParameterError bad(const std::string& parameter, const std::string& value, const std::string& error,
                    const std::string& accepted) {
@@ -227,6 +227,17 @@ std::variant<std::map<std::string, std::string>, ParameterError> byName(const Qu
   return values;
 }
 
+// The made body's base layer (nodes/body/HumanBody.h), on unless turned off; the Mannequin
+// is drawn as scanned, with none.
+std::optional<ParameterError> underwear(const std::string& value, const BodyNames& names, bool& out) {
+  if (!names.catalogue)
+    return bad("underwear", value, "the Mannequin is drawn as scanned, without a base layer",
+               "no underwear with body=mannequin");
+  if (value != "on" && value != "off") return bad("underwear", value, "not on or off", "on (the default), off");
+  out = value == "on";
+  return std::nullopt;
+}
+
 std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::string, std::string>& values,
                                    const BodyNames& names) {
   std::optional<ParameterError> error;
@@ -258,6 +269,8 @@ std::optional<ParameterError> fill(RenderRequest& request, const std::map<std::s
     else if (name == "format")
       error = value == "png" || value == "glb" ? (request.format = value, std::nullopt)
                                                : std::optional(bad(name, value, "no such format", "png, glb"));
+    else if (name == "underwear")
+      error = underwear(value, names, request.underwear);
     if (error) return error;
   }
   return std::nullopt;
@@ -372,7 +385,7 @@ std::string RenderRequest::drapeKey() const {
 std::string RenderRequest::sceneKey() const {
   std::string text = formatted("stature=%.3f&bust=%.3f", body.stature, body.bust) +
                      formatted("&waist=%.3f&hips=%.3f", body.waist, body.hips) + bodyText() + "&skin=" + skin +
-                     "&pose=" + pose + "&outfit=";
+                     (underwear || mannequin() ? "" : "&underwear=off") + "&pose=" + pose + "&outfit=";
   for (size_t i = 0; i < outfit.size(); ++i)
     text += (i ? "," : "") + outfit[i].style + (outfit[i].size.empty() ? "" : ":" + outfit[i].size) + ":" +
             outfit[i].colour;

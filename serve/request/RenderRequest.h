@@ -63,7 +63,11 @@ class RenderRequest {
   BodyMeasures body;  // m
   std::string sex;    // female or male: a made HumanBody; "" for the scaled Mannequin
   std::string skin;   // rrggbb
-  std::string pose;   // a ShopperChoices pose
+  // A made body's plain underwear (nodes/body/HumanBody.h's base layer): on by default,
+  // `underwear=off` draws the body bare. Not drawn on the Mannequin. Shapes the scene, not
+  // the drape (the layer lies inside the cloth's clearance).
+  bool underwear = true;
+  std::string pose;  // a ShopperChoices pose
   std::vector<OutfitItem> outfit;
   std::string light;                  // a ShopperChoices light
   double azimuth = 0, elevation = 0;  // degrees

@@ -303,6 +303,8 @@ void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& re
   HumanBody* body = kept ? made.restBody(request) : madeBodyNode(request);
   skin->addChild(body);
   if (!kept) body->unref();  // the scene holds it now
+  const int layer = request.underwear ? HumanBody::UNDERWEAR : HumanBody::NONE;
+  if (body->baseLayer.getValue() != layer) body->baseLayer = layer;  // cut once a body, drawn or not
   const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {

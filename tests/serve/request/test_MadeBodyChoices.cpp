@@ -86,4 +86,6 @@ TEST(MadeBodyChoices, TheCatalogueListsEachStylesSizesPerSexFromTheCatalogue) {
                      MadeBodyChoices::defaultBody(sold(), sex).bust);
   }
   EXPECT_EQ(json["poses"].size(), 5u);
+  EXPECT_EQ(json["underwear"]["default"], "on");
+  EXPECT_EQ(json["underwear"]["values"], nlohmann::json({"on", "off"}));
 }

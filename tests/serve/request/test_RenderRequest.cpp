@@ -252,6 +252,28 @@ TEST(RenderRequest, AFitMapIsPartOfTheSceneButNotOfTheDrape) {
   for (const char* kind : {"ease", "pressure"}) EXPECT_EQ(ok({{"fitmap", kind}}).fitMap, kind);
 }
 
+TEST(RenderRequest, AMadeBodyWearsUnderwearUnlessItIsTurnedOff) {
+  const RenderRequest dressed = ok({{"outfit", "pencil:M"}});
+  EXPECT_TRUE(dressed.underwear);
+  EXPECT_EQ(dressed.canonical().find("underwear"), std::string::npos);  // the default: earlier tags unchanged
+  EXPECT_EQ(ok({{"outfit", "pencil:M"}, {"underwear", "on"}}).canonical(), dressed.canonical());
+  const RenderRequest bare = ok({{"outfit", "pencil:M"}, {"underwear", "off"}});
+  EXPECT_FALSE(bare.underwear);
+  EXPECT_EQ(bare.drapeKey(), dressed.drapeKey());  // inside the clearance: the same drape
+  EXPECT_NE(bare.sceneKey(), dressed.sceneKey());  // but another picture
+  EXPECT_NE(bare.canonical().find("&underwear=off"), std::string::npos);
+  auto again = RenderRequest::parseCanonical(bare.canonical(), catalogue());
+  ASSERT_TRUE(std::holds_alternative<RenderRequest>(again));
+  EXPECT_FALSE(std::get<RenderRequest>(again).underwear);
+  EXPECT_EQ(std::get<RenderRequest>(again).canonical(), bare.canonical());
+  const ParameterError bad = refused({{"underwear", "yes"}});
+  EXPECT_EQ(bad.parameter, "underwear");
+  EXPECT_EQ(bad.accepted, "on (the default), off");
+  const ParameterError scanned = refused(mannequin({{"underwear", "off"}}));
+  EXPECT_EQ(scanned.parameter, "underwear");
+  EXPECT_EQ(scanned.accepted, "no underwear with body=mannequin");
+}
+
 TEST(RenderRequest, ARefusalQuotesWholeCharacters) {
   // The answer is JSON: a value cut inside a character would not be UTF-8, its dump would
   // throw and the client get 500. "€" is 3 bytes: 22 of them cut at 64 bytes fall mid-character.

@@ -191,7 +191,7 @@ TEST(OpenApiContract, EnumerationsAreTheShopperChoicesLists) {
 }
 
 TEST(OpenApiContract, EachEnumeratedValueIsTakenAndNoOther) {
-  for (const std::string name : {"skin", "light", "pose", "fitmap", "format"})
+  for (const std::string name : {"skin", "light", "pose", "fitmap", "format", "underwear"})
     for (const std::string sex : kConditions) {
       const json& documented = render(name);
       const json& values = documented.contains("x-figment-by-body") ? documented["x-figment-by-body"][sex]["enum"]
