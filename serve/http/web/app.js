@@ -174,6 +174,7 @@ function bodyParameters(posed) {
   p.set("sex", sex());
   for (const m of measures) p.set(m, (Number(byId(m).value) / 100).toFixed(3));
   for (const k of posed ? ["skin", "pose", "light"] : ["skin", "light"]) p.set(k, byId(k).value);
+  if (!byId("underwear").checked) p.set("underwear", "off");  // on is the server's default
   return p;
 }
 
@@ -440,7 +441,7 @@ async function start() {
   byId("skin").value = "medium";
   catalogue.made.poses.forEach((p) => option(byId("pose"), p));
   catalogue.lights.forEach((l) => option(byId("light"), l));
-  for (const k of ["skin", "pose", "light"]) byId(k).addEventListener("change", schedule);
+  for (const k of ["skin", "pose", "light", "underwear"]) byId(k).addEventListener("change", schedule);
   for (let i = 0; i < catalogue.limits.garments; i++) {
     byId("garments").appendChild(garmentRow(i));
     fillGarment(i);

@@ -323,9 +323,20 @@ class PhonePage(Browser):
         browser.find_element(By.ID, "turn-right").click()
         turned = self.wait_for_new_picture(third)
         self.assertIn("view=30%2C5", turned)
-        self.assertPictureChanged(pixels)
+        pixels = self.assertPictureChanged(pixels)
         self.assertEqual(browser.find_element(By.ID, "error").text, "")
         self.shot("serve-page-turned.png")
+
+        # The base layer is on until the shopper unticks it (by its label, as a reader would):
+        # seen with nothing else worn.
+        Select(browser.find_element(By.ID, "style-1")).select_by_value("")
+        Select(browser.find_element(By.ID, "style-0")).select_by_value("")
+        dressed = self.wait_for_picture_naming(["outfit=none"])
+        self.assertNotIn("underwear", dressed)
+        pixels = self.picture_pixels()
+        browser.find_element(By.XPATH, "//label[contains(., 'Underwear')]").click()
+        self.wait_for_picture_naming(["outfit=none", "underwear=off"])
+        self.assertPictureChanged(pixels)
 
     def band_pixels(self):
         """(warm, blue): the shown picture's pixels in the fit map's red to yellow bands (no

@@ -142,6 +142,31 @@ class Endpoints(ServerCase):
         self.assertGreater(widened, 0.8 * expected, (narrow, full, expected))
         self.assertLess(widened, 1.6 * expected, (narrow, full, expected))
 
+    @needs_makehuman
+    def test_the_made_body_wears_underwear_unless_it_is_turned_off(self):
+        # The same body and skirt with the base layer and without (the control): the pixels
+        # that differ are the layer's, a dark neutral grey (little hue, low value) where the
+        # bare body shows its skin. The layer lies inside the cloth's clearance, so the
+        # second picture reuses the first one's drape.
+        def picture(query):
+            status, headers, body = self.server.request(render_path(outfit="pencil:M:c03030", size="300x400", **query))
+            self.assertEqual(status, 200, body[:200])
+            return headers, png_pixels(body)[2]
+
+        def grey(p):
+            return max(p) - min(p) <= 16 and max(p) < 140
+
+        dressed_headers, dressed = picture({})
+        bare_headers, bare = picture({"underwear": "off"})
+        changed = [(a, b) for row_a, row_b in zip(dressed, bare) for a, b in zip(row_a, row_b) if a != b]
+        layer = sum(1 for a, b in changed if grey(a) and not grey(b))
+        self.assertGreater(layer, 300)                         # the band over the bust, above the skirt
+        # Nothing else changed but the layer's outline, where its grey and the skin blend
+        # (each pixel is the mean of 3 x 3 samples): about a fifth of the changed pixels.
+        self.assertGreater(layer, 0.7 * len(changed), len(changed))
+        self.assertEqual(bare_headers["x-figment-cache"], "hit")  # the same drape
+        self.assertNotEqual(dressed_headers["etag"], bare_headers["etag"])
+
     def test_mannequins_at_the_ends_of_its_ranges_drape_and_say_how(self):
         # The tallest Mannequin once tangled the dress made for the default one (its
         # shoulders rose through the straps): the patterns now follow the stature. The
