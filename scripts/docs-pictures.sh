@@ -39,5 +39,6 @@ second-body.iv second-body.png --size 360x560
 tshirt.iv tshirt.png --size 360x420 --view 30,10
 human-posed-arm.iv human-posed-arm.png --size 480x640 --view 25,10
 human-posed-sitting.iv human-posed-sitting.png --size 480x480 --view 40,10
+human-underwear.iv human-underwear.png --size 560x480
 LIST
 scripts/six-bodies.sh "${1:-build}" "$out"
