@@ -69,8 +69,8 @@ bool eachField(Io& io, Report& r) {
          io.template number<std::int32_t>(r.level) && io.template number<std::int32_t>(r.levels) &&
          io.template number<std::int32_t>(r.sections) && io.template number<double>(r.settling.arrival) &&
          io.template number<double>(r.settling.meanMove) && io.template number<double>(r.settling.maxMove) &&
-         io.flag(r.warm) && io.flag(r.fromCache) && io.template number<double>(r.wallSeconds) &&
-         io.text(r.garmentWarning) && io.text(r.verdict);
+         io.template number<std::int32_t>(r.startedOverLayers) && io.flag(r.warm) && io.flag(r.fromCache) &&
+         io.template number<double>(r.wallSeconds) && io.text(r.garmentWarning) && io.text(r.verdict);
 }
 
 struct FieldWriter {

@@ -20,8 +20,9 @@ namespace figment {
 // Raised whenever a field is added, removed or changes its type or order. 1 was the
 // struct's bytes as they lay in memory, before records had a version; 4 the last
 // figment::DrapeReport; 5 the first DrapeReport (its method as enumerations, its body);
-// 6 the whole drape in one record (the positions and sections after the report).
-constexpr std::uint32_t kDrapeRecordVersion = 6;
+// 6 the whole drape in one record (the positions and sections after the report); 7 the
+// nodes started over the layers beneath (DrapeReport::startedOverLayers).
+constexpr std::uint32_t kDrapeRecordVersion = 7;
 
 std::vector<unsigned char> writeDrapeRecord(const GarmentDrape& drape);
 

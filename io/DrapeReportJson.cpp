@@ -58,6 +58,8 @@ std::string drapeReportJson(const DrapeReport& report) {
     out["picked"] = {{"configuration", report.picked},
                      {"measured_worst_mean_dev_pct_height", report.pickedDeviation},
                      {"passed_over", report.passedOver}};
+  // Put on over garments already draped: how many nodes started over them (sim/drape/LayerStart.h).
+  if (report.startedOverLayers > 0) out["started_over_layers"] = report.startedOverLayers;
   // A progressive drape (paper §4): the level it reached, of how many, and its sections;
   // when the end level arrived and how far the garment moved after it (m).
   if (report.levels > 0)

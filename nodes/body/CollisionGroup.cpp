@@ -23,6 +23,14 @@ std::string CollisionGroup::label() const {
 }
 
 std::shared_ptr<const figment::Collider> CollisionGroup::bodyCollider() const {
+  return collider(true);
+}
+
+std::shared_ptr<const figment::Collider> CollisionGroup::layersCollider() const {
+  return collider(false);
+}
+
+std::shared_ptr<const figment::Collider> CollisionGroup::collider(bool withBody) const {
   // Built on each call: a member's collider is kept by the member itself, and a
   // GarmentSurface's changes whenever its garment drapes again.
   auto group = std::make_shared<figment::CompositeCollider>();
@@ -39,9 +47,10 @@ std::shared_ptr<const figment::Collider> CollisionGroup::bodyCollider() const {
       throw std::invalid_argument(entry + ": " + e.what());
     }
   };
-  if (body.getValue()) add(body.getValue(), "body");
+  if (withBody && body.getValue()) add(body.getValue(), "body");
   for (int i = 0; i < layers.getNum(); ++i)
     if (layers[i]) add(layers[i], "layers[" + std::to_string(i) + "]");
+  if (!withBody) return group->parts().empty() ? nullptr : group;
   if (group->parts().empty()) throw std::invalid_argument(label() + ": body and layers are empty");
   return group;
 }

@@ -40,10 +40,17 @@ class CollisionGroup : public SoNode, public figment::CollisionBody {
   // Throws std::invalid_argument naming this node, the field (layers[i]) and what is
   // wrong (not a collision body; its own error; nothing at all).
   std::shared_ptr<const figment::Collider> bodyCollider() const override;
+  // The layers alone (the garments beneath, without `body`), which a garment put on over
+  // them starts clean over (sim/drape/LayerStart.h); null when there are none. Throws as
+  // bodyCollider().
+  std::shared_ptr<const figment::Collider> layersCollider() const;
   // "group" with the number of "bodies" (body and layers).
   Description describeBody() const override;
   std::string label() const;  // "CollisionGroup 'Name'" or "CollisionGroup"
 
  protected:
   ~CollisionGroup() override;
+
+ private:
+  std::shared_ptr<const figment::Collider> collider(bool withBody) const;
 };

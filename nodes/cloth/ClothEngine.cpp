@@ -178,7 +178,9 @@ figment::GarmentDrape ClothEngine::Impl::simulate(const ClothEngine& engine) {
   figment::DrapePlan plan = figment::planDrape(std::move(ask));
   // Before any step: a garment in another unit or on its side is an error, one partly
   // inside the body or wound clockwise a warning in the verdict's line.
-  plan.report.garmentWarning = figment::garmentStartWarning(engine, plan.request.garment, plan.request.body.get());
+  figment::TriangleMesh started = plan.request.garment;  // where it starts: over the layers beneath, if any
+  if (plan.request.start) started.vertices = *plan.request.start;
+  plan.report.garmentWarning = figment::garmentStartWarning(engine, started, plan.request.body.get());
   const double maxTime = plan.request.parameters.maxTime;
   figment::DrapeObservers observers;
   if (context.stepObserver)

@@ -8,6 +8,7 @@
 #include "io/TradeoffTable.h"
 #include "nodes/SceneFiles.h"
 #include "nodes/body/CollisionBody.h"
+#include "nodes/body/CollisionGroup.h"
 #include "nodes/body/Mannequin.h"
 #include "nodes/cloth/ClothEngine.h"
 #include "nodes/cloth/ClothEngineInputs.h"
@@ -76,6 +77,8 @@ DrapeBody drapeBodyFromField(const SoSFNode& field) {
   SoNode* node = field.getValue();
   body.description = describe(node);
   if (node && node->isOfType(Mannequin::getClassTypeId())) offerMannequinsBodies(*static_cast<Mannequin*>(node), body);
+  if (node && node->isOfType(CollisionGroup::getClassTypeId()))
+    body.beneath = static_cast<const CollisionGroup*>(node)->layersCollider();  // the garments under this one
   return body;
 }
 

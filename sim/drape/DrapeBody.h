@@ -27,6 +27,9 @@ struct BodyDescription {
 struct DrapeBody {
   std::shared_ptr<const Collider> collider;  // null: nothing to collide with
   BodyDescription description;
+  // The garments already draped under this one, also in `collider` (a CollisionGroup's
+  // layers): a whole-garment drape starts over them (sim/drape/LayerStart.h). Null: none.
+  std::shared_ptr<const Collider> beneath;
 
   // A jointed body's alternatives; `jointed` false: the body is only what `collider` is.
   bool jointed = false;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "sim/core/ParameterChecks.h"
+#include "sim/drape/LayerStart.h"
 #include "sim/drape/MethodChoice.h"
 #include "sim/progressive/Decimation.h"
 
@@ -60,6 +61,13 @@ DrapePlan planDrape(DrapeAsk ask) {
   plan.report.maxTime = p.maxTime;
   plan.report.triangles = static_cast<int>(plan.request.garment.triangles.size());
   if (plan.request.body && plan.request.body->moves()) plan.request.body->advanceTo(0.0);
+  // Over garments already draped a whole-garment drape starts clean over them; a progressive
+  // drape starts from its coarse level, a sewn one from its placed panels.
+  if (ask.body.beneath && !plan.request.progressive && !plan.request.sewing) {
+    LayerStart start = startOverLayers(plan.request.garment, *ask.body.beneath, p.clearance);
+    plan.report.startedOverLayers = start.moved;
+    if (start.moved > 0) plan.request.start = std::move(start.positions);
+  }
   return plan;
 }
 

@@ -37,6 +37,9 @@ struct DrapeReport {
   int level = 0, levels = 0, sections = 0;
   EndLevelSettling settling;
 
+  // Nodes moved out over the layers beneath before the first step (sim/drape/LayerStart.h):
+  // the garment started over the garments under it, not where it was cut. 0: none.
+  int startedOverLayers = 0;
   // It started from an earlier drape's shape (another size's, sim/fit/SizeFitter.h), not
   // from the garment's rest shape.
   bool warm = false;

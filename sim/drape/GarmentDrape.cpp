@@ -10,7 +10,9 @@ namespace figment {
 namespace {
 
 GarmentDrape drapeWhole(const DrapeRequest& request) {
-  ClothSolver solver(request.garment, request.parameters, request.body);
+  ClothSolver solver = request.start
+                           ? ClothSolver(*request.start, RestShape(request.garment), request.parameters, request.body)
+                           : ClothSolver(request.garment, request.parameters, request.body);
   if (request.bodyClock)
     solver.setStepObserver([&request](const ClothSolver& s) {
       request.bodyClock(s.time());

@@ -42,7 +42,10 @@ struct SewingOutcome {
 };
 
 struct DrapeRequest {
-  TriangleMesh garment{};  // its rest shape, which is also where the drape starts (unless sewn)
+  TriangleMesh garment{};  // its rest shape, which is also where the drape starts (unless sewn or `start`)
+  // Set: where a whole-garment drape starts, one position per node (over the layers
+  // beneath: sim/drape/LayerStart.h); the garment stays its rest shape.
+  std::optional<std::vector<Vec3>> start{};
   ClothParameters parameters{};
   std::shared_ptr<const Collider> body{};
   // Set: the garment is draped level by level from this mesh (paper §4), by `schedule`.

@@ -45,6 +45,7 @@ DrapeReport everyFieldSet() {
   s.levels = 3000;
   s.sections = 2884;
   s.settling = {1.875, 1e-4, 2e-3};
+  s.startedOverLayers = 313;
   s.warm = true;
   s.fromCache = true;
   s.wallSeconds = std::nextafter(16.9, 17.0);
@@ -64,6 +65,7 @@ void expectSame(const DrapeReport& a, const DrapeReport& b) {
   EXPECT_EQ(a.body.kind, b.body.kind);
   EXPECT_EQ(a.body.counts, b.body.counts);
   EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.startedOverLayers, b.startedOverLayers);
   EXPECT_EQ(a.run.iterations, b.run.iterations);
   EXPECT_EQ(a.run.simulatedTime, b.run.simulatedTime);
   EXPECT_EQ(a.run.wallSeconds, b.run.wallSeconds);

@@ -42,8 +42,15 @@ TEST(DrapeReportJson, WritesTheRunMethodAndBody) {
   EXPECT_EQ(json["method"]["acceleration_limit_g"], 0.0);
   EXPECT_EQ(json["body"]["kind"], "mannequin");
   EXPECT_EQ(json["body"]["capsules"], 12);
-  EXPECT_FALSE(json.contains("progressive"));  // no progressive script
-  EXPECT_FALSE(json.contains("picked"));       // no tolerance
+  EXPECT_FALSE(json.contains("progressive"));          // no progressive script
+  EXPECT_FALSE(json.contains("picked"));               // no tolerance
+  EXPECT_FALSE(json.contains("started_over_layers"));  // nothing beneath
+}
+
+TEST(DrapeReportJson, AGarmentPutOnOverAnotherSaysHowManyNodesStartedOverIt) {
+  DrapeReport report = dressReport();
+  report.startedOverLayers = 313;
+  EXPECT_EQ(nlohmann::json::parse(drapeReportJson(report))["started_over_layers"], 313);
 }
 
 TEST(DrapeReportJson, AVerdictIsNotClean) {

@@ -93,6 +93,10 @@ TEST(LayeredGarments, TheDressOverTheTShirtRestsOutsideItAndTheBody) {
   const DrapedOutfit outfit("outfit-layers.iv", "DressDrape");
   outfit.expectRestingInLayers();
   ASSERT_TRUE(outfit.volumes);
+  // It started clean over the T-shirt (cut round the body alone, a quarter of its nodes lay
+  // under the shirt's drape): moved out over it before the first step, and no warning.
+  EXPECT_GT(outfit.outer->lastRun().startedOverLayers, int(outfit.outerAtRest.size()) / 10);
+  EXPECT_EQ(outfit.outer->lastRun().garmentWarning, "");
   // And the T-shirt held the dress out: over the chest the dress lies farther from the
   // body than the dress alone does (its 6 mm clearance) by about the shirt's standing off.
   int lifted = 0;
