@@ -241,11 +241,13 @@ TEST(ImplicitEuler, AStepThatFailsAtTheSmallestStepIsKeptAndCounted) {
 
 // A step's solve warm-started from the last step's velocity change
 // (ImplicitSolverParameters::warmStart): stepped side by side from the same states, a
-// swinging strip's steps take fewer PCG iterations than from zero and end where the cold
-// steps end, to the solves' accuracy.
-TEST(ImplicitEuler, AWarmStartedStepTakesFewerIterationsToTheSameStep) {
+// swinging strip's warm steps end where the cold steps end, to the solves' accuracy, and
+// the option is what the solves start from (not the same iterations). That it saves few
+// iterations in a drape is measured in docs/results.md (issue 42), not claimed here.
+TEST(ImplicitEuler, AWarmStartedStepEndsWhereTheColdStepEnds) {
   ClothParameters p = implicitDrape(0.01);
   p.implicitSolver.tolerance = 1e-6;  // tight, so that two answers are the same answer
+  p.implicitSolver.warmStart = true;
   ClothParameters cold = p;
   cold.implicitSolver.warmStart = false;
   const TriangleMesh strip = meshes::grid(2, 20, 0.05, 0.5);
@@ -264,9 +266,11 @@ TEST(ImplicitEuler, AWarmStartedStepTakesFewerIterationsToTheSameStep) {
     for (size_t i = 0; i < v.size(); ++i)
       worst = std::max(worst, (v[i] - vCold[i]).norm()), largest = std::max(largest, (vCold[i] - vStart[i]).norm());
   }
-  EXPECT_LT(warmSteps.costs().solverIterations, 0.8 * coldSteps.costs().solverIterations)
-      << coldSteps.costs().solverIterations << " from zero";
+  ASSERT_GT(largest, 0.0);
   // Both solves stop at 1e-6 of the right-hand side's preconditioned norm: their
   // velocity changes differ by a small multiple of that (the condition number's root).
   EXPECT_LT(worst, 1e-3 * largest);
+  EXPECT_NE(warmSteps.costs().solverIterations, coldSteps.costs().solverIterations);
+  RecordProperty("PCG iterations warm", static_cast<int>(warmSteps.costs().solverIterations));
+  RecordProperty("PCG iterations cold", static_cast<int>(coldSteps.costs().solverIterations));
 }
