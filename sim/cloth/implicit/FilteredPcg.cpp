@@ -35,7 +35,7 @@ FilteredPcg::FilteredPcg(FilteredPcg&&) noexcept = default;
 FilteredPcg& FilteredPcg::operator=(FilteredPcg&&) noexcept = default;
 
 void FilteredPcg::prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                          std::vector<Vec3>& y, bool again) {
+                          std::vector<Vec3>& y, PcgStart start, CoarseMatrix coarse) {
   const int n = A.rows();
   inverseDiagonal_.resize(n);
   r_.resize(n), c_.resize(n), q_.resize(n), s_.resize(n);
@@ -43,17 +43,20 @@ void FilteredPcg::prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b
     const Block3& D = A.diagonal(i);
     inverseDiagonal_[i] = D.determinant() > 0.0 ? Block3(D.inverse()) : Block3(Block3::Zero());
   }
-  if (again && y.size() == static_cast<size_t>(n)) {
-    for (int i = 0; i < n; ++i) y[i] = filter.prescribed[i] + filter.apply(i, y[i]);
+  const bool fromY = y.size() == static_cast<size_t>(n);
+  if (start == PcgStart::Guess && fromY) {
+    startFromGuess(A, b, filter, y);
   } else {
-    y = filter.prescribed;
+    if (start == PcgStart::Again && fromY) {
+      for (int i = 0; i < n; ++i) y[i] = filter.prescribed[i] + filter.apply(i, y[i]);
+    } else {
+      y = filter.prescribed;
+    }
+    A.multiply(y, q_);
+    for (int i = 0; i < n; ++i) r_[i] = filter.apply(i, b[i] - q_[i]);
   }
-  A.multiply(y, q_);
-  for (int i = 0; i < n; ++i) {
-    r_[i] = filter.apply(i, b[i] - q_[i]);
-    s_[i] = filter.apply(i, b[i]);
-  }
-  if (coarse_ && !again) coarse_->prepare(A, filter);
+  for (int i = 0; i < n; ++i) s_[i] = filter.apply(i, b[i]);
+  if (coarse_ && (coarse == CoarseMatrix::Build || !coarseBuilt_)) coarse_->prepare(A, filter), coarseBuilt_ = true;
   // (S b)^T P^-1 (S b), then c = P^-1 r and r^T P^-1 r.
   applyCoarse(s_);
   bScaled_ = 0.0;
@@ -66,6 +69,28 @@ void FilteredPcg::prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b
   }
 }
 
+void FilteredPcg::startFromGuess(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
+                                 std::vector<Vec3>& y) {
+  const int n = A.rows();
+  // g = S y in c_, its product A g in s_; z in y, the residual S (b - A z) in r_.
+  for (int i = 0; i < n; ++i) c_[i] = filter.apply(i, y[i]);
+  A.multiply(c_, s_);
+  y = filter.prescribed;
+  A.multiply(y, q_);
+  double along = 0.0, energy = 0.0;  // g^T S (b - A z) and g^T A g
+  for (int i = 0; i < n; ++i) {
+    r_[i] = filter.apply(i, b[i] - q_[i]);
+    along += c_[i].dot(r_[i]);
+    energy += c_[i].dot(s_[i]);
+  }
+  const double alpha = energy > 0.0 ? along / energy : 0.0;
+  if (alpha == 0.0) return;
+  for (int i = 0; i < n; ++i) {
+    y[i] += alpha * c_[i];
+    r_[i] -= alpha * filter.apply(i, s_[i]);
+  }
+}
+
 void FilteredPcg::applyCoarse(const std::vector<Vec3>& r) {
   if (!coarse_) return;
   const int m = coarse_->aggregates();
@@ -75,8 +100,8 @@ void FilteredPcg::applyCoarse(const std::vector<Vec3>& r) {
 }
 
 PcgReport FilteredPcg::solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
-                             const PcgStop& stop, std::vector<Vec3>& y, bool again) {
-  prepare(A, b, filter, y, again);
+                             const PcgStop& stop, std::vector<Vec3>& y, PcgStart start, CoarseMatrix coarse) {
+  prepare(A, b, filter, y, start, coarse);
   const int n = A.rows();
   const int chunks = (n + kChunk - 1) / kChunk;
   curvaturePartial_.assign(chunks, 0.0);

@@ -34,6 +34,28 @@ struct PcgReport {
   bool converged = false;
 };
 
+// Where a solve's iterations start (its prescribed part is always the filter's).
+enum class PcgStart {
+  Zero,   // the free part zero
+  Again,  // y's free part: y holds the answer of this matrix's last solve, the filter
+          // changed since at a few nodes
+  // y's free part g = S y scaled by alpha = g^T S (b - A z) / g^T A g, the factor that
+  // leaves the least error energy along g: y holds a guess from a nearby system (the
+  // last step's velocity change), and the start is never worse than Zero's in the
+  // A-norm, however poor the guess.
+  Guess,
+};
+
+// The coarse matrix a two-level solve applies.
+enum class CoarseMatrix {
+  Build,  // built from this A and filter, and factored
+  // The last one built (Build when there is none): any positive definite coarse matrix
+  // keeps the preconditioner symmetric positive definite on the free directions, so a
+  // solve still converges to the same stop, in more iterations the farther A or the
+  // filter moved on since (a friction re-solve of the same A keeps it).
+  Keep,
+};
+
 class FilteredPcg {
  public:
   // Block Jacobi alone.
@@ -45,18 +67,20 @@ class FilteredPcg {
   FilteredPcg(FilteredPcg&&) noexcept;
   FilteredPcg& operator=(FilteredPcg&&) noexcept;
 
-  // Solves for y (resized). The iterations start from the prescribed part, plus y's
-  // free part when `again`: a second solve of the same matrix after the filter changed
-  // at a few nodes, y holding the last answer. Then the coarse matrix of the last solve
-  // is kept too (any positive definite one keeps the preconditioner so).
+  // Solves for y (resized), starting as `start` says from the prescribed part and y.
+  // The stop is relative to S b, whatever the start: a warm start saves iterations, it
+  // does not loosen the answer.
   PcgReport solve(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter, const PcgStop& stop,
-                  std::vector<Vec3>& y, bool again = false);
+                  std::vector<Vec3>& y, PcgStart start = PcgStart::Zero, CoarseMatrix coarse = CoarseMatrix::Build);
 
  private:
   // The preconditioner, the starting point y, residual r and direction c, and the sums
   // the loop starts from.
   void prepare(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter, std::vector<Vec3>& y,
-               bool again);
+               PcgStart start, CoarseMatrix coarse);
+  // y = z + alpha S y (PcgStart::Guess); r_ = S (b - A y).
+  void startFromGuess(const BlockSparseMatrix& A, const std::vector<Vec3>& b, const NodeFilter& filter,
+                      std::vector<Vec3>& y);
   // Node i of P^-1 r, after applyCoarse(r) (two levels: its coarse part).
   Vec3 precondition(const NodeFilter& filter, int i, const Vec3& r) const {
     const Vec3 jacobi = filter.apply(i, inverseDiagonal_[i] * filter.apply(i, r));
@@ -70,6 +94,7 @@ class FilteredPcg {
   double delta_ = 0.0, bScaled_ = 0.0;  // r^T P^-1 r and (S b)^T P^-1 (S b) at the start
   std::vector<double> curvaturePartial_, deltaPartial_;
   std::unique_ptr<CoarseCorrection> coarse_;
+  bool coarseBuilt_ = false;
   std::vector<Vec3> coarseResidual_, coarseCorrection_;  // per aggregate
 };
 

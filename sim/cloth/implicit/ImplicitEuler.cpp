@@ -31,6 +31,14 @@ void ImplicitEuler::fixNodes(const std::vector<char>& pinned, double dt) {
   }
 }
 
+PcgStart ImplicitEuler::start(int solve) const {
+  // A solve after the first starts from the last one's answer (the same matrix, a few
+  // nodes' contacts changed); a step's first from the last step's velocity change,
+  // which change_ still holds, scaled along itself (PcgStart::Guess).
+  if (solve > 0) return PcgStart::Again;
+  return parameters_.implicitSolver.warmStart ? PcgStart::Guess : PcgStart::Zero;
+}
+
 void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
   const size_t n = v.size();
   const std::vector<Vec3>& friction = contacts_.friction();
@@ -39,8 +47,8 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
   for (size_t i = 0; i < n; ++i) total += rhs_[i].norm();
   for (int solve = 0;; ++solve) {
     for (size_t i = 0; i < n; ++i) b_[i] = rhs_[i] + friction[i];
-    // A solve after the first starts from the last one's answer.
-    lastSolve_ = pcg_.solve(system_.matrix, b_, filter_, stop_, change_, solve > 0);
+    lastSolve_ = pcg_.solve(system_.matrix, b_, filter_, stop_, change_, start(solve),
+                            solve > 0 ? CoarseMatrix::Keep : CoarseMatrix::Build);
     costs_.solverIterations += lastSolve_.iterations;
     costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
     // The constraints' impulses: what the solve added beyond the forces and the friction.
@@ -53,7 +61,8 @@ void ImplicitEuler::solveWithFriction(const std::vector<Vec3>& v) {
 
 void ImplicitEuler::solveWithPenalties(const std::vector<Vec3>& v, double dt) {
   for (int solve = 0;; ++solve) {
-    lastSolve_ = pcg_.solve(system_.matrix, rhs_, filter_, stop_, change_, solve > 0);
+    lastSolve_ = pcg_.solve(system_.matrix, rhs_, filter_, stop_, change_, start(solve),
+                            solve > 0 ? CoarseMatrix::Keep : CoarseMatrix::Build);
     costs_.solverIterations += lastSolve_.iterations;
     costs_.unconvergedSolves += lastSolve_.converged ? 0 : 1;
     if (solve + 1 >= kMaxSolves || !penalties_->update(v, change_, dt, system_.matrix, rhs_)) break;

@@ -10,9 +10,11 @@
 // as constraints with Coulomb friction in the right-hand side (ContactConstraints.h) or
 // as penalty springs and friction forces in the system (ContactPenalty.h); when
 // contacts switch between sticking and sliding the same system is solved again (up to
-// kMaxSolves times, warm-started). One Newton step of the implicit equations: stable
-// for any step (the matrix is positive definite: K projected, C >= 0), first order in
-// time, and at rest it leaves exactly the explicit model's equilibrium f = 0.
+// kMaxSolves times, warm-started); a step's first solve may start from the last step's
+// velocity change (ImplicitSolverParameters::warmStart, off by default). One Newton step
+// of the implicit equations: stable for any step (the matrix is positive definite: K
+// projected, C >= 0), first order in time, and at rest it leaves exactly the explicit
+// model's equilibrium f = 0.
 //
 // Step control (Baraff & Witkin 1998, §5: a step that changes a triangle's stretch too
 // much is rejected and taken again at half the size): one linearisation is all a step
@@ -78,6 +80,8 @@ class ImplicitEuler {
   // One step of dt as it is linearised, uncontrolled.
   void advance(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, double dt, const std::vector<char>& pinned);
 
+  // Where the step's `solve`th solve (from 0) starts.
+  PcgStart start(int solve) const;
   static constexpr int kMaxSolves = 3;
   static constexpr double kResolveShare = 0.03;
 

@@ -114,3 +114,92 @@ TEST(FilteredPcg, TheCoarseCorrectionGivesTheSameAnswerInFewerIterations) {
   EXPECT_LT(worst, 1e-6 * scale);
   EXPECT_LT(twoLevel.iterations, 0.6 * jacobi.iterations) << jacobi.iterations << " block Jacobi";
 }
+
+namespace {
+// The problem's right-hand side moved a little: b' = 1.05 b plus 1e-4 of noise (the
+// scale alone the guess's factor takes up exactly).
+std::vector<Vec3> nearby(const std::vector<Vec3>& b) {
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<Vec3> moved(b.size());
+  for (size_t i = 0; i < b.size(); ++i)
+    moved[i] = 1.05 * b[i] + 1e-4 * Vec3(uniform(random), uniform(random), uniform(random));
+  return moved;
+}
+
+// The largest difference between two answers, as a share of a's largest node.
+double relativeDifference(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  double worst = 0.0, scale = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+    scale = std::max(scale, a[i].norm()), worst = std::max(worst, (a[i] - b[i]).norm());
+  return worst / scale;
+}
+}  // namespace
+
+// A step's solve warm-started from the last step's answer (PcgStart::Guess): the same
+// answer to the stop's accuracy, in fewer iterations than from zero. Its constrained
+// part is the prescribed one, whatever the guess held there.
+TEST(FilteredPcg, AGuessFromANearbySystemReachesTheSameAnswerInFewerIterations) {
+  Problem p = problem();
+  const PcgStop stop{1e-6, 5000};
+  FilteredPcg pcg(p.A);
+  std::vector<Vec3> last;
+  ASSERT_TRUE(pcg.solve(p.A, p.b, p.filter, stop, last).converged);
+  p.b = nearby(p.b);
+  std::vector<Vec3> cold, warm = last;
+  // Off in the constrained directions only: along a sliding node's normal, anywhere for
+  // a fixed one.
+  for (size_t i = 0; i < warm.size(); i += 7) warm[i] += 3.0 * p.filter.normal[i];
+  for (size_t i = 0; i < warm.size(); i += 31) warm[i] += Vec3(3.0, -2.0, 1.0);
+  const PcgReport fromZero = pcg.solve(p.A, p.b, p.filter, stop, cold);
+  const PcgReport fromGuess = pcg.solve(p.A, p.b, p.filter, stop, warm, PcgStart::Guess);
+  ASSERT_TRUE(fromZero.converged);
+  ASSERT_TRUE(fromGuess.converged);
+  // Scaled by 1.05 the guess is off by the noise alone: its residual starts near 1e-4 of
+  // the right-hand side's, two thirds of the way (in orders) to the stop's 1e-6.
+  EXPECT_LT(fromGuess.iterations, 0.8 * fromZero.iterations) << fromZero.iterations << " from zero";
+  // Two answers each within 1e-6 relative residual: apart by far less than 1e-3.
+  EXPECT_LT(relativeDifference(cold, warm), 1e-3);
+  for (int i = 0; i < p.A.rows(); ++i) {
+    const Vec3 constrained = warm[i] - p.filter.apply(i, warm[i]);
+    EXPECT_LT((constrained - p.filter.prescribed[i]).norm(), 1e-12) << "node " << i;
+  }
+}
+
+// A guess that points nowhere near the answer is scaled along itself to the least error
+// energy, so it never starts farther off than zero does: about as many iterations.
+TEST(FilteredPcg, APoorGuessCostsAboutWhatAStartFromZeroCosts) {
+  const Problem p = problem();
+  const PcgStop stop{1e-6, 5000};
+  FilteredPcg pcg(p.A);
+  std::mt19937_64 random(23);
+  std::uniform_real_distribution<double> uniform(-100.0, 100.0);
+  std::vector<Vec3> cold, poor(p.A.rows());
+  for (Vec3& value : poor) value = Vec3(uniform(random), uniform(random), uniform(random));
+  const PcgReport fromZero = pcg.solve(p.A, p.b, p.filter, stop, cold);
+  const PcgReport fromPoor = pcg.solve(p.A, p.b, p.filter, stop, poor, PcgStart::Guess);
+  ASSERT_TRUE(fromPoor.converged);
+  // CG's error energy falls monotonically from its start: no worse a start, no more
+  // than a few iterations' difference (rounding).
+  EXPECT_LE(fromPoor.iterations, fromZero.iterations + 3) << fromZero.iterations << " from zero";
+  EXPECT_LT(relativeDifference(cold, poor), 1e-3);
+}
+
+// The coarse matrix kept from another system (CoarseMatrix::Keep) leaves the
+// preconditioner positive definite: the solve reaches the answer a fresh one reaches.
+TEST(FilteredPcg, AKeptCoarseMatrixOfAnotherSystemReachesTheSameAnswer) {
+  const Problem p = problem();
+  const PcgStop stop{1e-8, 5000};
+  BlockSparseMatrix softer = p.A;  // the next system: a stiffer mass term, as at a smaller step
+  for (int i = 0; i < softer.rows(); ++i) softer.block(softer.find(i, i)) += 20.0 * Block3::Identity();
+  FilteredPcg kept(p.A), built(p.A);
+  std::vector<Vec3> first, a, b;
+  kept.solve(p.A, p.b, p.filter, stop, first);
+  const PcgReport keptReport = kept.solve(softer, p.b, p.filter, stop, a, PcgStart::Zero, CoarseMatrix::Keep);
+  const PcgReport builtReport = built.solve(softer, p.b, p.filter, stop, b);
+  ASSERT_TRUE(keptReport.converged);
+  ASSERT_TRUE(builtReport.converged);
+  EXPECT_LT(relativeDifference(b, a), 1e-5);
+  // And it is the last one built, not this system's: not the same iterations bit for bit.
+  EXPECT_GT(relativeDifference(b, a), 0.0);
+}
