@@ -94,12 +94,49 @@ std::string FitWorker::sizeDrapeKey(const BodyMeasures& body, Sex sex, const std
   const TriangleMesh& mesh = madeBody(body, sex);
   const std::string_view vertices(reinterpret_cast<const char*>(mesh.vertices.data()),
                                   mesh.vertices.size() * sizeof(Vec3));
+  return "figment size drape 1\nbody " + bodyKey(body, sex) + " " + Digest().add(vertices).hex() + "\nstyle " + style +
+         "\nsize " + chartRow(sex, size) + "\nbuild " + Digest::buildDigest() + "\n";
+}
+
+std::string FitWorker::chartRow(Sex sex, int size) const {
   const ChartSize& row = chart_.sizes(sex).at(size_t(size));
   char chart[128];
-  std::snprintf(chart, sizeof chart, "%s %s %.4f %.4f %.4f %.4f", row.name.c_str(), row.number.c_str(), row.stature,
-                row.bust, row.waist, row.hip);
-  return "figment size drape 1\nbody " + bodyKey(body, sex) + " " + Digest().add(vertices).hex() + "\nstyle " + style +
-         "\nsize " + chart + "\nbuild " + Digest::buildDigest() + "\n";
+  std::snprintf(chart, sizeof chart, "%s %s %s %.4f %.4f %.4f %.4f", sexName(sex), row.name.c_str(), row.number.c_str(),
+                row.stature, row.bust, row.waist, row.hip);
+  return chart;
+}
+
+const TriangleMesh& FitWorker::chartBody(Sex sex, int size) {
+  const auto key = std::make_pair(int(sex), size);
+  if (auto made = chartBodies_.find(key); made != chartBodies_.end()) return made->second;
+  ++chartBodiesMade_;
+  return chartBodies_.emplace(key, SizeFitter::makeChartBody(human_.model(), chart_, sex, size)).first->second;
+}
+
+GarmentDrape FitWorker::ownDrape(const std::string& style, Sex sex, int size,
+                                 const std::function<GarmentDrape()>& drape) {
+  const TriangleMesh& body = chartBody(sex, size);
+  const std::string_view vertices(reinterpret_cast<const char*>(body.vertices.data()),
+                                  body.vertices.size() * sizeof(Vec3));
+  const std::string key = "figment own drape 1\nbody " + Digest().add(vertices).hex() + "\nstyle " + style + "\nsize " +
+                          chartRow(sex, size) + "\nbuild " + Digest::buildDigest() + "\n";
+  std::string problem;
+  if (cache_)
+    if (auto record = cache_->find(key, problem))
+      if (auto read = readDrapeRecord(*record, problem)) return *read;
+  ++ownDrapesMade_;
+  return kept(key, drape());
+}
+
+GarmentDrape FitWorker::kept(const std::string& key, GarmentDrape made) {
+  made.report.verdict = verdictOf(made.report);
+  // As the record keeps it (float points): the drape a worker finds in the cache later is
+  // the one judged (and drawn) here, to the bit.
+  std::string problem;
+  const std::vector<unsigned char> record = writeDrapeRecord(made);
+  made = readDrapeRecord(record, problem).value();
+  if (cache_) cache_->store(key, record);  // a cache that cannot keep it costs a drape later
+  return made;
 }
 
 GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::string& style,
@@ -121,14 +158,8 @@ GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::
         return drapes_.emplace(key, *read).first->second;
       }
   SizeFitter& sizes = fitter(style);
-  GarmentDrape made =
-      sizes.drape(sizes.graded(sex, index).garment, std::make_shared<const MeshCollider>(madeBody(body, sex)));
-  made.report.verdict = verdictOf(made.report);
-  // As the record keeps it (float points): the drape a worker finds in the cache later is
-  // the one judged and drawn here, to the bit.
-  const std::vector<unsigned char> record = writeDrapeRecord(made);
-  made = readDrapeRecord(record, problem).value();
-  if (cache_) cache_->store(key, record);  // a cache that cannot keep it costs a drape later
+  const GarmentDrape made = kept(
+      key, sizes.drape(sizes.graded(sex, index).garment, std::make_shared<const MeshCollider>(madeBody(body, sex))));
   bound(drapes_, kDrapesKept);
   drapes_.emplace(key, made);
   return made;
@@ -148,7 +179,13 @@ std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {
 
 SizeFitter& FitWorker::fitter(const std::string& style) {
   std::unique_ptr<SizeFitter>& fitter = fitters_[style];
-  if (!fitter) fitter = std::make_unique<SizeFitter>(human_.model(), chart_, *findStyle(style));
+  if (!fitter) {
+    fitter = std::make_unique<SizeFitter>(human_.model(), chart_, *findStyle(style));
+    fitter->shareChartBodies([this](Sex sex, int size) { return chartBody(sex, size); });
+    fitter->keepOwnDrapes([this, style](Sex sex, int size, const std::function<GarmentDrape()>& drape) {
+      return ownDrape(style, sex, size, drape);
+    });
+  }
   return *fitter;
 }
 

@@ -12,6 +12,7 @@
 // by the instances). The advice judges those drapes and a render of the made body at rest
 // draws them, so a picture of an advised size costs a render, not a drape.
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -68,7 +69,14 @@ class FitWorker {
   // Its report says whether it came from a cache. Throws as garment() and madeBody().
   GarmentDrape sizeDrape(const BodyMeasures& body, Sex sex, const std::string& style, const std::string& size);
   // The drape cache sizeDrape keeps its drapes in (the render worker's); none: memory only.
+  // The sizes' drapes on their own chart bodies (the intended fits an advice judges against,
+  // which depend on no shopper) are kept there too, so a new worker or instance finds them.
   void useCache(std::shared_ptr<const DrapeCache> cache) { cache_ = std::move(cache); }
+
+  // What this worker has made so far: chart bodies (one per sex and size, shared by every
+  // style) and drapes of a size on its own chart body (not found in memory or the cache).
+  int chartBodiesMade() const { return chartBodiesMade_; }
+  int ownDrapesMade() const { return ownDrapesMade_; }
 
  private:
   // "" once the model is read, else why not.
@@ -78,13 +86,22 @@ class FitWorker {
   // The text that names a size drape: the body (its measurements and its mesh's digest),
   // the style, the size and its chart row, and the build.
   std::string sizeDrapeKey(const BodyMeasures& body, Sex sex, const std::string& style, int size);
+  // The chart's row of a size as text, for the keys.
+  std::string chartRow(Sex sex, int size) const;
+  const TriangleMesh& chartBody(Sex sex, int size);
+  // A size's drape on its own chart body: the cache's, else `drape`'s, kept there.
+  GarmentDrape ownDrape(const std::string& style, Sex sex, int size, const std::function<GarmentDrape()>& drape);
+  // `made` as the drape record keeps it (float points), stored under `key` when there is a cache.
+  GarmentDrape kept(const std::string& key, GarmentDrape made);
 
   SizeChart chart_;
   MakeHumanLibrary human_;                                      // the worker's: read on its first fit request
   std::map<std::string, std::unique_ptr<SizeFitter>> fitters_;  // by style
   std::map<std::string, TriangleMesh> bodies_;                  // by sex and measurements: the last few
   std::map<std::string, GarmentDrape> drapes_;                  // by sizeDrapeKey: the last few dozen
+  std::map<std::pair<int, int>, TriangleMesh> chartBodies_;     // by sex and size index
   std::shared_ptr<const DrapeCache> cache_;
+  int chartBodiesMade_ = 0, ownDrapesMade_ = 0;
 };
 
 }  // namespace figment::serve

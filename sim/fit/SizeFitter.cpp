@@ -145,16 +145,20 @@ const SizeFitter::Graded& SizeFitter::graded(Sex sex, int size) {
   return grade(sex, size);
 }
 
-const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
-  const auto key = std::make_pair(static_cast<int>(sex), size);
-  if (const auto found = graded_.find(key); found != graded_.end()) return found->second;
-  const ChartSize& chartSize = chart_.sizes(sex).at(size);
+TriangleMesh SizeFitter::makeChartBody(const HumanModel& model, const SizeChart& chart, Sex sex, int size) {
+  const ChartSize& chartSize = chart.sizes(sex).at(size);
   const std::vector<MeasurementGoal> goals = {{"stature", chartSize.stature},
                                               {"bust_girth", chartSize.bust},
                                               {"waist_girth", chartSize.waist},
                                               {"hip_girth", chartSize.hip}};
+  return makeMeasuredBody(model, sexStart(sex), goals).body;
+}
+
+const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
+  const auto key = std::make_pair(static_cast<int>(sex), size);
+  if (const auto found = graded_.find(key); found != graded_.end()) return found->second;
   Graded made;
-  made.body = makeMeasuredBody(model_, sexStart(sex), goals).body;
+  made.body = chartBodies_ ? chartBodies_(sex, size) : makeChartBody(model_, chart_, sex, size);
   if (style_) {
     made.garment = cutGarment(*style_, made.body);
   } else {
@@ -178,7 +182,8 @@ const std::vector<RegionFit>& SizeFitter::ownFit(Sex sex, int size) {
   if (const auto found = ownFits_.find(key); found != ownFits_.end()) return found->second;
   const Graded& made = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(made.body);
-  const GarmentDrape own = drapeSize(made, sex, size, collider, nullptr);
+  const auto drapeOwn = [&] { return drapeSize(made, sex, size, collider, nullptr); };
+  const GarmentDrape own = ownDrapes_ ? ownDrapes_(sex, size, drapeOwn) : drapeOwn();
   return ownFits_
       .emplace(key,
                fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, regions_), made, own.positions))

@@ -99,6 +99,17 @@ class SizeFitter {
   // The size's garment draped on its own chart body, measured by the style's regions: the
   // intended fit a drape on another body is judged against. Draped on the first ask, then kept.
   const std::vector<RegionFit>& ownFit(Sex sex, int size);
+  // A size's chart body: MakeHuman's body made to the size's four dimensions.
+  static TriangleMesh makeChartBody(const HumanModel& model, const SizeChart& chart, Sex sex, int size);
+  // Where a size's chart body comes from: makeChartBody by default. A caller with a fitter
+  // per style (the service's worker) shares one set, as the bodies do not depend on the style.
+  using ChartBodies = std::function<TriangleMesh(Sex sex, int size)>;
+  void shareChartBodies(ChartBodies bodies) { chartBodies_ = std::move(bodies); }
+  // Where ownFit gets a size's drape on its own chart body: `drape` makes it. By default it
+  // is called; a caller that keeps drapes (the service's drape cache, shared by its workers
+  // and instances) looks there first and keeps what `drape` made.
+  using OwnDrapes = std::function<GarmentDrape(Sex sex, int size, const std::function<GarmentDrape()>& drape)>;
+  void keepOwnDrapes(OwnDrapes drapes) { ownDrapes_ = std::move(drapes); }
   // Whether that drape has been made (a later ownFit costs nothing).
   bool hasOwnFit(Sex sex, int size) const { return ownFits_.count({static_cast<int>(sex), size}) > 0; }
 
@@ -151,6 +162,8 @@ class SizeFitter {
   ClothParameters parameters_;
   std::map<std::pair<int, int>, Graded> graded_;                   // (sex, size index) -> made
   std::map<std::pair<int, int>, std::vector<RegionFit>> ownFits_;  // (sex, size index) -> its own fit
+  ChartBodies chartBodies_;
+  OwnDrapes ownDrapes_;
 };
 
 }  // namespace figment

@@ -85,3 +85,30 @@ TEST_F(FitWorkerTest, ASizeDrapeIsMadeOnceAndFoundAgainInTheDrapeCache) {
   // Another size is another drape.
   EXPECT_NE(second.sizeDrape(kShopper, Sex::Female, "pencil", "L").positions, made.positions);
 }
+
+TEST_F(FitWorkerTest, ChartBodiesServeEveryStyleAndIntendedFitsAreFoundInTheCache) {
+  test::TempDir folder;
+  const auto cache = std::make_shared<const DrapeCache>(folder.path(), 64u << 20);
+  FitRequest pencil;
+  pencil.sex = Sex::Female;
+  pencil.style = "pencil";
+  pencil.body = kShopper;
+  FitWorker first(test::shippedCatalogue().chart());
+  first.useCache(cache);
+  const FitWorker::Answer advised = first.advise(pencil);
+  ASSERT_EQ(advised.status, 200) << advised.body;
+  EXPECT_EQ(first.chartBodiesMade(), 3);  // the three candidates' chart bodies
+  EXPECT_EQ(first.ownDrapesMade(), 3);    // and each size on its own body
+  FitRequest skirt = pencil;
+  skirt.style = "skirt";
+  ASSERT_EQ(first.advise(skirt).status, 200);
+  EXPECT_EQ(first.chartBodiesMade(), 3);  // the same sizes' bodies, for another style
+  EXPECT_EQ(first.ownDrapesMade(), 6);    // its own intended fits
+  // Another worker (or instance) sharing the cache drapes no intended fit again, and
+  // advises the same from them.
+  FitWorker second(test::shippedCatalogue().chart());
+  second.useCache(cache);
+  const FitWorker::Answer again = second.advise(pencil);
+  EXPECT_EQ(second.ownDrapesMade(), 0);
+  EXPECT_EQ(again.body, advised.body);
+}
