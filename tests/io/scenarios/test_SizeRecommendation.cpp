@@ -88,6 +88,19 @@ TEST_F(SizeRecommendation, GradingASizeDrapesNothing) {
   }
 }
 
+// A size tried on its own chart body is the drape its own fit was measured on, not draped
+// again (SizeFitter::coldDrape): the same positions as a cold drape made here, and it fits.
+TEST_F(SizeRecommendation, ASizeOnItsOwnChartBodyIsItsOwnFitsDrape) {
+  const int m = index(Sex::Female, "M");
+  const SizeFitter::Graded& graded = pencil_->graded(Sex::Female, m);
+  const SizeFit own = pencil_->tryOn(graded.body, Sex::Female, m);
+  EXPECT_TRUE(pencil_->hasOwnFit(Sex::Female, m));
+  EXPECT_FALSE(own.drape.report.warm);
+  const GarmentDrape again = pencil_->drape(graded.garment, std::make_shared<const MeshCollider>(graded.body));
+  EXPECT_EQ(own.drape.positions, again.positions);
+  for (const Verdict verdict : own.verdicts) EXPECT_EQ(verdict, Verdict::Fits) << own.text;
+}
+
 TEST_F(SizeRecommendation, EachMensChartBodyGetsItsOwnTShirt) {
   SizeFitter tshirt(model(), chart(), *findStyle("tshirt"));
   const std::vector<ChartSize>& sizes = chart().sizes(Sex::Male);
