@@ -16,6 +16,7 @@
 
 #include "io/GarmentCatalogue.h"
 #include "sim/body/BodyMeasurements.h"
+#include "sim/collision/MeshCollider.h"
 #include "sim/fit/SizeFitter.h"
 #include "support/ChartBodies.h"
 #include "support/ProgramRun.h"
@@ -226,6 +227,18 @@ TEST_F(SizeRecommendation, NeverSmallerBetweenTheWomensGridBodiesTwoSizesUnderXx
   EXPECT_GE(recommended[1], recommended[0]);
 }
 
+// How many of `drape`'s nodes lie more than 5 mm inside `body`: none where it was draped on
+// that body (the solver holds its nodes out), many for a drape made on a smaller one.
+static int nodesDeepInside(const std::vector<Vec3>& drape, const TriangleMesh& body) {
+  const MeshCollider collider(body);
+  int inside = 0;
+  for (const Vec3& p : drape) {
+    Contact contact;
+    inside += collider.contact(p, 0.0, 0.05, contact) && contact.distance < -0.005;
+  }
+  return inside;
+}
+
 TEST_F(SizeRecommendation, SmallOnTheXlBodyIsTightAndXlOnTheSmallBodyLoose) {
   const TriangleMesh& xl = pencil_->graded(Sex::Female, index(Sex::Female, "XL")).body;
   const SizeFit tight = pencil_->tryOn(xl, Sex::Female, index(Sex::Female, "S"));
@@ -234,6 +247,9 @@ TEST_F(SizeRecommendation, SmallOnTheXlBodyIsTightAndXlOnTheSmallBodyLoose) {
     EXPECT_EQ(*verdictAt(tight, region), Verdict::Tight) << region << ": " << tight.text;
   }
   EXPECT_NE(tight.text.find("tight at the hips"), std::string::npos) << tight.text;
+  // S was draped on the XL body, not handed its drape on its own chart body (SizeFitter's
+  // own drape is for that body alone).
+  EXPECT_EQ(nodesDeepInside(tight.drape.positions, xl), 0);
   const TriangleMesh& s = pencil_->graded(Sex::Female, index(Sex::Female, "S")).body;
   const SizeFit loose = pencil_->tryOn(s, Sex::Female, index(Sex::Female, "XL"));
   for (const char* region : {"waist", "hips", "thighs"}) {
