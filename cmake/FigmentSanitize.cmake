@@ -12,6 +12,18 @@ if(FIGMENT_SANITIZE)
   add_link_options(-fsanitize=address,undefined)
 endif()
 
+# FIGMENT_SANITIZE_THREAD: the same with ThreadSanitizer (not with FIGMENT_SANITIZE: the two
+# cannot share a program). scripts/sanitize.sh tsan builds test_serve so in build-tsan for the
+# service's threaded units; OpenMP's own threads are not instrumented, so the tests keep one.
+option(FIGMENT_SANITIZE_THREAD "Build with -fsanitize=thread" OFF)
+if(FIGMENT_SANITIZE_THREAD)
+  if(FIGMENT_SANITIZE)
+    message(FATAL_ERROR "FIGMENT_SANITIZE_THREAD and FIGMENT_SANITIZE cannot be on together")
+  endif()
+  add_compile_options(-fsanitize=thread -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=thread)
+endif()
+
 # FIGMENT_BUILD_FUZZERS: the libFuzzer targets in tests/fuzz (clang only). Everything they link is
 # compiled with coverage instrumentation (-fsanitize=fuzzer-no-link) so the fuzzer sees which
 # branches of our code an input reaches, except the numeric kernels tests/fuzz/coverage-ignorelist.txt

@@ -99,4 +99,8 @@ if ((${#targets[@]} == 0)) && { [ ! -f "$contract/installed" ] ||
 fi
 # MakeHuman's CC0 body model (docs/bodies.md), where the build looks for it by default.
 python3 scripts/fetch-makehuman.py "$build/data/makehuman"
-cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
+# FIGMENT_SETUP_BUILD=0: the packages, the tools and the configure only (.ci/run sanitize, whose
+# sanitized trees build themselves).
+if [ "${FIGMENT_SETUP_BUILD:-1}" != 0 ]; then
+  cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
+fi

@@ -183,11 +183,24 @@ const std::vector<RegionFit>& SizeFitter::ownFit(Sex sex, int size) {
   const Graded& made = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(made.body);
   const auto drapeOwn = [&] { return drapeSize(made, sex, size, collider, nullptr); };
-  const GarmentDrape own = ownDrapes_ ? ownDrapes_(sex, size, drapeOwn) : drapeOwn();
+  const GarmentDrape& own =
+      keptOwnDrapes_.emplace(key, ownDrapes_ ? ownDrapes_(sex, size, drapeOwn) : drapeOwn()).first->second;
   return ownFits_
       .emplace(key,
                fitOn(*collider, styleRegions(made.body, measureBody(made.body), sex, regions_), made, own.positions))
       .first->second;
+}
+
+GarmentDrape SizeFitter::coldDrape(const Graded& graded, Sex sex, int size, const TriangleMesh& body,
+                                   const std::shared_ptr<const MeshCollider>& collider) {
+  // The size's own chart body: its cold drape there is the one its own fit was measured on
+  // (the same garment, body and parameters). A chart body is recommended among its own size
+  // and its neighbours, so without this every chart body's own size was draped twice.
+  if (body.vertices == graded.body.vertices && body.triangles == graded.body.triangles) {
+    ownFit(sex, size);
+    return keptOwnDrapes_.at({static_cast<int>(sex), size});
+  }
+  return drapeSize(graded, sex, size, collider, nullptr);
 }
 
 GarmentDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
@@ -249,8 +262,8 @@ SizeFit SizeFitter::tryOn(const TriangleMesh& body, Sex sex, int size) {
   const Graded& graded = grade(sex, size);
   const auto collider = std::make_shared<const MeshCollider>(body);
   const std::vector<FitRegion> regions = styleRegions(body, measureBody(body), sex, regions_);
-  return fitSize(graded, ownFit(sex, size), chart_.sizes(sex).at(size).name, *collider, regions,
-                 drapeSize(graded, sex, size, collider, nullptr));
+  GarmentDrape drape = coldDrape(graded, sex, size, body, collider);
+  return fitSize(graded, ownFit(sex, size), chart_.sizes(sex).at(size).name, *collider, regions, std::move(drape));
 }
 
 std::vector<int> SizeFitter::candidatesAround(Sex sex, int nearest) const {
@@ -308,8 +321,10 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
     if (const int from = k > centre ? k - 1 : k + 1; warm && warmStarts_ && k != centre)
       start = warmStart(graded.garment, grade(sex, candidates[from]).garment, out.sizes[from].drape.positions,
                         *collider, parameters_.clearance);
+    GarmentDrape drape = start.empty() ? coldDrape(graded, sex, candidates[k], body, collider)
+                                       : drapeSize(graded, sex, candidates[k], collider, &start);
     out.sizes[k] = fitSize(graded, ownFit(sex, candidates[k]), chart_.sizes(sex)[candidates[k]].name, *collider,
-                           regions, drapeSize(graded, sex, candidates[k], collider, start.empty() ? nullptr : &start));
+                           regions, std::move(drape));
   }
   choose(out);
   return out;

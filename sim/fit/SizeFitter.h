@@ -147,6 +147,10 @@ class SizeFitter {
 
   GarmentDrape drapeSize(const Graded& graded, Sex sex, int size, const std::shared_ptr<const MeshCollider>& body,
                          const std::vector<Vec3>* start) const;
+  // A cold drape of the size on `body` (its collider given): the own drape again when `body`
+  // is the size's chart body.
+  GarmentDrape coldDrape(const Graded& graded, Sex sex, int size, const TriangleMesh& body,
+                         const std::shared_ptr<const MeshCollider>& collider);
   const SizePattern& patternOf(Sex sex, int size) const;
   // The candidates for a body nearest chart size `nearest`: that size and its neighbours, among
   // the sizes this style is made in (a sewn style: those it has patterns for).
@@ -164,6 +168,8 @@ class SizeFitter {
   std::map<std::pair<int, int>, std::vector<RegionFit>> ownFits_;  // (sex, size index) -> its own fit
   ChartBodies chartBodies_;
   OwnDrapes ownDrapes_;
+  // (sex, size index) -> the drape its own fit was measured on, kept for coldDrape
+  std::map<std::pair<int, int>, GarmentDrape> keptOwnDrapes_;
 };
 
 }  // namespace figment

@@ -16,6 +16,7 @@
 
 #include "io/GarmentCatalogue.h"
 #include "sim/body/BodyMeasurements.h"
+#include "sim/collision/MeshCollider.h"
 #include "sim/fit/SizeFitter.h"
 #include "support/ChartBodies.h"
 #include "support/ProgramRun.h"
@@ -86,6 +87,19 @@ TEST_F(SizeRecommendation, GradingASizeDrapesNothing) {
     EXPECT_EQ(own[r].meanStrain, shared[r].meanStrain) << own[r].name;
     EXPECT_EQ(own[r].ease, shared[r].ease) << own[r].name;
   }
+}
+
+// A size tried on its own chart body is the drape its own fit was measured on, not draped
+// again (SizeFitter::coldDrape): the same positions as a cold drape made here, and it fits.
+TEST_F(SizeRecommendation, ASizeOnItsOwnChartBodyIsItsOwnFitsDrape) {
+  const int m = index(Sex::Female, "M");
+  const SizeFitter::Graded& graded = pencil_->graded(Sex::Female, m);
+  const SizeFit own = pencil_->tryOn(graded.body, Sex::Female, m);
+  EXPECT_TRUE(pencil_->hasOwnFit(Sex::Female, m));
+  EXPECT_FALSE(own.drape.report.warm);
+  const GarmentDrape again = pencil_->drape(graded.garment, std::make_shared<const MeshCollider>(graded.body));
+  EXPECT_EQ(own.drape.positions, again.positions);
+  for (const Verdict verdict : own.verdicts) EXPECT_EQ(verdict, Verdict::Fits) << own.text;
 }
 
 TEST_F(SizeRecommendation, EachMensChartBodyGetsItsOwnTShirt) {
@@ -213,6 +227,18 @@ TEST_F(SizeRecommendation, NeverSmallerBetweenTheWomensGridBodiesTwoSizesUnderXx
   EXPECT_GE(recommended[1], recommended[0]);
 }
 
+// How many of `drape`'s nodes lie more than 5 mm inside `body`: none where it was draped on
+// that body (the solver holds its nodes out), many for a drape made on a smaller one.
+static int nodesDeepInside(const std::vector<Vec3>& drape, const TriangleMesh& body) {
+  const MeshCollider collider(body);
+  int inside = 0;
+  for (const Vec3& p : drape) {
+    Contact contact;
+    inside += collider.contact(p, 0.0, 0.05, contact) && contact.distance < -0.005;
+  }
+  return inside;
+}
+
 TEST_F(SizeRecommendation, SmallOnTheXlBodyIsTightAndXlOnTheSmallBodyLoose) {
   const TriangleMesh& xl = pencil_->graded(Sex::Female, index(Sex::Female, "XL")).body;
   const SizeFit tight = pencil_->tryOn(xl, Sex::Female, index(Sex::Female, "S"));
@@ -221,6 +247,9 @@ TEST_F(SizeRecommendation, SmallOnTheXlBodyIsTightAndXlOnTheSmallBodyLoose) {
     EXPECT_EQ(*verdictAt(tight, region), Verdict::Tight) << region << ": " << tight.text;
   }
   EXPECT_NE(tight.text.find("tight at the hips"), std::string::npos) << tight.text;
+  // S was draped on the XL body, not handed its drape on its own chart body (SizeFitter's
+  // own drape is for that body alone).
+  EXPECT_EQ(nodesDeepInside(tight.drape.positions, xl), 0);
   const TriangleMesh& s = pencil_->graded(Sex::Female, index(Sex::Female, "S")).body;
   const SizeFit loose = pencil_->tryOn(s, Sex::Female, index(Sex::Female, "XL"));
   for (const char* region : {"waist", "hips", "thighs"}) {

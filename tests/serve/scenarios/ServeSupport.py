@@ -61,6 +61,17 @@ def main():
     sys.exit(0)
 
 
+def time_limited(arguments):
+    """`arguments` with FIGMENT_SERVE_TIME_LIMIT's --time-limit where they set none: the
+    sanitizer job (scripts/sanitize.sh) drapes some 30 times slower than Release, past the
+    server's default 60 s a render, which would answer 504 for a render that is only slow.
+    A case that sets its own limit (one that tests the 504) keeps it."""
+    limit = os.environ.get("FIGMENT_SERVE_TIME_LIMIT")
+    if not limit or "--time-limit" in arguments:
+        return tuple(arguments)
+    return (*arguments, "--time-limit", limit)
+
+
 class Server:
     def __init__(self, executable, *arguments, capture_log=False):
         """`capture_log`: its stderr goes to a file, read by log()."""
@@ -69,7 +80,7 @@ class Server:
         self.log_path = os.path.join(self.folder.name, "stderr")
         self.log_file = open(self.log_path, "w") if capture_log else None
         self.process = subprocess.Popen(
-            [executable, "--port", "0", "--cache", cache, *arguments],
+            [executable, "--port", "0", "--cache", cache, *time_limited(arguments)],
             stdout=subprocess.PIPE, stderr=self.log_file, cwd=self.folder.name, text=True)
         line = self.process.stdout.readline()
         if "http://" not in line:
