@@ -287,6 +287,14 @@ void HumanBody::notify(SoNotList* list) {
   if (field == &baseLayer || field == &baseLayerColor) dressBaseLayer();
 }
 
+void HumanBody::copyContents(const SoFieldContainer* from, SbBool copyConnections) {
+  inherited::copyContents(from, copyConnections);
+  // The fields came before the mesh (MeshFile copies it last), so the layer was not drawn:
+  // the source's, cut for the same mesh, drawn now.
+  data_->layer = static_cast<const HumanBody*>(from)->data_->layer;
+  dressBaseLayer();
+}
+
 figment::TriangleMesh HumanBody::baseLayerSurface() const {
   if (baseLayer.getValue() == NONE || !data_->layer) return {};
   return *data_->layer;

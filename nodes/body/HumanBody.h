@@ -153,6 +153,7 @@ class HumanBody : public MeshFile {
   bool load(SoInput* in) override;
   bool isLoadOption(const SoField* field) const override;
   void notify(SoNotList* list) override;
+  void copyContents(const SoFieldContainer* from, SbBool copyConnections) override;
 
  private:
   struct Data;

@@ -66,6 +66,18 @@ bool onABound(const Vec3& p, const BaseLayerBounds& b) {
   return std::abs(p.y() - leg) < 1e-9;
 }
 
+// The layer cut on the skin itself (not lifted), and the bounds it was cut to.
+struct OnTheSkin {
+  BaseLayerBounds bounds;
+  TriangleMesh layer;
+};
+OnTheSkin cutOnTheSkin(const Prism& p) {
+  BaseLayerShape shape;
+  shape.offset = 0;
+  const BaseLayerBounds b = baseLayerBounds(p.mesh, p.parts, p.landmarks, shape);
+  return {b, cutBaseLayer(p.mesh, p.mesh, p.parts, b, shape)};
+}
+
 }  // namespace
 
 TEST(BaseLayer, BoundsFollowTheLandmarksAndTheHipsWidth) {
@@ -80,11 +92,7 @@ TEST(BaseLayer, BoundsFollowTheLandmarksAndTheHipsWidth) {
 }
 
 TEST(BaseLayer, TheBandIsTheSkinBetweenItsLevelsExactly) {
-  const Prism p = prism();
-  BaseLayerShape shape;
-  shape.offset = 0;
-  const BaseLayerBounds b = baseLayerBounds(p.mesh, p.parts, p.landmarks, shape);
-  const TriangleMesh layer = cutBaseLayer(p.mesh, p.mesh, p.parts, b, shape);
+  const auto [b, layer] = cutOnTheSkin(prism());
   const double perimeter = 2 * kSides * kRadius * std::sin(std::numbers::pi / kSides);
   EXPECT_NEAR(area(layer, b.bandBottom - 1e-9, b.bandTop + 1e-9), perimeter * (b.bandTop - b.bandBottom), 1e-9);
   // Between hip level and the briefs' top nothing is cut away either.
@@ -104,11 +112,7 @@ TEST(BaseLayer, TheBandIsTheSkinBetweenItsLevelsExactly) {
 }
 
 TEST(BaseLayer, OneSurfaceWhoseOnlyEdgesAreItsBounds) {
-  const Prism p = prism();
-  BaseLayerShape shape;
-  shape.offset = 0;
-  const BaseLayerBounds b = baseLayerBounds(p.mesh, p.parts, p.landmarks, shape);
-  const TriangleMesh layer = cutBaseLayer(p.mesh, p.mesh, p.parts, b, shape);
+  const auto [b, layer] = cutOnTheSkin(prism());
   std::map<std::pair<int, int>, int> uses;
   for (const Triangle& t : layer.triangles)
     for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[size_t(k)], t[size_t((k + 1) % 3)])];

@@ -102,6 +102,19 @@ TEST_F(HumanBodyBaseLayer, IsDrawnInItsColourOverTheSkinAndGoesWithTheField) {
   EXPECT_EQ(blue.count(Rgb{0, 0, 255}), dressed.count(red));
 }
 
+TEST_F(HumanBodyBaseLayer, ACopiedBodyDrawsTheSameLayer) {
+  HumanBody* body = read("skinTone 6 baseLayer UNDERWEAR baseLayerColor 1 0 0");
+  ASSERT_NE(body, nullptr);
+  const Rgb red{255, 0, 0};
+  const int drawn = render().count(red);
+  ASSERT_GT(drawn, 400);
+  SoSeparator* original = scene_;
+  scene_ = static_cast<SoSeparator*>(original->copy());  // the body's copy among the scene's
+  scene_->ref();
+  original->unref();
+  EXPECT_EQ(render().count(red), drawn);
+}
+
 TEST_F(HumanBodyBaseLayer, AWomansReachesOverTheBustAndAMansStopsUnderTheWaist) {
   for (const char* gender : {"0", "1"}) {
     HumanBody* body = read(std::string("gender ") + gender + " baseLayer UNDERWEAR");
