@@ -134,7 +134,7 @@ std::string patternStyleNames(const std::vector<PatternIndexEntry>& index) {
 
 // Where a style file said what (file:line), for the checks after its last line.
 struct StyleLines {
-  std::string style, fabric, regions;
+  std::string style, fabric, regions, about;
   std::map<Sex, std::string> sizes;
 };
 
@@ -151,6 +151,8 @@ void completeStyle(const std::string& path, const StyleLines& where, const std::
     if (style.fabric.empty()) throw std::runtime_error(path + ": no \"fabric PRESET\" line (a pattern style's cloth)");
     if (style.regions.empty())
       throw std::runtime_error(path + ": no \"regions NAME, ...\" line (where a pattern style's fit is told)");
+    if (style.about.empty())
+      throw std::runtime_error(path + ": no \"about TEXT\" line (a pattern style's line for shoppers)");
     findPatterns(index, where.sizes, style);
   } else {
     if (!generator)
@@ -159,6 +161,8 @@ void completeStyle(const std::string& path, const StyleLines& where, const std::
     // A generator cuts for its own cloth and regions (sim/garment/GarmentStyle.h).
     if (!where.fabric.empty()) throw std::runtime_error(where.fabric + ": a generator style's fabric is its own");
     if (!where.regions.empty()) throw std::runtime_error(where.regions + ": a generator style's regions are its own");
+    if (!where.about.empty()) throw std::runtime_error(where.about + ": a generator style's about is its own");
+    style.about = generator->about;
     style.fabric = generator->fabric;
     style.regions = generator->regions;
   }
@@ -185,6 +189,9 @@ CatalogueStyle readStyle(const std::string& path, const SizeChart& chart, const 
         throw std::runtime_error(line.where + ": fabric " + line.words[1] + " is not one of " +
                                  joined(materialPresetNames()));
       style.fabric = line.words[1], where.fabric = line.where;
+    } else if (key == "about" && line.words.size() >= 2) {
+      for (size_t i = 1; i < line.words.size(); ++i) style.about += (i > 1 ? " " : "") + line.words[i];
+      where.about = line.where;
     } else if (key == "regions" && line.words.size() >= 2) {
       style.regions = readRegions(line), where.regions = line.where;
     } else if (key == "female" || key == "male") {

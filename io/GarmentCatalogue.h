@@ -31,6 +31,8 @@ struct CatalogueStyle {
   // index's entry of each size it is sold in; "" and empty for a generator's style.
   std::string pattern;
   std::vector<PatternIndexEntry> patterns;
+  // One line for a shopper: the generator's own, or a pattern style's "about" line.
+  std::string about;
   bool sewn() const { return !pattern.empty(); }
   // The pattern of `sex`'s size `size` (letter code), or null.
   const PatternIndexEntry* patternOf(Sex sex, const std::string& size) const;

@@ -89,7 +89,7 @@ def item_pattern(body, sizes, styles):
     numbers = {letter: number for letter, number, *_ in sizes[body]}
     items = []
     for name, sold, sewn in styles:
-        if sewn or not sold.get(body):
+        if not sold.get(body):
             continue
         names = sold[body] + [numbers[letter] for letter in sold[body]]
         items.append(name + ":" + alternatives(names))
@@ -141,10 +141,10 @@ def write(document, sizes, styles):
                       ("Underwear", "underwear")):
         parameters[key].pop("x-figment-by-sex", None)
         parameters[key]["x-figment-by-body"] = rules[name]
-    fit_styles = [name for name, sold, sewn in styles if not sewn and any(sold.values())]
+    fit_styles = [name for name, sold, sewn in styles if any(sold.values())]
     parameters["FitStyle"]["schema"]["enum"] = fit_styles
     parameters["FitStyle"]["x-figment-by-sex"] = {
-        sex: {"enum": [name for name, sold, sewn in styles if not sewn and sold.get(sex)]} for sex in ("female", "male")}
+        sex: {"enum": [name for name, sold, sewn in styles if sold.get(sex)]} for sex in ("female", "male")}
     for key, name in (("FitStature", "stature"), ("FitBust", "bust"), ("FitWaist", "waist"), ("FitHips", "hips")):
         by_sex = {sex: rules[name][sex] for sex in ("female", "male")}
         parameters[key]["x-figment-by-sex"] = by_sex

@@ -8,7 +8,6 @@
 #include "serve/request/BodyMeasuresText.h"
 #include "serve/request/MeasuredPoses.h"
 #include "serve/request/Utf8Text.h"
-#include "sim/garment/GarmentStyle.h"
 
 namespace figment::serve {
 
@@ -35,7 +34,7 @@ std::shared_ptr<const GarmentCatalogue> MadeBodyChoices::readCatalogue(const std
 std::vector<const CatalogueStyle*> MadeBodyChoices::styles(const GarmentCatalogue& catalogue, Sex sex) {
   std::vector<const CatalogueStyle*> out;
   for (const CatalogueStyle& style : catalogue.styles())
-    if (!style.sewn() && !style.sizes(sex).empty()) out.push_back(&style);
+    if (!style.sizes(sex).empty()) out.push_back(&style);
   return out;
 }
 
@@ -53,12 +52,6 @@ std::variant<const CatalogueStyle*, ParameterError> MadeBodyChoices::style(const
   const CatalogueStyle* style = catalogue.style(name);
   if (!style)
     return RequestParameters::refusal(parameter, value, "no style named " + Utf8Text::shown(name, 32), accepted);
-  if (style->sewn())
-    return RequestParameters::refusal(parameter, value,
-                                      name +
-                                          " is sewn from a pattern: the service does not dress sewn styles yet "
-                                          "(figment-sew does)",
-                                      accepted);
   if (style->sizes(sex).empty())
     return RequestParameters::refusal(parameter, value, name + " is not sold in " + sexName(sex) + " sizes", accepted);
   return style;
@@ -72,7 +65,7 @@ BodyMeasures MadeBodyChoices::defaultBody(const GarmentCatalogue& catalogue, Sex
 std::pair<std::string, std::string> MadeBodyChoices::defaultGarment(const GarmentCatalogue& catalogue, Sex sex) {
   const std::vector<const CatalogueStyle*> sold = styles(catalogue, sex);
   if (sold.empty())
-    throw std::invalid_argument(std::string("the catalogue sells no cut style in ") + sexName(sex) + " sizes");
+    throw std::invalid_argument(std::string("the catalogue sells no style in ") + sexName(sex) + " sizes");
   const std::string size = defaultSize(catalogue.chart(), sex).name;
   const std::vector<std::string>& sizes = sold.front()->sizes(sex);
   const bool cut = std::find(sizes.begin(), sizes.end(), size) != sizes.end();
@@ -83,13 +76,12 @@ nlohmann::json MadeBodyChoices::toJson(const GarmentCatalogue& catalogue) {
   const SizeChart& chart = catalogue.chart();
   nlohmann::json styles = nlohmann::json::array();
   for (const CatalogueStyle& style : catalogue.styles()) {
-    if (style.sewn()) continue;
     nlohmann::json sizes = nlohmann::json::object();
     for (const Sex sex : {Sex::Female, Sex::Male})
       if (!style.sizes(sex).empty()) sizes[sexName(sex)] = style.sizes(sex);
-    const figment::GarmentStyle* cut = findStyle(style.name);
     styles.push_back({{"name", style.name},
-                      {"about", cut ? cut->about : ""},
+                      {"about", style.about},
+                      {"sewn", style.sewn()},
                       {"sizes", sizes},
                       {"colours", style.colours},
                       {"defaultColour", style.colours.front()}});

@@ -5,9 +5,9 @@
 // style's sizes are those the catalogue sells it in for the body's sex, named as the chart
 // names them, in a render, a fit, the precompute grid and GET /api/catalogue alike.
 //
-// The service dresses the catalogue's cut styles (a generator's garment graded to a size:
-// sim/garment/GarmentStyle.h). Its sewn styles (a shop's sewing patterns) are figment-sew's
-// for now: a request naming one is told so.
+// A style is a generator's garment graded to a size (sim/garment/GarmentStyle.h) or a
+// shop's own, sewn from its size's sewing pattern (a pattern style: scenes/patterns/); the
+// service dresses both, a sewn one standing (RenderRequest: it is sewn on the body at rest).
 
 #include <memory>
 #include <nlohmann/json_fwd.hpp>
@@ -36,7 +36,7 @@ class MadeBodyChoices {
   // its holder need not see the type (the HTTP side keeps Eigen's headers out of its own).
   static std::shared_ptr<const GarmentCatalogue> readCatalogue(const std::string& scenesFolder);
 
-  // The catalogue's cut styles sold to `sex`, in the catalogue's order.
+  // The catalogue's styles sold to `sex`, cut or sewn, in the catalogue's order.
   static std::vector<const CatalogueStyle*> styles(const GarmentCatalogue& catalogue, Sex sex);
   // `name` as a style the service dresses on a body of `sex`, or the refusal naming
   // `parameter` and `value` with what is accepted.

@@ -327,12 +327,17 @@ void defaults(RenderRequest& request, const BodyNames& names) {
 // What a posed made body cannot wear. Only a garment's own drape moves the body from
 // rest into its pose (nodes/body/HumanBody.h): an outer layer meets it posed from the start,
 // inside it, and bunches; a skirt or dress put on standing is passed through by the
-// thighs of a sitting body.
-std::optional<ParameterError> posedOutfit(const RenderRequest& request) {
+// thighs of a sitting body. A sewn garment's panels are placed round the standing body and
+// sewn on it (sim/pattern/PatternPlacement.h), so it is worn standing.
+std::optional<ParameterError> posedOutfit(const RenderRequest& request, const BodyNames& names) {
   if (request.sex.empty() || request.pose == "rest") return std::nullopt;
   const std::string accepted =
-      "rest with up to 3 garments; arms-down, arm-raised, walking with one; sitting with a tshirt or nothing";
+      "rest with up to 3 garments; arms-down, arm-raised, walking with one cut style; sitting with a tshirt or "
+      "nothing";
   if (request.outfit.size() > 1) return bad("pose", request.pose, "a posed measured body wears one garment", accepted);
+  for (const OutfitItem& item : request.outfit)
+    if (const CatalogueStyle* style = names.catalogue->style(item.style); style && style->sewn())
+      return bad("pose", request.pose, item.style + " is sewn from a pattern on the standing body", accepted);
   if (request.pose == "sitting" && !request.outfit.empty() && request.outfit[0].style != "tshirt")
     return bad("pose", request.pose, "a sitting body's thighs pass through a " + request.outfit[0].style, accepted);
   return std::nullopt;
@@ -350,7 +355,7 @@ std::variant<RenderRequest, ParameterError> RenderRequest::parse(const QueryPara
   if (auto error = chooseBody(named, catalogue, request, names)) return *error;
   defaults(request, names);
   if (auto error = fill(request, named, names)) return *error;
-  if (auto error = posedOutfit(request)) return *error;
+  if (auto error = posedOutfit(request, names)) return *error;
   if (request.format == "glb") {
     // A GLB holds meshes and colours: light, view and size leave it as it is, so they are
     // reset and every such request shares one canonical text (and ETag).

@@ -13,6 +13,8 @@
 #include <functional>
 #include <vector>
 
+#include "io/GarmentCatalogue.h"
+#include "nodes/MeshFields.h"
 #include "nodes/body/CollisionGroup.h"
 #include "nodes/body/HumanBody.h"
 #include "nodes/body/Mannequin.h"
@@ -27,6 +29,7 @@
 #include "sim/fit/FitMap.h"
 #include "sim/fit/SizeFitter.h"
 #include "sim/garment/GarmentStyle.h"
+#include "sim/pattern/Sewing.h"
 
 namespace figment::serve {
 
@@ -147,6 +150,7 @@ struct FitMapTarget {
   std::string kind;
   const MeshFile* skin = nullptr;  // a measured body
   ClothParameters parameters;
+  std::optional<RestShape> flat;  // a sewn garment's rest shape (else its rest mesh's)
 };
 
 // The garment at `coordinates` in its colour, drawn by a ClothingLayer; or with a fit map an
@@ -174,7 +178,7 @@ SoSeparator* garment(const OutfitItem& item, SoCoordinate3* coordinates,
     triangles(faces->coordIndex);
     separator->addChild(faces);
     fitMap.garments->push_back(
-        {std::move(cut), coordinates, colour, fitMap.fabric, fitMap.kind, fitMap.skin, fitMap.parameters});
+        {std::move(cut), fitMap.flat, coordinates, colour, fitMap.fabric, fitMap.kind, fitMap.skin, fitMap.parameters});
     *drawn = &faces->coordIndex;
     return separator;
   }
@@ -221,13 +225,16 @@ TriangleMesh restMesh(const ClothEngine& engine) {
 }
 
 // The size advice's drape (sim/fit/SizeFitter.h: sizeDrapeParameters) as a ClothEngine's.
-ClothEngine* gradedEngine(const figment::GarmentStyle& style, bool layered, SoNode* body) {
-  const ClothParameters p = sizeDrapeParameters(style);
+// A cut garment over another takes penalty contacts, as scenes/outfit-layers.iv does; a sewn
+// one keeps the constraints, its panels sewn shut over the layer beneath (penalty contacts
+// let a circle skirt's waistband, pulled shut over a T-shirt, tear: an edge at 1.6 times its
+// rest length, against 1.3 with constraints).
+ClothEngine* gradedEngine(const std::string& fabric, const ClothParameters& p, bool layered, bool sewn, SoNode* body) {
   auto* engine = new ClothEngine;
   engine->body = body;
-  engine->material = style.fabric;
+  engine->material = fabric.c_str();
   engine->integrator.set("IMPLICIT");
-  if (layered) engine->contactModel.set("PENALTY");
+  if (layered && !sewn) engine->contactModel.set("PENALTY");
   engine->timeStep = p.timeStep;
   engine->maxTime = p.maxTime;
   engine->restSpeed = p.rest.speedThreshold;
@@ -296,8 +303,24 @@ Draped drawnSizeDrape(SoSeparator* root, const OutfitItem& item, const TriangleM
   return {following(&coordinates->point), drawn};
 }
 
+// What a catalogue style is made of and how it drapes: a generator's style's own fabric and
+// settings, or a sewn style's fabric from its catalogue file.
+struct ItemCloth {
+  std::string fabric;
+  ClothParameters parameters;
+  bool sewn = false;
+};
+
+ItemCloth clothOf(const OutfitItem& item, const GarmentCatalogue& catalogue) {
+  if (const figment::GarmentStyle* cut = findStyle(item.style)) return {cut->fabric, sizeDrapeParameters(*cut), false};
+  const CatalogueStyle* sold = catalogue.style(item.style);
+  if (!sold || !sold->sewn()) throw std::invalid_argument("no catalogue style " + item.style);
+  return {sold->fabric, sizeDrapeParameters(sold->fabric), true};
+}
+
 // A made body and its graded garments (the class comment).
-void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request, const OutfitScene::Made& made,
+void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& request,
+                   const GarmentCatalogue& catalogue, const OutfitScene::Made& made,
                    std::vector<OutfitScene::FitMapGarment>* fitMaps, std::vector<DrapeReport>* drawn) {
   const bool kept = request.pose == "rest" && made.restBody;  // the worker keeps it between scenes
   HumanBody* body = kept ? made.restBody(request) : madeBodyNode(request);
@@ -308,17 +331,31 @@ void dressMeasured(SoSeparator* root, SoSeparator* skin, const RenderRequest& re
   const Sex sex = request.sex == "male" ? Sex::Male : Sex::Female;
   std::vector<Draped> beneath;
   for (const OutfitItem& item : request.outfit) {
-    const figment::GarmentStyle& style = *findStyle(item.style);
-    const TriangleMesh& cut = made.graded(item, sex);
-    const FitMapTarget fitMap{fitMaps, style.fabric, request.fitMap, body, sizeDrapeParameters(style)};
+    const ItemCloth cloth = clothOf(item, catalogue);
+    const SizeFitter::Graded& graded = made.graded(item, sex);
+    FitMapTarget fitMap{fitMaps, cloth.fabric, request.fitMap, body, cloth.parameters, graded.flat};
     if (beneath.empty() && request.pose == "rest" && made.sizeDrape) {
       const GarmentDrape drape = made.sizeDrape(request, item);
       if (drawn) drawn->push_back(drape.report);
-      beneath.push_back(drawnSizeDrape(root, item, cut, drape, fitMap));
+      beneath.push_back(drawnSizeDrape(root, item, graded.garment, drape, fitMap));
       continue;
     }
-    ClothEngine* engine = gradedEngine(style, !beneath.empty(), bodyUnder(body, beneath));
-    setMesh(engine, cut);
+    ClothEngine* engine =
+        gradedEngine(cloth.fabric, cloth.parameters, !beneath.empty(), cloth.sewn, bodyUnder(body, beneath));
+    if (cloth.sewn) {
+      // Placed round this body and sewn by the engine, as a SewingPattern node's panels are;
+      // at rest it starts from its own size drape on this body (sewn, the advice's), so the
+      // engine's sewing closes at once and the drape only settles it over the layers beneath
+      // (planDrape moves it out over them). Sewn over a T-shirt from its placed panels, a
+      // pencil skirt's waistband tore.
+      UnsewnGarment cut = made.sewnCut(request, item);
+      if (request.pose == "rest" && made.sizeDrape) cut.placed.vertices = made.sizeDrape(request, item).positions;
+      setMesh(engine, cut.placed);
+      setPanelFields(cut, engine->panelPoints, engine->seams);
+      fitMap.flat = panelsAtRest(cut);
+    } else {
+      setMesh(engine, graded.garment);
+    }
     const SoMFInt32* drawnIndex = nullptr;
     root->addChild(garment(
         item, coordinatesOf(engine), connectedTo(engine->coordIndex), fitMap, [engine] { return restMesh(*engine); },
@@ -345,7 +382,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     root->ref();
     root->addChild(body);
     try {
-      dressMeasured(root, body, request, made, fitMaps, drawn);
+      dressMeasured(root, body, request, *wardrobe.catalogue(), made, fitMaps, drawn);
     } catch (...) {
       root->unref();  // the half-made scene goes
       throw;
@@ -389,6 +426,7 @@ void OutfitScene::paintFitMaps(const std::vector<FitMapGarment>& fitMaps) {
                                std::to_string(rest.vertices.size()));
     FitInput input;
     input.rest = &rest;
+    input.restShape = garment.flat ? &*garment.flat : nullptr;
     input.positions = &positions;
     const FitMapKind kind = fitMapKind(garment.kind);
     std::shared_ptr<const MeshCollider> skin;

@@ -12,6 +12,7 @@
 // nodes and settings as the shipped scenes, so it drapes as a scene file would.
 
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -19,6 +20,8 @@
 #include "sim/cloth/ClothParameters.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/drape/GarmentDrape.h"
+#include "sim/fit/SizeFitter.h"
+#include "sim/pattern/UnsewnGarment.h"
 
 class ClothEngine;
 class HumanBody;
@@ -38,9 +41,13 @@ class OutfitScene {
   // drawn on the simulation's faces (a ClothingLayer draws one material).
   static constexpr int kDisplaySubdivision = 1;
 
-  // A style's garment graded to a size of the chart, for a measured body; throws when it
+  // A style's garment graded to a size of the chart, for a measured body (a sewn style's:
+  // its panels placed round the size's chart body, and their flat shapes); throws when it
   // cannot be made.
-  using GradedGarment = std::function<const TriangleMesh&(const OutfitItem& item, Sex sex)>;
+  using GradedGarment = std::function<const SizeFitter::Graded&(const OutfitItem& item, Sex sex)>;
+  // A sewn style's size cut and placed around the request's made body, unsewn, for a
+  // ClothEngine to sew (a garment that is not drawn from its size drape: an outer layer).
+  using SewnCut = std::function<UnsewnGarment(const RenderRequest& request, const OutfitItem& item)>;
   // The one drape of a made body × garment size (serve/workers/FitWorker.h's sizeDrape): the
   // drape the size advice judges. A made body at rest draws its innermost garment from it
   // rather than draping it again.
@@ -48,6 +55,7 @@ class OutfitScene {
   // What a made body's garments come from; both are asked only for a made body.
   struct Made {
     GradedGarment graded;
+    SewnCut sewnCut;
     SizeDrape sizeDrape;  // null: every garment drapes in the scene
     // The made body at rest, kept by the worker between scenes (made by makeBody); null:
     // made for this scene.
@@ -67,13 +75,14 @@ class OutfitScene {
   // A garment drawn as its fit map (RenderRequest::fitMap): an IndexedFaceSet coloured per
   // vertex by `material`, painted once the drape is done. Nodes of the built scene.
   struct FitMapGarment {
-    TriangleMesh rest;           // the garment as cut
-    SoCoordinate3* coordinates;  // the drape's positions
-    SoMaterial* material;        // one colour per vertex
-    std::string fabric;          // a material preset (sim/cloth/MaterialPresets.h): its limits
-    std::string kind;            // stretch, ease or pressure (RenderRequest::fitMap)
-    const MeshFile* skin;        // for ease and pressure: the measured body; else null
-    ClothParameters parameters;  // for ease and pressure: the drape's (clearance, material)
+    TriangleMesh rest;              // the garment as cut
+    std::optional<RestShape> flat;  // a sewn garment's rest shape: its flat panels
+    SoCoordinate3* coordinates;     // the drape's positions
+    SoMaterial* material;           // one colour per vertex
+    std::string fabric;             // a material preset (sim/cloth/MaterialPresets.h): its limits
+    std::string kind;               // stretch, ease or pressure (RenderRequest::fitMap)
+    const MeshFile* skin;           // for ease and pressure: the measured body; else null
+    ClothParameters parameters;     // for ease and pressure: the drape's (clearance, material)
   };
 
   // The scene's root, not referenced (SceneSession::adopt takes it). `made` is asked only

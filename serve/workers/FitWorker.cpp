@@ -6,6 +6,7 @@
 
 #include "io/DrapeCache.h"
 #include "io/DrapeRecord.h"
+#include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
 #include "io/RecommendationJson.h"
 #include "serve/request/FitRequest.h"
@@ -31,7 +32,8 @@ void bound(std::map<std::string, T>& kept, size_t most) {
 
 }  // namespace
 
-FitWorker::FitWorker(SizeChart chart) : chart_(std::move(chart)) {}
+FitWorker::FitWorker(SizeChart chart, const GarmentCatalogue* catalogue)
+    : chart_(std::move(chart)), catalogue_(catalogue) {}
 
 FitWorker::~FitWorker() = default;
 
@@ -139,10 +141,21 @@ GarmentDrape FitWorker::kept(const std::string& key, GarmentDrape made) {
   return made;
 }
 
+bool FitWorker::fits(const std::string& style) const {
+  if (findStyle(style)) return true;
+  const CatalogueStyle* sold = catalogue_ ? catalogue_->style(style) : nullptr;
+  return sold && sold->sewn();
+}
+
+int FitWorker::sizeIndex(const std::string& style, Sex sex, const std::string& size) const {
+  const int index = chart_.find(sex, size);
+  if (!fits(style) || index < 0) throw std::invalid_argument("no graded garment " + style + ":" + size);
+  return index;
+}
+
 GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::string& style,
                                   const std::string& size) {
-  const int index = chart_.find(sex, size);
-  if (!findStyle(style) || index < 0) throw std::invalid_argument("no graded garment " + style + ":" + size);
+  const int index = sizeIndex(style, sex, size);
   const std::string key = sizeDrapeKey(body, sex, style, index);
   if (auto kept = drapes_.find(key); kept != drapes_.end()) {
     GarmentDrape again = kept->second;
@@ -157,9 +170,8 @@ GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::
         bound(drapes_, kDrapesKept);
         return drapes_.emplace(key, *read).first->second;
       }
-  SizeFitter& sizes = fitter(style);
-  const GarmentDrape made = kept(
-      key, sizes.drape(sizes.graded(sex, index).garment, std::make_shared<const MeshCollider>(madeBody(body, sex))));
+  const GarmentDrape made =
+      kept(key, fitter(style).drapeOn(sex, index, std::make_shared<const MeshCollider>(madeBody(body, sex))));
   bound(drapes_, kDrapesKept);
   drapes_.emplace(key, made);
   return made;
@@ -180,7 +192,14 @@ std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {
 SizeFitter& FitWorker::fitter(const std::string& style) {
   std::unique_ptr<SizeFitter>& fitter = fitters_[style];
   if (!fitter) {
-    fitter = std::make_unique<SizeFitter>(human_.model(), chart_, *findStyle(style));
+    if (const figment::GarmentStyle* cut = findStyle(style)) {
+      fitter = std::make_unique<SizeFitter>(human_.model(), chart_, *cut);
+    } else {
+      // A shop's own garment: its sizes' patterns read once (io/GarmentCatalogue.h).
+      std::unique_ptr<SewnStyle>& patterns = sewn_[style];
+      patterns = std::make_unique<SewnStyle>(sewnStyle(*catalogue_->style(style), chart_));
+      fitter = std::make_unique<SizeFitter>(human_.model(), chart_, *patterns);
+    }
     fitter->shareChartBodies([this](Sex sex, int size) { return chartBody(sex, size); });
     fitter->keepOwnDrapes([this, style](Sex sex, int size, const std::function<GarmentDrape()>& drape) {
       return ownDrape(style, sex, size, drape);
@@ -189,11 +208,17 @@ SizeFitter& FitWorker::fitter(const std::string& style) {
   return *fitter;
 }
 
-const TriangleMesh& FitWorker::garment(const std::string& style, Sex sex, const std::string& size) {
+const SizeFitter::Graded& FitWorker::graded(const std::string& style, Sex sex, const std::string& size) {
   if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
-  const int index = chart_.find(sex, size);
-  if (!findStyle(style) || index < 0) throw std::invalid_argument("no graded garment " + style + ":" + size);
-  return fitter(style).graded(sex, index).garment;
+  return fitter(style).graded(sex, sizeIndex(style, sex, size));
+}
+
+UnsewnGarment FitWorker::cutOn(const BodyMeasures& body, Sex sex, const std::string& style, const std::string& size) {
+  if (const std::string error = loadModel(); !error.empty()) throw std::runtime_error(error);
+  const int index = sizeIndex(style, sex, size);
+  SizeFitter& sizes = fitter(style);
+  if (!sizes.sewn()) throw std::invalid_argument(style + " is cut by a generator, not sewn from a pattern");
+  return sizes.cutOn(sex, index, madeBody(body, sex));
 }
 
 }  // namespace figment::serve

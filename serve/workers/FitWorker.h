@@ -21,11 +21,13 @@
 #include "serve/request/ShopperChoices.h"
 #include "sim/core/TriangleMesh.h"
 #include "sim/drape/GarmentDrape.h"
+#include "sim/fit/SizeFitter.h"
 #include "sim/garment/SizeChart.h"
 
 namespace figment {
 class DrapeCache;
-class SizeFitter;
+class GarmentCatalogue;
+struct SewnStyle;
 }  // namespace figment
 
 namespace figment::serve {
@@ -34,8 +36,10 @@ class FitRequest;
 
 class FitWorker {
  public:
-  // `chart` is the size chart the server checked the request against.
-  explicit FitWorker(SizeChart chart);
+  // `chart` is the size chart the server checked the request against. The styles sewn from
+  // patterns (a shop's own garments) come from `catalogue`, which must outlive the worker;
+  // without one only the generators' styles are fitted.
+  explicit FitWorker(SizeChart chart, const GarmentCatalogue* catalogue = nullptr);
   ~FitWorker();
   FitWorker(const FitWorker&) = delete;
   FitWorker& operator=(const FitWorker&) = delete;
@@ -46,9 +50,16 @@ class FitWorker {
   };
   Answer advise(const FitRequest& request);
   // `style`'s garment graded to the chart's `size` of `sex` (a render's measured outfit):
-  // the same garment the advice drapes. Throws when MakeHuman's data is missing or the
+  // the same garment the advice drapes (a sewn style's: its panels placed round the size's
+  // chart body, and their flat shapes). Throws when MakeHuman's data is missing or the
   // style or size is unknown.
-  const TriangleMesh& garment(const std::string& style, Sex sex, const std::string& size);
+  const SizeFitter::Graded& graded(const std::string& style, Sex sex, const std::string& size);
+  // A sewn style's size cut and placed around the made body of `body`, unsewn: what a
+  // ClothEngine sews when the garment is not the advice's drape (an outer layer). Throws as
+  // graded(), and std::invalid_argument for a style that is not sewn.
+  UnsewnGarment cutOn(const BodyMeasures& body, Sex sex, const std::string& style, const std::string& size);
+  // Whether `style` is one this worker fits: a generator's, or a sewn one of the catalogue.
+  bool fits(const std::string& style) const;
   const SizeChart& chart() const { return chart_; }
   // Why MakeHuman cannot make a body of `body`'s measurements (the fit's one line, naming the
   // measurement and the nearest it reaches), as HumanBody fits them; "" when it can. Throws
@@ -94,7 +105,13 @@ class FitWorker {
   // `made` as the drape record keeps it (float points), stored under `key` when there is a cache.
   GarmentDrape kept(const std::string& key, GarmentDrape made);
 
+  // The chart's index of `size` for `style`, which must be one this worker fits; throws
+  // std::invalid_argument naming the garment.
+  int sizeIndex(const std::string& style, Sex sex, const std::string& size) const;
+
   SizeChart chart_;
+  const GarmentCatalogue* catalogue_ = nullptr;
+  std::map<std::string, std::unique_ptr<SewnStyle>> sewn_;      // by style: read on first use
   MakeHumanLibrary human_;                                      // the worker's: read on its first fit request
   std::map<std::string, std::unique_ptr<SizeFitter>> fitters_;  // by style
   std::map<std::string, TriangleMesh> bodies_;                  // by sex and measurements: the last few

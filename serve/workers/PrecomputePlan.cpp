@@ -103,6 +103,7 @@ std::variant<PrecomputePlan::Requests, std::string> PrecomputePlan::fromCatalogu
         for (const std::string& size : style->sizes(sex))
           for (const std::string& pose : poses)
             for (const std::string& view : views) {
+              if (style->sewn() && pose != "rest") continue;  // sewn standing (RenderRequest)
               QueryParameters parameters = measures;
               parameters.insert(parameters.end(), {{"outfit", style->name + ":" + size + ":" + style->colours.front()},
                                                    {"pose", pose},

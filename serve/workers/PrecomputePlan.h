@@ -34,7 +34,7 @@ class PrecomputePlan {
     std::string size = "800x600";     // WxH
   };
   // For each sex: every style sold to it × each size it is sold in, in its default colour,
-  // × bodies × poses × views.
+  // × bodies × poses × views (a sewn style at rest only: it is sewn standing).
   static std::variant<Requests, std::string> fromCatalogue(const Grid& grid, const GarmentCatalogue& catalogue);
 };
 

@@ -68,7 +68,7 @@ RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& c
   startError_ = wardrobe_.read(scenesFolder);
   // The server read the same catalogue and, when it could not, draws the Mannequin alone
   // and refuses fits: no made body comes.
-  if (wardrobe_.catalogue()) fit_ = std::make_unique<FitWorker>(wardrobe_.catalogue()->chart());
+  if (wardrobe_.catalogue()) fit_ = std::make_unique<FitWorker>(wardrobe_.catalogue()->chart(), wardrobe_.catalogue());
   if (cacheFolder.empty()) return;
   std::shared_ptr<RedisStore> shared;
   if (!redisUrl.empty()) {
@@ -145,8 +145,11 @@ RenderWorker::Answer RenderWorker::render(const std::string& canonical) {
     try {
       OutfitScene::Made made;
       if (fit_) {
-        made.graded = [this](const OutfitItem& item, Sex sex) -> const TriangleMesh& {
-          return fit_->garment(item.style, sex, item.size);
+        made.graded = [this](const OutfitItem& item, Sex sex) -> const SizeFitter::Graded& {
+          return fit_->graded(item.style, sex, item.size);
+        };
+        made.sewnCut = [this](const RenderRequest& shopper, const OutfitItem& item) {
+          return fit_->cutOn(shopper.body, shopper.sex == "male" ? Sex::Male : Sex::Female, item.style, item.size);
         };
         made.sizeDrape = [this](const RenderRequest& shopper, const OutfitItem& item) {
           return fit_->sizeDrape(shopper.body, shopper.sex == "male" ? Sex::Male : Sex::Female, item.style, item.size);

@@ -61,12 +61,17 @@ DrapePlan planDrape(DrapeAsk ask) {
   plan.report.maxTime = p.maxTime;
   plan.report.triangles = static_cast<int>(plan.request.garment.triangles.size());
   if (plan.request.body && plan.request.body->moves()) plan.request.body->advanceTo(0.0);
-  // Over garments already draped a whole-garment drape starts clean over them; a progressive
-  // drape starts from its coarse level, a sewn one from its placed panels.
-  if (ask.body.beneath && !plan.request.progressive && !plan.request.sewing) {
+  // Over garments already draped a whole-garment drape starts clean over them, and a sewn
+  // one's panels are placed clean over them (its rest shape is its flat panels, so where its
+  // panels start is all its garment's points say: a waistband placed at the skin, inside a
+  // T-shirt beneath, tore pulling out). A progressive drape starts from its coarse level.
+  if (ask.body.beneath && !plan.request.progressive) {
     LayerStart start = startOverLayers(plan.request.garment, *ask.body.beneath, p.clearance);
     plan.report.startedOverLayers = start.moved;
-    if (start.moved > 0) plan.request.start = std::move(start.positions);
+    if (start.moved > 0 && plan.request.sewing)
+      plan.request.garment.vertices = std::move(start.positions);
+    else if (start.moved > 0)
+      plan.request.start = std::move(start.positions);
   }
   return plan;
 }

@@ -13,6 +13,7 @@
 #include "sim/drape/GarmentDrape.h"
 #include "sim/pattern/PatternCutting.h"
 #include "sim/pattern/PatternPlacement.h"
+#include "sim/pattern/Sewing.h"
 
 namespace figment {
 
@@ -162,17 +163,9 @@ const SizeFitter::Graded& SizeFitter::grade(Sex sex, int size) {
   if (style_) {
     made.garment = cutGarment(*style_, made.body);
   } else {
-    const SizePattern& pattern = patternOf(sex, size);
-    const UnsewnGarment cut =
-        cutPattern(placed(pattern.pattern, placementOn(made.body, pattern.madeForStature)), sewn_->spacing);
+    const UnsewnGarment cut = cutOn(sex, size, made.body);
     made.garment = cut.placed;
-    std::vector<std::array<Vec3, 3>> corners;
-    for (const Triangle& t : cut.placed.triangles) {
-      std::array<Vec3, 3> c;
-      for (int k = 0; k < 3; ++k) c[k] = Vec3(cut.flat[t[k]].x(), cut.flat[t[k]].y(), 0.0);
-      corners.push_back(c);
-    }
-    made.flat = RestShape::flatPieces(cut.placed.triangles, std::move(corners), cut.placed.vertices.size());
+    made.flat = panelsAtRest(cut);
   }
   return graded_.emplace(key, std::move(made)).first->second;
 }
@@ -209,10 +202,18 @@ GarmentDrape SizeFitter::drapeSize(const Graded& graded, Sex sex, int size,
   return sewn_ ? sew(sex, size, body) : drape(graded.garment, body, start);
 }
 
-GarmentDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const {
+UnsewnGarment SizeFitter::cutOn(Sex sex, int size, const TriangleMesh& body) const {
+  if (!sewn_) throw std::logic_error("SizeFitter::cutOn: the style is not sewn from patterns");
   const SizePattern& pattern = patternOf(sex, size);
-  const UnsewnGarment cut =
-      cutPattern(placed(pattern.pattern, placementOn(body->surface(), pattern.madeForStature)), sewn_->spacing);
+  return cutPattern(placed(pattern.pattern, placementOn(body, pattern.madeForStature)), sewn_->spacing);
+}
+
+GarmentDrape SizeFitter::drapeOn(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) {
+  return drapeSize(grade(sex, size), sex, size, body, nullptr);
+}
+
+GarmentDrape SizeFitter::sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const {
+  const UnsewnGarment cut = cutOn(sex, size, body->surface());
   DrapeRequest request;
   request.garment = cut.placed;
   request.parameters = parameters_;

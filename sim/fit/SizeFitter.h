@@ -30,6 +30,7 @@
 #include "sim/garment/GarmentStyle.h"
 #include "sim/garment/SizeChart.h"
 #include "sim/pattern/SewingPattern.h"
+#include "sim/pattern/UnsewnGarment.h"
 
 namespace figment {
 
@@ -118,6 +119,14 @@ class SizeFitter {
                      const std::vector<Vec3>* start = nullptr) const;
   // A sewn style's size: its pattern placed on `body`, cut, sewn and draped.
   GarmentDrape sew(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body) const;
+  // A sewn style's size cut and placed around `body`, unsewn (what sew starts from): the
+  // same triangles as graded(sex, size).garment, its nodes where the placement puts them.
+  UnsewnGarment cutOn(Sex sex, int size, const TriangleMesh& body) const;
+  // A size draped cold on `body` as an advice drapes it: sewn on it, or its graded garment
+  // draped (a caller that keeps the drapes of several bodies: the service's worker).
+  GarmentDrape drapeOn(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body);
+  // Whether the style is sewn from patterns.
+  bool sewn() const { return sewn_ != nullptr; }
 
   // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
   // without warm starts) drapes every size cold.

@@ -36,12 +36,6 @@ std::array<Vec3, 3> flatCorners(const UnsewnGarment& garment, const Triangle& t)
   return corners;
 }
 
-RestShape panelsAtRest(const UnsewnGarment& garment) {
-  std::vector<std::array<Vec3, 3>> corners;
-  for (const Triangle& t : garment.placed.triangles) corners.push_back(flatCorners(garment, t));
-  return RestShape::flatPieces(garment.placed.triangles, std::move(corners), garment.placed.vertices.size());
-}
-
 void checkGarment(const UnsewnGarment& garment) {
   const size_t n = garment.placed.vertices.size();
   if (garment.flat.size() != n)
@@ -166,6 +160,12 @@ double largestSeamGap(const UnsewnGarment& garment, const std::vector<Vec3>& pos
   double largest = 0.0;
   for (const auto& [a, b] : garment.seams) largest = std::max(largest, (positions[a] - positions[b]).norm());
   return largest;
+}
+
+RestShape panelsAtRest(const UnsewnGarment& garment) {
+  std::vector<std::array<Vec3, 3>> corners;
+  for (const Triangle& t : garment.placed.triangles) corners.push_back(flatCorners(garment, t));
+  return RestShape::flatPieces(garment.placed.triangles, std::move(corners), garment.placed.vertices.size());
 }
 
 }  // namespace figment

@@ -67,6 +67,9 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
 // began with seams open makes once they have come close (sim/drape/GarmentDrape.cpp).
 SewnGarment mergeSeams(const UnsewnGarment& garment, const std::vector<Vec3>& positions, double within);
 
+// The unsewn panels' rest shape: each triangle resting as it lies in its flat panel.
+RestShape panelsAtRest(const UnsewnGarment& garment);
+
 // The largest distance between the two nodes of any seam pair at `positions` (per panel
 // node), m: what a drape of the sewn garment reports as its seams' largest gap.
 double largestSeamGap(const UnsewnGarment& garment, const std::vector<Vec3>& positions);

@@ -187,7 +187,7 @@ TEST(GarmentCatalogue, ABadPatternStyleIsRefusedNamingItsLine) {
     }
     return std::string();
   };
-  const std::string good = "fabric cotton\nregions waist, upper arms\nfemale M\ncolours 222222\n";
+  const std::string good = "fabric cotton\nregions waist, upper arms\nabout a coat, sewn\nfemale M\ncolours 222222\n";
   write("coat.txt", "style coat\npatterns parka\n" + good);
   EXPECT_NE(message().find("coat.txt:2: the pattern index has no style parka (tshirt, shirt"), std::string::npos)
       << message();
@@ -197,15 +197,22 @@ TEST(GarmentCatalogue, ABadPatternStyleIsRefusedNamingItsLine) {
   EXPECT_NE(message().find("coat.txt:3: fabric tweed is not one of"), std::string::npos) << message();
   write("coat.txt", "style coat\npatterns pencil\nfabric cotton\nregions waist, knees\n");
   EXPECT_NE(message().find("coat.txt:4: region 'knees' is not one of"), std::string::npos) << message();
-  write("coat.txt", "style coat\npatterns pencil\nfabric cotton\nregions waist\nmale M\ncolours 222222\n");
-  EXPECT_NE(message().find("coat.txt:5: the pattern index has no male pencil in size M"), std::string::npos)
+  write("coat.txt",
+        "style coat\npatterns pencil\nfabric cotton\nregions waist\nabout a coat\nmale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt:6: the pattern index has no male pencil in size M"), std::string::npos)
       << message();
   write("coat.txt", "style coat\npatterns pencil\nfemale M\ncolours 222222\n");
   EXPECT_NE(message().find("coat.txt: no \"fabric PRESET\" line"), std::string::npos) << message();
   write("coat.txt", "style dress\nfabric silk\nfemale M\ncolours 222222\n");
   EXPECT_NE(message().find("coat.txt:2: a generator style's fabric is its own"), std::string::npos) << message();
+  // A shopper reads a pattern style's line, a generator's comes with it.
+  write("coat.txt", "style coat\npatterns pencil\nfabric cotton\nregions waist\nfemale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt: no \"about TEXT\" line"), std::string::npos) << message();
+  write("coat.txt", "style dress\nabout a dress\nfemale M\ncolours 222222\n");
+  EXPECT_NE(message().find("coat.txt:2: a generator style's about is its own"), std::string::npos) << message();
   write("coat.txt", "style coat\npatterns pencil\n" + good);
   EXPECT_EQ(message(), "");
+  EXPECT_EQ(GarmentCatalogue(index).style("coat")->about, "a coat, sewn");
   const CatalogueItem coat = GarmentCatalogue(index).resolve("coat:M");
   EXPECT_EQ(std::filesystem::path(coat.patternFile).filename(), "pencil-f-38_specification.json");
   EXPECT_EQ(coat.regions, (std::vector<std::string>{"waist", "upper arms"}));

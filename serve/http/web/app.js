@@ -199,6 +199,7 @@ async function show() {
   const ticket = ++state.shown;  // a slower earlier answer must not replace a later one
   byId("status").textContent = "Draping…";
   byId("error").textContent = "";
+  byId("drape-note").textContent = "";
   const response = await fetch(url);
   if (ticket !== state.shown) return;
   if (!response.ok) {
@@ -216,6 +217,17 @@ async function show() {
   byId("glb").href = url + "&format=glb";
   img.src = img.dataset.url;
   byId("status").textContent = "Shown (" + (response.headers.get("X-Figment-Cache") || "") + ")";
+  byId("drape-note").textContent = drapeNote(response.headers.get("X-Figment-Drape"));
+}
+
+// What the shopper is told when the drape the picture shows may be wrong (X-Figment-Drape).
+function drapeNote(drape) {
+  if (drape === "torn")
+    return "This outfit did not drape cleanly: the cloth was stretched past what it takes somewhere, " +
+           "so the picture may not show how it would wear.";
+  if (drape === "restless")
+    return "This outfit had not quite settled when the picture was taken: it may hang a little differently.";
+  return "";
 }
 
 // A choice changed: the turntable's views are of the old picture; the new one is asked

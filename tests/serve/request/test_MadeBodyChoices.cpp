@@ -1,6 +1,6 @@
 // A made body's choices from the shipped catalogue: the styles the service dresses per sex
-// (cut styles sold in that sex's sizes; sewn ones refused saying so), the default body (the
-// chart's M) and garment, and GET /api/catalogue's part listing each style's sizes per sex.
+// (cut and sewn styles sold in that sex's sizes), the default body (the chart's M) and
+// garment, and GET /api/catalogue's part listing each style's sizes per sex.
 
 #include <gtest/gtest.h>
 
@@ -20,19 +20,17 @@ const GarmentCatalogue& sold() {
 
 }  // namespace
 
-TEST(MadeBodyChoices, TheStylesOfASexAreTheCutOnesSoldInItsSizes) {
+TEST(MadeBodyChoices, TheStylesOfASexAreThoseSoldInItsSizesCutOrSewn) {
   for (const Sex sex : {Sex::Female, Sex::Male}) {
     size_t expected = 0;
-    for (const CatalogueStyle& style : sold().styles()) expected += !style.sewn() && !style.sizes(sex).empty();
+    for (const CatalogueStyle& style : sold().styles()) expected += !style.sizes(sex).empty();
     const std::vector<const CatalogueStyle*> styles = MadeBodyChoices::styles(sold(), sex);
     EXPECT_EQ(styles.size(), expected) << sexName(sex);
-    for (const CatalogueStyle* style : styles) {
-      EXPECT_FALSE(style->sewn()) << style->name;
-      EXPECT_FALSE(style->sizes(sex).empty()) << style->name;
-    }
+    for (const CatalogueStyle* style : styles) EXPECT_FALSE(style->sizes(sex).empty()) << style->name;
   }
-  EXPECT_EQ(MadeBodyChoices::styleNames(sold(), Sex::Female), "dress, skirt, pencil, tshirt");
-  EXPECT_EQ(MadeBodyChoices::styleNames(sold(), Sex::Male), "tshirt");
+  EXPECT_EQ(MadeBodyChoices::styleNames(sold(), Sex::Female),
+            "dress, skirt, pencil, tshirt, tee, shirt, trousers, pencilskirt, circleskirt, sundress");
+  EXPECT_EQ(MadeBodyChoices::styleNames(sold(), Sex::Male), "tshirt, tee, shirt, trousers");
 }
 
 TEST(MadeBodyChoices, AStyleNotDressedIsRefusedSayingWhy) {
@@ -43,12 +41,15 @@ TEST(MadeBodyChoices, AStyleNotDressedIsRefusedSayingWhy) {
   };
   EXPECT_EQ(refusal(Sex::Female, "cape").error, "no style named cape");
   EXPECT_EQ(refusal(Sex::Male, "pencil").error, "pencil is not sold in male sizes");
-  EXPECT_NE(refusal(Sex::Female, "sundress").error.find("sewn from a pattern"), std::string::npos);
-  EXPECT_EQ(refusal(Sex::Male, "cape").accepted, "male styles tshirt");
+  EXPECT_EQ(refusal(Sex::Male, "sundress").error, "sundress is not sold in male sizes");
+  EXPECT_EQ(refusal(Sex::Male, "cape").accepted, "male styles tshirt, tee, shirt, trousers");
   EXPECT_EQ(refusal(Sex::Male, "cape").parameter, "style");
   auto dress = MadeBodyChoices::style(sold(), Sex::Female, "dress", "style", "dress");
   ASSERT_TRUE(std::holds_alternative<const CatalogueStyle*>(dress));
   EXPECT_EQ(std::get<const CatalogueStyle*>(dress)->name, "dress");
+  auto sundress = MadeBodyChoices::style(sold(), Sex::Female, "sundress", "style", "sundress");
+  ASSERT_TRUE(std::holds_alternative<const CatalogueStyle*>(sundress));
+  EXPECT_TRUE(std::get<const CatalogueStyle*>(sundress)->sewn());
 }
 
 TEST(MadeBodyChoices, TheDefaultBodyIsTheChartsMInTheFirstStyleSold) {
@@ -68,9 +69,7 @@ TEST(MadeBodyChoices, TheDefaultBodyIsTheChartsMInTheFirstStyleSold) {
 
 TEST(MadeBodyChoices, TheCatalogueListsEachStylesSizesPerSexFromTheCatalogue) {
   const nlohmann::json json = MadeBodyChoices::toJson(sold());
-  size_t styles = 0;
-  for (const CatalogueStyle& style : sold().styles()) styles += !style.sewn();
-  ASSERT_EQ(json["styles"].size(), styles);
+  ASSERT_EQ(json["styles"].size(), sold().styles().size());
   for (const nlohmann::json& style : json["styles"]) {
     const CatalogueStyle* own = sold().style(style["name"]);
     ASSERT_NE(own, nullptr);
@@ -79,6 +78,10 @@ TEST(MadeBodyChoices, TheCatalogueListsEachStylesSizesPerSexFromTheCatalogue) {
       EXPECT_EQ(listed, own->sizes(sex)) << own->name << " " << sexName(sex);
     }
     EXPECT_EQ(style["defaultColour"], own->colours.front());
+    // A shopper's line for each, and whether it is sewn from a pattern.
+    EXPECT_EQ(style["about"], own->about);
+    EXPECT_FALSE(own->about.empty()) << own->name;
+    EXPECT_EQ(style["sewn"], own->sewn());
   }
   for (const Sex sex : {Sex::Female, Sex::Male}) {
     EXPECT_EQ(json["sizes"][sexName(sex)].size(), sold().chart().sizes(sex).size());

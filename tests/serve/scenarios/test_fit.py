@@ -139,6 +139,27 @@ class Fit(ServerCase):
         # The XL body's hips are 16 cm rounder: its XL skirt covers more of the picture.
         self.assertGreater(large, small * 1.05, (small, large))
 
+    @needs_makehuman
+    def test_a_shops_sewn_style_is_advised_and_pictured_on_the_made_body(self):
+        # A pattern style (sewn from its size's GarmentCode pattern, scenes/patterns/): the
+        # chart's M body is advised its own size among its neighbours, each sewn and at rest,
+        # and each advised size's picture is the drape the advice judged (a cache hit). Posed
+        # it is refused naming pose: its panels are placed and sewn round the standing body.
+        _, advice = self.advice(dict(WOMANS_M, style="tee"))
+        self.assertEqual(advice["recommended"], "M")
+        self.assertEqual(list(advice["sizes"]), ["S", "M", "L"])
+        body = dict(WOMANS_M)
+        del body["style"]
+        for size, fit in advice["sizes"].items():
+            self.assertTrue(fit["at_rest"], size)
+            query = dict(body, outfit="tee:" + size, size="160x200")
+            status, headers, answer = self.server.request("/api/render?" + urllib.parse.urlencode(query))
+            self.assertEqual((status, headers["x-figment-cache"], headers["x-figment-drape"]), (200, "hit", "rest"),
+                             (size, answer[:200]))
+        status, error = self.server.json("/api/render?" + urllib.parse.urlencode(
+            dict(body, outfit="tee:M", pose="walking")))
+        self.assertEqual((status, error["parameter"]), (400, "pose"), error)
+
     def test_a_measured_body_refuses_what_it_cannot_wear(self):
         cases = [(dict(WOMANS_M, outfit="pencil:XXXXL"), "outfit", "sizes XXS, XS, S, M, L, XL"),
                  (dict(WOMANS_M, outfit="cape:M"), "outfit", "female styles dress, skirt, pencil, tshirt"),

@@ -1,17 +1,20 @@
 // A worker's made bodies and size drapes: the body the advice judges on is the mesh a
 // HumanBody node of the same measurements draws (so a picture shows the advice's drape on
 // its own body), and each size's drape is made once: kept in memory, then found in the drape
-// cache by another worker, with the same points. Skipped, before anything runs, where the
-// file system has none of MakeHuman's data.
+// cache by another worker, with the same points; a sewn style's size is sewn on the made
+// body. Skipped, before anything runs, where the file system has none of MakeHuman's data.
 
 #include <Inventor/SoDB.h>
 #include <gtest/gtest.h>
 
 #include "io/DrapeCache.h"
+#include "io/GarmentCatalogue.h"
 #include "io/MakeHumanFiles.h"
 #include "nodes/Init.h"
 #include "nodes/body/HumanBody.h"
 #include "serve/workers/FitWorker.h"
+#include "sim/cloth/DrapeVerdict.h"
+#include "sim/pattern/Sewing.h"
 #include "support/ShippedCatalogue.h"
 #include "support/TempDir.h"
 
@@ -111,4 +114,39 @@ TEST_F(FitWorkerTest, ChartBodiesServeEveryStyleAndIntendedFitsAreFoundInTheCach
   const FitWorker::Answer again = second.advise(pencil);
   EXPECT_EQ(second.ownDrapesMade(), 0);
   EXPECT_EQ(again.body, advised.body);
+}
+
+TEST_F(FitWorkerTest, ASewnStylesSizeIsSewnOnTheMadeBodyClosedAndFoundAgain) {
+  const GarmentCatalogue& shop = test::shippedCatalogue();
+  // Without the catalogue a worker knows only the generators' styles.
+  FitWorker cutOnly(shop.chart());
+  EXPECT_FALSE(cutOnly.fits("pencilskirt"));
+  EXPECT_THROW(cutOnly.sizeDrape(kShopper, Sex::Female, "pencilskirt", "M"), std::invalid_argument);
+  test::TempDir folder;
+  const auto cache = std::make_shared<const DrapeCache>(folder.path(), 64u << 20);
+  FitWorker first(shop.chart(), &shop);
+  first.useCache(cache);
+  ASSERT_TRUE(first.fits("pencilskirt"));
+  const GarmentDrape sewn = first.sizeDrape(kShopper, Sex::Female, "pencilskirt", "M");
+  EXPECT_FALSE(sewn.report.fromCache);
+  EXPECT_TRUE((DrapeVerdict{sewn.report.run, sewn.report.maxTime}.clean())) << sewn.report.verdict;
+  // One point per panel node, on the triangles the graded garment has (what a picture draws),
+  // its rest shape the flat panels.
+  const SizeFitter::Graded& graded = first.graded("pencilskirt", Sex::Female, "M");
+  ASSERT_EQ(sewn.positions.size(), graded.garment.vertices.size());
+  ASSERT_TRUE(graded.flat.has_value());
+  // Placed round the shopper's body, not the chart body: the same panels, other places.
+  const UnsewnGarment cut = first.cutOn(kShopper, Sex::Female, "pencilskirt", "M");
+  EXPECT_EQ(cut.placed.triangles, graded.garment.triangles);
+  EXPECT_NE(cut.placed.vertices, graded.garment.vertices);
+  // Sewn shut: every seam's two sides meet in the drape.
+  EXPECT_LE(largestSeamGap(cut, sewn.positions), 2e-3);
+  EXPECT_GT(largestSeamGap(cut, cut.placed.vertices), 0.1);  // the control: placed, they gape
+  // A generator's style has nothing to sew.
+  EXPECT_THROW(first.cutOn(kShopper, Sex::Female, "pencil", "M"), std::invalid_argument);
+  FitWorker second(shop.chart(), &shop);  // another worker, the same cache
+  second.useCache(cache);
+  const GarmentDrape found = second.sizeDrape(kShopper, Sex::Female, "pencilskirt", "M");
+  EXPECT_TRUE(found.report.fromCache);
+  EXPECT_EQ(found.positions, sewn.positions);
 }

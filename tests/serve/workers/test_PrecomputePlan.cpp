@@ -94,6 +94,22 @@ TEST(PrecomputePlan, TheCatalogueGridIsEverySoldStyleSizeSexBodyPoseAndView) {
   for (const std::string& request : std::get<0>(every)) men += parsed(request).sex == "male";
   EXPECT_EQ(men, garmentsFor(figment::Sex::Male));
   EXPECT_GT(men, 0u);
+  // Posed, a sewn style is left out (it is sewn on the standing body); the cut ones are posed.
+  PrecomputePlan::Grid walking;
+  walking.sexes = {"male"};
+  walking.poses = {"rest", "walking"};
+  const auto posed = PrecomputePlan::fromCatalogue(walking, shippedCatalogue());
+  ASSERT_EQ(posed.index(), 0u) << std::get<1>(posed);
+  size_t cut = 0, sewnWalking = 0;
+  for (const figment::CatalogueStyle* style : MadeBodyChoices::styles(shippedCatalogue(), figment::Sex::Male))
+    cut += style->sewn() ? 0 : style->sizes(figment::Sex::Male).size();
+  for (const std::string& request : std::get<0>(posed)) {
+    const RenderRequest made = parsed(request);
+    sewnWalking += made.pose == "walking" && shippedCatalogue().style(made.outfit[0].style)->sewn();
+  }
+  EXPECT_EQ(sewnWalking, 0u);
+  EXPECT_EQ(std::get<0>(posed).size(), garmentsFor(figment::Sex::Male) + cut);
+  EXPECT_GT(cut, 0u);
 }
 
 TEST(PrecomputePlan, ABadSexBodyOrPoseIsNamed) {
