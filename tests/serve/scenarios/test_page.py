@@ -336,7 +336,21 @@ class PhonePage(Browser):
         pixels = self.picture_pixels()
         browser.find_element(By.XPATH, "//label[contains(., 'Underwear')]").click()
         self.wait_for_picture_naming(["outfit=none", "underwear=off"])
+        pixels = self.assertPictureChanged(pixels)
+
+        # A shop's own garment, sewn from its size's pattern, is chosen as any other; a drape
+        # at rest says nothing more, and one that tore or did not settle says so in words.
+        Select(browser.find_element(By.ID, "style-0")).select_by_value("tee")
+        sewn = self.wait_for_picture_naming(["outfit=tee%3AM"])
         self.assertPictureChanged(pixels)
+        self.assertEqual(browser.find_element(By.ID, "error").text, "")
+        self.assertEqual(browser.find_element(By.ID, "drape-note").text, "", sewn)
+        for drape, words in (("torn", "did not drape cleanly"), ("restless", "not quite settled"), ("rest", "")):
+            note = browser.execute_script("return drapeNote(arguments[0])", drape)
+            if words:
+                self.assertIn(words, note, drape)
+            else:
+                self.assertEqual(note, "", drape)
 
     def band_pixels(self):
         """(warm, blue): the shown picture's pixels in the fit map's red to yellow bands (no
