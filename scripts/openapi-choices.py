@@ -134,8 +134,12 @@ def write(document, sizes, styles):
         for rule in rules[name].values():
             union += [value for value in rule["enum"] if value not in union]
         parameters[key]["schema"]["enum"] = union
-    items = [item_pattern(body, sizes, styles) for body in BODIES]
-    parameters["Outfit"]["schema"]["pattern"] = outfit_pattern(alternatives(items))
+    # A whole outfit of one body's: one body's items may not be mixed with another's (a made
+    # body's sized item beside the Mannequin's unsized one is refused, so the document must too).
+    outfits = [item + "(," + item + "){0,2}" for item in (item_pattern(body, sizes, styles) for body in BODIES)]
+    parameters["Outfit"]["schema"]["pattern"] = "^(|none|" + "|".join(outfits) + ")$"
+    # The styles sewn from patterns: a posed made body refuses them (the hooks keep the rule).
+    parameters["Outfit"]["x-figment-sewn-styles"] = [name for name, sold, sewn in styles if sewn]
     for key, name in (("Stature", "stature"), ("Bust", "bust"), ("Chest", "chest"), ("Waist", "waist"),
                       ("Hips", "hips"), ("Pose", "pose"), ("Outfit", "outfit"), ("Fitmap", "fitmap"),
                       ("Underwear", "underwear")):

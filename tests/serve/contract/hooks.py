@@ -21,7 +21,8 @@ announces, so before it is sent it is made to keep the rules, and only positive 
     schema that allowed it is wrong;
   - chest given beside bust with another text is left out (bust and chest must agree);
   - an outfit that wears a style twice is left out;
-  - a posed made body keeps its pose only in one garment, sitting only in a tshirt or
+  - a posed made body keeps its pose only in one garment of a cut style (the outfit
+    parameter's `x-figment-sewn-styles` are sewn standing), sitting only in a tshirt or
     nothing (the default outfit counts: a dress for women, a tshirt for men), else the pose
     is left out;
   - a size past the pixels in all is left out;
@@ -119,7 +120,9 @@ def _between(values, parameters):
     styles = _outfit(values)
     pose = values.get("pose")
     if _text(values.get("body")) != "mannequin" and pose is not None and _text(pose) != "rest":
-        if len(styles) > 1 or (_text(pose) == "sitting" and styles and styles != ["tshirt"]):
+        sewn = parameters.get("outfit", {}).get("x-figment-sewn-styles", [])
+        if len(styles) > 1 or (_text(pose) == "sitting" and styles and styles != ["tshirt"]) or \
+                any(style in sewn for style in styles):
             values["pose"] = None
     size = values.get("size")
     if size is not None and "size" in parameters:
