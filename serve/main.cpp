@@ -33,6 +33,7 @@ int runWorker(const figment::serve::ServeOptions& options) {
   // answer, which carries it).
   figment::initHeadless("figment-serve: worker: ");
   figment::serve::RenderWorker worker(options.scenesFolder, options.cacheFolder, options.redisUrl, options.redisTtl);
+  if (options.adviceThreads > 0) worker.adviceThreads(unsigned(options.adviceThreads));
   if (!worker.startError().empty()) {
     std::fprintf(stderr, "figment-serve: worker: %s\n", worker.startError().c_str());
     return 1;
@@ -122,6 +123,10 @@ void addOptions(CLI::App& app, figment::serve::ServeOptions& options, JobOptions
                  "Redis shared by instances: redis://HOST[:PORT][/DB] or a Unix socket's path (docs/deploy.md)");
   app.add_option("--redis-ttl", options.redisTtl, "seconds a cache entry stays in Redis unread")
       ->check(CLI::Range(1L, 10L * 365 * 24 * 3600));
+  app.add_option("--advice-threads", options.adviceThreads,
+                 "an advice's sizes draped at once in a worker, each on a thread (default: one per core; 1 where "
+                 "every worker is busy)")
+      ->check(CLI::Range(1, 64));
   app.add_flag("--job-worker", jobs.on, "take render jobs from the work queue in --redis instead of serving HTTP");
   app.add_option("--consumer", jobs.consumer, "this job worker's name (default: HOST-PID)");
   app.add_option("--claim-after", jobs.claimAfter,

@@ -1,8 +1,11 @@
 #include "serve/workers/FitWorker.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+#include <thread>
 
 #include "io/DrapeCache.h"
 #include "io/DrapeRecord.h"
@@ -33,7 +36,9 @@ void bound(std::map<std::string, T>& kept, size_t most) {
 }  // namespace
 
 FitWorker::FitWorker(SizeChart chart, const GarmentCatalogue* catalogue)
-    : chart_(std::move(chart)), catalogue_(catalogue) {}
+    : chart_(std::move(chart)),
+      catalogue_(catalogue),
+      drapeThreads_(std::max(1u, std::thread::hardware_concurrency())) {}
 
 FitWorker::~FitWorker() = default;
 
@@ -52,9 +57,13 @@ FitWorker::Answer FitWorker::advise(const FitRequest& request) {
     return failure(422, std::string("no body of these measurements can be made: ") + error.what());
   }
   const std::vector<ChartSize>& sizes = chart_.sizes(request.sex);
+  SizeFitter& style = fitter(request.style);
   // Each candidate's one drape on this body, the one its picture draws (cold: a size's drape
-  // is the same whichever was asked first).
-  const Recommendation advice = fitter(request.style).recommendFrom(*body, request.sex, [&](int size) {
+  // is the same whichever was asked first), the new ones draped side by side.
+  std::map<int, GarmentDrape> made =
+      drapeCandidates(request.body, request.sex, request.style, style.candidates(*body, request.sex));
+  const Recommendation advice = style.recommendFrom(*body, request.sex, [&](int size) {
+    if (auto fresh = made.find(size); fresh != made.end()) return fresh->second;
     return sizeDrape(request.body, request.sex, request.style, sizes.at(size_t(size)).name);
   });
   return {200, recommendationJson(advice)};
@@ -175,6 +184,50 @@ GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::
   bound(drapes_, kDrapesKept);
   drapes_.emplace(key, made);
   return made;
+}
+
+std::map<int, GarmentDrape> FitWorker::drapeCandidates(const BodyMeasures& body, Sex sex, const std::string& style,
+                                                       const std::vector<int>& sizes) {
+  std::vector<int> missing;
+  std::vector<std::string> keys;
+  std::string problem;
+  for (const int size : sizes) {
+    const std::string key = sizeDrapeKey(body, sex, style, size);
+    if (drapes_.count(key) || (cache_ && cache_->find(key, problem))) continue;
+    missing.push_back(size);
+    keys.push_back(key);
+  }
+  if (missing.size() < 2 || drapeThreads_ < 2) return {};
+  SizeFitter& fitter = this->fitter(style);
+  std::vector<const SizeFitter::Graded*> graded;
+  for (const int size : missing) graded.push_back(&fitter.graded(sex, size));  // grading is not thread-safe
+  const auto collider = std::make_shared<const MeshCollider>(madeBody(body, sex));
+  std::vector<GarmentDrape> drapes(missing.size());
+  std::vector<std::exception_ptr> errors(missing.size());
+  // drapeThreads_ at a time: each drape is its own solver on the shared, read-only body.
+  for (size_t first = 0; first < missing.size(); first += drapeThreads_) {
+    std::vector<std::thread> threads;
+    for (size_t i = first; i < std::min(missing.size(), first + drapeThreads_); ++i)
+      threads.emplace_back([&, i] {
+        try {
+          drapes[i] = fitter.drapeGraded(*graded[i], sex, missing[i], collider);
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
+      });
+    for (std::thread& thread : threads) thread.join();
+  }
+  for (const std::exception_ptr& error : errors)
+    if (error) std::rethrow_exception(error);
+  std::map<int, GarmentDrape> out;
+  for (size_t i = 0; i < missing.size(); ++i) {
+    GarmentDrape made = kept(keys[i], std::move(drapes[i]));
+    bound(drapes_, kDrapesKept);
+    drapes_.emplace(keys[i], made);
+    out.emplace(missing[i], std::move(made));
+  }
+  sideBySide_ += int(missing.size());
+  return out;
 }
 
 std::string FitWorker::unreachable(const BodyMeasures& body, Sex sex) {

@@ -84,10 +84,17 @@ class FitWorker {
   // which depend on no shopper) are kept there too, so a new worker or instance finds them.
   void useCache(std::shared_ptr<const DrapeCache> cache) { cache_ = std::move(cache); }
 
+  // How many of an advice's sizes drape at once, each on a thread of its own (1: one after
+  // another). By default the cores the machine has: a shopper's advice waits on its slowest
+  // size, not their sum. The drapes are the same either way, to the bit (test_FitWorker).
+  void drapeSizesOn(unsigned threads) { drapeThreads_ = threads < 1 ? 1 : threads; }
+
   // What this worker has made so far: chart bodies (one per sex and size, shared by every
   // style) and drapes of a size on its own chart body (not found in memory or the cache).
   int chartBodiesMade() const { return chartBodiesMade_; }
   int ownDrapesMade() const { return ownDrapesMade_; }
+  // Size drapes made side by side on threads (drapeSizesOn), of all made so far.
+  int sizesDrapedSideBySide() const { return sideBySide_; }
 
  private:
   // "" once the model is read, else why not.
@@ -104,6 +111,10 @@ class FitWorker {
   GarmentDrape ownDrape(const std::string& style, Sex sex, int size, const std::function<GarmentDrape()>& drape);
   // `made` as the drape record keeps it (float points), stored under `key` when there is a cache.
   GarmentDrape kept(const std::string& key, GarmentDrape made);
+  // The candidates' drapes on the made body that neither memory nor the cache has, draped
+  // drapeThreads_ at a time and kept; by size index. Fewer than two: none (sizeDrape drapes it).
+  std::map<int, GarmentDrape> drapeCandidates(const BodyMeasures& body, Sex sex, const std::string& style,
+                                              const std::vector<int>& sizes);
 
   // The chart's index of `size` for `style`, which must be one this worker fits; throws
   // std::invalid_argument naming the garment.
@@ -119,6 +130,8 @@ class FitWorker {
   std::map<std::pair<int, int>, TriangleMesh> chartBodies_;     // by sex and size index
   std::shared_ptr<const DrapeCache> cache_;
   int chartBodiesMade_ = 0, ownDrapesMade_ = 0;
+  unsigned drapeThreads_ = 1;
+  int sideBySide_ = 0;
 };
 
 }  // namespace figment::serve

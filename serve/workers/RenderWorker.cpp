@@ -81,6 +81,10 @@ RenderWorker::RenderWorker(const std::string& scenesFolder, const std::string& c
   if (fit_) fit_->useCache(session_.context().cache);  // the size drapes beside the engines' drapes
 }
 
+void RenderWorker::adviceThreads(unsigned threads) {
+  if (fit_) fit_->drapeSizesOn(threads);
+}
+
 RenderWorker::~RenderWorker() {
   session_.clear();
   for (const auto& [key, body] : restBodies_) body->unref();

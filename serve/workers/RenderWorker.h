@@ -36,6 +36,9 @@ class RenderWorker {
 
   // "" when the wardrobe read, else why not (the worker then exits).
   const std::string& startError() const { return startError_; }
+  // How many of an advice's sizes drape at once (FitWorker::drapeSizesOn); no effect without a
+  // size chart.
+  void adviceThreads(unsigned threads);
 
   // Answers requests until the server closes the channel.
   void serve(const FrameChannel& channel);

@@ -18,6 +18,7 @@ struct ServeOptions {
   double renderBurst = 60;             // renders a client may ask at once
   std::string redisUrl;                // the shared cache (and work queue) in Redis; "" for none
   long redisTtl = 30L * 24 * 3600;     // s an entry stays in Redis unread
+  int adviceThreads = 0;               // an advice's sizes draped at once in a worker; 0: one per core
 };
 
 }  // namespace figment::serve

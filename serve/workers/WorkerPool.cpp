@@ -23,6 +23,8 @@ PoolOptions workerPoolOptions(const ServeOptions& options, const std::string& pr
   PoolOptions pool;
   pool.program = program;
   pool.arguments = {"--worker", "--scenes", options.scenesFolder, "--cache", options.cacheFolder};
+  if (options.adviceThreads > 0)
+    pool.arguments.insert(pool.arguments.end(), {"--advice-threads", std::to_string(options.adviceThreads)});
   if (!options.redisUrl.empty())
     pool.arguments.insert(pool.arguments.end(),
                           {"--redis", options.redisUrl, "--redis-ttl", std::to_string(options.redisTtl)});

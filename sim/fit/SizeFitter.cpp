@@ -331,6 +331,11 @@ Recommendation SizeFitter::recommend(const TriangleMesh& body, Sex sex, bool war
   return out;
 }
 
+std::vector<int> SizeFitter::candidates(const TriangleMesh& body, Sex sex) const {
+  int centre = 0;
+  return candidatesFor(measureBody(body), sex, centre);
+}
+
 Recommendation SizeFitter::recommendFrom(const TriangleMesh& body, Sex sex,
                                          const std::function<GarmentDrape(int)>& drapeOf) {
   const BodyMeasurements measured = measureBody(body);

@@ -127,6 +127,15 @@ class SizeFitter {
   GarmentDrape drapeOn(Sex sex, int size, const std::shared_ptr<const MeshCollider>& body);
   // Whether the style is sewn from patterns.
   bool sewn() const { return sewn_ != nullptr; }
+  // The sizes a body is advised among (indices into the chart's sizes of `sex`, smallest
+  // first): recommendFrom asks drapeOf for each of these.
+  std::vector<int> candidates(const TriangleMesh& body, Sex sex) const;
+  // A size draped cold on `body` from its graded garment (graded(sex, size), made first):
+  // const, so several sizes may drape at once on threads of their own (the service's advice).
+  GarmentDrape drapeGraded(const Graded& graded, Sex sex, int size,
+                           const std::shared_ptr<const MeshCollider>& body) const {
+    return drapeSize(graded, sex, size, body, nullptr);
+  }
 
   // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
   // without warm starts) drapes every size cold.

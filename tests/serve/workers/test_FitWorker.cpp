@@ -150,3 +150,25 @@ TEST_F(FitWorkerTest, ASewnStylesSizeIsSewnOnTheMadeBodyClosedAndFoundAgain) {
   EXPECT_TRUE(found.report.fromCache);
   EXPECT_EQ(found.positions, sewn.positions);
 }
+
+TEST_F(FitWorkerTest, AnAdvicesSizesDrapedSideBySideAreTheSizesDrapedOneByOne) {
+  FitRequest pencil;
+  pencil.sex = Sex::Female;
+  pencil.style = "pencil";
+  pencil.body = kShopper;
+  FitWorker oneByOne(test::shippedCatalogue().chart()), sideBySide(test::shippedCatalogue().chart());
+  oneByOne.drapeSizesOn(1);
+  sideBySide.drapeSizesOn(3);
+  const FitWorker::Answer alone = oneByOne.advise(pencil), together = sideBySide.advise(pencil);
+  ASSERT_EQ(together.status, 200) << together.body;
+  EXPECT_EQ(oneByOne.sizesDrapedSideBySide(), 0);
+  EXPECT_EQ(sideBySide.sizesDrapedSideBySide(), 3);  // the three candidates, on threads of their own
+  EXPECT_EQ(together.body, alone.body);              // the same advice, to the figure
+  for (const char* size : {"S", "M", "L"})
+    EXPECT_EQ(sideBySide.sizeDrape(kShopper, Sex::Female, "pencil", size).positions,
+              oneByOne.sizeDrape(kShopper, Sex::Female, "pencil", size).positions)
+        << size;
+  // Drapes it has are not made again: another advice on the same body drapes nothing.
+  ASSERT_EQ(sideBySide.advise(pencil).body, together.body);
+  EXPECT_EQ(sideBySide.sizesDrapedSideBySide(), 3);
+}

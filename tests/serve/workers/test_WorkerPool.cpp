@@ -148,7 +148,7 @@ TEST(WorkerPool, APoolWithoutWorkersTakesNothing) {
 }
 
 // The workers a figment-serve of these options starts: itself again in worker mode, with its
-// scenes, drape cache and Redis; four requests waiting per worker unless told.
+// scenes, drape cache, advice threads and Redis; four requests waiting per worker unless told.
 TEST(WorkerPool, WorkerPoolOptionsStartTheProgramInWorkerMode) {
   ServeOptions options;
   options.workers = 3;
@@ -163,4 +163,9 @@ TEST(WorkerPool, WorkerPoolOptionsStartTheProgramInWorkerMode) {
   pool = workerPoolOptions(options, "/bin/figment-serve");
   EXPECT_EQ(pool.arguments.back(), std::to_string(options.redisTtl));
   EXPECT_EQ(pool.queue, 2);
+  // An advice's threads go to the workers only when given (their own default: one per core).
+  options.adviceThreads = 1;
+  pool = workerPoolOptions(options, "/bin/figment-serve");
+  EXPECT_EQ(std::vector<std::string>(pool.arguments.begin() + 5, pool.arguments.begin() + 7),
+            (std::vector<std::string>{"--advice-threads", "1"}));
 }
