@@ -118,3 +118,37 @@ TEST(DrapePlan, MixAsksForThePartsTheGarmentStartsNear) {
   EXPECT_EQ(plan.request.body, mixed);
   EXPECT_EQ(plan.request.garment.vertices, ask.garment.vertices);  // the garment as asked
 }
+
+TEST(DrapePlan, SewnPanelsOverALayerAreMovedOutOverItBeforeTheSewing) {
+  // Two panels placed round a ball 2 cm into a layer (a sphere 3 cm larger) that lies over it:
+  // a sewn garment's start is its placed panels, so the plan moves them, not a start.
+  const double layer = kRadius + 0.03;
+  auto beneath = std::make_shared<MeshCollider>(meshes::sphere(layer, 32, 16));
+  DrapeAsk ask;
+  ask.garment = meshes::grid(4, 4, 0.1, 0.1, Vec3(-0.05, 0.05, layer - 0.02), Vec3::UnitX(), -Vec3::UnitY());
+  const size_t half = ask.garment.vertices.size();
+  TriangleMesh back = ask.garment;
+  for (Vec3& v : back.vertices) v.z() = -v.z();
+  for (Vec3& v : back.vertices) ask.garment.vertices.push_back(v);
+  for (Triangle t : back.triangles)
+    ask.garment.triangles.push_back({t[0] + int(half), t[2] + int(half), t[1] + int(half)});
+  ask.parameters.integrator = Integrator::Implicit;
+  ask.parameters.clearance = 0.003;
+  ask.body.collider = beneath;
+  ask.body.beneath = beneath;
+  DrapeSewing sewing;
+  for (const Vec3& v : ask.garment.vertices) sewing.flat.emplace_back(v.x(), v.y());
+  sewing.seams = {{0, int(half)}};
+  ask.sewing = sewing;
+  const TriangleMesh placed = ask.garment;
+  const DrapePlan plan = planDrape(ask);
+  EXPECT_GT(plan.report.startedOverLayers, 0);
+  EXPECT_FALSE(plan.request.start.has_value());  // the panels themselves start over the layer
+  // At the clearance over the layer's facets, which lie up to 1.5 mm inside the sphere.
+  for (size_t i = 0; i < placed.vertices.size(); ++i)
+    EXPECT_GE(plan.request.garment.vertices[i].norm(), layer + 0.003 - 2e-3) << i;
+  EXPECT_EQ(plan.request.garment.triangles, placed.triangles);
+  // The control: without the layer beneath, the panels start where they were placed.
+  ask.body.beneath = nullptr;
+  EXPECT_EQ(planDrape(ask).request.garment.vertices, placed.vertices);
+}
