@@ -20,7 +20,7 @@ constexpr double kWaistShare = 0.6;  // of the stature: where the torso's centre
 // m: how far a sleeve's panel starts from the arm it is placed along (LimbClearance.h):
 // its nodes a spacing clear of the arm's surface.
 constexpr double kArmClearance = 0.02;
-}
+}  // namespace
 
 PatternPlacement placementOn(const TriangleMesh& body, double madeForStature) {
   if (body.vertices.empty()) throw std::invalid_argument("the body to place the pattern on has no vertices");

@@ -1,0 +1,86 @@
+// Resting a garment's shoulders on a body it was not made for: a seam that would close
+// under the body's top surface raises the garment onto it; seams that close outside the
+// body, deep inside it or within one panel (darts) leave it where it is.
+#include <gtest/gtest.h>
+
+#include "sim/pattern/ShoulderRest.h"
+#include "support/TestMeshes.h"
+
+namespace figment {
+namespace {
+
+// A closed box from `lo` to `hi`, counter-clockwise seen from outside: a torso whose top
+// (its "shoulders") is the face y = hi.y.
+TriangleMesh box(const Vec3& lo, const Vec3& hi) {
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k)
+    mesh.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& f : faces) {
+    mesh.triangles.push_back({f[0], f[1], f[2]});
+    mesh.triangles.push_back({f[0], f[2], f[3]});
+  }
+  return mesh;
+}
+
+// A front and a back panel, 0.1 m wide and 0.2 tall, at z = +-0.3, their tops at `top`,
+// sewn along their tops: a shoulder seam whose straight closing line runs through z = 0.
+SewingPattern shoulderSeam(double top) {
+  SewingPattern pattern;
+  for (double z : {0.3, -0.3}) {
+    Panel p;
+    p.vertices = {Vec2(0.05, 0.0), Vec2(0.15, 0.0), Vec2(0.15, 0.2), Vec2(0.05, 0.2)};
+    for (int k = 0; k < 4; ++k) p.edges.push_back({k, (k + 1) % 4, {}});
+    p.translation = Vec3(0.0, top - 0.2, z);
+    pattern.panels.push_back(p);
+  }
+  pattern.stitches.push_back({{0, 2}, {1, 2}, false});  // the top edges
+  return pattern;
+}
+
+const TriangleMesh kTorso = box(Vec3(-0.2, 0.0, -0.12), Vec3(0.2, 1.5, 0.12));
+
+TEST(ShoulderRest, CrossingsAboveAPointInsideABoxAreItsTop) {
+  const std::vector<double> inside = crossingsAbove(kTorso, 0.013, 0.021, 1.0);
+  ASSERT_EQ(inside.size(), 1u);
+  EXPECT_NEAR(inside[0], 1.5, 1e-12);
+  // Below the box: its bottom and its top.
+  EXPECT_EQ(crossingsAbove(kTorso, 0.013, 0.021, -1.0).size(), 2u);
+  // Beside it: none.
+  EXPECT_TRUE(crossingsAbove(kTorso, 0.5, 0.0, 1.0).empty());
+}
+
+TEST(ShoulderRest, RaisesASeamThatClosesUnderTheTopOntoIt) {
+  ShoulderRestOptions options;
+  // The seam's line lies 4 cm under the top: it rises 4 cm and the clearance.
+  EXPECT_NEAR(shoulderRise(shoulderSeam(1.46), kTorso, options), 0.04 + options.clearance, 1e-9);
+  // The control: a seam that closes above the top does not move.
+  EXPECT_EQ(shoulderRise(shoulderSeam(1.55), kTorso, options), 0.0);
+}
+
+TEST(ShoulderRest, LeavesSeamsDeepInTheBodyAndDartsWhereTheyAre) {
+  ShoulderRestOptions options;
+  // 30 cm under the top: not under its shoulders but through the body.
+  EXPECT_EQ(shoulderRise(shoulderSeam(1.2), kTorso, options), 0.0);
+  // Under the top but within one panel: a dart, which moves with its panel.
+  SewingPattern dart = shoulderSeam(1.46);
+  dart.stitches = {{{0, 0}, {0, 2}, false}};
+  EXPECT_EQ(shoulderRise(dart, kTorso, options), 0.0);
+}
+
+TEST(ShoulderRest, LeavesASeamUnderMoreOfTheBodyWhereItIs) {
+  // A "waist": the seam lies inside a lower box, under which a second, higher box (a
+  // chest) stands apart: the line up crosses three surfaces, so the seam does not rest on
+  // a top.
+  TriangleMesh body = box(Vec3(-0.2, 0.0, -0.12), Vec3(0.2, 1.0, 0.12));
+  const TriangleMesh chest = box(Vec3(-0.2, 1.05, -0.12), Vec3(0.2, 1.5, 0.12));
+  const int offset = static_cast<int>(body.vertices.size());
+  body.vertices.insert(body.vertices.end(), chest.vertices.begin(), chest.vertices.end());
+  for (const Triangle& t : chest.triangles) body.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  EXPECT_EQ(shoulderRise(shoulderSeam(0.96), body), 0.0);
+  // The control: without the chest the same seam rests on the lower box's top.
+  EXPECT_GT(shoulderRise(shoulderSeam(0.96), box(Vec3(-0.2, 0.0, -0.12), Vec3(0.2, 1.0, 0.12))), 0.04);
+}
+
+}  // namespace
+}  // namespace figment
