@@ -19,8 +19,13 @@ std::vector<Vec3> placedSamples(const Panel& panel, int edge, int segments) {
 
 }  // namespace
 
-std::vector<double> crossingsAbove(const TriangleMesh& body, double x, double z, double from) {
-  std::vector<double> heights;
+bool inside(const TriangleMesh& body, const Vec3& p) {
+  // A closed surface: a point inside it lies under an odd number of its crossings.
+  return crossingsAbove(body, p.x(), p.z(), p.y()).size() % 2 == 1;
+}
+
+std::vector<Crossing> crossingsAbove(const TriangleMesh& body, double x, double z, double from) {
+  std::vector<Crossing> crossings;
   for (const Triangle& t : body.triangles) {
     const Vec3 &a = body.vertices[t[0]], &b = body.vertices[t[1]], &c = body.vertices[t[2]];
     // Barycentric coordinates of (x, z) in the triangle's shadow on the xz plane; a
@@ -32,10 +37,10 @@ std::vector<double> crossingsAbove(const TriangleMesh& body, double x, double z,
     // Half-open on two edges, so a line through a shared edge counts it once.
     if (u < 0.0 || v < 0.0 || u + v >= 1.0) continue;
     const double y = a.y() + u * (b.y() - a.y()) + v * (c.y() - a.y());
-    if (y > from) heights.push_back(y);
+    if (y > from) crossings.push_back({y, (b - a).cross(c - a).normalized().y()});
   }
-  std::sort(heights.begin(), heights.end());
-  return heights;
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& p, const Crossing& q) { return p.y < q.y; });
+  return crossings;
 }
 
 double shoulderRise(const SewingPattern& pattern, const TriangleMesh& body, const ShoulderRestOptions& options) {
@@ -47,10 +52,11 @@ double shoulderRise(const SewingPattern& pattern, const TriangleMesh& body, cons
     const std::vector<Vec3> b = placedSamples(pattern.panels[stitch.second.panel], stitch.second.edge, n);
     for (int k = 0; k <= n; ++k) {
       // Paired by fraction of arc length as the cutting pairs them (PatternCutting.h).
-      const Vec3 middle = 0.5 * (a[k] + b[stitch.sameDirection ? k : n - k]);
-      const std::vector<double> above = crossingsAbove(body, middle.x(), middle.z(), middle.y());
-      if (above.size() != 1 || above[0] - middle.y() > options.reach) continue;
-      rise = std::max(rise, above[0] - middle.y() + options.clearance);
+      const Vec3 &p = a[k], &q = b[stitch.sameDirection ? k : n - k], middle = 0.5 * (p + q);
+      const std::vector<Crossing> above = crossingsAbove(body, middle.x(), middle.z(), middle.y());
+      if (above.size() != 1 || above[0].y - middle.y() > options.reach || above[0].up < options.upward) continue;
+      if (inside(body, p) || inside(body, q)) continue;
+      rise = std::max(rise, above[0].y - middle.y() + options.clearance);
     }
   }
   return rise;

@@ -1,7 +1,10 @@
 // Resting a garment's shoulders on a body it was not made for: a seam that would close
 // under the body's top surface raises the garment onto it; seams that close outside the
-// body, deep inside it or within one panel (darts) leave it where it is.
+// body, deep inside it, under more of it or under a sloping surface, seams whose panels
+// already lie in the body, and darts leave it where it is.
 #include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 
 #include "sim/pattern/ShoulderRest.h"
 #include "support/TestMeshes.h"
@@ -41,9 +44,12 @@ SewingPattern shoulderSeam(double top) {
 const TriangleMesh kTorso = box(Vec3(-0.2, 0.0, -0.12), Vec3(0.2, 1.5, 0.12));
 
 TEST(ShoulderRest, CrossingsAboveAPointInsideABoxAreItsTop) {
-  const std::vector<double> inside = crossingsAbove(kTorso, 0.013, 0.021, 1.0);
-  ASSERT_EQ(inside.size(), 1u);
-  EXPECT_NEAR(inside[0], 1.5, 1e-12);
+  const std::vector<Crossing> within = crossingsAbove(kTorso, 0.013, 0.021, 1.0);
+  ASSERT_EQ(within.size(), 1u);
+  EXPECT_NEAR(within[0].y, 1.5, 1e-12);
+  EXPECT_NEAR(within[0].up, 1.0, 1e-12);  // the top faces up
+  EXPECT_TRUE(inside(kTorso, Vec3(0.013, 1.0, 0.021)));
+  EXPECT_FALSE(inside(kTorso, Vec3(0.013, 1.6, 0.021)));
   // Below the box: its bottom and its top.
   EXPECT_EQ(crossingsAbove(kTorso, 0.013, 0.021, -1.0).size(), 2u);
   // Beside it: none.
@@ -66,6 +72,33 @@ TEST(ShoulderRest, LeavesSeamsDeepInTheBodyAndDartsWhereTheyAre) {
   SewingPattern dart = shoulderSeam(1.46);
   dart.stitches = {{{0, 0}, {0, 2}, false}};
   EXPECT_EQ(shoulderRise(dart, kTorso, options), 0.0);
+}
+
+TEST(ShoulderRest, LeavesASeamWhosePanelsLieInTheBodyWhereItIs) {
+  // Both panels inside the torso (a waistband on a belly that stands out past it): the seam
+  // does not cross over the top, its panel is in the body already.
+  SewingPattern sunk = shoulderSeam(1.46);
+  sunk.panels[0].translation.z() = 0.05;
+  sunk.panels[1].translation.z() = -0.05;
+  EXPECT_EQ(shoulderRise(sunk, kTorso), 0.0);
+}
+
+TEST(ShoulderRest, LeavesASeamUnderASlopingTopWhereItIs) {
+  // A slab 1 m wide and 0.2 m thick, tilted about z through its middle (0, 1.4, 0): a
+  // shoulder's 20 degrees, a hanging arm's 65.
+  const auto tilted = [](double degrees) {
+    TriangleMesh slab = box(Vec3(-0.5, 1.3, -0.12), Vec3(0.5, 1.5, 0.12));
+    const Eigen::Matrix3d turn = Eigen::AngleAxisd(degrees * M_PI / 180.0, Vec3::UnitZ()).toRotationMatrix();
+    for (Vec3& v : slab.vertices) v = turn * (v - Vec3(0, 1.4, 0)) + Vec3(0, 1.4, 0);
+    return slab;
+  };
+  // Each seam 5 to 8 cm under the tilted top (the line up leaves through it, not a side).
+  EXPECT_GT(shoulderRise(shoulderSeam(1.46), tilted(20.0)), 0.05);
+  EXPECT_EQ(shoulderRise(shoulderSeam(1.80), tilted(65.0)), 0.0);
+  // The control: the steep top's seam rises when any slope will do.
+  ShoulderRestOptions anySlope;
+  anySlope.upward = 0.0;
+  EXPECT_GT(shoulderRise(shoulderSeam(1.80), tilted(65.0), anySlope), 0.04);
 }
 
 TEST(ShoulderRest, LeavesASeamUnderMoreOfTheBodyWhereItIs) {
