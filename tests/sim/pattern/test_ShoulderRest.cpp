@@ -12,19 +12,7 @@
 namespace figment {
 namespace {
 
-// A closed box from `lo` to `hi`, counter-clockwise seen from outside: a torso whose top
-// (its "shoulders") is the face y = hi.y.
-TriangleMesh box(const Vec3& lo, const Vec3& hi) {
-  TriangleMesh mesh;
-  for (int k = 0; k < 8; ++k)
-    mesh.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
-  const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  for (const auto& f : faces) {
-    mesh.triangles.push_back({f[0], f[1], f[2]});
-    mesh.triangles.push_back({f[0], f[2], f[3]});
-  }
-  return mesh;
-}
+using meshes::box;
 
 // A front and a back panel, 0.1 m wide and 0.2 tall, at z = +-0.3, their tops at `top`,
 // sewn along their tops: a shoulder seam whose straight closing line runs through z = 0.
