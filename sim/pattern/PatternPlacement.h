@@ -7,8 +7,13 @@
 // shorter body), the axis moves to the centre of the body's torso at its waist, and the
 // panels placed along the arms (sleeves, cuffs: turned about z by the pattern's arm angle)
 // turn about their armhole to the body's own arm angle (GarmentCode's bodies hold their
-// arms 45 degrees below the horizontal, MakeHuman's about 53). The panels themselves keep
-// their shapes: a garment is the same garment on any body.
+// arms 45 degrees below the horizontal, MakeHuman's about 53). A garment whose seams would
+// close under the body's shoulders then rises until they close on them
+// (sim/pattern/ShoulderRest.h), and the panels along the arms move clear of them
+// (sim/pattern/LimbClearance.h). The panels themselves keep their shapes: a garment is the
+// same garment on any body.
+
+#include <memory>
 
 #include "sim/core/TriangleMesh.h"
 #include "sim/pattern/SewingPattern.h"
@@ -20,6 +25,10 @@ struct PatternPlacement {
   double heightScale = 1.0;  // the body's stature over the pattern's body's
   Vec2 axis = Vec2::Zero();  // m: (x, z) of the body's torso centre
   double armAngle = 0.0;     // degrees below the horizontal of the body's arms; 0: not known
+  // The body's surface, to rest a garment's shoulders on (ShoulderRest.h) and to move
+  // sleeves clear of (LimbClearance.h); null: not known, the garment neither rises nor
+  // moves its sleeves.
+  std::shared_ptr<const TriangleMesh> surface;
   // Where a point placed for the pattern's own body goes on this body: (x, y, z) ->
   // (x + axis.x, feet + heightScale y, z + axis.z).
   Vec3 operator()(const Vec3& p) const { return {p.x() + axis.x(), feet + heightScale * p.y(), p.z() + axis.y()}; }
@@ -35,8 +44,10 @@ PatternPlacement placementOn(const TriangleMesh& body, double madeForStature);
 // between 62 % and 78 % of the stature, fitted by a line); 0 when no arm stands apart there.
 double armAngleOf(const TriangleMesh& body);
 
-// The pattern with each panel's translation moved by the placement, and its arm panels
-// turned to the body's arm angle (when the placement knows it).
+// The pattern with each panel's translation moved by the placement, its arm panels turned
+// to the body's arm angle (when the placement knows it), and, when the placement knows the
+// body's surface, all of it risen by shoulderRise() and its arm panels moved clear of the
+// arms (moveClearOf()).
 SewingPattern placed(const SewingPattern& pattern, const PatternPlacement& placement);
 
 }  // namespace figment

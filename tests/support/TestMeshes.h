@@ -57,6 +57,19 @@ inline TriangleMesh equilateralStrip(int across, int rows, double a, const Vec3&
   return mesh;
 }
 
+// A closed box from `lo` to `hi` (12 triangles), counter-clockwise seen from outside.
+inline TriangleMesh box(const Vec3& lo, const Vec3& hi) {
+  TriangleMesh mesh;
+  for (int k = 0; k < 8; ++k)
+    mesh.vertices.emplace_back(k & 1 ? hi.x() : lo.x(), k & 2 ? hi.y() : lo.y(), k & 4 ? hi.z() : lo.z());
+  const int faces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& f : faces) {
+    mesh.triangles.push_back({f[0], f[1], f[2]});
+    mesh.triangles.push_back({f[0], f[2], f[3]});
+  }
+  return mesh;
+}
+
 // A closed UV sphere of radius r, counter-clockwise seen from outside.
 inline TriangleMesh sphere(double r, int slices = 32, int stacks = 16, const Vec3& centre = Vec3::Zero()) {
   TriangleMesh mesh;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "sim/pattern/PatternPlacement.h"
+#include "sim/pattern/ShoulderRest.h"
 #include "support/TestMeshes.h"
 
 namespace figment {
@@ -70,6 +71,43 @@ TEST(PatternPlacement, TurnsSleevesToTheBodysArmAngleAndLeavesTheRest) {
   EXPECT_LT((pivotAfter - pivotBefore).norm(), 1e-12);
   // The control: a placement that knows no arm angle turns nothing.
   EXPECT_NEAR(zAngle(placed(pattern, PatternPlacement{}).panels[1]), -45.0, 1e-9);
+}
+
+// On a body it knows the surface of, placed() rests the garment's shoulders on the body's
+// (ShoulderRest.h) and moves its arm panels clear of the arms (LimbClearance.h).
+TEST(PatternPlacement, RestsShouldersOnTheBodyAndMovesSleevesClearOfTheArms) {
+  // A torso 1.5 m tall and a "forearm" 15 cm before its shoulder line.
+  TriangleMesh body = meshes::box(Vec3(-0.2, 0.0, -0.12), Vec3(0.2, 1.5, 0.12));
+  const TriangleMesh arm = meshes::sphere(0.05, 32, 16, Vec3(0.45, 1.245, 0.1));
+  const int offset = static_cast<int>(body.vertices.size());
+  body.vertices.insert(body.vertices.end(), arm.vertices.begin(), arm.vertices.end());
+  for (const Triangle& t : arm.triangles) body.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  // A front and a back panel sewn along their tops 4 cm under the torso's top, and a
+  // sleeve panel turned 45 degrees about z through the forearm.
+  SewingPattern pattern;
+  for (double z : {0.3, -0.3}) {
+    Panel p = panel(0.0, Vec3(0.05, 1.36, z));
+    for (int k = 0; k < 4; ++k) p.edges.push_back({k, (k + 1) % 4, {}});
+    pattern.panels.push_back(p);
+  }
+  pattern.stitches.push_back({{0, 2}, {1, 2}, false});
+  Panel sleeve = panel(-45.0, Vec3(0.25, 1.35, 0.12));
+  sleeve.vertices = {Vec2(0, -0.1), Vec2(0.3, -0.1), Vec2(0.3, 0.1), Vec2(0, 0.1)};
+  pattern.panels.push_back(sleeve);
+
+  const PatternPlacement placement = placementOn(body, 0.0);
+  ASSERT_NE(placement.surface, nullptr);
+  PatternPlacement unknown = placement;
+  unknown.surface.reset();
+  const SewingPattern bare = placed(pattern, unknown), out = placed(pattern, placement);
+  const double rise = out.panels[0].translation.y() - bare.panels[0].translation.y();
+  EXPECT_NEAR(rise, 0.04 + ShoulderRestOptions{}.clearance, 1e-6);
+  EXPECT_NEAR(out.panels[1].translation.y() - bare.panels[1].translation.y(), rise, 1e-12);  // all of it
+  // The sleeve rose with the rest and moved forward until the forearm (its front 0.15 m)
+  // lies behind it; the torso's panels did not move in z.
+  EXPECT_NEAR(out.panels[2].translation.y() - bare.panels[2].translation.y(), rise, 1e-12);
+  EXPECT_GT(out.panels[2].translation.z(), 0.15);
+  EXPECT_EQ(out.panels[0].translation.z(), bare.panels[0].translation.z());
 }
 
 TEST(PatternPlacement, RefusesABodyOfNoHumanStature) {
