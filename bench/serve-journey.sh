@@ -7,16 +7,18 @@
 # (Debian's). The server runs WORKERS workers (2: one core each on this machine), with
 # OMP_NUM_THREADS=1. Medians and 95th percentiles, not a test: the figures go into
 # docs/service.md.
-#   bench/serve-journey.sh [BUILD_DIR] [SHOPPERS] [WORKERS] [WRK_SECONDS]
+# ADVICE_THREADS: each worker's --advice-threads (default: the server's, one per core).
+#   bench/serve-journey.sh [BUILD_DIR] [SHOPPERS] [WORKERS] [WRK_SECONDS] [ADVICE_THREADS]
 set -euo pipefail
 build=${1:-build}
 shoppers=${2:-6}
 workers=${3:-2}
 seconds=${4:-10}
+threads=(${5:+--advice-threads "$5"})
 work=$(mktemp -d)
 trap 'kill "$server" 2>/dev/null; wait "$server" 2>/dev/null; rm -rf "$work"' EXIT
 
-OMP_NUM_THREADS=1 "$build/bin/figment-serve" --port 0 --workers "$workers" --rate 0 --cache "$work/cache" \
+OMP_NUM_THREADS=1 "$build/bin/figment-serve" --port 0 --workers "$workers" --rate 0 --cache "$work/cache" "${threads[@]}" \
   >"$work/out" 2>"$work/err" &
 server=$!
 until grep -q http:// "$work/out"; do sleep 0.1; done
