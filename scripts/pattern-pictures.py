@@ -23,6 +23,7 @@ TEMPLATE_COLOUR = "diffuseColor 0.15 0.18 0.22"
 # (picture name, pattern file under scenes/patterns, HumanBody fields, garment colour)
 FEMALE_M = "gender 0  stature 1.68  bustGirth 0.88  waistGirth 0.72  hipGirth 0.96"
 MALE_M = "gender 1  stature 1.74  bustGirth 0.96  waistGirth 0.84  hipGirth 1.00"
+FEMALE_3XL = "gender 0  stature 1.68  bustGirth 1.04  waistGirth 0.88  hipGirth 1.12"
 GALLERY = [
     ("pattern-tshirt-f-38", "tshirt/tshirt-f-38", FEMALE_M, "0.85 0.85 0.80"),
     ("pattern-shirt-f-38", "shirt/shirt-f-38", FEMALE_M, "0.55 0.70 0.85"),
@@ -32,6 +33,8 @@ GALLERY = [
     ("pattern-trousers-f-38", "trousers/trousers-f-38", FEMALE_M, "0.25 0.30 0.45"),
     ("pattern-tshirt-m-48", "tshirt/tshirt-m-48", MALE_M, "0.12 0.25 0.70"),
     ("pattern-trousers-m-48", "trousers/trousers-m-48", MALE_M, "0.35 0.30 0.25"),
+    ("pattern-shirt-m-48", "shirt/shirt-m-48", MALE_M, "0.85 0.88 0.92"),
+    ("pattern-dress-f-46", "dress/dress-f-46", FEMALE_3XL, "0.12 0.30 0.45"),
 ]
 
 
