@@ -57,7 +57,8 @@ def sew(binary, folder, entry, body):
                           "--body", body, "-o", garment, "--stats", stats], capture_output=True, text=True)
     row = {"style": entry["style"], "sex": entry["sex"], "size": entry["size"], "number": entry["number"]}
     if run.returncode != 0:
-        row["problem"] = run.stderr.strip()
+        # The file as the repository names it, not this machine's path to it.
+        row["problem"] = run.stderr.strip().replace(ROOT + os.sep, "")
         return row
     figures = json.load(open(stats))
     row.update({k: figures[k] for k in FIELDS if k in figures})
