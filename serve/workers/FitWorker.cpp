@@ -162,6 +162,17 @@ int FitWorker::sizeIndex(const std::string& style, Sex sex, const std::string& s
   return index;
 }
 
+const GarmentDrape* FitWorker::fromCache(const std::string& key) {
+  std::string problem;
+  auto record = cache_->find(key, problem);
+  if (!record) return nullptr;
+  auto read = readDrapeRecord(*record, problem);
+  if (!read) return nullptr;
+  read->report.fromCache = true;
+  bound(drapes_, kDrapesKept);
+  return &drapes_.emplace(key, *read).first->second;
+}
+
 GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::string& style,
                                   const std::string& size) {
   const int index = sizeIndex(style, sex, size);
@@ -171,14 +182,8 @@ GarmentDrape FitWorker::sizeDrape(const BodyMeasures& body, Sex sex, const std::
     again.report.fromCache = true;
     return again;
   }
-  std::string problem;
   if (cache_)
-    if (auto record = cache_->find(key, problem))
-      if (auto read = readDrapeRecord(*record, problem)) {
-        read->report.fromCache = true;
-        bound(drapes_, kDrapesKept);
-        return drapes_.emplace(key, *read).first->second;
-      }
+    if (const GarmentDrape* found = fromCache(key)) return *found;
   const GarmentDrape made =
       kept(key, fitter(style).drapeOn(sex, index, std::make_shared<const MeshCollider>(madeBody(body, sex))));
   bound(drapes_, kDrapesKept);
@@ -190,10 +195,9 @@ std::map<int, GarmentDrape> FitWorker::drapeCandidates(const BodyMeasures& body,
                                                        const std::vector<int>& sizes) {
   std::vector<int> missing;
   std::vector<std::string> keys;
-  std::string problem;
   for (const int size : sizes) {
     const std::string key = sizeDrapeKey(body, sex, style, size);
-    if (drapes_.count(key) || (cache_ && cache_->find(key, problem))) continue;
+    if (drapes_.count(key) || (cache_ && fromCache(key))) continue;
     missing.push_back(size);
     keys.push_back(key);
   }

@@ -111,6 +111,9 @@ class FitWorker {
   GarmentDrape ownDrape(const std::string& style, Sex sex, int size, const std::function<GarmentDrape()>& drape);
   // `made` as the drape record keeps it (float points), stored under `key` when there is a cache.
   GarmentDrape kept(const std::string& key, GarmentDrape made);
+  // The drape stored under `key` in the cache (which there must be), kept in memory and marked
+  // as from a cache; null when the cache has none that reads.
+  const GarmentDrape* fromCache(const std::string& key);
   // The candidates' drapes on the made body that neither memory nor the cache has, draped
   // drapeThreads_ at a time and kept; by size index. Fewer than two: none (sizeDrape drapes it).
   std::map<int, GarmentDrape> drapeCandidates(const BodyMeasures& body, Sex sex, const std::string& style,
