@@ -20,6 +20,7 @@ void configure(ClothEngine& engine, const Method& m) {
   engine.accelerationLimiter.setValue(SbName(fieldName(m.drape.limiter)));
   if (m.drape.limit) engine.accelerationLimit.setValue(*m.drape.limit);
   engine.timeStep.setValue(m.drape.timeStep);
+  engine.maxTimeStep.setValue(m.drape.maxTimeStep);
 }
 
 Schedule parseSchedule(const std::string& text) {

@@ -25,8 +25,9 @@ bool method(Io& io, Report& r) {
   bool hasLimit = m.limit.has_value();
   double limit = m.limit.value_or(0.0);
   if (!(enumeration(io, m.integrator, Integrator::Implicit) && enumeration(io, m.contacts, ContactModel::Penalty) &&
-        io.template number<double>(m.timeStep) && enumeration(io, m.limiter, AccelerationLimiter::Tanh) &&
-        io.flag(hasLimit) && io.template number<double>(limit)))
+        io.template number<double>(m.timeStep) && io.template number<double>(m.maxTimeStep) &&
+        enumeration(io, m.limiter, AccelerationLimiter::Tanh) && io.flag(hasLimit) &&
+        io.template number<double>(limit)))
     return false;
   m.limit = hasLimit ? std::optional<double>(limit) : std::nullopt;
   return io.template number<double>(r.strainLimit) && io.template number<double>(r.maxTime);

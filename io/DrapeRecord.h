@@ -21,8 +21,9 @@ namespace figment {
 // struct's bytes as they lay in memory, before records had a version; 4 the last
 // figment::DrapeReport; 5 the first DrapeReport (its method as enumerations, its body);
 // 6 the whole drape in one record (the positions and sections after the report); 7 the
-// nodes started over the layers beneath (DrapeReport::startedOverLayers).
-constexpr std::uint32_t kDrapeRecordVersion = 7;
+// nodes started over the layers beneath (DrapeReport::startedOverLayers); 8 a growing
+// implicit step's largest (DrapeMethod::maxTimeStep).
+constexpr std::uint32_t kDrapeRecordVersion = 8;
 
 std::vector<unsigned char> writeDrapeRecord(const GarmentDrape& drape);
 

@@ -13,6 +13,7 @@ nlohmann::json method(const DrapeReport& report) {
   const bool limited = m.limiter != AccelerationLimiter::None;
   return {{"integrator", fieldName(m.integrator)},
           {"time_step_s", m.timeStep},
+          {"max_time_step_s", m.maxTimeStep},
           {"max_time_s", report.maxTime},
           {"contact_model", fieldName(m.contacts)},
           {"strain_limit", report.strainLimit},

@@ -60,6 +60,7 @@ ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_ADD_INPUT(youngsModulus, (defaults.material.youngsModulus));
   SO_ENGINE_ADD_INPUT(poissonRatio, (defaults.material.poissonRatio));
   SO_ENGINE_ADD_INPUT(timeStep, (kImplicitTimeStep));
+  SO_ENGINE_ADD_INPUT(maxTimeStep, (defaults.implicitSolver.maxTimeStep));
   SO_ENGINE_ADD_INPUT(maxTime, (defaults.maxTime));
   SO_ENGINE_ADD_INPUT(restSpeed, (defaults.rest.speedThreshold));
   SO_ENGINE_ADD_INPUT(restWindow, (defaults.rest.window));

@@ -73,6 +73,7 @@ struct TriangleMesh;
         youngsModulus 1000000
         poissonRatio 0.3
         timeStep 0.05
+        maxTimeStep 0
         maxTime 5
         restSpeed 0.01
         restWindow 0.25
@@ -144,6 +145,11 @@ class ClothEngine : public SoEngine {
   // > 0, at most maxTime, and maxTime / timeStep at
   // most 1e7 steps.
   SoSFDouble timeStep;
+  // IMPLICIT only: the largest step, s, the step grows to while the cloth is quiet (a
+  // step the step control keeps whole, its fastest node slower than the step before's,
+  // makes the next 1.5 times longer; any other the next half as long, never under
+  // timeStep). Default 0: every step is timeStep. Must be 0 or at least timeStep.
+  SoSFDouble maxTimeStep;
   // Upper bound of simulated time, s. Default 5.
   SoSFDouble maxTime;
   // The cloth is at rest when every node is slower than this, m/s... Default 0.01.

@@ -135,11 +135,13 @@ Material materialFromFields(const ClothEngine& engine) {
 }
 
 DrapeMethod methodFromFields(const ClothEngine& engine) {
-  return {methodOfField(kIntegrators, engine.integrator.getValue(), Integrator::Heun),
-          methodOfField(kContactModels, engine.contactModel.getValue(), ContactModel::Constraints),
-          engine.timeStepSeconds(),
-          methodOfField(kLimiters, engine.accelerationLimiter.getValue(), AccelerationLimiter::None),
-          engine.accelerationLimit.getValue()};
+  DrapeMethod m{methodOfField(kIntegrators, engine.integrator.getValue(), Integrator::Heun),
+                methodOfField(kContactModels, engine.contactModel.getValue(), ContactModel::Constraints),
+                engine.timeStepSeconds(),
+                methodOfField(kLimiters, engine.accelerationLimiter.getValue(), AccelerationLimiter::None),
+                engine.accelerationLimit.getValue()};
+  m.maxTimeStep = engine.maxTimeStep.getValue();
+  return m;
 }
 
 ClothParameters parametersFromFields(const ClothEngine& engine) {

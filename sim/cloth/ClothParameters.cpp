@@ -44,6 +44,13 @@ void ClothParameters::validate() const {
   requirePositive("implicitMaxIterations", implicitSolver.maxIterations);
   requirePositive("penaltyRate", implicitSolver.penaltyRate);
   requirePositive("stickSpeed", implicitSolver.stickSpeed);
+  requireNonNegative("maxTimeStep", implicitSolver.maxTimeStep);
+  if (implicitSolver.maxTimeStep > 0.0 && integrator != Integrator::Implicit)
+    throw std::invalid_argument("maxTimeStep = " + formatNumber(implicitSolver.maxTimeStep) +
+                                " needs integrator IMPLICIT (an explicit step's bound is its stability)");
+  if (implicitSolver.maxTimeStep > 0.0 && implicitSolver.maxTimeStep < timeStep)
+    throw std::invalid_argument("maxTimeStep = " + formatNumber(implicitSolver.maxTimeStep) +
+                                " must not be under timeStep = " + formatNumber(timeStep) + " (0: no growth)");
   if (implicitSolver.contacts == ContactModel::Penalty && integrator != Integrator::Implicit)
     throw std::invalid_argument("contactModel PENALTY needs integrator IMPLICIT");
   if (timeStep > maxTime)

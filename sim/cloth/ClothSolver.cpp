@@ -1,5 +1,6 @@
 #include "sim/cloth/ClothSolver.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -28,6 +29,7 @@ ClothSolver::ClothSolver(const std::vector<Vec3>& start, const RestShape& rest, 
                          std::shared_ptr<const Collider> body, const SeamPull& seams)
     : parameters_(parameters), body_(std::move(body)), edges_(startingAt(start, rest)) {
   parameters_.validate();
+  implicitStep_ = parameters_.timeStep;
   model_ = std::make_unique<ClothModel>(rest, parameters_, seams);
   x_ = start;
   v_.assign(x_.size(), Vec3::Zero());
@@ -58,6 +60,8 @@ void ClothSolver::resume(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
   time_ = time;
   iterations_ = iterations;
   restSince_ = -1.0;
+  implicitStep_ = parameters_.timeStep;
+  lastFastest_ = std::numeric_limits<double>::infinity();
 }
 
 const std::vector<Vec3>& ClothSolver::positions() const {
@@ -178,7 +182,7 @@ void ClothSolver::step() {
     checkFinite(i, speed);
     fastest = std::max(fastest, speed);
   }
-  endStep(fastest);
+  endStep(fastest, dt);
 }
 
 void ClothSolver::checkFinite(size_t i, double speed) const {
@@ -189,8 +193,8 @@ void ClothSolver::checkFinite(size_t i, double speed) const {
                           " s, method " + integratorName(parameters_.integrator));
 }
 
-void ClothSolver::endStep(double fastest) {
-  time_ += parameters_.timeStep;
+void ClothSolver::endStep(double fastest, double dt) {
+  time_ += dt;
   ++iterations_;
   if (fastest < parameters_.rest.speedThreshold) {
     if (restSince_ < 0.0) restSince_ = time_;
@@ -199,10 +203,21 @@ void ClothSolver::endStep(double fastest) {
   }
 }
 
+double ClothSolver::implicitStepSize() const {
+  if (!growing()) return parameters_.timeStep;
+  // The last step ends at maxTime, not past it.
+  return std::min(implicitStep_, parameters_.maxTime - time_);
+}
+
+bool ClothSolver::growing() const {
+  return parameters_.implicitSolver.maxTimeStep > parameters_.timeStep;
+}
+
 void ClothSolver::stepImplicit() {
-  const double dt = parameters_.timeStep;
+  const double dt = implicitStepSize();
   xStart_ = x_;
-  implicit_->step(x_, v_, time_, pinned_);
+  const long halvedBefore = implicit_->costs().halvedSteps;
+  implicit_->step(x_, v_, time_, dt, pinned_);
   // The at-rest rule's speed is displacement per simulated second, |x' - x| / dt: the
   // velocity itself in backward Euler (x' = x + dt v') except where a contact moved the
   // node, and a speed at any step size (never a displacement per step, which would let
@@ -213,7 +228,15 @@ void ClothSolver::stepImplicit() {
     checkFinite(i, speed);
     fastest = std::max(fastest, (x_[i] - xStart_[i]).norm() / dt);
   }
-  endStep(fastest);
+  if (growing()) {
+    // Quiet: kept whole by the step control and slower than the step before. A garment
+    // still sliding, or its contacts chattering, goes back towards the scene's step.
+    const bool quiet = implicit_->costs().halvedSteps == halvedBefore && fastest < lastFastest_;
+    const double next = quiet ? ImplicitSolverParameters::kStepGrowth * implicitStep_ : 0.5 * implicitStep_;
+    implicitStep_ = std::clamp(next, parameters_.timeStep, parameters_.implicitSolver.maxTimeStep);
+    lastFastest_ = fastest;
+  }
+  endStep(fastest, dt);
 }
 
 DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& progress, double progressInterval) {
@@ -226,7 +249,9 @@ DrapeResult ClothSolver::run(const std::function<void(const DrapeProgress&)>& pr
   // Stop at maxTime, counted in steps so that rounding never adds or drops one.
   const int totalSteps = static_cast<int>(std::ceil(parameters_.maxTime / parameters_.timeStep - 1e-9));
   if (stepObserver_) stepObserver_(*this);
-  while (iterations_ < totalSteps && !atRest()) {
+  // A growing step stops at maxTime itself (its last step cut to end there).
+  auto timeLeft = [&] { return !growing() || time_ < parameters_.maxTime - 1e-9; };
+  while (iterations_ < totalSteps && timeLeft() && !atRest()) {
     step();
     if (stepObserver_) stepObserver_(*this);
     if (progress && (iterations_ & 63) == 0) {

@@ -17,13 +17,15 @@
 // Integrator::Implicit replaces steps 1-3 with one backward Euler step whose solve holds
 // the contacts (sim/cloth/implicit/ImplicitEuler.h), under its step control (a step
 // that stretched an edge to breaking is taken again as halves); its at-rest speed is
-// |x' - x| / dt.
+// |x' - x| / dt. Its step may grow while the cloth is quiet (ImplicitSolverParameters::
+// maxTimeStep): the run then ends at maxTime of simulated time, its last step cut to it.
 //
 // A run ends with what its verdict needs (sim/cloth/DrapeVerdict.h): at rest or not,
 // the fastest node, the most stretched edge, whether a stability measure still acted
 // in the last step, what the step control did.
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <utility>
@@ -119,7 +121,11 @@ class ClothSolver {
   double lastStepClampedShare_ = 0.0, lastStepLimitedShare_ = 0.0;
   double time_ = 0.0;
   int iterations_ = 0;
-  double restSince_ = -1.0;  // time the cloth became slower than the threshold; -1: moving
+  double restSince_ = -1.0;
+  double implicitStep_ = 0.0;  // a growing implicit step's next size, s (set in the constructor)
+  double lastFastest_ =
+      std::numeric_limits<double>::infinity();  // the last implicit step's fastest node, m/s  // time the cloth became
+                                                // slower than the threshold; -1: moving
   std::vector<char> pinned_;
   StepObserver stepObserver_;
   // Per node, a lower bound of its distance to the body, kept down to date by the
@@ -129,8 +135,11 @@ class ClothSolver {
   void integrate(double dt);
   void stepImplicit();                                // Integrator::Implicit's step
   void checkFinite(size_t node, double speed) const;  // throws SimulationError
-  void endStep(double fastest);                       // the clock and the at-rest rule
-  std::unique_ptr<ImplicitEuler> implicit_;           // set for Integrator::Implicit only
+  void endStep(double fastest, double dt);            // the clock and the at-rest rule
+  // Integrator::Implicit with a growing step (ImplicitSolverParameters::maxTimeStep).
+  bool growing() const;
+  double implicitStepSize() const;           // the next implicit step's dt
+  std::unique_ptr<ImplicitEuler> implicit_;  // set for Integrator::Implicit only
 
   std::vector<Vec3> xStart_, a0_, a1_, xPredicted_, vPredicted_;  // a step's scratch
 };

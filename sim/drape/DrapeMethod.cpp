@@ -62,9 +62,9 @@ DrapeMethod DrapeMethod::parse(const std::string& text) {
   for (std::string part; std::getline(in, part, ':');) parts.push_back(part);
   const auto bad = [&](const std::string& why) {
     return std::invalid_argument("method \"" + text + "\": " + why +
-                                 " (expected INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G])");
+                                 " (expected INTEGRATOR[+CONTACTS]:DT[:MAX_DT | :LIMITER:LIMIT_G])");
   };
-  if (parts.size() != 2 && parts.size() != 4) throw bad("wrong number of parts");
+  if (parts.size() < 2 || parts.size() > 4) throw bad("wrong number of parts");
   const size_t plus = parts[0].find('+');
   const std::string integrator = parts[0].substr(0, plus);
   const std::string contacts = plus == std::string::npos ? "constraints" : parts[0].substr(plus + 1);
@@ -81,6 +81,11 @@ DrapeMethod DrapeMethod::parse(const std::string& text) {
     return *value;
   };
   m.timeStep = number(parts[1]);
+  if (parts.size() == 3) {
+    if (m.integrator != Integrator::Implicit) throw bad("only an implicit step grows (MAX_DT)");
+    m.maxTimeStep = number(parts[2]);
+    if (!(m.maxTimeStep >= m.timeStep)) throw bad("the largest step must not be under the first");
+  }
   if (parts.size() == 4) {
     const std::optional<AccelerationLimiter> l = valueIn(kLimiters, parts[2]);
     if (!l) throw bad("no limiter " + parts[2]);
@@ -92,13 +97,16 @@ DrapeMethod DrapeMethod::parse(const std::string& text) {
 }
 
 DrapeMethod DrapeMethod::of(const ClothParameters& p) {
-  return {p.integrator, p.implicitSolver.contacts, p.timeStep, p.accelerationLimiter, p.accelerationLimit};
+  DrapeMethod m{p.integrator, p.implicitSolver.contacts, p.timeStep, p.accelerationLimiter, p.accelerationLimit};
+  m.maxTimeStep = p.implicitSolver.maxTimeStep;
+  return m;
 }
 
 void DrapeMethod::applyTo(ClothParameters& p) const {
   p.integrator = integrator;
   p.implicitSolver.contacts = contacts;
   p.timeStep = timeStep;
+  p.implicitSolver.maxTimeStep = maxTimeStep;
   p.accelerationLimiter = limiter;
   if (limit) p.accelerationLimit = *limit;
 }
@@ -109,6 +117,7 @@ std::string DrapeMethod::text() const {
   std::string out = lower(fieldName(integrator));
   if (contacts != ContactModel::Constraints) out.append("+").append(lower(fieldName(contacts)));
   out.append(":").append(shortest(timeStep));
+  if (integrator == Integrator::Implicit && maxTimeStep > 0.0) out.append(":").append(shortest(maxTimeStep));
   if (limiter != AccelerationLimiter::None)
     out.append(":").append(lower(fieldName(limiter))).append(":").append(shortest(limit.value_or(0.0)));
   return out;

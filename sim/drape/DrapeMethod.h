@@ -1,8 +1,9 @@
 #pragma once
 // A drape's method as one value: the integrator and its step, the implicit step's contact
 // model, the explicit steps' acceleration limiter. The studies, the tradeoff table and
-// figment-bench spell it INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G], case free
-// ("implicit:0.05", "implicit+penalty:0.05", "heun:1.5e-4:clamp:30"); a scene writes the
+// figment-bench spell it INTEGRATOR[+CONTACTS]:DT[:MAX_DT | :LIMITER:LIMIT_G], case free
+// ("implicit:0.05", "implicit:0.05:0.4" (a step growing from 0.05 s to 0.4 s),
+// "implicit+penalty:0.05", "heun:1.5e-4:clamp:30"); a scene writes the
 // same choice in ClothEngine's fields, whose enum names fieldName() gives.
 
 #include <optional>
@@ -20,6 +21,9 @@ struct DrapeMethod {
   // The limiter's cap, multiples of |g|; unset: the parameters' own (ClothParameters'
   // accelerationLimit) is kept.
   std::optional<double> limit;
+  // An implicit step's largest, s, as it grows (ImplicitSolverParameters::maxTimeStep);
+  // 0: every step is timeStep.
+  double maxTimeStep = 0.0;
 
   // Throws std::invalid_argument naming the text and what is wrong in it.
   static DrapeMethod parse(const std::string& text);

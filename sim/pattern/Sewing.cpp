@@ -129,6 +129,8 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
   // over; friction would hold it there (a capstan), so the sewing slides freely.
   pulled.friction = 0.0;
   pulled.maxTime = sewing.maxTime;
+  // The sewing's steps stay the scene's: its stall rule counts them.
+  pulled.implicitSolver.maxTimeStep = 0.0;
   const auto started = std::chrono::steady_clock::now();
   ClothSolver solver(garment.placed.vertices, panelsAtRest(garment), pulled, std::move(body),
                      SeamPull{garment.seams, sewing.rate});

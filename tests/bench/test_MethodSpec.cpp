@@ -55,6 +55,6 @@ TEST(MethodSpec, ABadTextIsOneLineAndFalse) {
   const std::string said = testing::internal::GetCapturedStderr();
   EXPECT_EQ(said,
             "figment-bench: method \"verlet:0.05\": no integrator verlet "
-            "(expected INTEGRATOR[+CONTACTS]:DT[:LIMITER:LIMIT_G])\n");
+            "(expected INTEGRATOR[+CONTACTS]:DT[:MAX_DT | :LIMITER:LIMIT_G])\n");
   EXPECT_TRUE(parsesOrReports([] { parseMethod("implicit:0.05"); }));
 }

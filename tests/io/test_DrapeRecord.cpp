@@ -22,6 +22,7 @@ DrapeReport everyFieldSet() {
   DrapeReport s;
   s.method = {figment::Integrator::SymplecticEuler, figment::ContactModel::Penalty, 0.02,
               figment::AccelerationLimiter::Tanh, 30.0};
+  s.method.maxTimeStep = 0.75;
   s.strainLimit = 0.1;
   s.maxTime = 5.0;
   s.picked = "implicit:0.05, volumes, progressive 0:3000 \xc2\xb5";
@@ -192,12 +193,13 @@ TEST(DrapeRecord, ARecordCutShortOrRunningOnIsDamaged) {
 TEST(DrapeRecord, ABoolOtherThanZeroOrOneOrAnEnumerationPastItsValuesIsDamage) {
   const std::vector<unsigned char> record = writeDrapeRecord(everyPartSet());
   // After the version (4 bytes): the integrator, the contact model (a byte each), the
-  // time step (float64), the limiter (a byte), whether a limit is given (a bool).
+  // time step and the largest step (float64 each), the limiter (a byte), whether a limit is
+  // given (a bool).
   ASSERT_EQ(record.at(4), static_cast<unsigned char>(figment::Integrator::SymplecticEuler));
-  ASSERT_EQ(record.at(15), 1);
+  ASSERT_EQ(record.at(23), 1);
   std::vector<unsigned char> integrator = record, flag = record;
   integrator[4] = static_cast<unsigned char>(figment::Integrator::Implicit) + 1;
   EXPECT_EQ(problemOf(integrator), "a damaged record");
-  flag[15] = 2;
+  flag[23] = 2;
   EXPECT_EQ(problemOf(flag), "a damaged record");
 }

@@ -20,6 +20,7 @@ DrapeReport dressReport() {
   report.run.maxStretch = 1.05;
   report.method.integrator = Integrator::Implicit;
   report.method.timeStep = 0.05;
+  report.method.maxTimeStep = 0.4;
   report.method.limiter = AccelerationLimiter::None;
   report.method.limit = 3.0;  // not in force: written as 0
   report.body = {"mannequin", {{"capsules", 12}}};
@@ -39,6 +40,7 @@ TEST(DrapeReportJson, WritesTheRunMethodAndBody) {
   EXPECT_EQ(json["verdict"]["max_edge_stretch"], 1.05);
   EXPECT_EQ(json["method"]["integrator"], "IMPLICIT");
   EXPECT_EQ(json["method"]["time_step_s"], 0.05);
+  EXPECT_EQ(json["method"]["max_time_step_s"], 0.4);
   EXPECT_EQ(json["method"]["acceleration_limit_g"], 0.0);
   EXPECT_EQ(json["body"]["kind"], "mannequin");
   EXPECT_EQ(json["body"]["capsules"], 12);

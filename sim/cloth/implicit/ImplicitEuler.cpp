@@ -1,5 +1,6 @@
 #include "sim/cloth/implicit/ImplicitEuler.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace figment {
@@ -87,6 +88,11 @@ void ImplicitEuler::advance(std::vector<Vec3>& x, std::vector<Vec3>& v, double t
   const bool firstStep = steps_++ == 0;
   xStart_ = x;
   vStart_ = v;
+  // The stop is relative to the right-hand side, dt f: a step longer than the scene's
+  // (a growing step, ClothSolver.h) stops in proportion tighter, so that the velocity's
+  // error stays what it is at the scene's step. At 0.4 s and the 1 % stop a drape's nodes
+  // otherwise jitter at 1 to 2 cm/s, above the rest speed, and never rest.
+  stop_.relative = parameters_.implicitSolver.tolerance * std::min(1.0, parameters_.timeStep / dt);
   fixNodes(pinned, dt);
   contacts_.constrain(x, v, dt, firstStep, filter_);
   costs_.contactSeconds += lap(clock);
@@ -120,6 +126,11 @@ void ImplicitEuler::advance(std::vector<Vec3>& x, std::vector<Vec3>& v, double t
 
 void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned) {
   controlledStep(x, v, t, parameters_.timeStep, 0, pinned);
+}
+
+void ImplicitEuler::step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, double dt,
+                         const std::vector<char>& pinned) {
+  controlledStep(x, v, t, dt, 0, pinned);
 }
 
 void ImplicitEuler::controlledStep(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, double dt, int halvings,

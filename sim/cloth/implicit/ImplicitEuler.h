@@ -50,6 +50,8 @@ class ImplicitEuler {
   // Advances x and v by one step (parameters' timeStep) from time t, under the step
   // control. Nodes with pinned[i] != 0 stay.
   void step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, const std::vector<char>& pinned);
+  // The same for a step of dt (a growing step's, ClothSolver.h).
+  void step(std::vector<Vec3>& x, std::vector<Vec3>& v, double t, double dt, const std::vector<char>& pinned);
 
   static constexpr double kFailStretch = DrapeVerdict::kTearStretch;  // the drape verdict's tear bound
   // Dimensionless, of the rest length. Measured: an edge of the shipped drapes grows by
