@@ -1,0 +1,58 @@
+// Patterns the shipped catalogue does not contain (issue 44): GarmentCode designs made by
+// FIGMENT's own design programs with GarmentCode's library (tests/io/data/designs/,
+// scripts/designs/make-designs.py): sleeveless tops, a sleeveless dress with bust darts,
+// a six-gore skirt, a yoke skirt with a gathered tier and shorts, women's and men's. Each,
+// on its size's chart body, sews and drapes as the shipped ones do (test_SewnPatterns.cpp),
+// with the same reader, placement and sewing: closed, at rest, nothing inside the body, no
+// edge past the tear bound. A missing file fails; skipped only when MakeHuman's data is
+// absent (scripts/setup.sh fetches it).
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "support/ChartBodies.h"
+#include "support/SewnOnChartBody.h"
+
+using namespace figment;
+
+namespace {
+
+struct Design {
+  const char* name;  // tests/io/data/designs/NAME_specification.json
+  Sex sex;
+  const char* size;  // the chart's letter code it was made for
+};
+
+void PrintTo(const Design& d, std::ostream* out) {
+  *out << d.name;
+}
+
+class OtherDesigns : public ::testing::TestWithParam<Design> {
+ protected:
+  static void SetUpTestSuite() { bodies_ = test::loadChartBodies(); }
+  static void TearDownTestSuite() { bodies_.reset(); }
+  void SetUp() override {
+    if (!bodies_) GTEST_SKIP() << test::kMakeHumanDataSkip;
+  }
+  static std::unique_ptr<test::ChartBodies> bodies_;
+};
+std::unique_ptr<test::ChartBodies> OtherDesigns::bodies_;
+
+TEST_P(OtherDesigns, SewsClosedAndRestsOnItsSizesChartBody) {
+  const Design& design = GetParam();
+  test::expectSewsClosedAndRests(
+      *bodies_, std::string(FIGMENT_SOURCE_DIR) + "/tests/io/data/designs/" + design.name + "_specification.json",
+      design.sex, design.size);
+}
+
+INSTANTIATE_TEST_SUITE_P(Designs, OtherDesigns,
+                         ::testing::Values(Design{"tank-f-38", Sex::Female, "M"}, Design{"tank-m-48", Sex::Male, "M"},
+                                           Design{"dress-f-38", Sex::Female, "M"},
+                                           Design{"gores-f-38", Sex::Female, "M"},
+                                           Design{"yoke-f-38", Sex::Female, "M"},
+                                           Design{"shorts-f-38", Sex::Female, "M"},
+                                           Design{"shorts-m-48", Sex::Male, "M"}));
+
+}  // namespace
