@@ -48,3 +48,16 @@ class Body:
     def shoulder_drop(self, dx):
         """How far the shoulder line falls over dx cm out from the neck (shoulder_incl, degrees)."""
         return dx * math.tan(math.radians(self["shoulder_incl"]))
+
+
+def chart_sizes(sex):
+    """{number: letter code} of the chart's sizes for `sex` (scenes/sizes/chart.txt) that have a
+    GarmentCode body (scenes/patterns/bodies/)."""
+    sizes = {}
+    with open(os.path.join(ROOT, "scenes", "sizes", "chart.txt")) as chart:
+        for line in chart:
+            words = line.split("#")[0].split()
+            if len(words) == 7 and words[0] == sex and os.path.exists(
+                    os.path.join(ROOT, "scenes", "patterns", "bodies", "%s-%s.yaml" % (sex, words[2]))):
+                sizes[int(words[2])] = words[1]
+    return sizes

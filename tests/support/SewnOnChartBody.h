@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "io/PatternFile.h"
@@ -34,6 +35,30 @@ inline ClothParameters sewnDrapeParameters() {
   p.clearance = 0.003;
   return p;
 }
+
+// A pattern file and the chart size it was made for (the chart's letter code for `sex`); a
+// test's name ends in the file's.
+struct ChartPattern {
+  const char* file;
+  Sex sex;
+  const char* size;
+};
+
+inline void PrintTo(const ChartPattern& p, std::ostream* out) {
+  *out << p.file;
+}
+
+// A suite of patterns each sewn on its size's chart body: MakeHuman's model and the chart read
+// once for the suite; its tests skip when MakeHuman's data is absent.
+class ChartBodyPatterns : public ::testing::TestWithParam<ChartPattern> {
+ protected:
+  static void SetUpTestSuite() { bodies_ = loadChartBodies(); }
+  static void TearDownTestSuite() { bodies_.reset(); }
+  void SetUp() override {
+    if (!bodies_) GTEST_SKIP() << kMakeHumanDataSkip;
+  }
+  static inline std::unique_ptr<ChartBodies> bodies_;
+};
 
 // Reads `file` (a missing or bad file throws, failing the test), places it on the chart body
 // of `size` (the chart's letter code for `sex`), sews and drapes it at 2 cm, and checks it.

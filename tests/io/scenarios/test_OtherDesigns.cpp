@@ -8,51 +8,31 @@
 // absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
-#include <memory>
-#include <ostream>
 #include <string>
 
-#include "support/ChartBodies.h"
 #include "support/SewnOnChartBody.h"
 
 using namespace figment;
 
 namespace {
 
-struct Design {
-  const char* name;  // tests/io/data/designs/NAME_specification.json
-  Sex sex;
-  const char* size;  // the chart's letter code it was made for
-};
-
-void PrintTo(const Design& d, std::ostream* out) {
-  *out << d.name;
-}
-
-class OtherDesigns : public ::testing::TestWithParam<Design> {
- protected:
-  static void SetUpTestSuite() { bodies_ = test::loadChartBodies(); }
-  static void TearDownTestSuite() { bodies_.reset(); }
-  void SetUp() override {
-    if (!bodies_) GTEST_SKIP() << test::kMakeHumanDataSkip;
-  }
-  static std::unique_ptr<test::ChartBodies> bodies_;
-};
-std::unique_ptr<test::ChartBodies> OtherDesigns::bodies_;
+// file: under tests/io/data/designs/.
+using Design = test::ChartPattern;
+class OtherDesigns : public test::ChartBodyPatterns {};
 
 TEST_P(OtherDesigns, SewsClosedAndRestsOnItsSizesChartBody) {
   const Design& design = GetParam();
-  test::expectSewsClosedAndRests(
-      *bodies_, std::string(FIGMENT_SOURCE_DIR) + "/tests/io/data/designs/" + design.name + "_specification.json",
-      design.sex, design.size);
+  test::expectSewsClosedAndRests(*bodies_, std::string(FIGMENT_SOURCE_DIR) + "/tests/io/data/designs/" + design.file,
+                                 design.sex, design.size);
 }
 
 INSTANTIATE_TEST_SUITE_P(Designs, OtherDesigns,
-                         ::testing::Values(Design{"tank-f-38", Sex::Female, "M"}, Design{"tank-m-48", Sex::Male, "M"},
-                                           Design{"dress-f-38", Sex::Female, "M"},
-                                           Design{"gores-f-38", Sex::Female, "M"},
-                                           Design{"yoke-f-38", Sex::Female, "M"},
-                                           Design{"shorts-f-38", Sex::Female, "M"},
-                                           Design{"shorts-m-48", Sex::Male, "M"}));
+                         ::testing::Values(Design{"tank-f-38_specification.json", Sex::Female, "M"},
+                                           Design{"tank-m-48_specification.json", Sex::Male, "M"},
+                                           Design{"dress-f-38_specification.json", Sex::Female, "M"},
+                                           Design{"gores-f-38_specification.json", Sex::Female, "M"},
+                                           Design{"yoke-f-38_specification.json", Sex::Female, "M"},
+                                           Design{"shorts-f-38_specification.json", Sex::Female, "M"},
+                                           Design{"shorts-m-48_specification.json", Sex::Male, "M"}));
 
 }  // namespace

@@ -10,37 +10,17 @@
 // Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
-#include <memory>
-#include <ostream>
 #include <string>
 
-#include "support/ChartBodies.h"
 #include "support/SewnOnChartBody.h"
 
 using namespace figment;
 
 namespace {
 
-struct ShippedPattern {
-  const char* file;  // under scenes/patterns/
-  Sex sex;
-  const char* size;  // the chart's letter code it was made for
-};
-
-void PrintTo(const ShippedPattern& p, std::ostream* out) {
-  *out << p.file;
-}
-
-class SewnPatterns : public ::testing::TestWithParam<ShippedPattern> {
- protected:
-  static void SetUpTestSuite() { bodies_ = test::loadChartBodies(); }
-  static void TearDownTestSuite() { bodies_.reset(); }
-  void SetUp() override {
-    if (!bodies_) GTEST_SKIP() << test::kMakeHumanDataSkip;
-  }
-  static std::unique_ptr<test::ChartBodies> bodies_;
-};
-std::unique_ptr<test::ChartBodies> SewnPatterns::bodies_;
+// file: under scenes/patterns/.
+using ShippedPattern = test::ChartPattern;
+class SewnPatterns : public test::ChartBodyPatterns {};
 
 TEST_P(SewnPatterns, SewsClosedAndRestsOnItsSizesChartBody) {
   const ShippedPattern& shipped = GetParam();
