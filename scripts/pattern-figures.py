@@ -4,13 +4,15 @@ size chart has (scenes/sizes/chart.txt), sewn and draped on that size's chart bo
 each drape did (figment-sew --stats), one row a pattern.
 
     OMP_NUM_THREADS=1 python3 scripts/pattern-figures.py [--bin build/bin] [--out docs/patterns.csv]
-        [--style tshirt ...] [--sex female|male] [--size M ...] [--repeat 5]
+        [--style tshirt ...] [--sex female|male] [--size M ...] [--repeat 5] [--index INDEX.json]
 
 Each size's chart body is made once by figment-body (MakeHuman's, to the chart's stature and
 girths) into a temporary folder; each pattern is sewn on it by figment-sew (cotton, backward
 Euler at 1/20 s, 2 cm spacing), --repeat times: the row is the run of median wall time (the
 sewing and the drape, without reading the body). A pattern the reader refuses is a row with
-its one-line reason.
+its one-line reason. --index sews another index's patterns (its files named relative to it,
+each entry's "style" or "name" the row's style): tests/io/data/designs/index.json, the other
+designs (docs/patterns.md, "Other designs").
 Standard library only. Needs MakeHuman's data (scripts/setup.sh)."""
 
 import argparse
@@ -49,13 +51,14 @@ def make_body(binary, folder, sex, row):
     return path
 
 
-def sew(binary, folder, entry, body):
-    """One figment-sew run of the pattern on the body: its row."""
+def sew(binary, folder, patterns, entry, body):
+    """One figment-sew run of the pattern (its file under `patterns`) on the body: its row."""
     stats = os.path.join(folder, "stats.json")
     garment = os.path.join(folder, "garment.obj")
-    run = subprocess.run([os.path.join(binary, "figment-sew"), os.path.join(ROOT, "scenes", "patterns", entry["file"]),
+    run = subprocess.run([os.path.join(binary, "figment-sew"), os.path.join(patterns, entry["file"]),
                           "--body", body, "-o", garment, "--stats", stats], capture_output=True, text=True)
-    row = {"style": entry["style"], "sex": entry["sex"], "size": entry["size"], "number": entry["number"]}
+    row = {"style": entry.get("style", entry.get("name")), "sex": entry["sex"], "size": entry["size"],
+           "number": entry["number"]}
     if run.returncode != 0:
         # The file as the repository names it, not this machine's path to it.
         row["problem"] = run.stderr.strip().replace(ROOT + os.sep, "")
@@ -76,19 +79,23 @@ def main():
     parser.add_argument("--sex", choices=["female", "male"])
     parser.add_argument("--size", action="append", help="only these sizes, letter codes (repeat)")
     parser.add_argument("--repeat", type=int, default=1, help="runs per pattern; the median's row is kept")
+    parser.add_argument("--index", default=os.path.join(ROOT, "scenes", "patterns", "index.json"),
+                        help="the patterns' index (default: the shipped ones')")
     args = parser.parse_args()
 
-    index = json.load(open(os.path.join(ROOT, "scenes", "patterns", "index.json")))
+    index = json.load(open(args.index))
+    patterns = os.path.dirname(os.path.abspath(args.index))
+    entries = index.get("patterns", index.get("designs"))
     sizes = chart_sizes(os.path.join(ROOT, "scenes", "sizes", "chart.txt"))
     rows = []
     with tempfile.TemporaryDirectory() as folder:
-        for entry in index["patterns"]:
+        for entry in entries:
             key = (entry["sex"], entry["number"])
-            if key not in sizes or (args.style and entry["style"] not in args.style) or (
+            if key not in sizes or (args.style and entry.get("style", entry.get("name")) not in args.style) or (
                     args.sex and entry["sex"] != args.sex) or (args.size and entry["size"] not in args.size):
                 continue
             body = make_body(args.bin, folder, entry["sex"], sizes[key])
-            runs = [sew(args.bin, folder, entry, body) for _ in range(max(1, args.repeat))]
+            runs = [sew(args.bin, folder, patterns, entry, body) for _ in range(max(1, args.repeat))]
             runs.sort(key=lambda r: float(r.get("wall_s", 0.0)))
             row = runs[len(runs) // 2]
             rows.append(row)

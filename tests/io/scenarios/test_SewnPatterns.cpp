@@ -10,86 +10,22 @@
 // Skipped when MakeHuman's data is absent (scripts/setup.sh fetches it).
 #include <gtest/gtest.h>
 
-#include <memory>
-#include <ostream>
 #include <string>
 
-#include "io/PatternFile.h"
-#include "sim/cloth/DrapeVerdict.h"
-#include "sim/cloth/MaterialPresets.h"
-#include "sim/collision/MeshCollider.h"
-#include "sim/drape/GarmentDrape.h"
-#include "sim/pattern/PatternCutting.h"
-#include "sim/pattern/PatternPlacement.h"
-#include "support/ChartBodies.h"
+#include "support/SewnOnChartBody.h"
 
 using namespace figment;
 
 namespace {
 
-struct ShippedPattern {
-  const char* file;  // under scenes/patterns/
-  Sex sex;
-  const char* size;  // the chart's letter code it was made for
-};
-
-void PrintTo(const ShippedPattern& p, std::ostream* out) {
-  *out << p.file;
-}
-
-class SewnPatterns : public ::testing::TestWithParam<ShippedPattern> {
- protected:
-  static void SetUpTestSuite() { bodies_ = test::loadChartBodies(); }
-  static void TearDownTestSuite() { bodies_.reset(); }
-  void SetUp() override {
-    if (!bodies_) GTEST_SKIP() << test::kMakeHumanDataSkip;
-  }
-  static std::unique_ptr<test::ChartBodies> bodies_;
-};
-std::unique_ptr<test::ChartBodies> SewnPatterns::bodies_;
-
-// As figment-sew drapes (tools/sew.cpp): cotton, backward Euler at 1/20 s, up to 20 s (the
-// dress's circle skirt settles in 11).
-ClothParameters sewnDrapeParameters() {
-  ClothParameters p;
-  p.material = *materialPreset("cotton");
-  p.integrator = Integrator::Implicit;
-  p.timeStep = 0.05;
-  p.maxTime = 20.0;
-  p.friction = 0.5;
-  p.clearance = 0.003;
-  return p;
-}
+// file: under scenes/patterns/.
+using ShippedPattern = test::ChartPattern;
+class SewnPatterns : public test::ChartBodyPatterns {};
 
 TEST_P(SewnPatterns, SewsClosedAndRestsOnItsSizesChartBody) {
   const ShippedPattern& shipped = GetParam();
-  const SizeChart& chart = bodies_->chart;
-  const int size = chart.find(shipped.sex, shipped.size);
-  ASSERT_GE(size, 0) << shipped.size;
-  const TriangleMesh body = bodies_->human->measuredBody(chart.sizes(shipped.sex)[size]).body;
-  const SewingPattern pattern = readPatternFile(std::string(FIGMENT_SOURCE_DIR) + "/scenes/patterns/" + shipped.file);
-  const UnsewnGarment cut = cutPattern(placed(pattern, placementOn(body, 0.0)), 0.02);
-  auto collider = std::make_shared<MeshCollider>(body);
-  DrapeRequest request;
-  request.garment = cut.placed;
-  request.parameters = sewnDrapeParameters();
-  request.body = collider;
-  request.sewing = DrapeSewing{cut.flat, cut.seams, {}};
-  const GarmentDrape drape = drapeGarment(request);
-
-  ASSERT_TRUE(drape.sewing.has_value());
-  EXPECT_EQ(drape.sewing->openPairs, 0);
-  EXPECT_LE(drape.sewing->seamGap, 0.002);  // m: the bound on any seam's gap at rest
-  EXPECT_TRUE(drape.report.run.atRest);
-  EXPECT_LT(drape.report.run.maxStretch, DrapeVerdict::kTearStretch);
-  int inside = 0;
-  for (const Vec3& x : drape.positions) {
-    Contact contact;
-    if (collider->contact(x, 0.0, 0.3, contact) && contact.distance < 0.0) ++inside;
-  }
-  EXPECT_EQ(inside, 0);
-  // The control: the panels started apart, so the sewing had seams to close.
-  EXPECT_GT(largestSeamGap(cut, cut.placed.vertices), 0.1);
+  test::expectSewsClosedAndRests(*bodies_, std::string(FIGMENT_SOURCE_DIR) + "/scenes/patterns/" + shipped.file,
+                                 shipped.sex, shipped.size);
 }
 
 INSTANTIATE_TEST_SUITE_P(MiddleSizes, SewnPatterns,
