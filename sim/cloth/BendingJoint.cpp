@@ -1,5 +1,6 @@
 #include "sim/cloth/BendingJoint.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace figment {
@@ -32,9 +33,12 @@ struct Hinge {
   double angle() const { return std::atan2(nA.cross(nB).dot(e) * inverseLength, nA.dot(nB)); }
   // Reciprocals taken once: this runs for every joint at every force evaluation.
   std::array<Vec3, 4> gradient(const Vec3& x0, const Vec3& x2, const Vec3& x3) const {
-    // Opposite corners move the angle along their section's normal, by 1/height.
-    const Vec3 g2 = (-length / nA.squaredNorm()) * nA;
-    const Vec3 g3 = (-length / nB.squaredNorm()) * nB;
+    // Opposite corners move the angle along their section's normal, by 1/height, the
+    // height no less than BendingJoint::kMinHeightShare of the edge (|n| = height * length).
+    const double floor = BendingJoint::kMinHeightShare * length * length;
+    const double floorSquared = floor * floor;
+    const Vec3 g2 = (-length / std::max(nA.squaredNorm(), floorSquared)) * nA;
+    const Vec3 g3 = (-length / std::max(nB.squaredNorm(), floorSquared)) * nB;
     // Edge corners: each opposite corner's lever, its projection along the edge.
     const double inverseSquared = inverseLength * inverseLength;
     const Vec3 g1 = -(((x2 - x0).dot(e) * inverseSquared) * g2 + ((x3 - x0).dot(e) * inverseSquared) * g3);

@@ -47,8 +47,14 @@ class BendingJoint {
   // Signed dihedral angle between the section normals: 0 when flat, > 0 when the sections
   // fold towards A's normal; the same whichever section is A when the winding agrees.
   static double angle(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
-  // dtheta/dx for the four corners x0..x3.
+  // dtheta/dx for the four corners x0..x3. A section flatter than kMinHeightShare of the
+  // edge (its opposite corner within that of the edge's line) counts as that high: a
+  // section collapsed onto its edge has no normal, and 1/height would grow without bound
+  // (a T-shirt warm-started onto a larger size's drape had one at 1e-17 of its edge: forces
+  // of 1e10 N, which the contacts held still, and a fit map of 1e8 kPa at the underbust).
   static std::array<Vec3, 4> angleGradient(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);
+
+  static constexpr double kMinHeightShare = 1e-3;
 
  private:
   void setRest(const Vec3& x0, const Vec3& x1, const Vec3& x2, const Vec3& x3);

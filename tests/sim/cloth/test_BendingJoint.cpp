@@ -46,3 +46,25 @@ TEST(BendingJoint, AngleChangeIsMeasuredFromTheRestFoldTheShortWay) {
   EXPECT_NEAR(std::abs(joint.angleChange(hinge(-3.0))), 2 * M_PI - 6.0, 1e-9);
   EXPECT_NEAR(joint.angleChange(hinge(3.0)), 0.0, 1e-12);
 }
+
+// A section collapsed onto its edge (its opposite corner on the edge's line, or within
+// 1e-17 of it) has no normal: its gradient is that of a section kMinHeightShare of the edge
+// high, finite and bounded, never 1/height (caught: 1e10 N on a warm-started T-shirt's
+// node, held still by the contacts, read as 1e8 kPa of pressure by the fit map). A section
+// higher than that keeps its exact gradient.
+TEST(BendingJoint, ACollapsedSectionsGradientIsBoundedByTheSmallestHeight) {
+  const double bound = 1.0 / (BendingJoint::kMinHeightShare * 1.0);  // 1/m, for the unit edge
+  for (const double height : {0.0, 1e-17, 1e-9}) {
+    SCOPED_TRACE(testing::Message() << "x2 at " << height << " m from the edge");
+    const std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.4, height, 0), Vec3(0.6, -1, 0.2)};
+    const auto g = BendingJoint::angleGradient(x[0], x[1], x[2], x[3]);
+    for (int corner = 0; corner < 4; ++corner) {
+      ASSERT_TRUE(g[corner].allFinite()) << "corner " << corner;
+      EXPECT_LE(g[corner].norm(), 2.0 * bound) << "corner " << corner;
+    }
+  }
+  // Ten times the smallest height: the exact 1/height along the section's normal.
+  const std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.4, 0.01, 0), Vec3(0.6, -1, 0.2)};
+  const auto g = BendingJoint::angleGradient(x[0], x[1], x[2], x[3]);
+  EXPECT_NEAR(g[2].norm(), 100.0, 1e-9);
+}
