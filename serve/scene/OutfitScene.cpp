@@ -107,6 +107,7 @@ ClothEngine* engineFor(const GarmentStyle& style, bool layered, SoNode* body) {
   engine->integrator.set("IMPLICIT");
   if (layered || style.penaltyContacts) engine->contactModel.set("PENALTY");
   engine->timeStep = 0.05;
+  engine->maxTimeStep = figment::ImplicitSolverParameters::kShippedMaxTimeStep;
   engine->maxTime = style.maxTime;
   engine->restSpeed = 0.01;
   engine->restWindow = 0.25;
@@ -236,6 +237,7 @@ ClothEngine* gradedEngine(const std::string& fabric, const ClothParameters& p, b
   engine->integrator.set("IMPLICIT");
   if (layered && !sewn) engine->contactModel.set("PENALTY");
   engine->timeStep = p.timeStep;
+  engine->maxTimeStep = p.implicitSolver.maxTimeStep;
   engine->maxTime = p.maxTime;
   engine->restSpeed = p.rest.speedThreshold;
   engine->restWindow = p.rest.window;

@@ -68,7 +68,8 @@ struct ImplicitSolverParameters {
   // takes 56 PCG iterations a step instead of 36 (docs/results.md, issue 42).
   bool warmStart = false;
   // The step grows while the cloth is quiet: a step the step control kept whole
-  // (ImplicitEuler.h) whose fastest node was slower than the step before's makes the next
+  // (ImplicitEuler.h) whose fastest node was slower than the step before's (the first
+  // step has none before it: a garment let go is not quiet) makes the next
   // kStepGrowth times longer, up to maxTimeStep (s); any other step makes the next half as
   // long, never shorter than timeStep (a skirt still sliding on the hips, or contacts
   // chattering, go back to the scene's step). Backward Euler damps what it cannot
@@ -78,6 +79,10 @@ struct ImplicitSolverParameters {
   // velocity's error stays the scene step's. 0 (the default): every step is timeStep.
   double maxTimeStep = 0.0;
   static constexpr double kStepGrowth = 1.5;
+  // The largest step the size advice's, the service's and figment-sew's drapes grow to from
+  // 0.05 s: on the dress, T-shirt, close fit and layered outfit 0.2 s is no closer to the
+  // converged drape and up to twice as slow, 0.8 s no faster (docs/results.md, issue 42).
+  static constexpr double kShippedMaxTimeStep = 0.4;
   BendingStiffness bending = BendingStiffness::Joints;
   Preconditioner preconditioner = Preconditioner::TwoLevel;
   ContactModel contacts = ContactModel::Constraints;

@@ -61,7 +61,7 @@ void ClothSolver::resume(const std::vector<Vec3>& x, const std::vector<Vec3>& v,
   iterations_ = iterations;
   restSince_ = -1.0;
   implicitStep_ = parameters_.timeStep;
-  lastFastest_ = std::numeric_limits<double>::infinity();
+  lastFastest_ = 0.0;
 }
 
 const std::vector<Vec3>& ClothSolver::positions() const {

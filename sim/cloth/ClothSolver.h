@@ -121,11 +121,10 @@ class ClothSolver {
   double lastStepClampedShare_ = 0.0, lastStepLimitedShare_ = 0.0;
   double time_ = 0.0;
   int iterations_ = 0;
-  double restSince_ = -1.0;
+  double restSince_ = -1.0;    // time the cloth became slower than the threshold; -1: moving
   double implicitStep_ = 0.0;  // a growing implicit step's next size, s (set in the constructor)
-  double lastFastest_ =
-      std::numeric_limits<double>::infinity();  // the last implicit step's fastest node, m/s  // time the cloth became
-                                                // slower than the threshold; -1: moving
+  // The last implicit step's fastest node, m/s; 0 before the first (no step is quiet then).
+  double lastFastest_ = 0.0;
   std::vector<char> pinned_;
   StepObserver stepObserver_;
   // Per node, a lower bound of its distance to the body, kept down to date by the

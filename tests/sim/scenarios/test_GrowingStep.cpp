@@ -92,7 +92,7 @@ TEST(GrowingStep, AHangingStripRestsWhereTheFixedStepRestsInFewerSteps) {
   for (size_t i = 0; i < fixed.positions.size(); ++i)
     worst = std::max(worst, (fixed.positions[i] - grown.positions[i]).norm());
   EXPECT_LT(worst, 2e-3);  // m
-  EXPECT_LT(grown.result.iterations, fixed.result.iterations / 2)
+  EXPECT_LE(grown.result.iterations, fixed.result.iterations / 2)
       << grown.result.iterations << " against " << fixed.result.iterations;
   RecordProperty("steps fixed", fixed.result.iterations);
   RecordProperty("steps grown", grown.result.iterations);
@@ -121,9 +121,9 @@ TEST(GrowingStep, ASheetDroppedOnABallRestsOutsideItInFewerSteps) {
 }
 
 // A quiet step (kept whole by the step control, its fastest node slower than the step
-// before's) makes the next 1.5 times longer, up to the largest; any other the next half
-// as long, never under timeStep. The sheet at 0.2 s overshoots in its first step (the
-// step control halves it) and then grows, so the run has both.
+// before's; the first step has none before it) makes the next 1.5 times longer, up to the largest; any other the next
+// half as long, never under timeStep. The sheet at 0.2 s overshoots in its first step (the step control halves it) and
+// then grows, so the run has both.
 TEST(GrowingStep, GrowsByHalfWhileQuietUpToTheLargestAndHalvesOtherwise) {
   ClothParameters p = implicitDrape(0.2, 1.6);
   p.rest.speedThreshold = 0.0;  // never at rest: the run goes to maxTime
@@ -135,7 +135,7 @@ TEST(GrowingStep, GrowsByHalfWhileQuietUpToTheLargestAndHalvesOtherwise) {
   int halved = 0, grew = 0;
   for (size_t k = 0; k + 2 < log.sizes.size(); ++k) {  // the last step is cut to maxTime
     SCOPED_TRACE(testing::Message() << "step " << k + 1 << " of " << log.sizes[k] << " s");
-    const double before = k == 0 ? std::numeric_limits<double>::infinity() : log.fastest[k - 1];
+    const double before = k == 0 ? 0.0 : log.fastest[k - 1];  // the first step has none before it: not quiet
     const bool quiet = !log.halved[k] && log.fastest[k] < before;
     const double expected =
         quiet ? std::min(p.implicitSolver.maxTimeStep, 1.5 * log.sizes[k]) : std::max(p.timeStep, 0.5 * log.sizes[k]);
