@@ -74,7 +74,7 @@ struct ImplicitSolverParameters {
   // long, never shorter than timeStep (a skirt still sliding on the hips, or contacts
   // chattering, go back to the scene's step). Backward Euler damps what it cannot
   // resolve, so long steps carry a garment that has stopped falling to its rest shape as
-  // a Newton iteration on f = 0 would: the default dress rests in 8 steps instead of 40
+  // a Newton iteration on f = 0 would: the default dress rests in 9 steps instead of 40
   // (docs/results.md, issue 42). Each step's PCG stop tightens by timeStep / dt, so the
   // velocity's error stays the scene step's. 0 (the default): every step is timeStep.
   double maxTimeStep = 0.0;
