@@ -9,12 +9,15 @@
 
 #include "sim/cloth/ClothSolver.h"
 #include "sim/collision/MeshCollider.h"
+#include "support/SheetOnBall.h"
 #include "support/TestMeshes.h"
 
 using namespace figment;
 
 namespace {
-constexpr double kRadius = 0.15;  // m, the ball
+using sheetonball::ball;
+using sheetonball::kRadius;
+using sheetonball::sheetAboveBall;
 
 ClothParameters implicitDrape(double timeStep, double maxTimeStep) {
   ClothParameters p;
@@ -23,15 +26,6 @@ ClothParameters implicitDrape(double timeStep, double maxTimeStep) {
   p.implicitSolver.maxTimeStep = maxTimeStep;
   p.maxTime = 6.0;
   return p;
-}
-
-std::shared_ptr<const MeshCollider> ball() {
-  return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24));
-}
-
-// A 50 cm sheet of 16 x 16 quads, 2 cm above the ball, falling onto it.
-TriangleMesh sheetAboveBall() {
-  return meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
 }
 
 // A strip 5 cm wide and 50 cm long hanging from its top row.

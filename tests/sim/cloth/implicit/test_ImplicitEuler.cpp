@@ -11,12 +11,15 @@
 #include "sim/cloth/implicit/ImplicitEuler.h"
 #include "sim/collision/MeshCollider.h"
 #include "sim/collision/PlaneCollider.h"
+#include "support/SheetOnBall.h"
 #include "support/TestMeshes.h"
 
 using namespace figment;
 
 namespace {
-constexpr double kRadius = 0.15;  // m, the ball
+using sheetonball::ball;
+using sheetonball::kRadius;
+using sheetonball::sheetAboveBall;
 
 ClothParameters implicitDrape(double timeStep) {
   ClothParameters p;
@@ -24,15 +27,6 @@ ClothParameters implicitDrape(double timeStep) {
   p.timeStep = timeStep;
   p.maxTime = 6.0;
   return p;
-}
-
-std::shared_ptr<const MeshCollider> ball() {
-  return std::make_shared<MeshCollider>(meshes::sphere(kRadius, 48, 24));
-}
-
-// A 50 cm sheet of 16 x 16 quads, 2 cm above the ball, falling onto it.
-TriangleMesh sheetAboveBall() {
-  return meshes::grid(16, 16, 0.5, 0.5, Vec3(-0.25, kRadius + 0.02, 0.25), Vec3::UnitX(), -Vec3::UnitZ());
 }
 
 // The nodes' worst signed distance to the body beyond the clearance (m; < 0: too close).
