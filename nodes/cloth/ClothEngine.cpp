@@ -44,10 +44,8 @@ void ClothEngine::initClass() {
 
 ClothEngine::ClothEngine() : impl_(std::make_unique<Impl>()) {
   SO_ENGINE_CONSTRUCTOR(ClothEngine);
-  // The defaults are the simulation's own, so a scene and a direct sim/ run agree, but the
-  // method: an engine left at its defaults drapes by backward Euler at 1/20 s (the shipped
-  // dress's method), where the simulation's defaults are the paper's explicit path, which
-  // `integrator HEUN` gives back (timeStepSeconds()).
+  // The simulation's defaults, so a scene and a sim/ run agree, but the method: backward
+  // Euler at 1/20 s, where sim/'s is the paper's explicit path (`integrator HEUN`).
   const figment::ClothParameters defaults;
   SO_ENGINE_ADD_INPUT(restPoints, (0.0f, 0.0f, 0.0f));
   SO_ENGINE_ADD_INPUT(coordIndex, (0));
