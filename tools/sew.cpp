@@ -53,7 +53,6 @@ figment::ClothParameters drapeParameters(const Request& request) {
   p.material = *material;
   p.integrator = figment::Integrator::Implicit;
   p.timeStep = 0.05;
-  p.implicitSolver.maxTimeStep = figment::ImplicitSolverParameters::kShippedMaxTimeStep;
   p.maxTime = request.maxTime;
   p.rest = {0.01, 0.25};
   p.friction = 0.5;

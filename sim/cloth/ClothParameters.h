@@ -79,7 +79,7 @@ struct ImplicitSolverParameters {
   // velocity's error stays the scene step's. 0 (the default): every step is timeStep.
   double maxTimeStep = 0.0;
   static constexpr double kStepGrowth = 1.5;
-  // The largest step the size advice's, the service's and figment-sew's drapes grow to from
+  // The largest step the size advice's and the service's drapes of cut styles grow to from
   // 0.05 s: on the dress, T-shirt, close fit and layered outfit 0.2 s is no closer to the
   // converged drape and up to twice as slow, 0.8 s no faster (docs/results.md, issue 42).
   static constexpr double kShippedMaxTimeStep = 0.4;
