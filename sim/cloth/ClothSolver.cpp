@@ -229,8 +229,9 @@ void ClothSolver::stepImplicit() {
     fastest = std::max(fastest, (x_[i] - xStart_[i]).norm() / dt);
   }
   if (growing()) {
-    // Quiet: kept whole by the step control and slower than the step before. A garment
-    // still sliding, or its contacts chattering, goes back towards the scene's step.
+    // Quiet: kept whole by the step control and slower than the step before (none is
+    // before the first: a garment let go is not quiet). A garment still sliding, or its
+    // contacts chattering, goes back towards the scene's step.
     const bool quiet = implicit_->costs().halvedSteps == halvedBefore && fastest < lastFastest_;
     const double next = quiet ? ImplicitSolverParameters::kStepGrowth * implicitStep_ : 0.5 * implicitStep_;
     implicitStep_ = std::clamp(next, parameters_.timeStep, parameters_.implicitSolver.maxTimeStep);
