@@ -11,8 +11,9 @@ targets=("$@")
 
 # What a build of figment-view (or any other program but the service's) needs: the compiler,
 # Coin, OSMesa, assimp, Eigen; libpng-dev: PNG files written byte for byte (io/PngFile);
-# assimp-testmodels: the default scanned mannequin (human.zae) the shipped scenes dress.
-build_packages=(cmake ninja-build g++ pkg-config
+# assimp-testmodels: the default scanned mannequin (human.zae) the shipped scenes dress;
+# python3: scripts/fetch-makehuman.py, below (a minimal Debian has no Python).
+build_packages=(cmake ninja-build g++ pkg-config python3
   libcoin-dev libsimage-dev libosmesa6-dev libassimp-dev libeigen3-dev libpng-dev
   libcli11-dev nlohmann-json3-dev assimp-testmodels)
 # The service (figment-serve, figment-precompute): libcpp-httplib-dev for its HTTP;
