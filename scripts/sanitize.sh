@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sanitizer job, run by .ci/run after the normal suite (needs scripts/setup.sh's packages):
+# The sanitizer job, run by `.ci/run sanitize` on a machine of its own (needs scripts/setup.sh's packages):
 #   asan  every test module and program built with AddressSanitizer + UndefinedBehaviorSanitizer
 #         (FIGMENT_SANITIZE, cmake/FigmentSanitize.cmake) in build-asan, and every test ctest
 #         registers there run, the service's Python scenarios included: they start that tree's
