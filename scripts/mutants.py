@@ -13,6 +13,7 @@ expect a failure, then take it back out and rebuild. A mutant whose tests still 
 "survived": the finding's test cannot fail the way it should.
 
   scripts/mutants.py [--build build] [--table docs/mutants.md] [NAME ...]
+     (--table: the row of each mutant run is rewritten as it ends; the others' rows are kept)
   scripts/mutants.py --check   (ctest lint.MutantsApply: every header whole, every diff applies)
 
 Exit status 0 when every mutant was caught; 1 otherwise. Needs a built BUILD folder and
@@ -82,10 +83,28 @@ def check(mutants):
     return 1 if stale or not mutants else 0
 
 
-def table(rows):
+ROW = re.compile(r"^\| `([^`]+)` \|.*\| ([^|]+) \|$", re.MULTILINE)
+
+
+def table(mutants, results):
+    """The table of every mutant: this run's results, and a row an earlier run wrote for each
+    mutant not run now (so a run of a few, or one cut short, keeps the others' results)."""
     lines = [TABLE_START, "", "| mutant | what it breaks | test that must fail | result |", "| --- | --- | --- | --- |"]
-    lines += [f"| `{m.name}` | {m.finding} | `{m.test}` | {result} |" for m, result in rows]
+    for mutant in mutants:
+        result = results.get(mutant.name, "not run")
+        test = mutant.test.replace("|", "\\|")  # a table cell ends at a bare |, even in code
+        lines.append(f"| `{mutant.name}` | {mutant.finding} | `{test}` | {result} |")
     return "\n".join(lines) + "\n"
+
+
+def write_table(path, results):
+    """Rewrites the table in PATH after TABLE_START: every mutant in tests/mutants/."""
+    text = path.read_text() if path.exists() else ""
+    kept, _, old = text.partition(TABLE_START)
+    merged = {name: result.strip() for name, result in ROW.findall(old)}
+    merged.update(results)
+    every = [Mutant(p) for p in sorted(MUTANTS.glob("*.patch"))]
+    path.write_text(kept + table(every, merged))
 
 
 def main():
@@ -105,16 +124,13 @@ def main():
         return 2
     if arguments.check:
         return check(mutants)
-    rows = []
+    results = {}
     for mutant in mutants:
-        result = judge(mutant, arguments.build)
-        print(f"{mutant.name}: {result}", flush=True)
-        rows.append((mutant, result))
-    if arguments.table:
-        text = arguments.table.read_text() if arguments.table.exists() else ""
-        kept = text.split(TABLE_START, 1)[0]
-        arguments.table.write_text(kept + table(rows))
-    return 0 if all(result == "caught" for _, result in rows) else 1
+        results[mutant.name] = judge(mutant, arguments.build)
+        print(f"{mutant.name}: {results[mutant.name]}", flush=True)
+        if arguments.table:  # after each: a run cut short keeps what it found
+            write_table(arguments.table, results)
+    return 0 if all(result == "caught" for result in results.values()) else 1
 
 
 if __name__ == "__main__":
