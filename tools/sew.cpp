@@ -1,12 +1,14 @@
 // figment-sew: a sewing pattern sewn on a body and draped (docs/patterns.md).
 //   figment-sew PATTERN.json --body BODY -o garment.obj|.glb|.gltf [--stats stats.json]
-//               [--spacing M] [--material NAME] [--made-for-stature M] [--max-time S] [--with-body]
+//               [--spacing M] [--material NAME] [--made-for-stature M] [--max-time S]
+//               [--max-step S] [--with-body]
 // PATTERN is GarmentCode's specification JSON (io/PatternFile.h); BODY any standing body a
 // MeshFile reads (human.zae, one figment-body made), found through the model search path.
 // The panels are placed around the body (sim/pattern/PatternPlacement.h), cut into cloth
 // (sim/pattern/PatternCutting.h), sewn and draped to rest (sim/pattern/Sewing.h) by backward
-// Euler at 1/20 s. The garment goes to the output with its panel coordinates; --stats writes
-// what the drape did as JSON. Bad input is one line on stderr, exit status 1, and no file.
+// Euler from 1/20 s, the drape's step growing to --max-step while the cloth is quiet. The
+// garment goes to the output with its panel coordinates; --stats writes what the drape did
+// as JSON. Bad input is one line on stderr, exit status 1, and no file.
 // A drape that is not clean (not at rest, torn, a seam left open, nodes inside the body) is
 // written, with one line per problem on stderr.
 
@@ -37,7 +39,8 @@ const figment::tools::ToolMain kTool{"figment-sew"};
 
 struct Request {
   std::string pattern, output, stats, material = "cotton";
-  double spacing = 0.02, madeForStature = 0.0, maxTime = 20.0;
+  double spacing = 0.02, madeForStature = 0.0, maxTime = 20.0,
+         maxStep = figment::ImplicitSolverParameters::kShippedMaxTimeStep;
   bool withBody = false;
 };
 
@@ -54,6 +57,7 @@ figment::ClothParameters drapeParameters(const Request& request) {
   p.integrator = figment::Integrator::Implicit;
   p.timeStep = 0.05;
   p.maxTime = request.maxTime;
+  p.implicitSolver.maxTimeStep = request.maxStep;
   p.rest = {0.01, 0.25};
   p.friction = 0.5;
   p.clearance = 0.003;
@@ -192,6 +196,10 @@ int main(int argc, char** argv) {
                  "the stature of the body the pattern was made for, m (default: the body's own)");
   app.add_option("--max-time", request.maxTime, "simulated seconds the drape may take to rest, at most (default 20)")
       ->check(CLI::Range(0.05, 120.0));
+  app.add_option("--max-step", request.maxStep,
+                 "the drape's step grows from 1/20 s to this while the cloth is quiet, s (default 0.4, "
+                 "the service's; 0: a fixed 1/20 s)")
+      ->check(CLI::Number);
   app.add_flag("--with-body", request.withBody, "write the body beside the garment");
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
   if (!figment::meshSetFormatOf(request.output))
