@@ -64,12 +64,21 @@ figment::ClothParameters drapeParameters(const Request& request) {
   return p;
 }
 
-// Garment nodes inside the body (negative distance to its surface).
-int nodesInside(const figment::Collider& body, const std::vector<figment::Vec3>& positions) {
-  int inside = 0;
-  for (const figment::Vec3& x : positions) {
+// Garment nodes inside the body (negative distance to its surface), and the deepest: how
+// deep, on which panel, how high, so a shop can see where its garment meets the body.
+struct InsideNodes {
+  int count = 0;
+  double depth = 0.0;  // m, the deepest node's
+  int node = -1;       // the deepest node (panel numbering)
+};
+
+InsideNodes nodesInside(const figment::Collider& body, const std::vector<figment::Vec3>& positions) {
+  InsideNodes inside;
+  for (size_t i = 0; i < positions.size(); ++i) {
     figment::Contact contact;
-    if (body.contact(x, 0.0, 0.3, contact) && contact.distance < 0.0) ++inside;
+    if (!body.contact(positions[i], 0.0, 0.3, contact) || contact.distance >= 0.0) continue;
+    ++inside.count;
+    if (-contact.distance > inside.depth) inside.depth = -contact.distance, inside.node = static_cast<int>(i);
   }
   return inside;
 }
@@ -137,7 +146,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   drape.report.verdict = figment::verdictOf(drape.report);
 
   const figment::DrapeVerdict verdict = verdictOf(drape);
-  const int inside = nodesInside(*collider, drape.positions);
+  const InsideNodes inside = nodesInside(*collider, drape.positions);
 
   std::vector<figment::ColouredMesh> meshes;
   figment::ColouredMesh garment;
@@ -154,7 +163,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   std::vector<std::string> written;
   figment::exportMeshSet(meshes, request.output, &written);
   if (!request.stats.empty()) {
-    const std::string text = statsJson(drape, verdict, inside, cut);
+    const std::string text = statsJson(drape, verdict, inside.count, cut);
     const std::string error = figment::writeAtomically(request.stats, [&](const std::string& temporary) {
       std::ofstream out(temporary);
       out << text;
@@ -174,8 +183,12 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
     std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm (%s)\n",
                  kTool.program().c_str(), name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap,
                  openStitches(pattern, cut, *drape.sewing).c_str());
-  if (inside > 0)
-    std::fprintf(stderr, "%s: %s: %d garment nodes inside the body\n", kTool.program().c_str(), name.c_str(), inside);
+  if (inside.count > 0) {
+    const figment::Vec3& deepest = drape.positions[inside.node];
+    std::fprintf(stderr, "%s: %s: %d garment nodes inside the body, the deepest %.1f mm in (panel %s, %.2f m up)\n",
+                 kTool.program().c_str(), name.c_str(), inside.count, 1000 * inside.depth,
+                 cut.panelNames[cut.panelOf[inside.node]].c_str(), deepest.y());
+  }
   return 0;
 }
 
