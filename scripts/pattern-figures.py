@@ -8,7 +8,7 @@ each drape did (figment-sew --stats), one row a pattern.
 
 Each size's chart body is made once by figment-body (MakeHuman's, to the chart's stature and
 girths) into a temporary folder; each pattern is sewn on it by figment-sew (cotton, backward
-Euler at 1/20 s, 2 cm spacing), --repeat times: the row is the run of median wall time (the
+Euler from 1/20 s growing to figment-sew's --max-step or this one's, 2 cm spacing), --repeat times: the row is the run of median wall time (the
 sewing and the drape, without reading the body). A pattern the reader refuses is a row with
 its one-line reason. --index sews another index's patterns (its files named relative to it,
 each entry's "style" or "name" the row's style): tests/io/data/designs/index.json, the other
@@ -51,12 +51,13 @@ def make_body(binary, folder, sex, row):
     return path
 
 
-def sew(binary, folder, patterns, entry, body):
-    """One figment-sew run of the pattern (its file under `patterns`) on the body: its row."""
+def sew(binary, folder, patterns, entry, body, extra=()):
+    """One figment-sew run of the pattern (its file under `patterns`) on the body, with the
+    `extra` options: its row."""
     stats = os.path.join(folder, "stats.json")
     garment = os.path.join(folder, "garment.obj")
     run = subprocess.run([os.path.join(binary, "figment-sew"), os.path.join(patterns, entry["file"]),
-                          "--body", body, "-o", garment, "--stats", stats], capture_output=True, text=True)
+                          "--body", body, "-o", garment, "--stats", stats, *extra], capture_output=True, text=True)
     row = {"style": entry.get("style", entry.get("name")), "sex": entry["sex"], "size": entry["size"],
            "number": entry["number"]}
     if run.returncode != 0:
@@ -79,6 +80,8 @@ def main():
     parser.add_argument("--sex", choices=["female", "male"])
     parser.add_argument("--size", action="append", help="only these sizes, letter codes (repeat)")
     parser.add_argument("--repeat", type=int, default=1, help="runs per pattern; the median's row is kept")
+    parser.add_argument("--max-step", type=float,
+                        help="figment-sew --max-step: the drape's step grows to it (0: fixed; default figment-sew's)")
     parser.add_argument("--index", default=os.path.join(ROOT, "scenes", "patterns", "index.json"),
                         help="the patterns' index (default: the shipped ones')")
     args = parser.parse_args()
@@ -95,7 +98,8 @@ def main():
                     args.sex and entry["sex"] != args.sex) or (args.size and entry["size"] not in args.size):
                 continue
             body = make_body(args.bin, folder, entry["sex"], sizes[key])
-            runs = [sew(args.bin, folder, patterns, entry, body) for _ in range(max(1, args.repeat))]
+            extra = ["--max-step", str(args.max_step)] if args.max_step is not None else []
+            runs = [sew(args.bin, folder, patterns, entry, body, extra) for _ in range(max(1, args.repeat))]
             runs.sort(key=lambda r: float(r.get("wall_s", 0.0)))
             row = runs[len(runs) // 2]
             rows.append(row)

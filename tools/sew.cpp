@@ -1,12 +1,14 @@
 // figment-sew: a sewing pattern sewn on a body and draped (docs/patterns.md).
 //   figment-sew PATTERN.json --body BODY -o garment.obj|.glb|.gltf [--stats stats.json]
-//               [--spacing M] [--material NAME] [--made-for-stature M] [--max-time S] [--with-body]
+//               [--spacing M] [--material NAME] [--made-for-stature M] [--max-time S]
+//               [--max-step S] [--with-body]
 // PATTERN is GarmentCode's specification JSON (io/PatternFile.h); BODY any standing body a
 // MeshFile reads (human.zae, one figment-body made), found through the model search path.
 // The panels are placed around the body (sim/pattern/PatternPlacement.h), cut into cloth
 // (sim/pattern/PatternCutting.h), sewn and draped to rest (sim/pattern/Sewing.h) by backward
-// Euler at 1/20 s. The garment goes to the output with its panel coordinates; --stats writes
-// what the drape did as JSON. Bad input is one line on stderr, exit status 1, and no file.
+// Euler from 1/20 s, the drape's step growing to --max-step while the cloth is quiet. The
+// garment goes to the output with its panel coordinates; --stats writes what the drape did
+// as JSON. Bad input is one line on stderr, exit status 1, and no file.
 // A drape that is not clean (not at rest, torn, a seam left open, nodes inside the body) is
 // written, with one line per problem on stderr.
 
@@ -37,7 +39,8 @@ const figment::tools::ToolMain kTool{"figment-sew"};
 
 struct Request {
   std::string pattern, output, stats, material = "cotton";
-  double spacing = 0.02, madeForStature = 0.0, maxTime = 20.0;
+  double spacing = 0.02, madeForStature = 0.0, maxTime = 20.0,
+         maxStep = figment::ImplicitSolverParameters::kShippedMaxTimeStep;
   bool withBody = false;
 };
 
@@ -54,18 +57,28 @@ figment::ClothParameters drapeParameters(const Request& request) {
   p.integrator = figment::Integrator::Implicit;
   p.timeStep = 0.05;
   p.maxTime = request.maxTime;
+  p.implicitSolver.maxTimeStep = request.maxStep;
   p.rest = {0.01, 0.25};
   p.friction = 0.5;
   p.clearance = 0.003;
   return p;
 }
 
-// Garment nodes inside the body (negative distance to its surface).
-int nodesInside(const figment::Collider& body, const std::vector<figment::Vec3>& positions) {
-  int inside = 0;
-  for (const figment::Vec3& x : positions) {
+// Garment nodes inside the body (negative distance to its surface), and the deepest: how
+// deep, on which panel, how high, so a shop can see where its garment meets the body.
+struct InsideNodes {
+  int count = 0;
+  double depth = 0.0;  // m, the deepest node's
+  int node = -1;       // the deepest node (panel numbering)
+};
+
+InsideNodes nodesInside(const figment::Collider& body, const std::vector<figment::Vec3>& positions) {
+  InsideNodes inside;
+  for (size_t i = 0; i < positions.size(); ++i) {
     figment::Contact contact;
-    if (body.contact(x, 0.0, 0.3, contact) && contact.distance < 0.0) ++inside;
+    if (!body.contact(positions[i], 0.0, 0.3, contact) || contact.distance >= 0.0) continue;
+    ++inside.count;
+    if (-contact.distance > inside.depth) inside.depth = -contact.distance, inside.node = static_cast<int>(i);
   }
   return inside;
 }
@@ -133,7 +146,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   drape.report.verdict = figment::verdictOf(drape.report);
 
   const figment::DrapeVerdict verdict = verdictOf(drape);
-  const int inside = nodesInside(*collider, drape.positions);
+  const InsideNodes inside = nodesInside(*collider, drape.positions);
 
   std::vector<figment::ColouredMesh> meshes;
   figment::ColouredMesh garment;
@@ -150,7 +163,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
   std::vector<std::string> written;
   figment::exportMeshSet(meshes, request.output, &written);
   if (!request.stats.empty()) {
-    const std::string text = statsJson(drape, verdict, inside, cut);
+    const std::string text = statsJson(drape, verdict, inside.count, cut);
     const std::string error = figment::writeAtomically(request.stats, [&](const std::string& temporary) {
       std::ofstream out(temporary);
       out << text;
@@ -170,8 +183,12 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
     std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm (%s)\n",
                  kTool.program().c_str(), name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap,
                  openStitches(pattern, cut, *drape.sewing).c_str());
-  if (inside > 0)
-    std::fprintf(stderr, "%s: %s: %d garment nodes inside the body\n", kTool.program().c_str(), name.c_str(), inside);
+  if (inside.count > 0) {
+    const figment::Vec3& deepest = drape.positions[inside.node];
+    std::fprintf(stderr, "%s: %s: %d garment nodes inside the body, the deepest %.1f mm in (panel %s, %.2f m up)\n",
+                 kTool.program().c_str(), name.c_str(), inside.count, 1000 * inside.depth,
+                 cut.panelNames[cut.panelOf[inside.node]].c_str(), deepest.y());
+  }
   return 0;
 }
 
@@ -192,6 +209,10 @@ int main(int argc, char** argv) {
                  "the stature of the body the pattern was made for, m (default: the body's own)");
   app.add_option("--max-time", request.maxTime, "simulated seconds the drape may take to rest, at most (default 20)")
       ->check(CLI::Range(0.05, 120.0));
+  app.add_option("--max-step", request.maxStep,
+                 "the drape's step grows from 1/20 s to this while the cloth is quiet, s (default 0.4, "
+                 "the service's; 0: a fixed 1/20 s)")
+      ->check(CLI::Number);
   app.add_flag("--with-body", request.withBody, "write the body beside the garment");
   if (const int status = kTool.parse(app, argc, argv); status >= 0) return status;
   if (!figment::meshSetFormatOf(request.output))

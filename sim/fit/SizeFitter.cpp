@@ -68,9 +68,7 @@ HumanParameters sexStart(Sex sex) {
 }  // namespace
 
 ClothParameters sizeDrapeParameters(const GarmentStyle& style) {
-  ClothParameters p = sizeDrapeParameters(std::string(style.fabric));
-  p.implicitSolver.maxTimeStep = ImplicitSolverParameters::kShippedMaxTimeStep;
-  return p;
+  return sizeDrapeParameters(std::string(style.fabric));
 }
 
 ClothParameters sizeDrapeParameters(const std::string& fabric) {
@@ -78,6 +76,7 @@ ClothParameters sizeDrapeParameters(const std::string& fabric) {
   p.material = materialPreset(fabric).value_or(Material{});
   p.integrator = Integrator::Implicit;
   p.timeStep = 0.05;
+  p.implicitSolver.maxTimeStep = ImplicitSolverParameters::kShippedMaxTimeStep;
   // A flared skirt slides from the waist to the hips for up to 8 s on the chart's end
   // bodies (test_SixBodyDrapes); the drape stops as soon as it rests, so the bound costs
   // only the drapes that need it.

@@ -38,8 +38,7 @@ namespace figment {
 // while the cloth is quiet, at rest at 1 cm/s held 1/4 s.
 ClothParameters sizeDrapeParameters(const GarmentStyle& style);
 // A sewn style's, in `fabric` (a material preset; the default Material for another name):
-// the same at a fixed 1/20 s. Growing, the women's fitted shirt in XXL rested torn (an edge
-// at 2.2 times its length) where the fixed step drapes it clean (docs/results.md, issue 42).
+// the same. (Its sewing and the pulling of seams left open keep 1/20 s: sim/drape/GarmentDrape.)
 ClothParameters sizeDrapeParameters(const std::string& fabric);
 
 // One size of a style sewn from patterns.
