@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
+#include <string>
 
 namespace figment {
 
@@ -48,14 +50,21 @@ double squaredDistanceToBox(const Vec3& p, const Bounds& box) {
 }
 }  // namespace
 
+// Throws std::invalid_argument naming the first triangle that names a vertex the mesh lacks
+// (never reading past the vertices).
 TriangleBvh::TriangleBvh(const TriangleMesh& mesh) {
   const size_t n = mesh.triangles.size();
   a_.resize(n);
   b_.resize(n);
   c_.resize(n);
   centroids_.resize(n);
+  const size_t vertices = mesh.vertices.size();
   for (size_t t = 0; t < n; ++t) {
     const Triangle& tri = mesh.triangles[t];
+    for (int corner : tri)
+      if (corner < 0 || static_cast<size_t>(corner) >= vertices)
+        throw std::invalid_argument("triangle " + std::to_string(t) + " names vertex " + std::to_string(corner) +
+                                    " of a mesh of " + std::to_string(vertices));
     a_[t] = mesh.vertices[tri[0]];
     b_[t] = mesh.vertices[tri[1]];
     c_[t] = mesh.vertices[tri[2]];

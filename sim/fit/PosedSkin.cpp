@@ -33,14 +33,19 @@ Vec3 barycentric(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
 
 }  // namespace
 
-PosedSkin::PosedSkin(TriangleMesh rest, TriangleMesh posed)
-    : rest_(std::move(rest)), posed_(std::move(posed)), restBvh_(rest_), posedBvh_(posed_) {
-  if (rest_.vertices.size() != posed_.vertices.size() || rest_.triangles != posed_.triangles)
-    throw std::invalid_argument("posed skin: " + std::to_string(posed_.vertices.size()) + " posed vertices and " +
-                                std::to_string(posed_.triangles.size()) + " triangles for " +
-                                std::to_string(rest_.vertices.size()) + " and " +
-                                std::to_string(rest_.triangles.size()) + " at rest, or other triangles");
+// The posed skin, once it is known to be the rest skin's vertices moved: checked before
+// either tree is built over it (a posed skin short of a vertex read past its end).
+TriangleMesh PosedSkin::matching(const TriangleMesh& rest, TriangleMesh posed) {
+  if (rest.vertices.size() != posed.vertices.size() || rest.triangles != posed.triangles)
+    throw std::invalid_argument("posed skin: " + std::to_string(posed.vertices.size()) + " posed vertices and " +
+                                std::to_string(posed.triangles.size()) + " triangles for " +
+                                std::to_string(rest.vertices.size()) + " and " + std::to_string(rest.triangles.size()) +
+                                " at rest, or other triangles");
+  return posed;
 }
+
+PosedSkin::PosedSkin(TriangleMesh rest, TriangleMesh posed)
+    : rest_(std::move(rest)), posed_(matching(rest_, std::move(posed))), restBvh_(rest_), posedBvh_(posed_) {}
 
 Vec3 PosedSkin::carry(const Vec3& p, const TriangleBvh& fromBvh, const TriangleMesh& from, const TriangleMesh& to) {
   const ClosestPoint closest = fromBvh.closest(p);

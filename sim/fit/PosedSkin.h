@@ -32,6 +32,7 @@ class PosedSkin {
   std::vector<Vec3> toPosed(const std::vector<Vec3>& points) const;
 
  private:
+  static TriangleMesh matching(const TriangleMesh& rest, TriangleMesh posed);
   static Vec3 carry(const Vec3& p, const TriangleBvh& fromBvh, const TriangleMesh& from, const TriangleMesh& to);
 
   TriangleMesh rest_, posed_;

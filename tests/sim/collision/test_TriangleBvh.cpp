@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <random>
+#include <stdexcept>
+#include <string>
 
 #include "sim/collision/TriangleBvh.h"
 #include "support/TestMeshes.h"
@@ -69,4 +71,22 @@ TEST(TriangleBvh, OverlappingFindsExactlyTheTrianglesWhoseBoxesMeetTheBox) {
     }
     EXPECT_EQ(found, expected) << "query " << query;
   }
+}
+
+// A triangle naming a vertex the mesh lacks is refused by name, before any vertex is read
+// (PosedSkin built its tree over a posed skin short of a vertex: ASan's heap overflow).
+TEST(TriangleBvh, RefusesATriangleNamingAVertexTheMeshLacks) {
+  TriangleMesh mesh = meshes::sphere(0.1, 8, 4);
+  EXPECT_NO_THROW(TriangleBvh{mesh});  // the control
+  const int n = static_cast<int>(mesh.vertices.size());
+  mesh.triangles[5][2] = n;
+  try {
+    TriangleBvh bvh(mesh);
+    FAIL() << "a triangle past the vertices was taken";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "triangle 5 names vertex " + std::to_string(n) + " of a mesh of " + std::to_string(n));
+  }
+  mesh.triangles[5][2] = -1;
+  EXPECT_THROW(TriangleBvh{mesh}, std::invalid_argument);
 }
