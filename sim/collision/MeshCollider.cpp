@@ -13,6 +13,15 @@ double cornerAngle(const Vec3& corner, const Vec3& next, const Vec3& previous) {
   const Vec3 u = next - corner, v = previous - corner;
   return std::atan2(u.cross(v).norm(), u.dot(v));
 }
+
+// The moved surface's vertices, once they are as many as the shape's: checked before the
+// tree is built over them (fewer were read past their end: the sanitizer job, 2026-12-03).
+std::vector<Vec3> asManyAs(const TriangleMesh& shape, std::vector<Vec3> vertices) {
+  if (vertices.size() != shape.vertices.size())
+    throw std::invalid_argument("MeshCollider: " + std::to_string(vertices.size()) + " vertices for a surface of " +
+                                std::to_string(shape.vertices.size()));
+  return vertices;
+}
 }  // namespace
 
 MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_(std::move(surface)), bvh_(surface_) {
@@ -42,15 +51,12 @@ MeshCollider::MeshCollider(TriangleMesh surface, OpenEdges openEdges) : surface_
 }
 
 MeshCollider::MeshCollider(const MeshCollider& shape, std::vector<Vec3> vertices)
-    : surface_{std::move(vertices), shape.surface_.triangles},
+    : surface_{asManyAs(shape.surface_, std::move(vertices)), shape.surface_.triangles},
       bvh_(surface_),
       edgeOf_(shape.edgeOf_),
       edgeCount_(shape.edgeCount_),
       openEdge_(shape.openEdge_),
       openVertex_(shape.openVertex_) {
-  if (surface_.vertices.size() != shape.surface_.vertices.size())
-    throw std::invalid_argument("MeshCollider: " + std::to_string(surface_.vertices.size()) +
-                                " vertices for a surface of " + std::to_string(shape.surface_.vertices.size()));
   computeNormals();
 }
 

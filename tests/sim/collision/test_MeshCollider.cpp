@@ -81,5 +81,12 @@ TEST(MeshCollider, AMovedCopyAnswersAsOneBuiltAnewOnTheMovedSurface) {
     EXPECT_EQ(a.normal, b.normal);
     EXPECT_EQ(a.surfacePoint, b.surfacePoint);
   }
-  EXPECT_THROW(MeshCollider(original, {Vec3::Zero()}), std::invalid_argument);
+  // Refused by the collider's own check, before a tree is built over too few vertices.
+  try {
+    MeshCollider shortOfVertices(original, {Vec3::Zero()});
+    FAIL() << "a surface of 1 vertex was taken";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "MeshCollider: 1 vertices for a surface of " + std::to_string(ball.vertices.size()));
+  }
 }

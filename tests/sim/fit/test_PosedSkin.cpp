@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "sim/fit/PosedSkin.h"
 #include "support/FitTubes.h"
@@ -45,7 +47,14 @@ TEST(PosedSkin, CarriesPointsOnATurnedLimbBackWhereTheyLay) {
 TEST(PosedSkin, SkinsThatDoNotMatchAreRefused) {
   TriangleMesh rest = test::cylinder(0.15), posed = rest;
   posed.vertices.pop_back();
-  EXPECT_THROW(PosedSkin(rest, posed), std::invalid_argument);
+  // Refused by the skins' own check, before a tree is built over the shorter one (which read
+  // past its end: the sanitizer job, 2026-12-03).
+  try {
+    PosedSkin skin(rest, posed);
+    FAIL() << "a posed skin short of a vertex was taken";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("posed skin: ", 0), 0u) << error.what();
+  }
   posed = rest;
   std::swap(posed.triangles[0][1], posed.triangles[0][2]);
   EXPECT_THROW(PosedSkin(rest, posed), std::invalid_argument);
