@@ -131,7 +131,9 @@ TEST(PatternFile, PlacesPanelsAsGarmentCodeDoes) {
   const std::string panel = R"({"a": {"translation": [10, 150, -20], "rotation": [90, 90, 0],
     "vertices": [[0, 0], [10, 0], [10, 10], [0, 10]],
     "edges": [{"endpoints": [0, 1]}, {"endpoints": [1, 2]}, {"endpoints": [2, 3]}, {"endpoints": [3, 0]}]}})";
-  const Panel& placed = parsePattern(spec(panel), "p").panels[0];
+  // The pattern held by name: a reference into the temporary's panels dangled (ASan).
+  const SewingPattern pattern = parsePattern(spec(panel), "p");
+  const Panel& placed = pattern.panels[0];
   EXPECT_NEAR((placed.rotation * Vec3(0, 1, 0) - Vec3(1, 0, 0)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((placed.rotation * Vec3(1, 0, 0) - Vec3(0, 0, -1)).norm(), 0.0, 1e-15);
   EXPECT_NEAR((placed.translation - Vec3(0.1, 1.5, -0.2)).norm(), 0.0, 1e-15);
