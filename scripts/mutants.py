@@ -17,7 +17,9 @@ expect a failure, then take it back out and rebuild. A mutant whose tests still 
   scripts/mutants.py --check   (ctest lint.MutantsApply: every header whole, every diff applies)
 
 Exit status 0 when every mutant was caught; 1 otherwise. Needs a built BUILD folder and
-files the mutants touch without changes of their own.
+files the mutants touch without changes of their own. It edits the checkout's files while
+it runs: run it where no other build reads them (a sanitizer build compiling beside it took
+a mutant into its objects, 2026-12-03; use a worktree of its own).
 """
 import argparse
 import pathlib
