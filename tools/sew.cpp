@@ -130,6 +130,24 @@ std::string openStitches(const figment::SewingPattern& pattern, const figment::U
   return text;
 }
 
+// One line on stderr per problem of a drape that is not clean.
+void reportProblems(const std::string& name, const figment::SewingPattern& pattern, const figment::UnsewnGarment& cut,
+                    const figment::GarmentDrape& drape, const figment::DrapeVerdict& verdict,
+                    const InsideNodes& inside) {
+  if (!verdict.clean())
+    std::fprintf(stderr, "%s: %s: %s\n", kTool.program().c_str(), name.c_str(), verdict.describe().c_str());
+  if (drape.sewing->openPairs > 0)
+    std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm (%s)\n",
+                 kTool.program().c_str(), name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap,
+                 openStitches(pattern, cut, *drape.sewing).c_str());
+  if (inside.count > 0) {
+    const figment::Vec3& deepest = drape.positions[inside.node];
+    std::fprintf(stderr, "%s: %s: %d garment nodes inside the body, the deepest %.1f mm in (panel %s, %.2f m up)\n",
+                 kTool.program().c_str(), name.c_str(), inside.count, 1000 * inside.depth,
+                 cut.panelNames[cut.panelOf[inside.node]].c_str(), deepest.y());
+  }
+}
+
 int sew(const Request& request, const figment::TriangleMesh& body) {
   const figment::ClothParameters parameters = drapeParameters(request);
   const figment::SewingPattern pattern = figment::readPatternFile(request.pattern);
@@ -176,19 +194,7 @@ int sew(const Request& request, const figment::TriangleMesh& body) {
     }
   }
 
-  const std::string name = request.pattern;
-  if (!verdict.clean())
-    std::fprintf(stderr, "%s: %s: %s\n", kTool.program().c_str(), name.c_str(), verdict.describe().c_str());
-  if (drape.sewing->openPairs > 0)
-    std::fprintf(stderr, "%s: %s: a seam left open: %d node pairs apart, the widest %.1f mm (%s)\n",
-                 kTool.program().c_str(), name.c_str(), drape.sewing->openPairs, 1000 * drape.sewing->seamGap,
-                 openStitches(pattern, cut, *drape.sewing).c_str());
-  if (inside.count > 0) {
-    const figment::Vec3& deepest = drape.positions[inside.node];
-    std::fprintf(stderr, "%s: %s: %d garment nodes inside the body, the deepest %.1f mm in (panel %s, %.2f m up)\n",
-                 kTool.program().c_str(), name.c_str(), inside.count, 1000 * inside.depth,
-                 cut.panelNames[cut.panelOf[inside.node]].c_str(), deepest.y());
-  }
+  reportProblems(request.pattern, pattern, cut, drape, verdict, inside);
   return 0;
 }
 
