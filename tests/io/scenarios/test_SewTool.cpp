@@ -43,6 +43,9 @@ TEST(SewTool, SewsAPatternOnTheDefaultBodyAndSaysWhatTheDrapeDid) {
   EXPECT_GT(figures["drape"]["verdict"]["max_edge_stretch"].get<double>(), 0.9);
   EXPECT_EQ(figures["drape"]["iterations"], figures["drape_steps"]);
   EXPECT_EQ(figures["drape"]["at_rest"], figures["at_rest"]);
+  // The report's wall time is the whole drape's, setting up included (it said 0 before).
+  EXPECT_GE(figures["drape"]["wall_s"].get<double>(), figures["wall_s"].get<double>());
+  EXPECT_GT(figures["wall_s"].get<double>(), 0.0);
   // What stderr says agrees with the figures: a clean drape prints nothing.
   EXPECT_EQ(figures["clean"].get<bool>(), result.err.empty()) << result.err;
   EXPECT_GT(figures["steps"].get<int>(), 0);

@@ -72,6 +72,16 @@ def time_limited(arguments):
     return (*arguments, "--time-limit", limit)
 
 
+def claim_after(seconds):
+    """A job worker's --claim-after: `seconds`, or under FIGMENT_SERVE_TIME_LIMIT that limit
+    + 30 s, the server's own default. A worker takes over a job another has held that long,
+    so the claim must outlast the longest a live worker may render one, or a job that is
+    only slow is rendered twice: Release renders well within `seconds`, the sanitizer job's
+    builds do not (a job was rendered twice there with 20 s)."""
+    limit = os.environ.get("FIGMENT_SERVE_TIME_LIMIT")
+    return str(max(float(seconds), float(limit) + 30) if limit else float(seconds))
+
+
 class Server:
     def __init__(self, executable, *arguments, capture_log=False):
         """`capture_log`: its stderr goes to a file, read by log()."""

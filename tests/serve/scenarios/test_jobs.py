@@ -16,7 +16,7 @@ import sys
 import time
 import unittest
 
-from ServeSupport import JobWorker, RedisServer, Server, count_near, png_pixels
+from ServeSupport import JobWorker, RedisServer, Server, claim_after, count_near, png_pixels
 
 EXECUTABLE = None
 PRECOMPUTE = None
@@ -76,7 +76,8 @@ class WorkQueue(unittest.TestCase):
         result = precompute(self.redis, "--requests", self.write_requests(lines))
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("100 requests, 100 added", result.stdout)
-        arguments = ("--workers", "1", "--claim-after", "20")
+        claim = claim_after(20)
+        arguments = ("--workers", "1", "--claim-after", claim)
         first = JobWorker(EXECUTABLE, self.redis.url, "first", *arguments)
         second = JobWorker(EXECUTABLE, self.redis.url, "second", *arguments)
         try:
@@ -84,7 +85,8 @@ class WorkQueue(unittest.TestCase):
             key = self.held_job(first)
             first.process.send_signal(signal.SIGKILL)
             first.process.wait(timeout=60)
-            result = precompute(self.redis, "--status", "--wait", "600")
+            # The killed worker's job waits out the claim time before the other takes it.
+            result = precompute(self.redis, "--status", "--wait", str(600 + int(float(claim))))
             self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
         finally:
             first.stop()
