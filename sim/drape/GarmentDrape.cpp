@@ -59,13 +59,13 @@ GarmentDrape drapeSewn(const DrapeRequest& request) {
                         SeamPull{sewn.openSeams, sewing.parameters.rate * sewn.strength});
     const SewingParameters& rule = sewing.parameters;
     double gap = pulling.model().seams().largestGap(pulling.positions());
-    int stalled = 0;
+    StallCount stall(rule);
     while (gap > 0.5 * rule.snapGap && pulling.time() < request.parameters.maxTime - 1e-12) {
       pulling.step();
       const double before = gap;
       gap = pulling.model().seams().largestGap(pulling.positions());
-      stalled = gap > (1.0 - rule.stall) * before ? stalled + 1 : 0;
-      if (gap <= rule.snapGap && stalled >= rule.stallSteps) break;
+      const bool stalled = stall.stalledAfter(before, gap);  // counted on every step
+      if (gap <= rule.snapGap && stalled) break;
     }
     steps = pulling.iterations(), time = pulling.time();
     wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

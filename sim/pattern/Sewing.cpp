@@ -135,17 +135,16 @@ SewnGarment sewPanels(const UnsewnGarment& garment, const ClothParameters& param
   ClothSolver solver(garment.placed.vertices, panelsAtRest(garment), pulled, std::move(body),
                      SeamPull{garment.seams, sewing.rate});
   double strength = 1.0, gap = solver.model().seams().largestGap(solver.positions());
-  int stalled = 0;
+  StallCount stall(sewing);
   while (gap > sewing.closedGap && solver.time() < sewing.maxTime - 1e-12) {
     solver.step();
     const double before = gap;
     gap = solver.model().seams().largestGap(solver.positions());
-    stalled = gap > (1.0 - sewing.stall) * before ? stalled + 1 : 0;
-    if (stalled < sewing.stallSteps) continue;
+    if (!stall.stalledAfter(before, gap)) continue;
     if (strength * sewing.strengthen > sewing.maxStrength) break;  // as hard as it pulls: what is left stays
     solver.seams().strengthen(sewing.strengthen);
     strength *= sewing.strengthen;
-    stalled = 0;
+    stall.restart();
   }
 
   SewnGarment out = mergeSeams(garment, solver.positions(), sewing.snapGap);

@@ -46,6 +46,25 @@ struct SewingParameters {
   void validate() const;
 };
 
+// The sewing's stall rule, step by step: whether a seam's largest gap has shrunk by less
+// than `stall` of itself in each of the last `stallSteps` steps. The sewing strengthens its
+// pull on it; the pulling after the sewing (sim/drape/GarmentDrape.h) stops on it.
+class StallCount {
+ public:
+  explicit StallCount(const SewingParameters& rule) : stall_(rule.stall), steps_(rule.stallSteps) {}
+  // After a step that took the largest gap from `before` to `gap`.
+  bool stalledAfter(double before, double gap) {
+    count_ = gap > (1.0 - stall_) * before ? count_ + 1 : 0;
+    return count_ >= steps_;
+  }
+  void restart() { count_ = 0; }
+
+ private:
+  double stall_;
+  int steps_;
+  int count_ = 0;
+};
+
 struct SewnGarment {
   std::vector<Vec3> positions;                // per sewn node, where the sewing left it (m)
   RestShape rest;                             // the sewn triangles, each resting as its flat panel

@@ -104,5 +104,18 @@ TEST(Sewing, RefusesAGarmentWithoutSeamsNamingIt) {
   EXPECT_THROW(sewPanels(tube(), implicitCotton(), upright(), bad), std::invalid_argument);
 }
 
+TEST(Sewing, AGapStallsAfterItsStepsOfClosingByLessThanTheRule) {
+  SewingParameters rule;  // 10 %, 3 steps
+  StallCount stall(rule);
+  EXPECT_FALSE(stall.stalledAfter(0.100, 0.095));  // 5 %: one
+  EXPECT_FALSE(stall.stalledAfter(0.095, 0.090));  // two
+  EXPECT_FALSE(stall.stalledAfter(0.090, 0.070));  // 22 %: closing again, none
+  EXPECT_FALSE(stall.stalledAfter(0.070, 0.069));
+  EXPECT_FALSE(stall.stalledAfter(0.069, 0.069));
+  EXPECT_TRUE(stall.stalledAfter(0.069, 0.0695));  // a gap that widens counts too
+  stall.restart();
+  EXPECT_FALSE(stall.stalledAfter(0.0695, 0.069));
+}
+
 }  // namespace
 }  // namespace figment
