@@ -1,6 +1,6 @@
 // figment-size: a size recommendation by simulation (docs/sizes.md).
 //   figment-size --style STYLE --sex female|male (--body FILE | --stature M --bust-girth M
-//                --waist-girth M --hip-girth M) [--chart FILE] [--json] [--cold]
+//                --waist-girth M --hip-girth M) [--chart FILE] [--json] [--warm]
 // Drapes the chart's nearest size of the style and its neighbours on the body, measures
 // each one's fit per region and recommends the smallest with no region tight. Prints each
 // size's regions and verdicts (or one JSON object with --json) on stdout. Bad input is one
@@ -31,7 +31,7 @@ const figment::tools::ToolMain kTool{"figment-size"};
 struct Request {
   std::string style, sex, body, chart;
   std::map<std::string, double> typed;  // makeMeasuredBody's keys -> m
-  bool json = false, cold = false;
+  bool json = false, warm = false;
   std::string fitMap, fitMapDir;  // kind; folder for body.obj and <size>.iv
   std::string size;               // set: try this size on only, no recommendation
 };
@@ -88,7 +88,7 @@ int recommend(const Request& request, const figment::HumanModel& model, const fi
   const figment::Sex sex = request.sex == "male" ? figment::Sex::Male : figment::Sex::Female;
   figment::Recommendation r;
   if (request.size.empty()) {
-    r = fitter.recommend(body, sex, !request.cold);
+    r = fitter.recommend(body, sex, request.warm);
   } else {
     const int size = chart.find(sex, request.size);
     if (size < 0) return kTool.fail("--size " + request.size + ": no " + figment::sexName(sex) + " size of that name");
@@ -185,7 +185,9 @@ int main(int argc, char** argv) {
   app.add_option("--chart", request.chart, "size chart file")->capture_default_str();
   app.add_option("--size", request.size, "try this size on only (letter code or number): no recommendation");
   app.add_flag("--json", request.json, "one JSON object on stdout");
-  app.add_flag("--cold", request.cold, "drape every size from its cut shape (no warm starts)");
+  app.add_flag("--warm", request.warm,
+               "start each size from its neighbour's drape (fewer steps; may change a verdict near its edge: the "
+               "service drapes each size from its cut shape, as without it)");
   app.add_option("--fit-map", request.fitMap,
                  "write each size's fit map, a scene for figment-view: stretch, ease or pressure")
       ->check(CLI::IsMember({"stretch", "ease", "pressure"}));

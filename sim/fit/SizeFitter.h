@@ -139,9 +139,13 @@ class SizeFitter {
     return drapeSize(graded, sex, size, body, nullptr);
   }
 
-  // Drapes the candidate sizes on `body` and recommends one. `warm` false (or a style
-  // without warm starts) drapes every size cold.
-  Recommendation recommend(const TriangleMesh& body, Sex sex, bool warm = true);
+  // Drapes the candidate sizes on `body` and recommends one, each size from its cut shape
+  // (cold), as the service does. `warm` starts each size but the nearest from its
+  // neighbour's drape (a style with warmStarts): a few steps fewer, but that start is one
+  // size stretched or slack, which friction keeps, and near a verdict's edge it decides
+  // the verdict (over 32 women's bodies along the chart, 2 of 32 advised another size
+  // warm; docs/sizes.md, "Warm starts").
+  Recommendation recommend(const TriangleMesh& body, Sex sex, bool warm = false);
   // As recommend, each candidate's drape on `body` given by `drapeOf` (the size's index in
   // the chart's sizes of `sex`): a caller that keeps drapes (the service, whose pictures
   // draw the same drapes) judges the ones it keeps.

@@ -102,6 +102,22 @@ TEST_F(SizeRecommendation, ASizeOnItsOwnChartBodyIsItsOwnFitsDrape) {
   for (const Verdict verdict : own.verdicts) EXPECT_EQ(verdict, Verdict::Fits) << own.text;
 }
 
+// The advice figment-size gives is the service's (FitWorker: each candidate draped cold,
+// recommendFrom): on this body, between the chart's L and XL, the L pencil skirt started
+// from the XL's drape rested 9 % stretched at the waist, held so by friction, where draped
+// from its cut shape it fits everywhere: warm, the tool advised XL and the service L.
+TEST_F(SizeRecommendation, TheAdviceIsTheServicesEachSizeDrapedFromItsCutShape) {
+  const TriangleMesh body = bodies_->human->measuredBody(ChartSize{Sex::Female, "", "", 1.68, 0.94, 0.80, 1.02}).body;
+  const Recommendation advice = pencil_->recommend(body, Sex::Female);
+  for (const SizeFit& fit : advice.sizes) EXPECT_FALSE(fit.drape.report.warm) << fit.size;
+  const auto collider = std::make_shared<const MeshCollider>(body);
+  const Recommendation service = pencil_->recommendFrom(body, Sex::Female, [&](int size) {
+    return pencil_->drapeGraded(pencil_->graded(Sex::Female, size), Sex::Female, size, collider);
+  });
+  EXPECT_EQ(advice.recommended, service.recommended);
+  EXPECT_EQ(advice.recommended, "L");
+}
+
 TEST_F(SizeRecommendation, EachMensChartBodyGetsItsOwnTShirt) {
   SizeFitter tshirt(model(), chart(), *findStyle("tshirt"));
   const std::vector<ChartSize>& sizes = chart().sizes(Sex::Male);
