@@ -408,7 +408,7 @@ SoSeparator* OutfitScene::build(const RenderRequest& request, const Wardrobe& wa
     const SoMFInt32* drawnIndex = nullptr;
     root->addChild(garment(
         item, coordinatesOf(engine), connectedTo(pattern->coordIndex),
-        {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}},  // cotton jersey
+        {fitMaps, "jersey", request.fitMap, nullptr, ClothParameters{}, std::nullopt},  // cotton jersey
         [engine] { return restMesh(*engine); }, &drawnIndex));
     beneath.push_back({following(engine), &pattern->coordIndex});
   }

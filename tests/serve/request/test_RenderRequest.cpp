@@ -232,7 +232,9 @@ TEST(RenderRequest, PicturesAreSupersampledWithinABoundOnTheDrawnPixels) {
     const long k = request.supersample(), pixels = long(request.width) * request.height;
     EXPECT_GE(k, 1) << size;
     EXPECT_LE(k * k * pixels, 4L * RequestLimits::kMaxPixels) << size;
-    if (k < 3) EXPECT_GT((k + 1) * (k + 1) * pixels, 4L * RequestLimits::kMaxPixels) << size;
+    if (k < 3) {
+      EXPECT_GT((k + 1) * (k + 1) * pixels, 4L * RequestLimits::kMaxPixels) << size;
+    }
   }
 }
 
