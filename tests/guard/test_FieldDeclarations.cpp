@@ -11,6 +11,8 @@
 
 #include "guard/FieldDeclarations.h"
 
+namespace test_FieldDeclarations {
+
 using figment::guard::FieldDeclarations;
 
 namespace {
@@ -61,3 +63,5 @@ TEST(FieldDeclarations, LooksOnlyAtADeclarationThatOpensANodesBody) {
   EXPECT_EQ(problemIn({"Frobnicator", "{", "fields", "[", "SFFloat", "wobble", "]"}), "");
   EXPECT_EQ(problemIn({"Cube", "{", "fields", "[", "SFFloat", "width", "]", "width", "SFFloat", "wobble"}), "");
 }
+
+}  // namespace test_FieldDeclarations

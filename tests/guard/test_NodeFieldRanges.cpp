@@ -8,6 +8,8 @@
 #include "guard/NodeFieldRanges.h"
 #include "support/SceneTestSupport.h"
 
+namespace test_NodeFieldRanges {
+
 using namespace figment::guard;
 
 namespace {
@@ -27,3 +29,5 @@ TEST(NodeFieldRanges, TakesTheTextureUnitsOpenGLNames) {
   EXPECT_EQ(problemIn("VRMLShape { geometry VRMLBox { } } TextureUnit { unit 32 }"),
             "TextureUnit: unit = 32 is not a texture unit: 0 to 31");
 }
+
+}  // namespace test_NodeFieldRanges

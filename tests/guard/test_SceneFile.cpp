@@ -13,6 +13,8 @@
 #include "guard/SceneFile.h"
 #include "support/SceneTestSupport.h"
 
+namespace test_SceneFile {
+
 using figment::guard::readScene;
 
 namespace {
@@ -79,3 +81,5 @@ TEST_F(SceneFileTest, PassesCoinsWarningsOnOnlyWhenTheReadSucceeds) {
   SoDebugError::postWarning("test", "after");
   EXPECT_EQ(program.messages.size(), 1u) << program.all();
 }
+
+}  // namespace test_SceneFile

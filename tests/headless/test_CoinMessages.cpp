@@ -10,6 +10,8 @@
 
 #include "headless/CoinMessages.h"
 
+namespace test_CoinMessages {
+
 namespace {
 
 constexpr const char* kPrefix = "figment-test: warning: ";
@@ -50,3 +52,5 @@ TEST_F(CoinMessagesTest, ASecondInstallKeepsTheFirstPrefix) {
 }
 
 }  // namespace
+
+}  // namespace test_CoinMessages

@@ -10,6 +10,8 @@
 #include "io/AtomicFile.h"
 #include "support/TempDir.h"
 
+namespace test_AtomicFile {
+
 namespace {
 
 using figment::writeAtomically;
@@ -110,3 +112,5 @@ TEST(AtomicFile, CompanionsUnderAFileThatIsNoFolderAreAnErrorNamingIt) {
 }
 
 }  // namespace
+
+}  // namespace test_AtomicFile

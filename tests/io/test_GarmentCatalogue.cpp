@@ -13,6 +13,8 @@
 #include "io/GarmentCatalogue.h"
 #include "support/TempDir.h"
 
+namespace test_GarmentCatalogue {
+
 namespace {
 
 using figment::CatalogueItem;
@@ -222,3 +224,5 @@ TEST(GarmentCatalogue, ABadPatternStyleIsRefusedNamingItsLine) {
             std::string::npos)
       << message();
 }
+
+}  // namespace test_GarmentCatalogue

@@ -14,6 +14,8 @@
 #include "support/GzipFile.h"
 #include "support/IoTestSupport.h"
 
+namespace test_MakeHumanFiles {
+
 using namespace figment;
 using figment::test::ScopedEnvironment;
 using figment::test::TempDir;
@@ -148,3 +150,5 @@ TEST(MakeHumanFiles, TheEnvironmentNamesTheDataFolder) {
   EXPECT_EQ(findMakeHumanData(), dir.path().string());
   EXPECT_THROW(readHumanBase(dir.path().string()), std::runtime_error);  // no group 'body'
 }
+
+}  // namespace test_MakeHumanFiles

@@ -9,6 +9,8 @@
 #include "io/PatternIndexFile.h"
 #include "support/TempDir.h"
 
+namespace test_PatternIndexFile {
+
 using namespace figment;
 using figment::test::TempDir;
 
@@ -64,3 +66,5 @@ TEST(PatternIndexFile, BadEntriesAreNamed) {
                           R"(, "stature": 1.68, "bust": 0.88, "waist": 0.72, "hips": 0.96}]})")),
             "");
 }
+
+}  // namespace test_PatternIndexFile

@@ -10,6 +10,8 @@
 #include "support/TempDir.h"
 #include "support/TestMeshes.h"
 
+namespace test_ProgressiveScript {
+
 using namespace figment;
 using figment::test::TempDir;
 
@@ -91,3 +93,5 @@ TEST(ProgressiveScript, ADamagedLineIsNamed) {
   EXPECT_EQ(errorOf((dir.path() / "none.pm").string(), garment),
             (dir.path() / "none.pm").string() + ": cannot be read");
 }
+
+}  // namespace test_ProgressiveScript

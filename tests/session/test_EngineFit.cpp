@@ -16,6 +16,8 @@
 #include "support/FitTubes.h"
 #include "support/TempDir.h"
 
+namespace test_EngineFit {
+
 using namespace figment::session;
 
 namespace {
@@ -99,3 +101,5 @@ TEST_F(EngineFitTest, AnUnknownFabricHasTheWovenLimits) {
   ASSERT_EQ(found.size(), 1u);
   EXPECT_DOUBLE_EQ(found[0].limits.stretch, figment::fabricLimits("cotton").stretch);
 }
+
+}  // namespace test_EngineFit

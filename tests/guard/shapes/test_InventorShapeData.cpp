@@ -11,6 +11,8 @@
 #include "guard/shapes/InventorShapeData.h"
 #include "support/ShapeDataSupport.h"
 
+namespace test_InventorShapeData {
+
 using namespace figment::guard::shapes;
 
 namespace {
@@ -47,3 +49,5 @@ TEST(InventorShapeData, AFaceSetCountingMoreVerticesThanThereAreIsNamed) {
 }
 
 }  // namespace
+
+}  // namespace test_InventorShapeData

@@ -16,6 +16,8 @@
 #include "sim/cloth/MaterialPresets.h"
 #include "support/SceneTestSupport.h"
 
+namespace test_ClothEngine {
+
 using namespace figment::test;
 
 namespace {
@@ -324,3 +326,5 @@ TEST(ClothEngineMaterial, APresetFillsWhatTheSceneDidNotWrite) {
   EXPECT_EQ(used.youngsModulus, denim.youngsModulus);
   EXPECT_EQ(used.poissonRatio, denim.poissonRatio);
 }
+
+}  // namespace test_ClothEngine

@@ -14,6 +14,8 @@
 #include "support/SceneTestSupport.h"
 #include "support/TempDir.h"
 
+namespace test_SewingPattern {
+
 using namespace figment::test;
 
 namespace {
@@ -121,3 +123,5 @@ TEST(SewingPattern, AClothEngineSewsItsSeamsShut) {
   for (int i = 0; i < tube->seams.getNum(); i += 2)
     EXPECT_LT((drape[tube->seams[i]] - drape[tube->seams[i + 1]]).length(), 1e-6f) << "pair " << i / 2;
 }
+
+}  // namespace test_SewingPattern

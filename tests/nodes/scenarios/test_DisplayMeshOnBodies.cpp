@@ -24,6 +24,8 @@
 #include "sim/core/Subdivision.h"
 #include "support/ShippedGarmentScene.h"
 
+namespace test_DisplayMeshOnBodies {
+
 using namespace figment::test;
 
 namespace {
@@ -112,3 +114,5 @@ INSTANTIATE_TEST_SUITE_P(Scenes, DisplayMeshOnBodies,
                          });
 
 }  // namespace
+
+}  // namespace test_DisplayMeshOnBodies

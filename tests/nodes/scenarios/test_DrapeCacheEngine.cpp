@@ -22,6 +22,8 @@
 #include "support/ShippedGarmentScene.h"
 #include "support/TempDir.h"
 
+namespace test_DrapeCacheEngine {
+
 using namespace figment::test;
 
 namespace {
@@ -236,3 +238,5 @@ TEST(DrapeCacheEngine, WithoutACacheEveryEvaluationSimulates) {
   EXPECT_FALSE(engine.lastRun().fromCache);
   EXPECT_EQ(engine.evaluationCount(), 2);
 }
+
+}  // namespace test_DrapeCacheEngine

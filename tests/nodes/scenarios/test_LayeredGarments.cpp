@@ -19,6 +19,8 @@
 #include "support/SceneTestSupport.h"
 #include "support/ShippedGarmentScene.h"
 
+namespace test_LayeredGarments {
+
 using namespace figment::test;
 
 namespace {
@@ -149,3 +151,5 @@ TEST(LayeredGarments, ABadGroupOrSurfaceIsOneLineNamingIt) {
     EXPECT_EQ(std::count(engine->lastError().begin(), engine->lastError().end(), '\n'), 0);
   }
 }
+
+}  // namespace test_LayeredGarments

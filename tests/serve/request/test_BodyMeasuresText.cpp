@@ -8,6 +8,8 @@
 #include "serve/request/BodyMeasuresText.h"
 #include "support/SmallSizeChart.h"
 
+namespace test_BodyMeasuresText {
+
 using namespace figment;
 using namespace figment::serve;
 
@@ -57,3 +59,5 @@ TEST(BodyMeasuresText, RefusesNamingTheParameterAsGivenAndTheRange) {
   }
   EXPECT_EQ(value, 0.5);  // untouched by a refusal
 }
+
+}  // namespace test_BodyMeasuresText

@@ -10,6 +10,8 @@
 #include "serve/request/FitRequest.h"
 #include "support/ShippedCatalogue.h"
 
+namespace test_FitRequest {
+
 using namespace figment;
 using namespace figment::serve;
 
@@ -90,3 +92,5 @@ TEST(FitRequest, RefusesEachBadParameterNamingItAndTheAcceptedRange) {
   twice.emplace_back("sex", "female");
   EXPECT_EQ(refused(twice).error, "given twice");
 }
+
+}  // namespace test_FitRequest

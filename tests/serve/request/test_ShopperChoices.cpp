@@ -11,6 +11,8 @@
 #include "io/GarmentCatalogue.h"
 #include "serve/request/ShopperChoices.h"
 
+namespace test_ShopperChoices {
+
 using namespace figment::serve;
 
 TEST(ShopperChoices, ListsTheMannequinsStylesInNoSizesWithTheirColours) {
@@ -57,3 +59,5 @@ TEST(ShopperChoices, ItsStylesAndColoursAreTheGarmentCataloguesFiles) {
       EXPECT_NE(std::find(offered.begin(), offered.end(), colour), offered.end()) << style.name << " " << colour;
   }
 }
+
+}  // namespace test_ShopperChoices

@@ -13,6 +13,8 @@
 
 #include "sim/body/BodyMeasurements.h"
 
+namespace test_BodyMeasurements {
+
 using namespace figment;
 
 namespace {
@@ -187,3 +189,5 @@ TEST(BodyMeasurements, TheUnderbustMovesContinuouslyWithTheBody) {
     previous = now;
   }
 }
+
+}  // namespace test_BodyMeasurements

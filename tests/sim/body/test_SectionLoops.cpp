@@ -7,6 +7,8 @@
 
 #include "sim/body/SectionLoops.h"
 
+namespace test_SectionLoops {
+
 using namespace figment;
 
 namespace {
@@ -77,3 +79,5 @@ TEST(SectionLoops, AnyPlaneAgreesWithTheHorizontalOne) {
   EXPECT_NEAR((a[0].centroid() - b[0].centroid()).norm(), 0.0, 1e-12);
   EXPECT_THROW(sectionLoops(m, Vec3::Zero(), Vec3::Zero()), std::invalid_argument);
 }
+
+}  // namespace test_SectionLoops

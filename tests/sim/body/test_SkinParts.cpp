@@ -7,6 +7,8 @@
 
 #include "sim/body/SkinParts.h"
 
+namespace test_SkinParts {
+
 using namespace figment;
 
 namespace {
@@ -59,3 +61,5 @@ TEST(SkinParts, ATriangleIsInItsVerticesMajorityPart) {
   base.fileVertexCount = 6;
   EXPECT_THROW(skinTriangleParts(rig, base), std::invalid_argument);
 }
+
+}  // namespace test_SkinParts

@@ -12,6 +12,8 @@
 #include "support/FiniteDifferences.h"
 #include "support/TestMeshes.h"
 
+namespace test_ClothModel {
+
 using namespace figment;
 
 namespace {
@@ -190,3 +192,5 @@ TEST(ClothModel, CompressedSectionsKeepThePositiveSemiDefiniteStiffness) {
   const Eigen::VectorXd eigenvalues = test::symmetricEigenvalues(K);
   EXPECT_GT(eigenvalues.minCoeff(), -1e-9 * eigenvalues.maxCoeff());
 }
+
+}  // namespace test_ClothModel

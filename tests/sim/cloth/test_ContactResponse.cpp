@@ -5,6 +5,8 @@
 #include "sim/cloth/ContactResponse.h"
 #include "sim/collision/PlaneCollider.h"
 
+namespace test_ContactResponse {
+
 using namespace figment;
 
 namespace {
@@ -56,3 +58,5 @@ TEST(ContactResponse, RespondIfTouchingSkipsTheQueryWhileTheBoundHolds) {
 }
 
 }  // namespace
+
+}  // namespace test_ContactResponse

@@ -9,6 +9,8 @@
 #include "support/Eigenvalues.h"
 #include "support/FiniteDifferences.h"
 
+namespace test_MembraneElement {
+
 using namespace figment;
 
 namespace {
@@ -191,3 +193,5 @@ TEST(MembraneElement, PositivePartClampsTheNegativeEigenvalue) {
   EXPECT_EQ(positivePart(Eigen::Matrix2d::Identity()), Eigen::Matrix2d::Identity());
   EXPECT_EQ(positivePart(-Eigen::Matrix2d::Identity()), Eigen::Matrix2d::Zero());
 }
+
+}  // namespace test_MembraneElement

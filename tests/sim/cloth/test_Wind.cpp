@@ -12,6 +12,8 @@
 #include "sim/cloth/Wind.h"
 #include "support/TestMeshes.h"
 
+namespace test_Wind {
+
 using namespace figment;
 
 namespace {
@@ -259,3 +261,5 @@ TEST(Wind, EqualSeedsRepeatTheMotionBitForBitOtherSeedsChangeIt) {
   for (size_t i = 0; i < first.size(); ++i) largest = std::max(largest, (first[i] - other[i]).norm());
   EXPECT_GT(largest, 1e-3) << "m: another seed moves the sheet otherwise";
 }
+
+}  // namespace test_Wind

@@ -15,6 +15,8 @@
 #include "support/TestCapsules.h"
 #include "support/TestMeshes.h"
 
+namespace test_BroadPhaseCollider {
+
 using namespace figment;
 
 namespace {
@@ -167,3 +169,5 @@ TEST(BroadPhaseCollider, ADrapeIsTheSameWithItAndWithout) {
     EXPECT_EQ(with.velocities(), without.velocities()) << integratorName(integrator);
   }
 }
+
+}  // namespace test_BroadPhaseCollider

@@ -5,6 +5,8 @@
 
 #include "sim/collision/CapsuleCollider.h"
 
+namespace test_CapsuleCollider {
+
 using namespace figment;
 
 namespace {
@@ -39,3 +41,5 @@ TEST(CapsuleCollider, FarPointIsAnsweredWithALowerBoundOfItsDistance) {
 }
 
 }  // namespace
+
+}  // namespace test_CapsuleCollider

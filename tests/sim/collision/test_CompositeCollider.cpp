@@ -10,6 +10,8 @@
 #include "sim/collision/PlaneCollider.h"
 #include "support/TestMeshes.h"
 
+namespace test_CompositeCollider {
+
 using namespace figment;
 
 namespace {
@@ -129,3 +131,5 @@ TEST(CompositeCollider, PassesTheClockToAMovingPart) {
   EXPECT_TRUE(moving->contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
   EXPECT_TRUE(still.contact(Vec3(0.5, 0, 0), 0.0, 1.0, c));
 }
+
+}  // namespace test_CompositeCollider

@@ -7,6 +7,8 @@
 
 #include "sim/collision/PlaneCollider.h"
 
+namespace test_PlaneCollider {
+
 using namespace figment;
 
 namespace {
@@ -85,3 +87,5 @@ TEST(PlaneCollider, RejectsAZeroNormalNamingIt) {
   EXPECT_THROW(PlaneCollider(Vec3::Zero(), Vec3(kInf, 0, 0)), std::invalid_argument);
   EXPECT_THROW(PlaneCollider(Vec3(std::nan(""), 0, 0), Vec3::UnitY()), std::invalid_argument);
 }
+
+}  // namespace test_PlaneCollider

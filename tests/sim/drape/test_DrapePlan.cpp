@@ -12,6 +12,8 @@
 #include "support/TestCapsules.h"
 #include "support/TestMeshes.h"
 
+namespace test_DrapePlan {
+
 using namespace figment;
 
 namespace {
@@ -152,3 +154,5 @@ TEST(DrapePlan, SewnPanelsOverALayerAreMovedOutOverItBeforeTheSewing) {
   ask.body.beneath = nullptr;
   EXPECT_EQ(planDrape(ask).request.garment.vertices, placed.vertices);
 }
+
+}  // namespace test_DrapePlan

@@ -12,6 +12,8 @@
 #include "support/TestMeshes.h"
 #include "support/TubePattern.h"
 
+namespace test_GarmentDrape {
+
 using namespace figment;
 
 namespace {
@@ -116,3 +118,5 @@ TEST(GarmentDrape, ASeamHeldWithinTheMergingReachIsMergedOnceItStopsClosing) {
   EXPECT_LE(drape.sewing->closedGap, weak.snapGap);
   EXPECT_LT(drape.report.run.simulatedTime, request.parameters.maxTime);
 }
+
+}  // namespace test_GarmentDrape

@@ -8,6 +8,8 @@
 
 #include "sim/drape/GarmentStart.h"
 
+namespace test_GarmentStart {
+
 namespace {
 
 using figment::Bounds;
@@ -142,3 +144,5 @@ TEST(GarmentStart, WearingNeedsTheBodysAxisThroughTheGarmentAndHalfItsHeightBesi
   EXPECT_FALSE(
       figment::wearsBody(transformed(tube(0.2), [](const Vec3& v) { return Vec3(v + Vec3(0, 1, 0)); }).vertices, body));
 }
+
+}  // namespace test_GarmentStart

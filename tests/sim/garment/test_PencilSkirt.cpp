@@ -8,6 +8,8 @@
 #include "sim/garment/PencilSkirt.h"
 #include "support/Refusal.h"
 
+namespace test_PencilSkirt {
+
 using namespace figment;
 
 namespace {
@@ -37,3 +39,5 @@ TEST(PencilSkirt, ABadOptionIsRefusedBeforeTheBody) {
 }
 
 }  // namespace
+
+}  // namespace test_PencilSkirt

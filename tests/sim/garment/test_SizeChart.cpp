@@ -6,6 +6,8 @@
 #include "sim/garment/SizeChart.h"
 #include "support/SmallSizeChart.h"
 
+namespace test_SizeChart {
+
 using namespace figment;
 
 namespace {
@@ -47,3 +49,5 @@ TEST(SizeChart, SizesThatDoNotGrowAreRefused) {
       SizeChart({{Sex::Male, "M", "48", 1.74, 0.96, 0.84, 1.0}, {Sex::Male, "M", "50", 1.77, 1.0, 0.88, 1.04}}),
       std::invalid_argument);
 }
+
+}  // namespace test_SizeChart

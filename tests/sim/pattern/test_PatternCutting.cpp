@@ -13,6 +13,8 @@
 #include "sim/pattern/EdgeCurves.h"
 #include "sim/pattern/PatternCutting.h"
 
+namespace test_PatternCutting {
+
 using namespace figment;
 
 namespace {
@@ -262,3 +264,5 @@ TEST(PatternCutting, NamesThePanelWhoseOutlineCrossesItself) {
     EXPECT_NE(std::string(error.what()).find("'front'"), std::string::npos) << error.what();
   }
 }
+
+}  // namespace test_PatternCutting

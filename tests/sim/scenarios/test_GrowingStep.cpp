@@ -12,6 +12,8 @@
 #include "support/SheetOnBall.h"
 #include "support/TestMeshes.h"
 
+namespace test_GrowingStep {
+
 using namespace figment;
 
 namespace {
@@ -175,3 +177,5 @@ TEST(GrowingStep, RefusesALargestStepItCannotTakeNamingTheField) {
   EXPECT_EQ(refusal(implicitDrape(0.05, 0.05)), "accepted");  // as large as the first: a fixed step
   EXPECT_EQ(refusal(implicitDrape(0.05, 0.0)), "accepted");
 }
+
+}  // namespace test_GrowingStep

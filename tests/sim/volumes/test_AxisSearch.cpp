@@ -8,6 +8,8 @@
 
 #include "sim/volumes/AxisSearch.h"
 
+namespace test_AxisSearch {
+
 using namespace figment;
 
 namespace {
@@ -75,3 +77,5 @@ TEST(AxisSearch, NeverEndsWorseThanItsStartAndRepeatsWithItsSeed) {
 TEST(AxisSearch, RejectsAZeroDirection) {
   EXPECT_THROW(searchAxis({Vec3::Zero(), Vec3::Zero()}, [](const Axis&) { return 0.0; }), std::invalid_argument);
 }
+
+}  // namespace test_AxisSearch

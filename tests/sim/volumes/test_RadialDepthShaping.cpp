@@ -8,6 +8,8 @@
 #include "sim/volumes/RadialDepthShaping.h"
 #include "support/TestMeshes.h"
 
+namespace test_RadialDepthShaping {
+
 using namespace figment;
 
 namespace {
@@ -84,3 +86,5 @@ TEST(RadialDepthShaping, AnEnvelopeEnclosesItsPointsAndHugsAnEllipticTube) {
     EXPECT_NEAR(std::hypot(x / 0.06, z / 0.04), 1.0, 0.03) << a;
   }
 }
+
+}  // namespace test_RadialDepthShaping

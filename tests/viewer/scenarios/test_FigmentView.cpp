@@ -20,6 +20,8 @@
 #include "support/TPoseSkeleton.h"
 #include "support/TempDir.h"
 
+namespace test_FigmentView {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -625,3 +627,5 @@ TEST_F(FigmentView, StopsAProgressiveDrapeWhereAskedAndReportsItsLevel) {
   EXPECT_GT(progressive["sections"].get<int>(), 400);
   EXPECT_LT(progressive["sections"].get<int>(), 1552);
 }
+
+}  // namespace test_FigmentView

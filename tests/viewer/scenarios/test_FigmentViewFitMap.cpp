@@ -18,6 +18,8 @@
 #include "support/SceneText.h"
 #include "support/TempDir.h"
 
+namespace test_FigmentViewFitMap {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -129,3 +131,5 @@ TEST_F(FigmentViewFitMap, ABadValueOrNameIsOneLineSayingWhatIsAccepted) {
   EXPECT_EQ(badName.err.find('\n'), badName.err.size() - 1) << badName.err;  // one line
   EXPECT_FALSE(fs::exists(path("x.png")));
 }
+
+}  // namespace test_FigmentViewFitMap

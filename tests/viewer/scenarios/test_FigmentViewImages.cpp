@@ -20,6 +20,8 @@
 #include "support/ProgramRun.h"
 #include "support/TempDir.h"
 
+namespace test_FigmentViewImages {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -315,3 +317,5 @@ TEST_F(FigmentViewImages, TheWindSceneMovesFromFrameToFrame) {
   }
   EXPECT_GT(largest, 0.1);  // N: 5 Pa on a few tenths of a square metre facing the wind
 }
+
+}  // namespace test_FigmentViewImages

@@ -25,6 +25,8 @@
 #include "support/SceneText.h"
 #include "support/TempDir.h"
 
+namespace test_FigmentViewVerdict {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -317,3 +319,5 @@ TEST_F(FigmentViewVerdict, TheDressWithEveryFieldAtItsDefaultRestsClean) {
   EXPECT_EQ(dress["method"]["integrator"], "IMPLICIT");
   EXPECT_EQ(dress["method"]["time_step_s"], 0.05);
 }
+
+}  // namespace test_FigmentViewVerdict

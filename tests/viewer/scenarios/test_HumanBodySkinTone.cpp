@@ -18,6 +18,8 @@
 #include "support/RenderedImage.h"
 #include "support/TempDir.h"
 
+namespace test_HumanBodySkinTone {
+
 using namespace figment::session;
 using figment::test::Image;
 using figment::test::Rgb;
@@ -75,3 +77,5 @@ TEST_F(HumanBodySkinTone, TheBodyIsDrawnInItsTonesColour) {
   EXPECT_EQ(plain.count(monk6), 0);
   EXPECT_NEAR(plain.count(green), toned.count(monk6), 10);  // the same body, the same pixels
 }
+
+}  // namespace test_HumanBodySkinTone

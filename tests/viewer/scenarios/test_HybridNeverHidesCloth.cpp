@@ -37,6 +37,8 @@
 #include "support/SceneText.h"
 #include "viewer/DepthBufferOnly.h"
 
+namespace test_HybridNeverHidesCloth {
+
 using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
@@ -267,3 +269,5 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, HybridNeverHidesCloth, ::testing::Values
                          });
 
 }  // namespace
+
+}  // namespace test_HybridNeverHidesCloth

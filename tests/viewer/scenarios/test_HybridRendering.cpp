@@ -26,6 +26,8 @@
 #include "support/TempDir.h"
 #include "viewer/DepthBufferOnly.h"
 
+namespace test_HybridRendering {
+
 using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
@@ -246,3 +248,5 @@ TEST_F(HybridRendering, SeparatorsUndoTheDepthAndStencilState) {
     expectSeparatorsUndoTheState(inScene);
   }
 }
+
+}  // namespace test_HybridRendering

@@ -34,6 +34,8 @@
 #include "support/RenderedImage.h"
 #include "viewer/DepthBufferOnly.h"
 
+namespace test_OutfitPixels {
+
 using namespace figment::session;
 using namespace figment::viewer;
 using figment::test::Image;
@@ -207,3 +209,5 @@ INSTANTIATE_TEST_SUITE_P(Outfits, OutfitPixels,
                          ::testing::Values(OutfitCase{"outfit-layers.iv", "Dress", true},
                                            OutfitCase{"outfit-skirt.iv", "Skirt", false}),
                          [](const auto& outfit) { return std::string(outfit.param.outer); });
+
+}  // namespace test_OutfitPixels

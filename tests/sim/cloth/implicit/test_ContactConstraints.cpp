@@ -8,6 +8,8 @@
 #include "sim/cloth/implicit/ContactConstraints.h"
 #include "sim/collision/PlaneCollider.h"
 
+namespace test_ContactConstraints {
+
 using namespace figment;
 
 namespace {
@@ -62,3 +64,5 @@ TEST_F(ContactConstraintsTest, ANodeLiftingOffOrFartherOffIsLeftWhereItIs) {
   v = Vec3(0.0, 0.02, 0.0);
   EXPECT_NEAR(step(+1e-3, kClearance + 1e-3, v).y(), kClearance + 1e-3, 1e-12);  // a millimetre off is off
 }
+
+}  // namespace test_ContactConstraints

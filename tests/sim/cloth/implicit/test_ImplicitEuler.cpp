@@ -14,6 +14,8 @@
 #include "support/SheetOnBall.h"
 #include "support/TestMeshes.h"
 
+namespace test_ImplicitEuler {
+
 using namespace figment;
 
 namespace {
@@ -268,3 +270,5 @@ TEST(ImplicitEuler, AWarmStartedStepEndsWhereTheColdStepEnds) {
   RecordProperty("PCG iterations warm", static_cast<int>(warmSteps.costs().solverIterations));
   RecordProperty("PCG iterations cold", static_cast<int>(coldSteps.costs().solverIterations));
 }
+
+}  // namespace test_ImplicitEuler
