@@ -44,26 +44,26 @@ for job in "${jobs[@]}"; do
     python3 scripts/fetch-makehuman.py "$build/data/makehuman"
     [ -e "$build/contract-venv" ] || ln -s "$PWD/${FIGMENT_BUILD_DIR:-build}/contract-venv" "$build/contract-venv"
     read -ra targets <<<"${FIGMENT_SANITIZE_TARGETS:-}"
-    cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | quiet
+    cmake --build "$build" -j "$(scripts/cores.sh)" ${targets[@]:+--target "${targets[@]}"} | quiet
     exclude=${FIGMENT_SANITIZE_EXCLUDE-$(grep -v '^#' tests/sanitize/left-out.txt | cut -f1 | paste -sd'|')}
     labels=${FIGMENT_SANITIZE_LABELS:-}
     # One implicit-solver thread per test (every test's environment): tests run side by side.
     # The service's scenarios start their servers with a render limit of 10 minutes instead of
     # 60 s (ServeSupport.time_limited): under the sanitizers a drape of theirs took past 60 s
     # and was answered 504 (serve.Service, the job's first run).
-    FIGMENT_SERVE_TIME_LIMIT=${FIGMENT_SERVE_TIME_LIMIT:-600} ctest --test-dir "$build" ${labels:+-L "$labels"} ${exclude:+-E "$exclude"} -j "$(nproc)" \
+    FIGMENT_SERVE_TIME_LIMIT=${FIGMENT_SERVE_TIME_LIMIT:-600} ctest --test-dir "$build" ${labels:+-L "$labels"} ${exclude:+-E "$exclude"} -j "$(scripts/cores.sh)" \
       --output-on-failure --timeout 900
     ;;
   tsan)
     build=${FIGMENT_TSAN_BUILD_DIR:-build-tsan}
     configure "$build" -DFIGMENT_SANITIZE_THREAD=ON -DFIGMENT_BUILD_BENCH=OFF
     python3 scripts/fetch-makehuman.py "$build/data/makehuman"  # FitWorkerTest's bodies
-    cmake --build "$build" -j "$(nproc)" --target test_serve | quiet
+    cmake --build "$build" -j "$(scripts/cores.sh)" --target test_serve | quiet
     # The units whose code runs on more than one thread (serve/workers, serve/http); the
     # service's other units are single-threaded parsing, checked under ASan above.
     TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1} \
       ctest --test-dir "$build" -L '^serve$' -R '^(WorkerPool|JobQueue|HttpService|ClientRateLimit|ImageCache|SharedImages|RedisConnection|FitWorker)' \
-      -j "$(nproc)" --output-on-failure --timeout 900
+      -j "$(scripts/cores.sh)" --output-on-failure --timeout 900
     ;;
   *)
     echo "sanitize.sh: $job: not asan or tsan" >&2

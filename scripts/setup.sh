@@ -103,5 +103,5 @@ python3 scripts/fetch-makehuman.py "$build/data/makehuman"
 # FIGMENT_SETUP_BUILD=0: the packages, the tools and the configure only (.ci/run sanitize, whose
 # sanitized trees build themselves).
 if [ "${FIGMENT_SETUP_BUILD:-1}" != 0 ]; then
-  cmake --build "$build" -j "$(nproc)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
+  cmake --build "$build" -j "$(scripts/cores.sh)" ${targets[@]:+--target "${targets[@]}"} | { grep -vE '^\[[0-9]+/[0-9]+\] ' || true; }
 fi
