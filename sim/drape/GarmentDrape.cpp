@@ -44,7 +44,11 @@ std::vector<Vec3> panelPositions(const SewnGarment& sewn, const std::vector<Vec3
 GarmentDrape drapeSewn(const DrapeRequest& request) {
   const DrapeSewing& sewing = *request.sewing;
   const UnsewnGarment panels{request.garment, sewing.flat, {}, {}, sewing.seams, {}};
-  SewnGarment sewn = sewPanels(panels, request.parameters, request.body, sewing.parameters);
+  // A sewn top closes and rests round the armpits, whose creases left nodes inside the arm
+  // (ImplicitSolverParameters::leaveCreases).
+  ClothParameters parameters = request.parameters;
+  parameters.implicitSolver.leaveCreases = true;
+  SewnGarment sewn = sewPanels(panels, parameters, request.body, sewing.parameters);
   SewingOutcome outcome;
   outcome.run = sewn.sewing;
   outcome.closedGap = sewn.closedGap;
@@ -53,14 +57,14 @@ GarmentDrape drapeSewn(const DrapeRequest& request) {
   if (!sewn.openPairs.empty()) {
     const auto started = std::chrono::steady_clock::now();
     // The pulling's steps stay the scene's, as the sewing's do: its stall rule counts them.
-    ClothParameters pulled = request.parameters;
+    ClothParameters pulled = parameters;
     pulled.implicitSolver.maxTimeStep = 0.0;
     ClothSolver pulling(sewn.positions, sewn.rest, pulled, request.body,
                         SeamPull{sewn.openSeams, sewing.parameters.rate * sewn.strength});
     const SewingParameters& rule = sewing.parameters;
     double gap = pulling.model().seams().largestGap(pulling.positions());
     StallCount stall(rule);
-    while (gap > 0.5 * rule.snapGap && pulling.time() < request.parameters.maxTime - 1e-12) {
+    while (gap > 0.5 * rule.snapGap && pulling.time() < parameters.maxTime - 1e-12) {
       pulling.step();
       const double before = gap;
       gap = pulling.model().seams().largestGap(pulling.positions());
@@ -74,7 +78,7 @@ GarmentDrape drapeSewn(const DrapeRequest& request) {
     outcome.closedGap = std::max(outcome.closedGap, closer.closedGap);
     sewn = std::move(closer);
   }
-  ClothSolver solver(sewn.positions, sewn.rest, request.parameters, request.body,
+  ClothSolver solver(sewn.positions, sewn.rest, parameters, request.body,
                      SeamPull{sewn.openSeams, sewing.parameters.rate * sewn.strength});
   if (request.stepObserver) solver.setStepObserver(request.stepObserver);
   GarmentDrape out;

@@ -19,6 +19,9 @@ constexpr double kBand = 1e-5;  // m
 // back in, was pushed out and held again, every other step for ever (a strap node of
 // the dress at 1/20 s: 0.8 mm a step, so never at rest). Farther off, it lifted off.
 constexpr double kFollowBand = 2e-4;  // m
+// A node pushed out of one side of a crease is pushed out of the other at most this many
+// times more (ContactConstraints::leaveCrease).
+constexpr int kCreasePushes = 4;
 // Nodes per parallel task: far nodes skip the body's query, so the work per node varies.
 constexpr int kNodesPerTask = 64;
 
@@ -32,6 +35,7 @@ ContactConstraints::ContactConstraints(std::shared_ptr<const Collider> body, con
     : body_(std::move(body)),
       clearance_(parameters.clearance),
       mu_(parameters.friction),
+      leaveCreases_(parameters.implicitSolver.leaveCreases),
       // A node sliding on a curved or faceted surface drifts off it by rounding; within
       // this band it is still held (at its height). No more: a node held above the
       // clearance rests there, and a garment held a band farther out rests elsewhere
@@ -158,8 +162,22 @@ void ContactConstraints::finish(const NodeFilter& filter, const std::vector<Vec3
       const double normalSpeed = v[i].dot(normal);
       v[i] += (std::min(normalSpeed, std::max(0.0, vStart[i].dot(normal))) - normalSpeed) * normal;
     }
+    const Vec3 solved = x[i];
     respondIfTouching(*body_, clearance_, mu_, dt, firstStep, kSearchMargin, xStart[i], x[i], v[i], distanceBound_[i]);
     if (held_[i] && !released_[i]) followSurface(x[i], v[i], distanceBound_[i]);
+    if (leaveCreases_ && x[i] != solved) leaveCrease(x[i], v[i]);
+  }
+}
+
+void ContactConstraints::leaveCrease(Vec3& x, Vec3& v) const {
+  for (int push = 0; push < kCreasePushes; ++push) {
+    Contact contact;
+    if (!body_->contact(x, clearance_, clearance_ + kSearchMargin, contact)) return;
+    // Outside the body, or deeper in it than a clearance (not a crease's other side: a
+    // node through the body, which a push would tear from its neighbours).
+    if (contact.distance >= 0.0 || contact.distance < -clearance_) return;
+    x += (clearance_ - contact.distance) * contact.normal;
+    v -= std::min(0.0, v.dot(contact.normal)) * contact.normal;
   }
 }
 

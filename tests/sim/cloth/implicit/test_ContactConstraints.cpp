@@ -2,10 +2,12 @@
 // pressing that ends its step a little above the clearance (sliding along its tangent
 // plane over a curved body drifts it off by d^2 / 2R) is put back on the clearance,
 // so it stays held instead of falling back in and being pushed out every other step;
-// a node lifting off, or one farther off, is left where it is.
+// a node lifting off, or one farther off, is left where it is. A node pushed out of one
+// side of a crease into the other is pushed out of that one too.
 #include <gtest/gtest.h>
 
 #include "sim/cloth/implicit/ContactConstraints.h"
+#include "sim/collision/CompositeCollider.h"
 #include "sim/collision/PlaneCollider.h"
 
 namespace test_ContactConstraints {
@@ -63,6 +65,75 @@ TEST_F(ContactConstraintsTest, ANodeLiftingOffOrFartherOffIsLeftWhereItIs) {
   EXPECT_NEAR(step(-1e-3, kClearance + kDrift, v).y(), kClearance + kDrift, 1e-12);  // pulled: lifting off
   v = Vec3(0.0, 0.02, 0.0);
   EXPECT_NEAR(step(+1e-3, kClearance + 1e-3, v).y(), kClearance + 1e-3, 1e-12);  // a millimetre off is off
+}
+
+// A crease: the body is everything below y = 0 and everything left of x = 0 (two
+// half-spaces), the space outside it the quarter x, y > 0, as an armpit's between arm
+// and torso. A node resting 0.5 mm inside the floor, which the solve left 1 mm inside the
+// upright side too, is pushed out of the upright side (its deepest contact) to x =
+// clearance, still inside the floor: before, it ended there (the women's 7XL T-shirt
+// rested with 4 nodes up to 0.9 mm inside the arm, where it meets the torso).
+TEST(ContactConstraintsCrease, ANodePushedOutOfOneSideIntoTheOtherIsPushedOutOfThatToo) {
+  ClothParameters p;
+  p.integrator = Integrator::Implicit;
+  p.timeStep = kDt;
+  p.clearance = kClearance;
+  p.implicitSolver.leaveCreases = true;
+  auto body = std::make_shared<CompositeCollider>(
+      std::vector<std::shared_ptr<const Collider>>{std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitX()),
+                                                   std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY())});
+  ContactConstraints contacts(body, p, 1);
+  NodeFilter filter;
+  filter.reset(1);  // free: the solve moved it into the body
+  const std::vector<Vec3> xStart{Vec3(0.003, -0.0005, 0.0)}, vStart{Vec3::Zero()};
+  std::vector<Vec3> x{Vec3(-0.001, -0.0005, 0.0)}, v{Vec3(-0.08, 0.0, 0.0)};
+  contacts.finish(filter, xStart, vStart, kDt, false, x, v);
+  EXPECT_NEAR(x[0].x(), kClearance, 1e-12);  // out of the upright side, at its clearance
+  EXPECT_NEAR(x[0].y(), kClearance, 1e-12);  // and out of the floor, at its clearance
+  EXPECT_GE(v[0].x(), 0.0);                  // moving into neither side
+  EXPECT_GE(v[0].y(), 0.0);
+}
+
+// A node only within the other side's clearance is left there: the push is for a node
+// inside the body (pushing every node out of both clearances in a crease tore the women's
+// fitted shirt in 3XL and 4XL, whose seams close across the armpits).
+TEST(ContactConstraintsCrease, ANodeLeftWithinTheOtherSidesClearanceStaysThere) {
+  ClothParameters p;
+  p.integrator = Integrator::Implicit;
+  p.timeStep = kDt;
+  p.clearance = kClearance;
+  p.implicitSolver.leaveCreases = true;
+  auto body = std::make_shared<CompositeCollider>(
+      std::vector<std::shared_ptr<const Collider>>{std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitX()),
+                                                   std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY())});
+  ContactConstraints contacts(body, p, 1);
+  NodeFilter filter;
+  filter.reset(1);
+  const std::vector<Vec3> xStart{Vec3(0.003, 0.003, 0.0)}, vStart{Vec3::Zero()};
+  std::vector<Vec3> x{Vec3(-0.001, 0.003, 0.0)}, v{Vec3(-0.08, 0.0, 0.0)};
+  contacts.finish(filter, xStart, vStart, kDt, false, x, v);
+  EXPECT_NEAR(x[0].x(), kClearance, 1e-12);
+  EXPECT_NEAR(x[0].y(), 0.003, 1e-12);
+}
+
+// Off (the default, ImplicitSolverParameters::leaveCreases): the node pushed out of the
+// upright side is left inside the floor, as a shirt's side between arm and torso is left.
+TEST(ContactConstraintsCrease, OffTheNodeIsPushedOutOfItsDeepestSideAlone) {
+  ClothParameters p;
+  p.integrator = Integrator::Implicit;
+  p.timeStep = kDt;
+  p.clearance = kClearance;
+  auto body = std::make_shared<CompositeCollider>(
+      std::vector<std::shared_ptr<const Collider>>{std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitX()),
+                                                   std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY())});
+  ContactConstraints contacts(body, p, 1);
+  NodeFilter filter;
+  filter.reset(1);
+  const std::vector<Vec3> xStart{Vec3(0.003, -0.0005, 0.0)}, vStart{Vec3::Zero()};
+  std::vector<Vec3> x{Vec3(-0.001, -0.0005, 0.0)}, v{Vec3(-0.08, 0.0, 0.0)};
+  contacts.finish(filter, xStart, vStart, kDt, false, x, v);
+  EXPECT_NEAR(x[0].x(), kClearance, 1e-12);
+  EXPECT_NEAR(x[0].y(), -0.0005, 1e-12);
 }
 
 }  // namespace test_ContactConstraints
