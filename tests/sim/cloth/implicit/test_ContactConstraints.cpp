@@ -69,71 +69,56 @@ TEST_F(ContactConstraintsTest, ANodeLiftingOffOrFartherOffIsLeftWhereItIs) {
 
 // A crease: the body is everything below y = 0 and everything left of x = 0 (two
 // half-spaces), the space outside it the quarter x, y > 0, as an armpit's between arm
-// and torso. A node resting 0.5 mm inside the floor, which the solve left 1 mm inside the
-// upright side too, is pushed out of the upright side (its deepest contact) to x =
-// clearance, still inside the floor: before, it ended there (the women's 7XL T-shirt
-// rested with 4 nodes up to 0.9 mm inside the arm, where it meets the torso).
-TEST(ContactConstraintsCrease, ANodePushedOutOfOneSideIntoTheOtherIsPushedOutOfThatToo) {
+// and torso. A free node the solve moved from `xStart` to `x`, at speed `v` (-8 cm/s
+// along x, into the upright side): where finish() leaves it (its velocity in `v`).
+Vec3 finishInCrease(bool leaveCreases, const Vec3& xStart, const Vec3& x, Vec3& v) {
   ClothParameters p;
   p.integrator = Integrator::Implicit;
   p.timeStep = kDt;
   p.clearance = kClearance;
-  p.implicitSolver.leaveCreases = true;
+  p.implicitSolver.leaveCreases = leaveCreases;
   auto body = std::make_shared<CompositeCollider>(
       std::vector<std::shared_ptr<const Collider>>{std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitX()),
                                                    std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY())});
   ContactConstraints contacts(body, p, 1);
   NodeFilter filter;
   filter.reset(1);  // free: the solve moved it into the body
-  const std::vector<Vec3> xStart{Vec3(0.003, -0.0005, 0.0)}, vStart{Vec3::Zero()};
-  std::vector<Vec3> x{Vec3(-0.001, -0.0005, 0.0)}, v{Vec3(-0.08, 0.0, 0.0)};
-  contacts.finish(filter, xStart, vStart, kDt, false, x, v);
-  EXPECT_NEAR(x[0].x(), kClearance, 1e-12);  // out of the upright side, at its clearance
-  EXPECT_NEAR(x[0].y(), kClearance, 1e-12);  // and out of the floor, at its clearance
-  EXPECT_GE(v[0].x(), 0.0);                  // moving into neither side
-  EXPECT_GE(v[0].y(), 0.0);
+  std::vector<Vec3> xs{x}, vs{Vec3(-0.08, 0.0, 0.0)};
+  contacts.finish(filter, {xStart}, {Vec3::Zero()}, kDt, false, xs, vs);
+  v = vs[0];
+  return xs[0];
+}
+
+// A node resting 0.5 mm inside the floor, which the solve left 1 mm inside the upright side
+// too, is pushed out of the upright side (its deepest contact) to x = clearance, still
+// inside the floor: before, it ended there (the women's 7XL T-shirt rested with 4 nodes up
+// to 0.9 mm inside the arm, where it meets the torso).
+TEST(ContactConstraintsCrease, ANodePushedOutOfOneSideIntoTheOtherIsPushedOutOfThatToo) {
+  Vec3 v;
+  const Vec3 x = finishInCrease(true, Vec3(0.003, -0.0005, 0.0), Vec3(-0.001, -0.0005, 0.0), v);
+  EXPECT_NEAR(x.x(), kClearance, 1e-12);  // out of the upright side, at its clearance
+  EXPECT_NEAR(x.y(), kClearance, 1e-12);  // and out of the floor, at its clearance
+  EXPECT_GE(v.x(), 0.0);                  // moving into neither side
+  EXPECT_GE(v.y(), 0.0);
 }
 
 // A node only within the other side's clearance is left there: the push is for a node
 // inside the body (pushing every node out of both clearances in a crease tore the women's
 // fitted shirt in 3XL and 4XL, whose seams close across the armpits).
 TEST(ContactConstraintsCrease, ANodeLeftWithinTheOtherSidesClearanceStaysThere) {
-  ClothParameters p;
-  p.integrator = Integrator::Implicit;
-  p.timeStep = kDt;
-  p.clearance = kClearance;
-  p.implicitSolver.leaveCreases = true;
-  auto body = std::make_shared<CompositeCollider>(
-      std::vector<std::shared_ptr<const Collider>>{std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitX()),
-                                                   std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY())});
-  ContactConstraints contacts(body, p, 1);
-  NodeFilter filter;
-  filter.reset(1);
-  const std::vector<Vec3> xStart{Vec3(0.003, 0.003, 0.0)}, vStart{Vec3::Zero()};
-  std::vector<Vec3> x{Vec3(-0.001, 0.003, 0.0)}, v{Vec3(-0.08, 0.0, 0.0)};
-  contacts.finish(filter, xStart, vStart, kDt, false, x, v);
-  EXPECT_NEAR(x[0].x(), kClearance, 1e-12);
-  EXPECT_NEAR(x[0].y(), 0.003, 1e-12);
+  Vec3 v;
+  const Vec3 x = finishInCrease(true, Vec3(0.003, 0.003, 0.0), Vec3(-0.001, 0.003, 0.0), v);
+  EXPECT_NEAR(x.x(), kClearance, 1e-12);
+  EXPECT_NEAR(x.y(), 0.003, 1e-12);
 }
 
 // Off (the default, ImplicitSolverParameters::leaveCreases): the node pushed out of the
 // upright side is left inside the floor, as a shirt's side between arm and torso is left.
 TEST(ContactConstraintsCrease, OffTheNodeIsPushedOutOfItsDeepestSideAlone) {
-  ClothParameters p;
-  p.integrator = Integrator::Implicit;
-  p.timeStep = kDt;
-  p.clearance = kClearance;
-  auto body = std::make_shared<CompositeCollider>(
-      std::vector<std::shared_ptr<const Collider>>{std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitX()),
-                                                   std::make_shared<PlaneCollider>(Vec3::Zero(), Vec3::UnitY())});
-  ContactConstraints contacts(body, p, 1);
-  NodeFilter filter;
-  filter.reset(1);
-  const std::vector<Vec3> xStart{Vec3(0.003, -0.0005, 0.0)}, vStart{Vec3::Zero()};
-  std::vector<Vec3> x{Vec3(-0.001, -0.0005, 0.0)}, v{Vec3(-0.08, 0.0, 0.0)};
-  contacts.finish(filter, xStart, vStart, kDt, false, x, v);
-  EXPECT_NEAR(x[0].x(), kClearance, 1e-12);
-  EXPECT_NEAR(x[0].y(), -0.0005, 1e-12);
+  Vec3 v;
+  const Vec3 x = finishInCrease(false, Vec3(0.003, -0.0005, 0.0), Vec3(-0.001, -0.0005, 0.0), v);
+  EXPECT_NEAR(x.x(), kClearance, 1e-12);
+  EXPECT_NEAR(x.y(), -0.0005, 1e-12);
 }
 
 }  // namespace test_ContactConstraints
