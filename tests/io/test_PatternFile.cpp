@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "io/PatternFile.h"
@@ -229,9 +230,9 @@ TEST(PatternFile, RefusesABadStitch) {
   EXPECT_EQ(refusal(spec(gathered, R"([[{"panel": "a", "edge": 0}, {"panel": "g", "edge": 0}]])")), "(read)");
 }
 
-// GarmentCode's pencil skirt for women's 54 (shipped in the graded set) writes its front
-// waistband's two nearly straight edges (62 cm chords on 8 m circles) as large arcs: 50 m
-// loops that cross the panel. Refused, not sewn.
+// GarmentCode's pencil skirt for women's 54 as GarmentCode wrote it: its front waistband's
+// two nearly straight edges (62 cm chords on 8 m circles) flagged as large arcs, 50 m loops
+// that cross the panel. Refused, not sewn (scenes/patterns ships the file mended, below).
 TEST(PatternFile, RefusesAFlatArcFlaggedLarge) {
   EXPECT_EQ(refusal(spec(R"({"wb_front": {"vertices": [[-0.17317810895712427, 0], [0.0017606091853714645,
     -4.57201956856449], [61.99823939081463, -4.57201956856449], [62.173178108957124, 0]],
@@ -239,4 +240,27 @@ TEST(PatternFile, RefusesAFlatArcFlaggedLarge) {
     "params": [810.7311321402475, 1, 0]}}, {"endpoints": [2, 3]}, {"endpoints": [3, 0], "curvature":
     {"type": "circle", "params": [815.3064973158856, 1, 1]}}]}})")),
             "p.json: panel \"wb_front\": the outline crosses itself (edges 1 and 3)");
+}
+
+// The shipped pencil 54, mended (scenes/patterns/README.md): read as the small arcs its
+// grading runs to. The waistband front's lower edge is as long as the skirt front's top
+// edge it is sewn to, and the skirt hangs where the 50 and 52 put theirs, not 8 m up where
+// GarmentCode placed it under the 50 m loop.
+TEST(PatternFile, TheShippedPencil54IsMendedAsItsGradingRuns) {
+  const std::string folder = std::string(FIGMENT_SOURCE_DIR) + "/scenes/patterns/pencil/";
+  const auto panel = [](const SewingPattern& pattern, const std::string& name) -> const Panel& {
+    for (const Panel& p : pattern.panels)
+      if (p.name == name) return p;
+    throw std::runtime_error("no panel " + name);
+  };
+  const SewingPattern p50 = readPatternFile(folder + "pencil-f-50_specification.json");
+  const SewingPattern p52 = readPatternFile(folder + "pencil-f-52_specification.json");
+  const SewingPattern p54 = readPatternFile(folder + "pencil-f-54_specification.json");
+  const Panel& band = panel(p54, "wb_front");
+  const Panel& skirt = panel(p54, "skirt_front");
+  EXPECT_NEAR(edgeLength(band, 1), edgeLength(skirt, 3), 0.01 * edgeLength(skirt, 3));
+  for (const char* name : {"skirt_front", "skirt_back"}) {
+    const double y50 = panel(p50, name).translation.y(), y52 = panel(p52, name).translation.y();
+    EXPECT_NEAR(panel(p54, name).translation.y(), 2.0 * y52 - y50, 0.01) << name;
+  }
 }
