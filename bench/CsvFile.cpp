@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <system_error>
 
 #include "io/AtomicFile.h"
 
@@ -24,6 +25,13 @@ bool writeCsv(const std::string& path, const std::function<std::string(std::ostr
   }
   std::cout << path << "\n";
   return true;
+}
+
+std::string makeOutFolder(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (!error && std::filesystem::is_directory(dir, error)) return "";
+  return "--out " + dir + ": not a folder, and none can be made there" + (error ? " (" + error.message() + ")" : "");
 }
 
 void chartCsv(const std::string& plotScript, const std::string& csvPath, const std::string& pngPath) {

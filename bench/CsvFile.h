@@ -13,6 +13,10 @@ namespace figment::bench {
 // and returns false.
 bool writeCsv(const std::string& path, const std::function<std::string(std::ostream& csv)>& fill);
 
+// Makes the study's output folder `dir` (and its parents) before the study runs, which may
+// take hours: "" when it is a folder, else one line naming --out, the path and why.
+std::string makeOutFolder(const std::string& dir);
+
 // Charts `csvPath` into `pngPath` with the study's matplotlib script, when there is one
 // ("" or missing: nothing happens): prints the PNG's path, or on stderr that there is no
 // chart (python3 or matplotlib missing).

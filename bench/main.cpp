@@ -1,5 +1,6 @@
 // figment-bench: one subcommand per study; each writes CSV into --out.
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <utility>
@@ -7,6 +8,7 @@
 
 #include "BodyStudy.h"
 #include "CollisionStudy.h"
+#include "CsvFile.h"
 #include "DrapeStudy.h"
 #include "FitStudy.h"
 #include "MethodStudy.h"
@@ -261,6 +263,14 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   for (const auto& [command, run] : studies)
-    if (command->parsed()) return run();
+    if (command->parsed()) {
+      // Every study writes into --out: a file there, or a folder that cannot be made, is
+      // refused before the study's minutes or hours, not thrown at its end.
+      if (const std::string error = makeOutFolder(command->get_option("--out")->as<std::string>()); !error.empty()) {
+        std::fprintf(stderr, "figment-bench: %s\n", error.c_str());
+        return 1;
+      }
+      return run();
+    }
   return 1;
 }

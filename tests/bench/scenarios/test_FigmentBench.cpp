@@ -69,6 +69,17 @@ TEST_F(FigmentBench, RefusesAFieldDeclarationTheNodeDoesNotHaveInOneLine) {
   EXPECT_FALSE(std::filesystem::exists(dir_.path() / "out" / "render.csv"));
 }
 
+// --out naming a file: one line and exit 1 before the study runs (an uncaught
+// std::filesystem error and an abort before, after the study's work).
+TEST_F(FigmentBench, AnOutFolderThatIsAFileIsRefusedBeforeTheStudy) {
+  const std::string file = write("taken", "a file\n");
+  const std::string scene = write("square.iv", squareOfCloth("timeStep 0.01 maxTime 0.05"));
+  for (const char* study : {"drape", "tradeoff --quick"}) {
+    const ProcessResult r = run(std::string(study) + " --scene " + quote(scene) + " --out " + quote(file));
+    expectOneLine(r, "--out " + file + ": not a folder");
+  }
+}
+
 TEST_F(FigmentBench, TheRenderStudyRefusesAShapeIndexingPastItsData) {
   const std::string scene = write("faces.iv",
                                   "#Inventor V2.1 ascii\nSeparator {\n  Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }\n"
