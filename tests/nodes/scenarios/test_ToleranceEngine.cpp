@@ -141,13 +141,16 @@ TEST(ToleranceEngineMix, APosedMannequinGetsThePerPartMixNotItsRestPoseTriangles
   EXPECT_EQ(inside, 0);
 }
 
-TEST(ToleranceEngineCommittedTable, TheDressPickedAtHalfAPercentLandsWithinItOfAConvergedDrape) {
+// At 0.6 %: since the T-shirt's mesh was cut again (2026-11-27) the paper's path, the old
+// table's pick at 0.5 %, blows up on it, and nothing rests within 0.5 % on all three
+// garments (docs/results.md, "Speed against accuracy").
+TEST(ToleranceEngineCommittedTable, TheDressPickedAtSixTenthsOfAPercentLandsWithinItOfAConvergedDrape) {
   const ShippedGarmentScene scene("dress.iv");
   ClothEngine& engine = *scene.engine();
-  engine.tolerance = 0.5;
+  engine.tolerance = 0.6;
   const std::vector<SbVec3f> picked = drape(engine);
   ASSERT_EQ(engine.lastError(), "");
-  ASSERT_LE(engine.lastRun().pickedDeviation, 0.5);
+  ASSERT_LE(engine.lastRun().pickedDeviation, 0.6);
   // The converged drape as the study makes it: Heun without limiters at a small step on
   // the body's own triangles (1e-4 s here; at 5e-5 s it moves 0.01 %).
   const SoPathList mannequins = figment::findAll(scene.root(), Mannequin::getClassTypeId());
@@ -167,5 +170,5 @@ TEST(ToleranceEngineCommittedTable, TheDressPickedAtHalfAPercentLandsWithinItOfA
   double mean = 0.0;
   for (size_t i = 0; i < picked.size(); ++i) mean += (picked[i] - reference[i]).length();
   mean /= static_cast<double>(picked.size());
-  EXPECT_LT(100.0 * mean / (high - low), 0.5);
+  EXPECT_LT(100.0 * mean / (high - low), 0.6);
 }
