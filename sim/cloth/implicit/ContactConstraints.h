@@ -70,7 +70,8 @@ class ContactConstraints {
   // A node the push-out moved, in a crease of the body (an armpit, where arm and torso
   // meet at a sharp angle), may have been pushed out of one side into the other: it is
   // pushed out along the nearest surface again, a few times at most, while it is inside
-  // the body by less than a clearance. Before, such nodes rested up to 0.9 mm inside the
+  // the body by less than a clearance; between two sides that face each other, along the
+  // crease's bisector, out of both. Before, such nodes rested up to 0.9 mm inside the
   // arm (the women's 7XL T-shirt's back panel). Only nodes inside: pushing nodes out of
   // both sides' clearance tore the women's fitted shirt in 3XL and 4XL; and not deeper: a
   // node through the body (a sewing's first steps) would be torn from its neighbours.
