@@ -60,10 +60,12 @@ for job in "${jobs[@]}"; do
     python3 scripts/fetch-makehuman.py "$build/data/makehuman"  # FitWorkerTest's bodies
     cmake --build "$build" -j "$(scripts/cores.sh)" --target test_serve | quiet
     # The units whose code runs on more than one thread (serve/workers, serve/http); the
-    # service's other units are single-threaded parsing, checked under ASan above.
+    # service's other units are single-threaded parsing, checked under ASan above. 1800 s:
+    # a FitWorker unit draping an advice's sizes side by side took 767 s alone under TSan and
+    # ran past 900 s beside another (2026-12-03).
     TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1} \
       ctest --test-dir "$build" -L '^serve$' -R '^(WorkerPool|JobQueue|HttpService|ClientRateLimit|ImageCache|SharedImages|RedisConnection|FitWorker)' \
-      -j "$(scripts/cores.sh)" --output-on-failure --timeout 900
+      -j "$(scripts/cores.sh)" --output-on-failure --timeout 1800
     ;;
   *)
     echo "sanitize.sh: $job: not asan or tsan" >&2
